@@ -1,0 +1,111 @@
+//! Basic measures of a polygon mesh: Newell face normals, corner frames, bend angles of
+//! edges, signed volume (ALGORITHMS.md §0.3, §1.5).
+//!
+//! Angles between vectors are always `atan2(|a × b|, a·b)`, never `acos` of a dot product,
+//! which loses half the digits near 0 and π.
+
+use crate::mesh::PolyMesh;
+use crate::topology::{NONE, Topology};
+use glam::DVec3;
+
+/// Newell normal of face `f`: ½ Σ_loops Σ_i V_i × V_(i+1). Its length is the area of a
+/// planar face (holes subtracted).
+pub fn face_normal_raw(mesh: &PolyMesh, f: usize) -> DVec3 {
+    let mut n = DVec3::ZERO;
+    for l in mesh.face_loops(f) {
+        let vs = mesh.loop_verts(l);
+        // Relative to the loop's first vertex: the same sum for a closed loop, fewer
+        // cancelled digits far from the origin.
+        let o = mesh.positions[vs[0] as usize];
+        for i in 0..vs.len() {
+            let a = mesh.positions[vs[i] as usize] - o;
+            let b = mesh.positions[vs[(i + 1) % vs.len()] as usize] - o;
+            n += a.cross(b);
+        }
+    }
+    0.5 * n
+}
+
+/// Newell normal of every face (raw, not normalised).
+pub fn face_normals_raw(mesh: &PolyMesh) -> Vec<DVec3> {
+    (0..mesh.num_faces())
+        .map(|f| face_normal_raw(mesh, f))
+        .collect()
+}
+
+/// Unit normal, or zero for a face of no area.
+pub fn unit_or_zero(v: DVec3) -> DVec3 {
+    let l = v.length();
+    if l > 0.0 { v / l } else { DVec3::ZERO }
+}
+
+/// Angle between two vectors in [0, π], computed as atan2(|a × b|, a·b).
+pub fn angle_between(a: DVec3, b: DVec3) -> f64 {
+    a.cross(b).length().atan2(a.dot(b))
+}
+
+/// The bend angle ψ ∈ [0, π] of every edge (angle between the two face normals), signed
+/// negative for a concave (reflex) edge. Boundary edges get 0.
+pub fn signed_bend_angles(mesh: &PolyMesh, topo: &Topology, unit_normals: &[DVec3]) -> Vec<f64> {
+    let cv = &mesh.corner_verts;
+    topo.edge_corner
+        .iter()
+        .map(|&c| {
+            let t = topo.twin[c as usize];
+            if t == NONE {
+                return 0.0;
+            }
+            let nl = unit_normals[topo.corner_face[c as usize] as usize];
+            let nr = unit_normals[topo.corner_face[t as usize] as usize];
+            let psi = angle_between(nl, nr);
+            let d = mesh.positions[cv[topo.next[c as usize] as usize] as usize]
+                - mesh.positions[cv[c as usize] as usize];
+            if nl.cross(nr).dot(d) < 0.0 { -psi } else { psi }
+        })
+        .collect()
+}
+
+/// Signed volume: Σ over faces and loops of a fan from the loop's first vertex. Negative
+/// when a closed solid has turned inside out.
+pub fn signed_volume(mesh: &PolyMesh) -> f64 {
+    let mut v = 0.0;
+    for l in 0..mesh.num_loops() {
+        let vs = mesh.loop_verts(l);
+        let p0 = mesh.positions[vs[0] as usize];
+        for i in 1..vs.len() - 1 {
+            v += p0.dot(mesh.positions[vs[i] as usize].cross(mesh.positions[vs[i + 1] as usize]));
+        }
+    }
+    v / 6.0
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::primitives;
+
+    #[test]
+    fn volumes_and_normals_of_the_test_solids() {
+        assert!((signed_volume(&primitives::cube3()) - 27.0).abs() < 1e-12);
+        assert!((signed_volume(&primitives::l_block()) - 12.0).abs() < 1e-12);
+        assert!((signed_volume(&primitives::holed_block()) - 8.0).abs() < 1e-12);
+        assert!((signed_volume(&primitives::tripod()) - 7.0).abs() < 1e-12);
+        let hb = primitives::holed_block();
+        // Top face: area 9 - 1 = 8, normal +z.
+        let n = face_normal_raw(&hb, 1);
+        assert!((n - DVec3::new(0.0, 0.0, 8.0)).length() < 1e-12, "{n}");
+    }
+
+    #[test]
+    fn bend_angles_sign_concave_edges() {
+        let m = primitives::l_block();
+        let t = Topology::build(&m).unwrap();
+        let n: Vec<DVec3> = face_normals_raw(&m).into_iter().map(unit_or_zero).collect();
+        let b = signed_bend_angles(&m, &t, &n);
+        let concave = b.iter().filter(|&&x| x < 0.0).count();
+        assert_eq!(concave, 1);
+        for x in b {
+            assert!((x.abs() - std::f64::consts::FRAC_PI_2).abs() < 1e-12);
+        }
+    }
+}

@@ -1,0 +1,95 @@
+//! Files: OBJ (read with `tobj`, polygons kept as they are) and the native `.prism.json`
+//! document. Every write goes to a temporary file in the same folder that is renamed into
+//! place, so a failed save never destroys the previous file.
+
+mod atomic;
+mod document;
+mod obj;
+
+pub use atomic::write_atomically;
+pub use document::{DOCUMENT_VERSION, Document, read_document, write_document};
+pub use obj::{ObjModel, obj_to_string, read_obj, read_obj_str, write_obj};
+
+use std::path::{Path, PathBuf};
+use thiserror::Error;
+
+#[derive(Debug, Error)]
+pub enum IoError {
+    #[error("cannot read {path}: {source}")]
+    Read {
+        path: PathBuf,
+        source: std::io::Error,
+    },
+    #[error("cannot write {path}: {source}")]
+    Write {
+        path: PathBuf,
+        source: std::io::Error,
+    },
+    #[error("{path}{}: {message}", line.map(|l| format!(", line {l}")).unwrap_or_default())]
+    Obj {
+        path: PathBuf,
+        line: Option<usize>,
+        message: String,
+    },
+    #[error("{path}, line {line}, column {column}: {message}")]
+    Json {
+        path: PathBuf,
+        line: usize,
+        column: usize,
+        message: String,
+    },
+    #[error("{path}: document version {found} is not supported (this Prism reads version {DOCUMENT_VERSION})")]
+    UnknownVersion { path: PathBuf, found: u64 },
+    #[error("{path}: unknown file type (use .obj or .prism.json)")]
+    UnknownExtension { path: PathBuf },
+}
+
+/// The kinds of file Prism reads and writes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum FileKind {
+    Obj,
+    Document,
+}
+
+impl FileKind {
+    pub fn of(path: &Path) -> Result<FileKind, IoError> {
+        let name = path
+            .file_name()
+            .map(|n| n.to_string_lossy().to_lowercase())
+            .unwrap_or_default();
+        if name.ends_with(".obj") {
+            Ok(FileKind::Obj)
+        } else if name.ends_with(".prism.json") || name.ends_with(".json") {
+            Ok(FileKind::Document)
+        } else {
+            Err(IoError::UnknownExtension { path: path.into() })
+        }
+    }
+}
+
+/// Loads an OBJ or a `.prism.json` as a document (an OBJ gives no pipeline).
+pub fn load(path: &Path) -> Result<(Document, Option<Vec<usize>>), IoError> {
+    match FileKind::of(path)? {
+        FileKind::Obj => {
+            let m = read_obj(path)?;
+            Ok((
+                Document {
+                    mesh: m.mesh,
+                    edge_attrs: m.edge_attrs,
+                    pipeline: None,
+                },
+                Some(m.face_lines),
+            ))
+        }
+        FileKind::Document => Ok((read_document(path)?, None)),
+    }
+}
+
+/// Saves a document as OBJ or `.prism.json` by the file name; returns warnings (e.g. holed
+/// faces triangulated for OBJ).
+pub fn save(path: &Path, doc: &Document) -> Result<Vec<String>, IoError> {
+    match FileKind::of(path)? {
+        FileKind::Obj => write_obj(path, &doc.mesh, &doc.edge_attrs),
+        FileKind::Document => write_document(path, doc).map(|_| Vec::new()),
+    }
+}

@@ -1,0 +1,303 @@
+//! OBJ in and out.
+//!
+//! Reading uses `tobj` (feature `use_f64`, `single_index: false`, no triangulation) with
+//! three guards learned on real files (STACK.md): groups and materials would split the mesh
+//! into models with re-indexed, duplicated vertices, and positions come back in first-use
+//! order, while OpenSubdiv-style `t` tag lines index the file's own vertex order. So the text
+//! handed to tobj has its `o`/`g`/`usemtl`/`mtllib` lines removed, all `v` lines first, and one
+//! point element per vertex in file order before the faces: tobj's positions are then exactly
+//! the file's. A pre-scan checks every `v` and `f` line and records line numbers, so errors
+//! name the line; `t crease 2/1/0 a b s` tags are read into edge attributes.
+//!
+//! Writing keeps polygons; a face with holes, which OBJ cannot hold, is triangulated with
+//! `earcutr` in the face's plane and reported as a warning. Creases are written as `t crease`
+//! lines.
+
+use super::{IoError, write_atomically};
+use crate::edge_attrs::{EdgeAttr, EdgeAttrs, EdgeKey};
+use crate::geometry::{face_normal_raw, unit_or_zero};
+use crate::mesh::PolyMesh;
+use glam::DVec3;
+use std::fmt::Write as _;
+use std::path::Path;
+
+/// A mesh read from OBJ, with the line of every face and vertex for error messages.
+#[derive(Debug, Clone)]
+pub struct ObjModel {
+    pub mesh: PolyMesh,
+    pub edge_attrs: EdgeAttrs,
+    /// 1-based line number of each face.
+    pub face_lines: Vec<usize>,
+    /// 1-based line number of each vertex.
+    pub vertex_lines: Vec<usize>,
+}
+
+/// Reads an OBJ file.
+pub fn read_obj(path: &Path) -> Result<ObjModel, IoError> {
+    let text = std::fs::read_to_string(path).map_err(|source| IoError::Read {
+        path: path.into(),
+        source,
+    })?;
+    read_obj_str(path, &text)
+}
+
+/// Reads OBJ text (`path` is only used in messages).
+pub fn read_obj_str(path: &Path, text: &str) -> Result<ObjModel, IoError> {
+    let err = |line: Option<usize>, message: String| IoError::Obj {
+        path: path.into(),
+        line,
+        message,
+    };
+    let mut vertex_lines = Vec::new();
+    let mut face_lines = Vec::new();
+    let mut v_text = String::new();
+    let mut rest = String::new();
+    let mut tags: Vec<(usize, Vec<String>)> = Vec::new();
+    let mut saw_face = false;
+    let mut interleaved = false;
+    let mut negative = false;
+    for (i, raw) in text.lines().enumerate() {
+        let lineno = i + 1;
+        let line = raw.split('#').next().unwrap_or("").trim();
+        let mut words = line.split_whitespace();
+        match words.next() {
+            Some("v") => {
+                let coords: Vec<&str> = words.collect();
+                if coords.len() < 3 || coords[..3].iter().any(|w| w.parse::<f64>().is_err()) {
+                    return Err(err(Some(lineno), format!("'{line}' is not a vertex 'v x y z'")));
+                }
+                if saw_face {
+                    interleaved = true;
+                }
+                vertex_lines.push(lineno);
+                v_text.push_str(line);
+                v_text.push('\n');
+            }
+            Some("f") => {
+                saw_face = true;
+                let idx: Vec<&str> = words.collect();
+                if idx.len() < 3 {
+                    return Err(err(
+                        Some(lineno),
+                        format!("a face needs at least 3 vertices, '{line}' has {}", idx.len()),
+                    ));
+                }
+                for w in &idx {
+                    let v = w.split('/').next().unwrap_or("");
+                    let k: i64 = v
+                        .parse()
+                        .map_err(|_| err(Some(lineno), format!("'{w}' is not a vertex index")))?;
+                    let n = vertex_lines.len() as i64;
+                    if k == 0 || k > n || k < -n {
+                        return Err(err(
+                            Some(lineno),
+                            format!("vertex index {k} is out of range (the file has {n} vertices so far)"),
+                        ));
+                    }
+                    negative |= k < 0;
+                }
+                face_lines.push(lineno);
+                rest.push_str(line);
+                rest.push('\n');
+            }
+            Some("t") => tags.push((lineno, words.map(str::to_string).collect())),
+            Some("o" | "g" | "usemtl" | "mtllib" | "l" | "p") | None => {}
+            Some(_) => {
+                rest.push_str(line);
+                rest.push('\n');
+            }
+        }
+    }
+    if interleaved && negative {
+        return Err(err(
+            None,
+            "relative (negative) face indices in a file whose vertices come after faces are not supported".into(),
+        ));
+    }
+    let n = vertex_lines.len();
+    let mut buf = v_text;
+    for i in 1..=n {
+        let _ = writeln!(buf, "f {i}");
+    }
+    buf.push_str(&rest);
+    let opts = tobj::LoadOptions {
+        single_index: false,
+        triangulate: false,
+        ignore_points: false,
+        ignore_lines: true,
+    };
+    let (models, _) = tobj::load_obj_buf(&mut buf.as_bytes(), &opts, |_| {
+        Ok(Default::default())
+    })
+    .map_err(|e| err(None, format!("OBJ reader: {e}")))?;
+    let mut mesh = PolyMesh::new();
+    if let Some(model) = models.first() {
+        let m = &model.mesh;
+        if m.positions.len() != 3 * n || models.len() != 1 {
+            return Err(err(None, "the OBJ reader returned an unexpected vertex layout".into()));
+        }
+        mesh.positions = m
+            .positions
+            .chunks_exact(3)
+            .map(|c| DVec3::new(c[0], c[1], c[2]))
+            .collect();
+        let mut k = 0usize;
+        for (i, &ar) in m.face_arities.iter().enumerate() {
+            let ar = ar as usize;
+            if i >= n {
+                mesh.push_polygon(&m.indices[k..k + ar]);
+            }
+            k += ar;
+        }
+    } else {
+        mesh.positions.clear();
+    }
+    let mut edge_attrs = EdgeAttrs::new();
+    for (lineno, words) in tags {
+        if words.first().map(String::as_str) != Some("crease") {
+            continue;
+        }
+        let bad = || err(Some(lineno), "expected 't crease 2/1/0 a b sharpness'".into());
+        let counts = words.get(1).ok_or_else(bad)?;
+        if !counts.starts_with("2/1") {
+            return Err(bad());
+        }
+        let a: u32 = words.get(2).and_then(|w| w.parse().ok()).ok_or_else(bad)?;
+        let b: u32 = words.get(3).and_then(|w| w.parse().ok()).ok_or_else(bad)?;
+        let s: f64 = words.get(4).and_then(|w| w.parse().ok()).ok_or_else(bad)?;
+        if a as usize >= n || b as usize >= n || !s.is_finite() || s < 0.0 {
+            return Err(err(Some(lineno), format!("crease {a}-{b} sharpness {s}: vertex out of range or sharpness not ≥ 0")));
+        }
+        edge_attrs.entry(EdgeKey::new(a, b)).or_insert_with(EdgeAttr::default).crease = s;
+    }
+    Ok(ObjModel {
+        mesh,
+        edge_attrs,
+        face_lines,
+        vertex_lines,
+    })
+}
+
+/// Triangulates face `f` (with holes) in its plane; triangles oriented like the face.
+fn triangulate_face(m: &PolyMesh, f: usize) -> Vec<[u32; 3]> {
+    let n = unit_or_zero(face_normal_raw(m, f));
+    let u = n.any_orthonormal_vector();
+    let w = n.cross(u);
+    let mut coords = Vec::new();
+    let mut ids = Vec::new();
+    let mut holes = Vec::new();
+    for (k, l) in m.face_loops(f).enumerate() {
+        if k > 0 {
+            holes.push(ids.len());
+        }
+        for &v in m.loop_verts(l) {
+            let p = m.positions[v as usize];
+            coords.extend([p.dot(u), p.dot(w)]);
+            ids.push(v);
+        }
+    }
+    let tris = earcutr::earcut(&coords, &holes, 2).unwrap_or_default();
+    tris.chunks_exact(3)
+        .map(|t| {
+            let [a, b, c] = [ids[t[0]], ids[t[1]], ids[t[2]]];
+            let (pa, pb, pc) = (m.positions[a as usize], m.positions[b as usize], m.positions[c as usize]);
+            if (pb - pa).cross(pc - pa).dot(n) < 0.0 { [a, c, b] } else { [a, b, c] }
+        })
+        .collect()
+}
+
+/// The mesh as OBJ text, plus warnings.
+pub fn obj_to_string(m: &PolyMesh, attrs: &EdgeAttrs) -> (String, Vec<String>) {
+    let mut s = String::with_capacity(m.num_vertices() * 40 + m.num_corners() * 8);
+    let mut warnings = Vec::new();
+    s.push_str("# written by Prism\n");
+    for p in &m.positions {
+        let _ = writeln!(s, "v {} {} {}", p.x, p.y, p.z);
+    }
+    let mut holed = 0;
+    for f in 0..m.num_faces() {
+        if m.face_has_holes(f) {
+            holed += 1;
+            for t in triangulate_face(m, f) {
+                let _ = writeln!(s, "f {} {} {}", t[0] + 1, t[1] + 1, t[2] + 1);
+            }
+            continue;
+        }
+        s.push('f');
+        for &v in m.loop_verts(m.face_loops(f).start) {
+            let _ = write!(s, " {}", v + 1);
+        }
+        s.push('\n');
+    }
+    for (k, a) in attrs {
+        if a.crease > 0.0 {
+            let _ = writeln!(s, "t crease 2/1/0 {} {} {}", k.0, k.1, a.crease);
+        }
+    }
+    if holed > 0 {
+        warnings.push(format!(
+            "OBJ cannot hold faces with holes: {holed} face(s) were triangulated (save as .prism.json to keep them)"
+        ));
+    }
+    if attrs.values().any(|a| a.radius.is_some()) {
+        warnings.push("OBJ cannot hold per-edge radii: they were not written (save as .prism.json to keep them)".into());
+    }
+    (s, warnings)
+}
+
+/// Writes OBJ atomically; returns warnings.
+pub fn write_obj(path: &Path, m: &PolyMesh, attrs: &EdgeAttrs) -> Result<Vec<String>, IoError> {
+    let (s, w) = obj_to_string(m, attrs);
+    write_atomically(path, s.as_bytes())?;
+    Ok(w)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::primitives;
+
+    #[test]
+    fn round_trip_keeps_vertex_order_and_polygons() {
+        let m = primitives::tripod();
+        let (s, w) = obj_to_string(&m, &EdgeAttrs::new());
+        assert!(w.is_empty());
+        let back = read_obj_str(Path::new("t.obj"), &s).unwrap();
+        assert_eq!(back.mesh, m);
+    }
+
+    #[test]
+    fn groups_do_not_split_or_reorder_vertices() {
+        let text = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 5 5 5\ng a\nusemtl x\nf 3 4 1\ng b\nf 1 2 3\nt crease 2/1/0 0 2 10\n";
+        let m = read_obj_str(Path::new("t.obj"), text).unwrap();
+        assert_eq!(m.mesh.num_vertices(), 5);
+        assert_eq!(m.mesh.positions[4], DVec3::splat(5.0));
+        assert_eq!(m.mesh.loop_verts(0), &[2, 3, 0]);
+        assert_eq!(m.mesh.loop_verts(1), &[0, 1, 2]);
+        assert_eq!(m.face_lines, vec![8, 10]);
+        assert_eq!(m.edge_attrs[&EdgeKey::new(0, 2)].crease, 10.0);
+    }
+
+    #[test]
+    fn errors_name_the_line() {
+        let e = read_obj_str(Path::new("t.obj"), "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 7\n").unwrap_err();
+        assert!(e.to_string().contains("line 4"), "{e}");
+        let e = read_obj_str(Path::new("t.obj"), "v 0 0\n").unwrap_err();
+        assert!(e.to_string().contains("line 1"), "{e}");
+        let e = read_obj_str(Path::new("t.obj"), "v 0 0 0\nv 1 0 0\nf 1 2\n").unwrap_err();
+        assert!(e.to_string().contains("line 3"), "{e}");
+    }
+
+    #[test]
+    fn holed_faces_are_triangulated_with_a_warning() {
+        let m = primitives::holed_block();
+        let (s, w) = obj_to_string(&m, &EdgeAttrs::new());
+        assert_eq!(w.len(), 1);
+        let back = read_obj_str(Path::new("t.obj"), &s).unwrap();
+        // Two holed faces (8 vertices each, 1 hole) → 8 triangles each; 8 side quads.
+        assert_eq!(back.mesh.num_faces(), 8 + 2 * 8);
+        let t = crate::topology::Topology::build(&back.mesh).unwrap();
+        t.require_closed(&back.mesh).unwrap();
+        assert!((crate::geometry::signed_volume(&back.mesh) - 8.0).abs() < 1e-12);
+    }
+}

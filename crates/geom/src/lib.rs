@@ -1,0 +1,40 @@
+//! Prism's geometry kernels: pure functions over plain data, no GUI or GPU.
+//!
+//! - [`mesh`]: polygon meshes whose faces may be concave and have holes, stored flat;
+//! - [`topology`]: half-edges, twins, rings, and every check of bad input;
+//! - [`rules`] + [`biquadratic`] + [`step`]: PRISM's biquadratic subdivision (seed 000) —
+//!   one split (CGAL's DQQ) with pluggable corner rules: Doo–Sabin, three chamfers, the
+//!   cylindrical family (simple, minimum, combination);
+//! - [`dissolve`]: merging coplanar faces before the cylindrical rules;
+//! - [`scheme`] + [`pipeline`]: steps as values, levels kept per step;
+//! - [`analysis`]: counts, the fillet radius reached;
+//! - [`io`]: OBJ and the `.prism.json` document;
+//! - [`primitives`]: the test solids and the bundled samples.
+//!
+//! The formulas, the papers' equation numbers and the resolved ambiguities are in
+//! `docs/ALGORITHMS.md` (shared) and in each module's doc.
+
+pub mod analysis;
+pub mod biquadratic;
+pub mod dissolve;
+pub mod edge_attrs;
+pub mod error;
+pub mod geometry;
+pub mod io;
+pub mod mesh;
+pub mod pipeline;
+pub mod primitives;
+pub mod rules;
+pub mod scheme;
+pub mod step;
+pub mod topology;
+
+pub use edge_attrs::{EdgeAttr, EdgeAttrs, EdgeKey};
+pub use error::{MeshError, MeshWarning};
+pub use glam::DVec3;
+pub use mesh::PolyMesh;
+pub use pipeline::{Level, Pipeline, PipelineError};
+pub use rules::{CornerRule, ReflexMode};
+pub use scheme::{Scheme, parse_pipeline};
+pub use step::{StepError, StepOptions, StepReport, biquadratic_step};
+pub use topology::Topology;

@@ -1,0 +1,141 @@
+//! A pipeline: a list of steps applied one after the other, every level kept.
+//!
+//! Level 0 is the input; level k is the result of step k−1. Changing step k drops the
+//! levels after k only, so the next [`Pipeline::compute`] recomputes from level k
+//! (seed 000 fig. 7 is such a pipeline: vector-sum α = 0.2, then Doo–Sabin twice). The
+//! vertex-neighbourhood flags of the combination rule flow from one combination step to the
+//! next; any other step in between ends the run, and the next combination step starts a new
+//! one (ALGORITHMS.md §2.8).
+
+use crate::biquadratic::Provenance;
+use crate::edge_attrs::EdgeAttrs;
+use crate::mesh::PolyMesh;
+use crate::rules::CornerRule;
+use crate::scheme::Scheme;
+use crate::step::{StepError, StepOptions, StepReport, biquadratic_step};
+use thiserror::Error;
+
+/// One computed level.
+#[derive(Debug, Clone)]
+pub struct Level {
+    pub mesh: PolyMesh,
+    pub edge_attrs: EdgeAttrs,
+    /// Where the faces came from (none for the input).
+    pub provenance: Option<Provenance>,
+    /// Vertex-neighbourhood flags, after a combination step.
+    pub vertex_neighbourhood: Option<Vec<bool>>,
+    /// The step's report (none for the input).
+    pub report: Option<StepReport>,
+}
+
+#[derive(Debug, Clone, PartialEq, Error)]
+#[error("step {step} ({scheme}): {source}")]
+pub struct PipelineError {
+    /// 1-based step number.
+    pub step: usize,
+    pub scheme: String,
+    #[source]
+    pub source: StepError,
+}
+
+/// Steps and the levels computed so far.
+#[derive(Debug, Clone)]
+pub struct Pipeline {
+    steps: Vec<Scheme>,
+    levels: Vec<Level>,
+    pub options: StepOptions,
+}
+
+impl Pipeline {
+    pub fn new(mesh: PolyMesh, edge_attrs: EdgeAttrs, steps: Vec<Scheme>) -> Self {
+        Pipeline {
+            steps,
+            levels: vec![Level {
+                mesh,
+                edge_attrs,
+                provenance: None,
+                vertex_neighbourhood: None,
+                report: None,
+            }],
+            options: StepOptions::default(),
+        }
+    }
+
+    pub fn steps(&self) -> &[Scheme] {
+        &self.steps
+    }
+    /// Levels computed so far (level 0 is the input).
+    pub fn levels(&self) -> &[Level] {
+        &self.levels
+    }
+    pub fn input(&self) -> &Level {
+        &self.levels[0]
+    }
+
+    /// Replaces step `k` (0-based); levels after it are dropped.
+    pub fn set_step(&mut self, k: usize, scheme: Scheme) {
+        self.steps[k] = scheme;
+        self.levels.truncate(k + 1);
+    }
+    /// Appends a step.
+    pub fn push_step(&mut self, scheme: Scheme) {
+        self.steps.push(scheme);
+    }
+    /// Removes the last step and its level.
+    pub fn pop_step(&mut self) -> Option<Scheme> {
+        let s = self.steps.pop();
+        self.levels.truncate(self.steps.len() + 1);
+        s
+    }
+    /// Replaces the input; every level is dropped.
+    pub fn set_input(&mut self, mesh: PolyMesh, edge_attrs: EdgeAttrs) {
+        self.levels.truncate(1);
+        self.levels[0].mesh = mesh;
+        self.levels[0].edge_attrs = edge_attrs;
+    }
+
+    /// Computes levels up to `upto` (at most the number of steps), calling `each` after every
+    /// new level. Levels already computed are kept.
+    pub fn compute_with(
+        &mut self,
+        upto: usize,
+        mut each: impl FnMut(usize, &Level),
+    ) -> Result<&Level, PipelineError> {
+        let upto = upto.min(self.steps.len());
+        while self.levels.len() <= upto {
+            let k = self.levels.len() - 1;
+            let scheme = self.steps[k];
+            let prev = &self.levels[k];
+            let Scheme::Biquadratic(rule) = scheme;
+            let continuing = k > 0
+                && matches!(rule, CornerRule::Combination { .. })
+                && matches!(self.steps[k - 1], Scheme::Biquadratic(CornerRule::Combination { .. }));
+            let vn = if continuing {
+                prev.vertex_neighbourhood.as_deref()
+            } else {
+                None
+            };
+            let out = biquadratic_step(&prev.mesh, &prev.edge_attrs, &rule, vn, &self.options)
+                .map_err(|source| PipelineError {
+                    step: k + 1,
+                    scheme: scheme.to_string(),
+                    source,
+                })?;
+            self.levels.push(Level {
+                mesh: out.mesh,
+                edge_attrs: out.edge_attrs,
+                provenance: Some(out.provenance),
+                vertex_neighbourhood: out.vertex_neighbourhood,
+                report: Some(out.report),
+            });
+            each(k + 1, self.levels.last().expect("just pushed"));
+        }
+        Ok(&self.levels[upto])
+    }
+
+    /// Computes every step.
+    pub fn compute(&mut self) -> Result<&Level, PipelineError> {
+        let n = self.steps.len();
+        self.compute_with(n, |_, _| {})
+    }
+}

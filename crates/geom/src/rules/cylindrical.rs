@@ -1,0 +1,156 @@
+//! The cylindrical family of seed 000 §3.2 (ALGORITHMS.md §2.5–2.7).
+//!
+//! **Cut width** (eq. 3): to round an edge of bend angle ψ (θ = π − ψ between the faces) to
+//! radius r, each face is cut parallel to the edge at width `x = 2r(1 − sin(θ/2))/sin θ`.
+//! Prism uses only the stable equivalent `x = r·tan(|ψ|/4)/cos(|ψ|/2)` (eq. 3 is 0/0 at a
+//! flat edge and returns exactly 0 for ψ ≤ 1e-8). The absolute value makes concave edges
+//! fill: the points still move into the faces and the EDGE-face bridges the notch.
+//!
+//! **Simple type** (eq. 4): each corner goes to where the two lines drawn inside the face
+//! parallel to its edges at their widths `x₁ = x(E₁)`, `x₂ = x(E₂)` meet. Printed as
+//! `V' = V + (x₂/sin φ)u₁ + (x₁/sin φ)u₂` (the crossed indices are right); implemented in the
+//! split form `V' = V + x̄(m₁ + m₂)/(1 + c) + δ(m₁ − m₂)/(1 − c)` with x̄ = (x₁+x₂)/2,
+//! δ = (x₁−x₂)/2, whose first term is finite for every φ ∈ (0, 2π) and whose second is
+//! singular only at a straight corner with unequal widths: there the along-edge shift is
+//! capped at ¼ of the shorter adjacent edge and the corner is counted.
+//!
+//! **Minimum type** (eq. 5): `V' = V + u₁·min(x₂/sin φ, ¼|e₁|) + u₂·min(x₁/sin φ, ¼|e₂|)`;
+//! at reflex corners the magnitude is capped and the sign kept. It never flips in the
+//! paper's tests but does not converge to r (it stalls near 0.2 % of r, §2.7).
+
+use super::{RuleError, RuleInput, RuleReport, corner_frame};
+use glam::DVec3;
+
+/// Straight-corner threshold on 1 − c (c = m₁·m₂ = −cos φ) for the δ term (§2.6).
+const STRAIGHT_CORNER: f64 = 1e-12;
+
+/// Below this cos(ψ/2) an edge is a knife edge (faces folded onto each other): the cut
+/// width would exceed 1e12 r.
+const KNIFE_EDGE_COS: f64 = 1e-12;
+
+/// Cut width of an edge of bend angle `psi` for radius `r`: `r·tan(|ψ|/4)/cos(|ψ|/2)`.
+/// Infinite for a knife edge (ψ = π).
+pub fn cut_width(r: f64, psi: f64) -> f64 {
+    let a = psi.abs();
+    let c = (a / 2.0).cos();
+    if c < KNIFE_EDGE_COS {
+        return f64::INFINITY;
+    }
+    r * (a / 4.0).tan() / c
+}
+
+/// Whether an edge of bend angle `psi` is flat under tolerance `tol` and must be dissolved
+/// before a cylindrical-family step.
+pub fn dissolve_needed(psi: f64, tol: f64) -> bool {
+    psi.abs() < tol
+}
+
+fn widths(input: &RuleInput, c: usize) -> (f64, f64) {
+    let t = input.topo;
+    let x1 = input.cut_widths[t.corner_edge[c] as usize];
+    let x2 = input.cut_widths[t.corner_edge[t.prev[c] as usize] as usize];
+    (x1, x2)
+}
+
+pub(super) fn simple(input: &RuleInput, c: usize, report: &mut RuleReport) -> Result<DVec3, RuleError> {
+    let fr = corner_frame(input, c)?;
+    let (x1, x2) = widths(input, c);
+    if 1.0 + fr.c < STRAIGHT_CORNER {
+        return Err(RuleError::NeedleCorner {
+            face: input.topo.corner_face[c],
+            vertex: input.mesh.corner_verts[c],
+        });
+    }
+    let xbar = 0.5 * (x1 + x2);
+    let delta = 0.5 * (x1 - x2);
+    let mut p = fr.v + xbar * (fr.m1 + fr.m2) / (1.0 + fr.c);
+    if delta == 0.0 {
+        return Ok(p);
+    }
+    if 1.0 - fr.c < STRAIGHT_CORNER {
+        // Straight corner with unequal widths: the two offset lines are parallel. Shift along
+        // the edge, in the direction eq. (4) gives, capped at ¼ of the shorter edge.
+        let cap = 0.25 * fr.e1.length().min(fr.e2.length());
+        let s = fr.sin_phi.abs().max(f64::MIN_POSITIVE);
+        let shift = ((x2 - x1).abs() / s).min(cap);
+        let sign = (x2 - x1).signum() * if fr.sin_phi < 0.0 { -1.0 } else { 1.0 };
+        p += sign * shift * fr.u1;
+        report.guarded_corners += 1;
+        return Ok(p);
+    }
+    p += delta * (fr.m1 - fr.m2) / (1.0 - fr.c);
+    Ok(p)
+}
+
+pub(super) fn minimum(input: &RuleInput, c: usize) -> Result<DVec3, RuleError> {
+    let fr = corner_frame(input, c)?;
+    let (x1, x2) = widths(input, c);
+    let cap1 = 0.25 * fr.e1.length();
+    let cap2 = 0.25 * fr.e2.length();
+    let capped = |x: f64, cap: f64| {
+        if fr.sin_phi == 0.0 {
+            return if x == 0.0 { 0.0 } else { cap };
+        }
+        let a = x / fr.sin_phi;
+        a.signum() * a.abs().min(cap)
+    };
+    Ok(fr.v + fr.u1 * capped(x2, cap1) + fr.u2 * capped(x1, cap2))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::mesh::PolyMesh;
+    use crate::rules::{CornerRule, corner_points};
+    use crate::topology::Topology;
+    use std::f64::consts::{FRAC_PI_2, PI};
+
+    #[test]
+    fn stable_cut_width_equals_eq3() {
+        for k in 1..100 {
+            let theta = 0.05 + (PI - 0.1) * k as f64 / 100.0;
+            let r = 0.7;
+            let eq3 = 2.0 * r * (1.0 - (theta / 2.0).sin()) / theta.sin();
+            let x = cut_width(r, PI - theta);
+            assert!(((x - eq3) / eq3).abs() < 1e-12, "θ={theta}: {x} vs {eq3}");
+        }
+        assert_eq!(cut_width(1.0, 0.0), 0.0);
+        // 90° edge: x = r(√2 − 1)·√2 = (2 − √2) r.
+        assert!((cut_width(1.0, FRAC_PI_2) - (2.0 - 2f64.sqrt())).abs() < 1e-15);
+        // Concave 90° edge: the same width (θ = 270°: +0.586 r).
+        assert!((cut_width(1.0, -FRAC_PI_2) - 0.585_786_437_626_905).abs() < 1e-12);
+        assert!(cut_width(1.0, PI).is_infinite());
+    }
+
+    /// A unit square face with per-edge widths, corner 0 at the origin.
+    fn square(widths: [f64; 4], rule: CornerRule) -> Vec<DVec3> {
+        let p = vec![DVec3::ZERO, DVec3::X, DVec3::new(1.0, 1.0, 0.0), DVec3::Y];
+        let m = PolyMesh::from_polygons(p, &[vec![0, 1, 2, 3]]);
+        let t = Topology::build(&m).unwrap();
+        // Edge ids follow corner order on an open single face.
+        let input = RuleInput {
+            mesh: &m,
+            topo: &t,
+            normals: &[DVec3::Z],
+            cut_widths: &widths,
+            vertex_neighbourhood: &[],
+        };
+        corner_points(&rule, &input).unwrap().0
+    }
+
+    #[test]
+    fn simple_type_meets_the_offset_lines() {
+        // Edge 0 (bottom, y=0) width 0.1, edge 3 (left, x=0) width 0.3.
+        let p = square([0.1, 0.2, 0.05, 0.3], CornerRule::Cylindrical { r: 1.0 });
+        assert!((p[0] - DVec3::new(0.3, 0.1, 0.0)).length() < 1e-15, "{}", p[0]);
+        assert!((p[1] - DVec3::new(0.8, 0.1, 0.0)).length() < 1e-15, "{}", p[1]);
+        assert!((p[2] - DVec3::new(0.8, 0.95, 0.0)).length() < 1e-15, "{}", p[2]);
+    }
+
+    #[test]
+    fn minimum_type_caps_at_a_quarter_edge() {
+        let p = square([0.1, 0.2, 0.05, 0.3], CornerRule::Minimum { r: 1.0 });
+        // Corner 0: shift along u1 (x) is x2 = 0.3 → capped at 0.25; along u2 (y) 0.1.
+        assert!((p[0] - DVec3::new(0.25, 0.1, 0.0)).length() < 1e-15, "{}", p[0]);
+    }
+}

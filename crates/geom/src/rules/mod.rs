@@ -1,0 +1,248 @@
+//! PRISM corner rules: where the new point of each face corner goes (ALGORITHMS.md §2).
+//!
+//! PRISM's biquadratic step is CGAL's DQQ (dual quad quadrisection) with a *corner mask*:
+//! every rule here maps one face corner to one new point, and [`crate::biquadratic`] builds the
+//! FACE-, EDGE- and VERTEX-faces from those points, the same for every rule.
+//!
+//! | rule | formula | paper |
+//! | --- | --- | --- |
+//! | [`CornerRule::DooSabin`] | `V_i' = Σ_j W_ij V_j`, `W_ii = (n+5)/4n`, `W_ij = (3 + 2cos(2π(i−j)/n))/4n` | seed 000 eq. (1) |
+//! | [`CornerRule::AngleBisector`] | `V' = V + l·unit(m₁ + m₂)` | §3.1(1), fig. 3 |
+//! | [`CornerRule::CutWidth`] | `V' = V + d(m₁ + m₂)/(1 + c)` | §3.1(2), fig. 4 |
+//! | [`CornerRule::VectorSum`] | `V' = V + α(V₊ − V) + α(V₋ − V)` | eq. (2) |
+//! | [`CornerRule::Cylindrical`] | two-width corner at the cut widths `x = r·tan(ψ/4)/cos(ψ/2)` | eq. (3), (4) |
+//! | [`CornerRule::Minimum`] | eq. (4) with each displacement capped at ¼ of its edge | eq. (5) |
+//! | [`CornerRule::Combination`] | Doo–Sabin on vertex-neighbourhood faces, cylindrical elsewhere | §3.2(3) |
+//!
+//! Notation (§0.3): at corner V of face f with unit normal n, `u₁ = unit(V₊ − V)`,
+//! `u₂ = unit(V₋ − V)`, `m₁ = unit(n × u₁)` and `m₂ = unit(u₂ × n)` are the inward normals of
+//! the two edges, `c = m₁·m₂ = −cos φ`, `sin φ = n·(u₁ × u₂)` (negative at reflex corners).
+
+mod chamfer;
+mod cylindrical;
+mod doo_sabin;
+
+pub use cylindrical::{cut_width, dissolve_needed};
+
+use crate::mesh::PolyMesh;
+use crate::topology::Topology;
+use glam::DVec3;
+use thiserror::Error;
+
+/// What the vector-sum rule does at a reflex corner (ALGORITHMS.md §2.4).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, serde::Serialize, serde::Deserialize)]
+pub enum ReflexMode {
+    /// Eq. (2) as printed: the displacement points out of the face at reflex corners.
+    #[default]
+    AsPrinted,
+    /// The paper's remark read as an option: `V' = V − α(e₁ + e₂)` when `sin φ < 0`.
+    Inward,
+}
+
+/// Where each new corner point of a biquadratic step goes.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum CornerRule {
+    DooSabin,
+    AngleBisector { l: f64 },
+    CutWidth { d: f64 },
+    VectorSum { alpha: f64, reflex: ReflexMode },
+    Cylindrical { r: f64 },
+    Minimum { r: f64 },
+    Combination { r: f64 },
+}
+
+/// A parameter outside its admissible range.
+#[derive(Debug, Clone, PartialEq, Error)]
+#[error("{name} = {value} is out of range: {expected}")]
+pub struct ParamError {
+    pub name: &'static str,
+    pub value: f64,
+    pub expected: &'static str,
+}
+
+impl CornerRule {
+    /// Checks the parameter: lengths finite and > 0, 0 < α < ½ (α = ½ collapses a square).
+    pub fn validate(&self) -> Result<(), ParamError> {
+        let positive = |name, value: f64| {
+            if value.is_finite() && value > 0.0 {
+                Ok(())
+            } else {
+                Err(ParamError {
+                    name,
+                    value,
+                    expected: "a finite length > 0",
+                })
+            }
+        };
+        match *self {
+            CornerRule::DooSabin => Ok(()),
+            CornerRule::AngleBisector { l } => positive("l", l),
+            CornerRule::CutWidth { d } => positive("d", d),
+            CornerRule::VectorSum { alpha, .. } => {
+                if alpha.is_finite() && alpha > 0.0 && alpha < 0.5 {
+                    Ok(())
+                } else {
+                    Err(ParamError {
+                        name: "alpha",
+                        value: alpha,
+                        expected: "0 < alpha < 0.5 (0.25 or less recommended)",
+                    })
+                }
+            }
+            CornerRule::Cylindrical { r } | CornerRule::Minimum { r } | CornerRule::Combination { r } => {
+                positive("r", r)
+            }
+        }
+    }
+
+    /// Whether the rule needs per-edge cut widths (and so the flat-edge dissolve first).
+    pub fn is_cylindrical_family(&self) -> bool {
+        matches!(
+            self,
+            CornerRule::Cylindrical { .. } | CornerRule::Minimum { .. } | CornerRule::Combination { .. }
+        )
+    }
+
+    /// The default radius of the cylindrical family.
+    pub fn radius(&self) -> Option<f64> {
+        match *self {
+            CornerRule::Cylindrical { r } | CornerRule::Minimum { r } | CornerRule::Combination { r } => {
+                Some(r)
+            }
+            _ => None,
+        }
+    }
+}
+
+/// Why corner points could not be placed.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum RuleError {
+    #[error("face {face} has a hole: Doo–Sabin is not defined on faces with holes (seed 000 §2.1); use a chamfer or cylindrical rule, or split the face")]
+    HoledFace { face: u32 },
+    #[error("face {face} has a zero-angle (needle) corner at vertex {vertex}: its bisector is undefined")]
+    NeedleCorner { face: u32, vertex: u32 },
+    #[error("face {face} has a zero-length edge at vertex {vertex}")]
+    ZeroLengthEdge { face: u32, vertex: u32 },
+    #[error("face {face} has no area (its normal is undefined)")]
+    ZeroAreaFace { face: u32 },
+    #[error("edge {a}-{b} is a knife edge (bend angle {bend_deg:.3}°): the radius needs an infinite cut width there")]
+    KnifeEdge { a: u32, b: u32, bend_deg: f64 },
+    #[error("the new point of face {face} at vertex {vertex} is not finite")]
+    NonFinite { face: u32, vertex: u32 },
+}
+
+/// What a rule needs besides the mesh.
+pub struct RuleInput<'a> {
+    pub mesh: &'a PolyMesh,
+    pub topo: &'a Topology,
+    /// Unit face normals.
+    pub normals: &'a [DVec3],
+    /// Per-edge cut width for the cylindrical family (empty otherwise).
+    pub cut_widths: &'a [f64],
+    /// Per-face vertex-neighbourhood flag for the combination rule.
+    pub vertex_neighbourhood: &'a [bool],
+}
+
+/// Counters reported by a rule.
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct RuleReport {
+    /// Straight corners with unequal cut widths whose along-edge shift was capped (§2.6).
+    pub guarded_corners: usize,
+}
+
+/// A corner's frame (ALGORITHMS.md §0.3).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct CornerFrame {
+    pub v: DVec3,
+    pub e1: DVec3,
+    pub e2: DVec3,
+    pub u1: DVec3,
+    pub u2: DVec3,
+    pub m1: DVec3,
+    pub m2: DVec3,
+    /// m₁·m₂ = −cos φ.
+    pub c: f64,
+    /// Signed sin φ: > 0 convex, < 0 reflex.
+    pub sin_phi: f64,
+}
+
+pub(crate) fn corner_frame(input: &RuleInput, corner: usize) -> Result<CornerFrame, RuleError> {
+    let m = input.mesh;
+    let t = input.topo;
+    let f = t.corner_face[corner] as usize;
+    let v = m.positions[m.corner_verts[corner] as usize];
+    let vp = m.positions[m.corner_verts[t.next[corner] as usize] as usize];
+    let vm = m.positions[m.corner_verts[t.prev[corner] as usize] as usize];
+    let n = input.normals[f];
+    let (e1, e2) = (vp - v, vm - v);
+    let (l1, l2) = (e1.length(), e2.length());
+    if l1 == 0.0 || l2 == 0.0 {
+        return Err(RuleError::ZeroLengthEdge {
+            face: f as u32,
+            vertex: m.corner_verts[corner],
+        });
+    }
+    if n == DVec3::ZERO {
+        return Err(RuleError::ZeroAreaFace { face: f as u32 });
+    }
+    let (u1, u2) = (e1 / l1, e2 / l2);
+    let m1 = crate::geometry::unit_or_zero(n.cross(u1));
+    let m2 = crate::geometry::unit_or_zero(u2.cross(n));
+    Ok(CornerFrame {
+        v,
+        e1,
+        e2,
+        u1,
+        u2,
+        m1,
+        m2,
+        c: m1.dot(m2),
+        sin_phi: n.dot(u1.cross(u2)),
+    })
+}
+
+/// The new point of every corner of `input.mesh` under `rule`, indexed by corner.
+pub fn corner_points(
+    rule: &CornerRule,
+    input: &RuleInput,
+) -> Result<(Vec<DVec3>, RuleReport), RuleError> {
+    let m = input.mesh;
+    let mut pts = vec![DVec3::ZERO; m.num_corners()];
+    let mut report = RuleReport::default();
+    for f in 0..m.num_faces() {
+        let use_doo_sabin = match rule {
+            CornerRule::DooSabin => true,
+            CornerRule::Combination { .. } => input.vertex_neighbourhood.get(f).copied().unwrap_or(false),
+            _ => false,
+        };
+        if use_doo_sabin {
+            if m.face_has_holes(f) {
+                return Err(RuleError::HoledFace { face: f as u32 });
+            }
+            let l = m.face_loops(f).start;
+            doo_sabin::loop_points(m, l, &mut pts);
+            continue;
+        }
+        for c in m.face_corners(f) {
+            pts[c] = match *rule {
+                CornerRule::AngleBisector { l } => chamfer::angle_bisector(input, c, l)?,
+                CornerRule::CutWidth { d } => chamfer::cut_width(input, c, d)?,
+                CornerRule::VectorSum { alpha, reflex } => chamfer::vector_sum(input, c, alpha, reflex)?,
+                CornerRule::Cylindrical { .. } | CornerRule::Combination { .. } => {
+                    cylindrical::simple(input, c, &mut report)?
+                }
+                CornerRule::Minimum { .. } => cylindrical::minimum(input, c)?,
+                CornerRule::DooSabin => unreachable!("handled above"),
+            };
+        }
+    }
+    for (c, p) in pts.iter().enumerate() {
+        if !p.is_finite() {
+            return Err(RuleError::NonFinite {
+                face: input.topo.corner_face[c],
+                vertex: m.corner_verts[c],
+            });
+        }
+    }
+    Ok((pts, report))
+}

@@ -1,0 +1,413 @@
+//! Derived topology: half-edges with twins, edges, vertex rings.
+//!
+//! Half-edge `c` is the directed edge from corner `c`'s vertex to the next corner of its
+//! loop, so half-edges and corners share one index. [`Topology::build`] is the one place
+//! that checks a mesh: indices in range, finite coordinates, loops of at least three
+//! distinct vertices, no vertex twice in a face, no edge used by more than two faces,
+//! consistent orientation. Open meshes are accepted here (a boundary half-edge has no
+//! twin); [`Topology::require_closed`] refuses them for the schemes that need a closed
+//! solid, and checks that every vertex ring is a single closed fan.
+//!
+//! Cost: O(corners · valence); twins are found through a per-vertex list of outgoing
+//! half-edges (CSR), not a hash map.
+
+use crate::error::{MeshError, MeshWarning};
+use crate::mesh::PolyMesh;
+
+/// Marks a missing index (no twin, unused vertex).
+pub const NONE: u32 = u32::MAX;
+
+/// Half-edge topology of a [`PolyMesh`].
+#[derive(Debug, Clone, Default)]
+pub struct Topology {
+    /// Face of each corner.
+    pub corner_face: Vec<u32>,
+    /// Next corner in the same loop.
+    pub next: Vec<u32>,
+    /// Previous corner in the same loop.
+    pub prev: Vec<u32>,
+    /// The opposite half-edge, or [`NONE`] on a boundary.
+    pub twin: Vec<u32>,
+    /// Edge of each half-edge.
+    pub corner_edge: Vec<u32>,
+    /// One half-edge of each edge: the one with the smaller corner index.
+    pub edge_corner: Vec<u32>,
+    /// One outgoing half-edge per vertex, or [`NONE`] for an unused vertex.
+    pub vert_corner: Vec<u32>,
+    /// Problems that do not stop the work.
+    pub warnings: Vec<MeshWarning>,
+}
+
+impl Topology {
+    /// Builds and checks the topology of `mesh`.
+    pub fn build(mesh: &PolyMesh) -> Result<Topology, MeshError> {
+        let nv = mesh.num_vertices();
+        let nc = mesh.num_corners();
+        let nf = mesh.num_faces();
+        if nv >= NONE as usize || nc >= NONE as usize / 2 {
+            return Err(MeshError::TooLarge {
+                what: "vertex or corner count",
+            });
+        }
+        if nf == 0 {
+            return Err(MeshError::NoFaces);
+        }
+        for (i, p) in mesh.positions.iter().enumerate() {
+            if !p.is_finite() {
+                return Err(MeshError::NonFinite {
+                    vertex: i as u32,
+                    x: p.x,
+                    y: p.y,
+                    z: p.z,
+                });
+            }
+        }
+
+        let mut corner_face = vec![0u32; nc];
+        let mut next = vec![0u32; nc];
+        let mut prev = vec![0u32; nc];
+        // Per-vertex stamp of the last face that used it: detects a vertex repeated in a face.
+        let mut stamp = vec![NONE; nv];
+        for f in 0..nf {
+            let loops = mesh.face_loops(f);
+            if loops.is_empty() {
+                return Err(MeshError::EmptyFace { face: f as u32 });
+            }
+            for l in loops {
+                let r = mesh.loop_corners(l);
+                let n = r.len();
+                for c in r.clone() {
+                    let v = mesh.corner_verts[c];
+                    if v as usize >= nv {
+                        return Err(MeshError::IndexOutOfRange {
+                            face: f as u32,
+                            index: v,
+                            count: nv as u32,
+                        });
+                    }
+                }
+                if n < 3 {
+                    let mut d: Vec<u32> = mesh.corner_verts[r.clone()].to_vec();
+                    d.sort_unstable();
+                    d.dedup();
+                    return Err(MeshError::DegenerateLoop {
+                        face: f as u32,
+                        lp: (l - mesh.face_loops(f).start) as u32,
+                        distinct: d.len() as u32,
+                    });
+                }
+                for (k, c) in r.clone().enumerate() {
+                    let v = mesh.corner_verts[c] as usize;
+                    if stamp[v] == f as u32 {
+                        // Distinguish "a loop with too few distinct vertices" from a repeat.
+                        let mut d: Vec<u32> = mesh.corner_verts[r.clone()].to_vec();
+                        d.sort_unstable();
+                        d.dedup();
+                        if d.len() < 3 {
+                            return Err(MeshError::DegenerateLoop {
+                                face: f as u32,
+                                lp: (l - mesh.face_loops(f).start) as u32,
+                                distinct: d.len() as u32,
+                            });
+                        }
+                        return Err(MeshError::RepeatedVertex {
+                            face: f as u32,
+                            vertex: v as u32,
+                        });
+                    }
+                    stamp[v] = f as u32;
+                    corner_face[c] = f as u32;
+                    next[c] = if k + 1 == n { r.start } else { c + 1 } as u32;
+                    prev[c] = if k == 0 { r.end - 1 } else { c - 1 } as u32;
+                }
+            }
+        }
+
+        // Outgoing half-edges per vertex (CSR).
+        let mut out_start = vec![0u32; nv + 1];
+        for &v in &mesh.corner_verts {
+            out_start[v as usize + 1] += 1;
+        }
+        for i in 0..nv {
+            out_start[i + 1] += out_start[i];
+        }
+        let mut fill = out_start.clone();
+        let mut out = vec![0u32; nc];
+        for (c, &v) in mesh.corner_verts.iter().enumerate() {
+            out[fill[v as usize] as usize] = c as u32;
+            fill[v as usize] += 1;
+        }
+
+        let mut twin = vec![NONE; nc];
+        let cv = &mesh.corner_verts;
+        for c in 0..nc {
+            let a = cv[c];
+            let b = cv[next[c] as usize];
+            // Same direction used twice?
+            for &d in &out[out_start[a as usize] as usize..out_start[a as usize + 1] as usize] {
+                if d as usize != c && cv[next[d as usize] as usize] == b {
+                    let mut faces = vec![corner_face[c], corner_face[d as usize]];
+                    let opposite = out
+                        [out_start[b as usize] as usize..out_start[b as usize + 1] as usize]
+                        .iter()
+                        .filter(|&&e| cv[next[e as usize] as usize] == a)
+                        .map(|&e| corner_face[e as usize])
+                        .collect::<Vec<_>>();
+                    if opposite.is_empty() {
+                        let (f1, f2) = (faces[0].min(faces[1]), faces[0].max(faces[1]));
+                        return Err(MeshError::InconsistentOrientation { a, b, f1, f2 });
+                    }
+                    faces.extend(opposite);
+                    faces.sort_unstable();
+                    faces.dedup();
+                    return Err(MeshError::NonManifoldEdge {
+                        a: a.min(b),
+                        b: a.max(b),
+                        faces,
+                    });
+                }
+            }
+            let mut found = NONE;
+            let mut count = 0;
+            for &d in &out[out_start[b as usize] as usize..out_start[b as usize + 1] as usize] {
+                if cv[next[d as usize] as usize] == a {
+                    found = d;
+                    count += 1;
+                }
+            }
+            if count > 1 {
+                let mut faces: Vec<u32> = out
+                    [out_start[b as usize] as usize..out_start[b as usize + 1] as usize]
+                    .iter()
+                    .filter(|&&e| cv[next[e as usize] as usize] == a)
+                    .map(|&e| corner_face[e as usize])
+                    .collect();
+                faces.push(corner_face[c]);
+                faces.sort_unstable();
+                faces.dedup();
+                return Err(MeshError::NonManifoldEdge {
+                    a: a.min(b),
+                    b: a.max(b),
+                    faces,
+                });
+            }
+            twin[c] = found;
+        }
+
+        let mut corner_edge = vec![NONE; nc];
+        let mut edge_corner = Vec::with_capacity(nc / 2 + 1);
+        for c in 0..nc {
+            let t = twin[c];
+            if t == NONE || (c as u32) < t {
+                let e = edge_corner.len() as u32;
+                edge_corner.push(c as u32);
+                corner_edge[c] = e;
+                if t != NONE {
+                    corner_edge[t as usize] = e;
+                }
+            }
+        }
+
+        let mut vert_corner = vec![NONE; nv];
+        let mut unused = 0u32;
+        let mut first_unused = NONE;
+        for v in 0..nv {
+            let s = out_start[v] as usize;
+            if s < out_start[v + 1] as usize {
+                vert_corner[v] = out[s];
+            } else {
+                unused += 1;
+                if first_unused == NONE {
+                    first_unused = v as u32;
+                }
+            }
+        }
+        let mut warnings = Vec::new();
+        if unused > 0 {
+            warnings.push(MeshWarning::UnusedVertices {
+                count: unused,
+                first: first_unused,
+            });
+        }
+
+        Ok(Topology {
+            corner_face,
+            next,
+            prev,
+            twin,
+            corner_edge,
+            edge_corner,
+            vert_corner,
+            warnings,
+        })
+    }
+
+    pub fn num_edges(&self) -> usize {
+        self.edge_corner.len()
+    }
+
+    /// The next half-edge around the vertex of half-edge `c`, turning so that the faces are
+    /// visited in the order of ALGORITHMS.md §1.2 (VERTEX-face order): from `c` (v→x) go to
+    /// the half-edge that leaves v along the edge preceding `c` in its loop. [`NONE`] at a
+    /// boundary.
+    #[inline]
+    pub fn ring_next(&self, c: u32) -> u32 {
+        self.twin[self.prev[c as usize] as usize]
+    }
+
+    /// Refuses an open mesh (naming a boundary edge) and a vertex whose faces do not form a
+    /// single closed fan.
+    pub fn require_closed(&self, mesh: &PolyMesh) -> Result<(), MeshError> {
+        for (c, &t) in self.twin.iter().enumerate() {
+            if t == NONE {
+                return Err(MeshError::BoundaryEdge {
+                    a: mesh.corner_verts[c],
+                    b: mesh.corner_verts[self.next[c] as usize],
+                    face: self.corner_face[c],
+                });
+            }
+        }
+        let mut valence = vec![0u32; mesh.num_vertices()];
+        for &v in &mesh.corner_verts {
+            valence[v as usize] += 1;
+        }
+        for (v, &start) in self.vert_corner.iter().enumerate() {
+            if start == NONE {
+                continue;
+            }
+            let mut k = 0u32;
+            let mut c = start;
+            loop {
+                k += 1;
+                c = self.ring_next(c);
+                if c == start || k > valence[v] {
+                    break;
+                }
+            }
+            if k != valence[v] {
+                return Err(MeshError::NonManifoldVertex {
+                    vertex: v as u32,
+                    fans: valence[v].div_ceil(k.max(1)).max(2),
+                });
+            }
+        }
+        Ok(())
+    }
+
+    /// The two vertices of edge `e` as (a, b) in the direction of its first half-edge.
+    pub fn edge_verts(&self, mesh: &PolyMesh, e: usize) -> (u32, u32) {
+        let c = self.edge_corner[e] as usize;
+        (
+            mesh.corner_verts[c],
+            mesh.corner_verts[self.next[c] as usize],
+        )
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use glam::DVec3;
+
+    fn cube() -> PolyMesh {
+        crate::primitives::cuboid(DVec3::ZERO, DVec3::ONE)
+    }
+
+    #[test]
+    fn cube_topology() {
+        let m = cube();
+        let t = Topology::build(&m).unwrap();
+        assert_eq!(t.num_edges(), 12);
+        t.require_closed(&m).unwrap();
+        for c in 0..m.num_corners() {
+            assert_eq!(t.twin[t.twin[c] as usize] as usize, c);
+        }
+    }
+
+    #[test]
+    fn errors_name_the_element() {
+        let mut m = cube();
+        m.positions[3].y = f64::NAN;
+        assert!(matches!(
+            Topology::build(&m),
+            Err(MeshError::NonFinite { vertex: 3, .. })
+        ));
+
+        let mut m = cube();
+        m.corner_verts[5] = 99;
+        assert!(matches!(
+            Topology::build(&m),
+            Err(MeshError::IndexOutOfRange { index: 99, .. })
+        ));
+
+        // Flip one face: inconsistent orientation.
+        let mut m = cube();
+        m.corner_verts[0..4].reverse();
+        assert!(matches!(
+            Topology::build(&m),
+            Err(MeshError::InconsistentOrientation { .. })
+        ));
+
+        // Remove one face: open.
+        let mut m = cube();
+        m.corner_verts.truncate(20);
+        m.loop_starts.truncate(6);
+        m.face_starts.truncate(6);
+        let t = Topology::build(&m).unwrap();
+        assert!(matches!(
+            t.require_closed(&m),
+            Err(MeshError::BoundaryEdge { .. })
+        ));
+
+        // Repeated vertex, degenerate loop.
+        let m = PolyMesh::from_polygons(
+            vec![DVec3::ZERO, DVec3::X, DVec3::Y, DVec3::Z],
+            &[vec![0, 1, 2, 1]],
+        );
+        assert!(matches!(
+            Topology::build(&m),
+            Err(MeshError::RepeatedVertex { face: 0, vertex: 1 })
+        ));
+        let m = PolyMesh::from_polygons(vec![DVec3::ZERO, DVec3::X], &[vec![0, 1]]);
+        assert!(matches!(
+            Topology::build(&m),
+            Err(MeshError::DegenerateLoop { face: 0, .. })
+        ));
+    }
+
+    #[test]
+    fn non_manifold_edge_and_unused_vertex() {
+        // Three triangles on one edge 0-1.
+        let p = vec![DVec3::ZERO, DVec3::X, DVec3::Y, DVec3::Z, -DVec3::Y, DVec3::ONE];
+        let m = PolyMesh::from_polygons(p, &[vec![0, 1, 2], vec![1, 0, 3], vec![1, 0, 4]]);
+        match Topology::build(&m) {
+            Err(MeshError::NonManifoldEdge { a: 0, b: 1, faces }) => assert_eq!(faces.len(), 3),
+            other => panic!("{other:?}"),
+        }
+        let mut m = cube();
+        m.positions.push(DVec3::splat(5.0));
+        let t = Topology::build(&m).unwrap();
+        assert_eq!(
+            t.warnings,
+            vec![MeshWarning::UnusedVertices { count: 1, first: 8 }]
+        );
+    }
+
+    #[test]
+    fn pinched_vertex_is_refused() {
+        // Two tetrahedra sharing one vertex (0).
+        let mut p = vec![DVec3::ZERO, DVec3::X, DVec3::Y, DVec3::Z];
+        p.extend([-DVec3::X, -DVec3::Y, -DVec3::Z]);
+        let tet = |a: u32, b: u32, c: u32, d: u32| {
+            vec![vec![a, c, b], vec![a, b, d], vec![a, d, c], vec![b, c, d]]
+        };
+        let mut faces = tet(0, 1, 2, 3);
+        faces.extend(tet(0, 4, 6, 5));
+        let m = PolyMesh::from_polygons(p, &faces);
+        let t = Topology::build(&m).unwrap();
+        assert!(matches!(
+            t.require_closed(&m),
+            Err(MeshError::NonManifoldVertex { vertex: 0, .. })
+        ));
+    }
+}
