@@ -1,1 +1,26 @@
-fn main(){}
+//! `prism`: the desktop modeller (GUI by default, coming with the viewport) and its headless
+//! subcommands. Exit codes: 0 success, 1 bad input (unreadable file, bad mesh, a step that
+//! fails), 2 bad usage (unknown flag, bad scheme or parameter).
+
+mod cli;
+
+use clap::Parser;
+use std::process::ExitCode;
+
+fn main() -> ExitCode {
+    let args = match cli::Cli::try_parse() {
+        Ok(a) => a,
+        Err(e) => {
+            let code = if e.use_stderr() { 2 } else { 0 };
+            let _ = e.print();
+            return ExitCode::from(code);
+        }
+    };
+    match cli::run(args) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("error: {}", e.message);
+            ExitCode::from(e.code)
+        }
+    }
+}

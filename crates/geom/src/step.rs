@@ -76,6 +76,8 @@ pub struct StepReport {
     pub dissolved_edges: usize,
     /// Straight corners whose along-edge shift was capped (simple cylindrical type).
     pub guarded_corners: usize,
+    /// Corners with a zero-length edge that stayed at their vertex.
+    pub collapsed_corners: usize,
     /// Signed volume of the result (negative: inside out).
     pub volume: f64,
     /// Wall time of the step in milliseconds.
@@ -196,6 +198,7 @@ pub fn biquadratic_step(
         degenerate,
         dissolved_edges: dissolved.as_ref().map_or(0, |d| d.dissolved_edges),
         guarded_corners: rule_report.guarded_corners,
+        collapsed_corners: rule_report.collapsed_corners,
         volume: signed_volume(&out),
         millis: start.elapsed().as_secs_f64() * 1e3,
     };

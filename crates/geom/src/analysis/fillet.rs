@@ -21,7 +21,7 @@ pub enum FilletError {
     NoSuchEdge { a: u32, b: u32 },
     #[error("edge {a}-{b} is flat: it has no fillet")]
     FlatEdge { a: u32, b: u32 },
-    #[error("the section through edge {a}-{b} has only {points} fillet point(s); a circle needs 3")]
+    #[error("the section through edge {a}-{b} has only {points} fillet point(s); at least 2 are needed")]
     TooFewPoints { a: u32, b: u32, points: usize },
     #[error(transparent)]
     Mesh(#[from] crate::error::MeshError),
@@ -32,7 +32,8 @@ pub enum FilletError {
 pub struct FilletMeasure {
     /// Section points used.
     pub points: usize,
-    /// Radius of the best-fitting circle.
+    /// Radius of the best-fitting circle (with only 2 points: their mean distance to the
+    /// ideal axis).
     pub fitted_radius: f64,
     /// Distance of the fitted centre from the ideal axis.
     pub centre_offset: f64,
@@ -104,7 +105,7 @@ pub fn measure_fillet(
         }
     }
     pts.retain(|p| (*p - mid).length() <= reach);
-    if pts.len() < 3 {
+    if pts.len() < 2 {
         return Err(FilletError::TooFewPoints {
             a,
             b,
@@ -115,7 +116,14 @@ pub fn measure_fillet(
     let w = axis.cross(u);
     let to2 = |p: DVec3| DVec2::new((p - mid).dot(u), (p - mid).dot(w));
     let p2: Vec<DVec2> = pts.iter().map(|&p| to2(p)).collect();
-    let (cfit, rfit) = fit_circle(&p2);
+    // Two points (level 1: the chord's ends) do not fix a circle: report their mean
+    // distance to the ideal axis instead.
+    let (cfit, rfit) = if p2.len() >= 3 {
+        fit_circle(&p2)
+    } else {
+        let c2 = to2(centre);
+        (c2, p2.iter().map(|p| (*p - c2).length()).sum::<f64>() / p2.len() as f64)
+    };
     let mut max_e = f64::NEG_INFINITY;
     let mut min_e = f64::INFINITY;
     for p in &pts {

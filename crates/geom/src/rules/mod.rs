@@ -148,6 +148,9 @@ pub struct RuleInput<'a> {
 pub struct RuleReport {
     /// Straight corners with unequal cut widths whose along-edge shift was capped (§2.6).
     pub guarded_corners: usize,
+    /// Corners with a zero-length edge (faces collapsed by an earlier step): their
+    /// direction is undefined, so the new point stays at the vertex.
+    pub collapsed_corners: usize,
 }
 
 /// A corner's frame (ALGORITHMS.md §0.3).
@@ -224,15 +227,23 @@ pub fn corner_points(
             continue;
         }
         for c in m.face_corners(f) {
-            pts[c] = match *rule {
-                CornerRule::AngleBisector { l } => chamfer::angle_bisector(input, c, l)?,
-                CornerRule::CutWidth { d } => chamfer::cut_width(input, c, d)?,
-                CornerRule::VectorSum { alpha, reflex } => chamfer::vector_sum(input, c, alpha, reflex)?,
+            let placed = match *rule {
+                CornerRule::AngleBisector { l } => chamfer::angle_bisector(input, c, l),
+                CornerRule::CutWidth { d } => chamfer::cut_width(input, c, d),
+                CornerRule::VectorSum { alpha, reflex } => chamfer::vector_sum(input, c, alpha, reflex),
                 CornerRule::Cylindrical { .. } | CornerRule::Combination { .. } => {
-                    cylindrical::simple(input, c, &mut report)?
+                    cylindrical::simple(input, c, &mut report)
                 }
-                CornerRule::Minimum { .. } => cylindrical::minimum(input, c)?,
+                CornerRule::Minimum { .. } => cylindrical::minimum(input, c),
                 CornerRule::DooSabin => unreachable!("handled above"),
+            };
+            pts[c] = match placed {
+                Ok(p) => p,
+                Err(RuleError::ZeroLengthEdge { .. }) => {
+                    report.collapsed_corners += 1;
+                    m.positions[m.corner_verts[c] as usize]
+                }
+                Err(e) => return Err(e),
             };
         }
     }

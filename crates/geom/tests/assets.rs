@@ -1,0 +1,37 @@
+//! The bundled samples in `assets/` are the builders of `primitives` written to disk; this
+//! test keeps them from drifting apart (run with PRISM_WRITE_ASSETS=1 to rewrite them).
+
+use prism_geom::io::{self, Document};
+use prism_geom::{EdgeAttrs, PolyMesh, Topology, primitives};
+use std::path::PathBuf;
+
+fn assets() -> Vec<(&'static str, PolyMesh)> {
+    vec![
+        ("tripod.obj", primitives::tripod()),
+        ("cube.obj", primitives::cube3()),
+        ("l-block.obj", primitives::l_block()),
+        ("holed-block.prism.json", primitives::holed_block()),
+        ("computer-room.obj", primitives::computer_room()),
+    ]
+}
+
+#[test]
+fn bundled_assets_are_the_builders_and_are_closed() {
+    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../assets");
+    for (name, mesh) in assets() {
+        let path = dir.join(name);
+        let doc = Document {
+            mesh: mesh.clone(),
+            edge_attrs: EdgeAttrs::new(),
+            pipeline: None,
+        };
+        if std::env::var_os("PRISM_WRITE_ASSETS").is_some() {
+            io::save(&path, &doc).unwrap();
+        }
+        let (back, _) = io::load(&path).unwrap_or_else(|e| panic!("{e}"));
+        assert_eq!(back.mesh, mesh, "{name} differs from its builder");
+        let t = Topology::build(&back.mesh).unwrap();
+        t.require_closed(&back.mesh).unwrap();
+        assert!(prism_geom::geometry::signed_volume(&back.mesh) > 0.0);
+    }
+}
