@@ -1,1 +1,64 @@
-fn main(){}
+//! One biquadratic level on a 100k-quad torus (316 × 316 = 99 856 quads), single thread.
+//!
+//! `step_*` is the whole user-visible step (`biquadratic_step`: topology build and checks,
+//! normals, corner points, split, flipped-face report); `split_only` is the topology of the
+//! split alone from precomputed points. Figures: docs/performance.md.
+
+use prism_geom::biquadratic;
+use prism_geom::rules::{CornerRule, RuleInput, corner_points};
+use prism_geom::{EdgeAttrs, StepOptions, Topology, biquadratic_step, primitives};
+
+fn main() {
+    divan::main();
+}
+
+fn torus() -> prism_geom::PolyMesh {
+    primitives::torus(316, 316, 3.0, 1.0)
+}
+
+#[divan::bench(sample_count = 20)]
+fn step_doo_sabin(b: divan::Bencher) {
+    let m = torus();
+    let attrs = EdgeAttrs::new();
+    b.bench(|| {
+        biquadratic_step(
+            &m,
+            &attrs,
+            &CornerRule::DooSabin,
+            None,
+            &StepOptions::default(),
+        )
+        .unwrap()
+    });
+}
+
+#[divan::bench(sample_count = 20)]
+fn step_cylindrical(b: divan::Bencher) {
+    let m = torus();
+    let attrs = EdgeAttrs::new();
+    let rule = CornerRule::Cylindrical { r: 0.01 };
+    b.bench(|| biquadratic_step(&m, &attrs, &rule, None, &StepOptions::default()).unwrap());
+}
+
+#[divan::bench(sample_count = 20)]
+fn topology_build(b: divan::Bencher) {
+    let m = torus();
+    b.bench(|| Topology::build(&m).unwrap());
+}
+
+#[divan::bench(sample_count = 20)]
+fn doo_sabin_points_and_split(b: divan::Bencher) {
+    let m = torus();
+    let t = Topology::build(&m).unwrap();
+    b.bench(|| {
+        let input = RuleInput {
+            mesh: &m,
+            topo: &t,
+            normals: &[],
+            cut_widths: &[],
+            vertex_neighbourhood: &[],
+        };
+        let (pts, _) = corner_points(&CornerRule::DooSabin, &input).unwrap();
+        biquadratic::split(&m, &t, pts)
+    });
+}

@@ -52,7 +52,11 @@ pub fn estimated_bytes(mesh: &PolyMesh, edges: usize) -> u64 {
 }
 
 /// Builds the refined mesh from one new point per parent corner.
-pub fn split(mesh: &PolyMesh, topo: &Topology, corner_points: Vec<DVec3>) -> (PolyMesh, Provenance) {
+pub fn split(
+    mesh: &PolyMesh,
+    topo: &Topology,
+    corner_points: Vec<DVec3>,
+) -> (PolyMesh, Provenance) {
     debug_assert_eq!(corner_points.len(), mesh.num_corners());
     let nf = mesh.num_faces();
     let ne = topo.num_edges();
@@ -126,7 +130,11 @@ pub fn vertex_neighbourhood_flags(
     parent_flags: Option<&[bool]>,
 ) -> Vec<bool> {
     let Some(pf) = parent_flags else {
-        return prov.face_kind.iter().map(|&k| k == FaceKind::Vertex).collect();
+        return prov
+            .face_kind
+            .iter()
+            .map(|&k| k == FaceKind::Vertex)
+            .collect();
     };
     let mut edge_flag = vec![false; topo.num_edges()];
     let mut vert_flag = vec![false; mesh.num_vertices()];

@@ -18,7 +18,9 @@ const COLLINEAR_SIN: f64 = 1e-9;
 
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum DissolveError {
-    #[error("merging the coplanar faces around face {face} would make a face whose boundary touches itself at vertex {vertex}")]
+    #[error(
+        "merging the coplanar faces around face {face} would make a face whose boundary touches itself at vertex {vertex}"
+    )]
     Pinch { face: u32, vertex: u32 },
     #[error("the coplanar faces around face {face} do not form one region with holes")]
     NotARegion { face: u32 },
@@ -151,7 +153,11 @@ pub fn dissolve_flat_edges(
                 .map(|(_, l)| l.1.as_slice()),
         );
         out.push_face(&ordered);
-        out_flags.push(members.iter().any(|&f| face_flags.get(f as usize).copied().unwrap_or(false)));
+        out_flags.push(
+            members
+                .iter()
+                .any(|&f| face_flags.get(f as usize).copied().unwrap_or(false)),
+        );
     }
 
     // Remove vertices with exactly two corners whose edges are collinear.
@@ -185,7 +191,11 @@ pub fn dissolve_flat_edges(
         for l in out.face_loops(f) {
             let vs = out.loop_verts(l);
             let n = vs.len();
-            let kept: Vec<u32> = vs.iter().copied().filter(|&v| !remove[v as usize]).collect();
+            let kept: Vec<u32> = vs
+                .iter()
+                .copied()
+                .filter(|&v| !remove[v as usize])
+                .collect();
             for i in 0..n {
                 if remove[vs[i] as usize] {
                     let (a, v) = (vs[(i + n - 1) % n], vs[i]);
@@ -213,10 +223,10 @@ pub fn dissolve_flat_edges(
         used[v as usize] = 0;
     }
     let mut removed_vertices = 0;
-    for v in 0..nv {
-        if used[v] == 0 {
-            used[v] = compact.positions.len() as u32;
-            compact.positions.push(out.positions[v]);
+    for (slot, &pos) in used.iter_mut().zip(&out.positions) {
+        if *slot == 0 {
+            *slot = compact.positions.len() as u32;
+            compact.positions.push(pos);
         } else {
             removed_vertices += 1;
         }

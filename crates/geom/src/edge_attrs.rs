@@ -67,7 +67,10 @@ pub fn edge_radii(mesh: &PolyMesh, topo: &Topology, attrs: &EdgeAttrs, default: 
         .iter()
         .map(|&c| {
             let c = c as usize;
-            let key = EdgeKey::new(mesh.corner_verts[c], mesh.corner_verts[topo.next[c] as usize]);
+            let key = EdgeKey::new(
+                mesh.corner_verts[c],
+                mesh.corner_verts[topo.next[c] as usize],
+            );
             attrs.get(&key).and_then(|a| a.radius).unwrap_or(default)
         })
         .collect()

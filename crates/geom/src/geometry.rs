@@ -13,17 +13,33 @@ use glam::DVec3;
 pub fn face_normal_raw(mesh: &PolyMesh, f: usize) -> DVec3 {
     let mut n = DVec3::ZERO;
     for l in mesh.face_loops(f) {
-        let vs = mesh.loop_verts(l);
-        // Relative to the loop's first vertex: the same sum for a closed loop, fewer
-        // cancelled digits far from the origin.
-        let o = mesh.positions[vs[0] as usize];
-        for i in 0..vs.len() {
-            let a = mesh.positions[vs[i] as usize] - o;
-            let b = mesh.positions[vs[(i + 1) % vs.len()] as usize] - o;
-            n += a.cross(b);
+        n += loop_newell(mesh, mesh.loop_verts(l));
+    }
+    n
+}
+
+/// ½ Σ V_i × V_(i+1) of one loop. Triangles and quads use the equal closed forms
+/// ½(V₁ − V₀) × (V₂ − V₀) and ½(V₂ − V₀) × (V₃ − V₁) (the quad form holds for non-planar
+/// quads too); longer loops sum relative to their first vertex (the same sum for a closed
+/// loop, fewer cancelled digits far from the origin).
+#[inline]
+pub fn loop_newell(mesh: &PolyMesh, vs: &[u32]) -> DVec3 {
+    let p = |i: usize| mesh.positions[vs[i] as usize];
+    match vs.len() {
+        3 => 0.5 * (p(1) - p(0)).cross(p(2) - p(0)),
+        4 => 0.5 * (p(2) - p(0)).cross(p(3) - p(1)),
+        n => {
+            let o = p(0);
+            let mut acc = DVec3::ZERO;
+            let mut prev = DVec3::ZERO;
+            for i in 1..n {
+                let cur = p(i) - o;
+                acc += prev.cross(cur);
+                prev = cur;
+            }
+            0.5 * acc
         }
     }
-    0.5 * n
 }
 
 /// Newell normal of every face (raw, not normalised).

@@ -109,7 +109,10 @@ impl Pipeline {
             let Scheme::Biquadratic(rule) = scheme;
             let continuing = k > 0
                 && matches!(rule, CornerRule::Combination { .. })
-                && matches!(self.steps[k - 1], Scheme::Biquadratic(CornerRule::Combination { .. }));
+                && matches!(
+                    self.steps[k - 1],
+                    Scheme::Biquadratic(CornerRule::Combination { .. })
+                );
             let vn = if continuing {
                 prev.vertex_neighbourhood.as_deref()
             } else {

@@ -80,7 +80,9 @@ pub fn l_block() -> PolyMesh {
 /// A 3×3×1 block with a 1×1 square hole through it (two faces with holes).
 pub fn holed_block() -> PolyMesh {
     let outer = [(0., 0.), (3., 0.), (3., 3.), (0., 3.)].map(DVec2::from);
-    let hole = [(1., 1.), (1., 2.), (2., 2.), (2., 1.)].map(DVec2::from).to_vec();
+    let hole = [(1., 1.), (1., 2.), (2., 2.), (2., 1.)]
+        .map(DVec2::from)
+        .to_vec();
     extrude(&outer, &[hole], 0.0, 1.0)
 }
 

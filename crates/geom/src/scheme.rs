@@ -30,7 +30,9 @@ pub const BIQUADRATIC_NAMES: [&str; 7] = [
 
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum SchemeError {
-    #[error("unknown scheme '{0}' (known: doo-sabin, angle-bisector, cut-width, vector-sum, cylindrical, minimum, combination)")]
+    #[error(
+        "unknown scheme '{0}' (known: doo-sabin, angle-bisector, cut-width, vector-sum, cylindrical, minimum, combination)"
+    )]
     Unknown(String),
     #[error("scheme '{scheme}' needs the parameter {param} (e.g. '{scheme}:{param}=0.1')")]
     Missing { scheme: String, param: &'static str },
@@ -127,7 +129,9 @@ impl fmt::Display for Scheme {
                 }
                 Ok(())
             }
-            CornerRule::Cylindrical { r } | CornerRule::Minimum { r } | CornerRule::Combination { r } => {
+            CornerRule::Cylindrical { r }
+            | CornerRule::Minimum { r }
+            | CornerRule::Combination { r } => {
                 write!(f, ":r={r}")
             }
         }
@@ -160,7 +164,9 @@ impl std::str::FromStr for Scheme {
                 }
                 continue;
             }
-            let x: f64 = v.parse().map_err(|_| SchemeError::BadNumber(v.to_string()))?;
+            let x: f64 = v
+                .parse()
+                .map_err(|_| SchemeError::BadNumber(v.to_string()))?;
             let (slot, owner): (&mut Option<f64>, &[&str]) = match k {
                 "alpha" | "a" => (&mut alpha, &["vector-sum"]),
                 "r" | "radius" => (&mut radius, &["cylindrical", "minimum", "combination"]),
@@ -200,7 +206,11 @@ pub fn parse_pipeline(s: &str) -> Result<Vec<Scheme>, SchemeError> {
 
 /// Prints a pipeline in the form [`parse_pipeline`] reads.
 pub fn format_pipeline(steps: &[Scheme]) -> String {
-    steps.iter().map(|s| s.to_string()).collect::<Vec<_>>().join(",")
+    steps
+        .iter()
+        .map(|s| s.to_string())
+        .collect::<Vec<_>>()
+        .join(",")
 }
 
 #[cfg(test)]
@@ -217,13 +227,34 @@ mod tests {
 
     #[test]
     fn bad_text_is_refused_with_a_reason() {
-        assert!(matches!("foo".parse::<Scheme>(), Err(SchemeError::Unknown(_))));
-        assert!(matches!("combination".parse::<Scheme>(), Err(SchemeError::Missing { .. })));
-        assert!(matches!("vector-sum:alpha=0.5".parse::<Scheme>(), Err(SchemeError::Param(_))));
-        assert!(matches!("cut-width:d=-1".parse::<Scheme>(), Err(SchemeError::Param(_))));
-        assert!(matches!("cut-width:d=nan".parse::<Scheme>(), Err(SchemeError::Param(_))));
-        assert!(matches!("doo-sabin:r=1".parse::<Scheme>(), Err(SchemeError::UnexpectedParam { .. })));
-        assert!(matches!("cut-width:d=x".parse::<Scheme>(), Err(SchemeError::BadNumber(_))));
+        assert!(matches!(
+            "foo".parse::<Scheme>(),
+            Err(SchemeError::Unknown(_))
+        ));
+        assert!(matches!(
+            "combination".parse::<Scheme>(),
+            Err(SchemeError::Missing { .. })
+        ));
+        assert!(matches!(
+            "vector-sum:alpha=0.5".parse::<Scheme>(),
+            Err(SchemeError::Param(_))
+        ));
+        assert!(matches!(
+            "cut-width:d=-1".parse::<Scheme>(),
+            Err(SchemeError::Param(_))
+        ));
+        assert!(matches!(
+            "cut-width:d=nan".parse::<Scheme>(),
+            Err(SchemeError::Param(_))
+        ));
+        assert!(matches!(
+            "doo-sabin:r=1".parse::<Scheme>(),
+            Err(SchemeError::UnexpectedParam { .. })
+        ));
+        assert!(matches!(
+            "cut-width:d=x".parse::<Scheme>(),
+            Err(SchemeError::BadNumber(_))
+        ));
         assert!(matches!(parse_pipeline(" , "), Err(SchemeError::Empty)));
     }
 }

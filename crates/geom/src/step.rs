@@ -54,7 +54,9 @@ pub enum StepError {
     Rule(#[from] RuleError),
     #[error(transparent)]
     Dissolve(#[from] DissolveError),
-    #[error("the next level would need about {needed_mib} MiB, more than the budget of {budget_mib} MiB ({faces} faces)")]
+    #[error(
+        "the next level would need about {needed_mib} MiB, more than the budget of {budget_mib} MiB ({faces} faces)"
+    )]
     TooLarge {
         needed_mib: u64,
         budget_mib: u64,

@@ -378,7 +378,14 @@ mod tests {
     #[test]
     fn non_manifold_edge_and_unused_vertex() {
         // Three triangles on one edge 0-1.
-        let p = vec![DVec3::ZERO, DVec3::X, DVec3::Y, DVec3::Z, -DVec3::Y, DVec3::ONE];
+        let p = vec![
+            DVec3::ZERO,
+            DVec3::X,
+            DVec3::Y,
+            DVec3::Z,
+            -DVec3::Y,
+            DVec3::ONE,
+        ];
         let m = PolyMesh::from_polygons(p, &[vec![0, 1, 2], vec![1, 0, 3], vec![1, 0, 4]]);
         match Topology::build(&m) {
             Err(MeshError::NonManifoldEdge { a: 0, b: 1, faces }) => assert_eq!(faces.len(), 3),

@@ -73,7 +73,11 @@ fn flat_edges_are_dissolved_before_cylindrical_steps() {
 
 #[test]
 fn a_triangulated_cube_rounds_like_the_cube() {
-    let p = run(&triangulated_cube(), "combination:r=0.45,combination:r=0.45").unwrap();
+    let p = run(
+        &triangulated_cube(),
+        "combination:r=0.45,combination:r=0.45",
+    )
+    .unwrap();
     assert_eq!(p.levels()[1].report.as_ref().unwrap().dissolved_edges, 6);
     let plain = run(
         &primitives::cube3(),
@@ -117,7 +121,11 @@ fn merging_coplanar_faces_can_make_a_hole() {
                 faces.push(vec![vec![o[k], o[k1], inner_ccw[k1], inner_ccw[k]]]);
             }
         } else {
-            faces.push(hb.face_loops(f).map(|l| hb.loop_verts(l).to_vec()).collect());
+            faces.push(
+                hb.face_loops(f)
+                    .map(|l| hb.loop_verts(l).to_vec())
+                    .collect(),
+            );
         }
     }
     let mut m = PolyMesh::new();
@@ -187,7 +195,10 @@ fn bad_input_gives_typed_errors() {
     ));
     // Doo–Sabin on a holed face.
     let e = run(&primitives::holed_block(), "doo-sabin").unwrap_err();
-    assert!(matches!(e, StepError::Rule(RuleError::HoledFace { face: 0 })));
+    assert!(matches!(
+        e,
+        StepError::Rule(RuleError::HoledFace { face: 0 })
+    ));
     assert!(e.to_string().contains("face 0"));
     // Memory budget.
     let mut p = Pipeline::new(
@@ -204,5 +215,8 @@ fn bad_input_gives_typed_errors() {
         &[vec![0, 1, 2], vec![0, 2, 1]],
     );
     let e = run(&m, "cylindrical:r=0.1").unwrap_err();
-    assert!(matches!(e, StepError::Rule(RuleError::KnifeEdge { .. })), "{e}");
+    assert!(
+        matches!(e, StepError::Rule(RuleError::KnifeEdge { .. })),
+        "{e}"
+    );
 }

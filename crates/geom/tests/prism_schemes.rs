@@ -59,11 +59,7 @@ fn invariants_hold_at_every_level_of_every_rule() {
                 assert_eq!(cb.vertices, a.num_corners(), "{name} {rule}");
                 assert_eq!(cb.edges, 4 * ca.edges, "{name} {rule}");
                 assert_eq!(tb.num_edges(), 4 * ta.num_edges());
-                assert_eq!(
-                    cb.faces,
-                    ca.faces + ca.edges + ca.vertices,
-                    "{name} {rule}"
-                );
+                assert_eq!(cb.faces, ca.faces + ca.edges + ca.vertices, "{name} {rule}");
                 assert_eq!(cb.euler(), ca.euler(), "{name} {rule}");
                 assert!(b.all_finite(), "{name} {rule}");
             }
@@ -183,7 +179,10 @@ fn constant_chamfer_flips_are_reported_as_measured() {
     let l = repeat("angle-bisector:l=0.1", 3);
     assert_eq!(flips(&run(&primitives::cube3(), &d)), vec![0, 36, 180]);
     assert_eq!(flips(&run(&primitives::l_block(), &d)), vec![0, 54, 268]);
-    assert_eq!(flips(&run(&primitives::holed_block(), &d)), vec![0, 72, 352]);
+    assert_eq!(
+        flips(&run(&primitives::holed_block(), &d)),
+        vec![0, 72, 352]
+    );
     assert_eq!(flips(&run(&primitives::tripod(), &d)), vec![0, 81, 396]);
     assert_eq!(flips(&run(&primitives::cube3(), &l)), vec![0, 36, 180]);
     // Tripod, l constant: at level 3 some faces of level 2 have collapsed to zero-length

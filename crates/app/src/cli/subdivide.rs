@@ -83,18 +83,30 @@ pub fn run(a: SubdivideArgs) -> Result<(), CliError> {
     let (doc, face_lines) = io::load(&a.input).map_err(CliError::input)?;
     let steps = if steps.is_empty() {
         doc.pipeline.clone().ok_or_else(|| {
-            CliError::usage("give --scheme and --levels, or --pipeline (the input holds no pipeline)")
+            CliError::usage(
+                "give --scheme and --levels, or --pipeline (the input holds no pipeline)",
+            )
         })?
     } else {
         steps
     };
-    let topo = Topology::build(&doc.mesh)
-        .map_err(|e| CliError::input(format!("{}: {}", a.input.display(), with_line(&e, face_lines.as_deref()))))?;
+    let topo = Topology::build(&doc.mesh).map_err(|e| {
+        CliError::input(format!(
+            "{}: {}",
+            a.input.display(),
+            with_line(&e, face_lines.as_deref())
+        ))
+    })?;
     for w in &topo.warnings {
         eprintln!("warning: {}: {w}", a.input.display());
     }
-    topo.require_closed(&doc.mesh)
-        .map_err(|e| CliError::input(format!("{}: {}", a.input.display(), with_line(&e, face_lines.as_deref()))))?;
+    topo.require_closed(&doc.mesh).map_err(|e| {
+        CliError::input(format!(
+            "{}: {}",
+            a.input.display(),
+            with_line(&e, face_lines.as_deref())
+        ))
+    })?;
 
     let c0 = prism_geom::analysis::counts(&doc.mesh);
     println!(
@@ -138,8 +150,13 @@ pub fn run(a: SubdivideArgs) -> Result<(), CliError> {
             eprintln!("note: level {k}: {} straight corner(s) with unequal cut widths capped", r.guarded_corners);
         }
     });
-    if steps.iter().any(|s| matches!(s, Scheme::Biquadratic(CornerRule::Minimum { .. }))) {
-        eprintln!("note: the minimum type never flips faces but does not converge to r: its fillets stall near 0.2 % of r (use combination for true radii)");
+    if steps
+        .iter()
+        .any(|s| matches!(s, Scheme::Biquadratic(CornerRule::Minimum { .. })))
+    {
+        eprintln!(
+            "note: the minimum type never flips faces but does not converge to r: its fillets stall near 0.2 % of r (use combination for true radii)"
+        );
     }
     let last = result.map_err(CliError::input)?;
     let out = Document {

@@ -21,7 +21,9 @@ pub enum FilletError {
     NoSuchEdge { a: u32, b: u32 },
     #[error("edge {a}-{b} is flat: it has no fillet")]
     FlatEdge { a: u32, b: u32 },
-    #[error("the section through edge {a}-{b} has only {points} fillet point(s); at least 2 are needed")]
+    #[error(
+        "the section through edge {a}-{b} has only {points} fillet point(s); at least 2 are needed"
+    )]
     TooFewPoints { a: u32, b: u32, points: usize },
     #[error(transparent)]
     Mesh(#[from] crate::error::MeshError),
@@ -58,14 +60,19 @@ pub fn measure_fillet(
     let cv = &original.corner_verts;
     let c = (0..original.num_corners())
         .find(|&c| cv[c] == a && cv[topo.next[c] as usize] == b)
-        .or_else(|| (0..original.num_corners()).find(|&c| cv[c] == b && cv[topo.next[c] as usize] == a))
+        .or_else(|| {
+            (0..original.num_corners()).find(|&c| cv[c] == b && cv[topo.next[c] as usize] == a)
+        })
         .ok_or(FilletError::NoSuchEdge { a, b })?;
     let t = topo.twin[c];
     if t == crate::topology::NONE {
         return Err(FilletError::NoSuchEdge { a, b });
     }
     let nl = unit_or_zero(face_normal_raw(original, topo.corner_face[c] as usize));
-    let nr = unit_or_zero(face_normal_raw(original, topo.corner_face[t as usize] as usize));
+    let nr = unit_or_zero(face_normal_raw(
+        original,
+        topo.corner_face[t as usize] as usize,
+    ));
     let pa = original.positions[cv[c] as usize];
     let pb = original.positions[cv[topo.next[c] as usize] as usize];
     let psi = crate::geometry::angle_between(nl, nr);
@@ -122,7 +129,10 @@ pub fn measure_fillet(
         fit_circle(&p2)
     } else {
         let c2 = to2(centre);
-        (c2, p2.iter().map(|p| (*p - c2).length()).sum::<f64>() / p2.len() as f64)
+        (
+            c2,
+            p2.iter().map(|p| (*p - c2).length()).sum::<f64>() / p2.len() as f64,
+        )
     };
     let mut max_e = f64::NEG_INFINITY;
     let mut min_e = f64::INFINITY;
@@ -199,7 +209,8 @@ pub fn fit_circle(p: &[DVec2]) -> (DVec2, f64) {
 
 fn solve3(m: [[f64; 3]; 3], b: [f64; 3]) -> [f64; 3] {
     let det = |m: &[[f64; 3]; 3]| {
-        m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0])
+        m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1])
+            - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0])
             + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0])
     };
     let d = det(&m);

@@ -146,7 +146,13 @@ mod tests {
     #[test]
     fn round_trip_with_holes_edges_and_pipeline() {
         let mut edge_attrs = EdgeAttrs::new();
-        edge_attrs.insert(EdgeKey::new(0, 1), EdgeAttr { crease: 10.0, radius: Some(0.3) });
+        edge_attrs.insert(
+            EdgeKey::new(0, 1),
+            EdgeAttr {
+                crease: 10.0,
+                radius: Some(0.3),
+            },
+        );
         let doc = Document {
             mesh: primitives::holed_block(),
             edge_attrs,
@@ -164,7 +170,10 @@ mod tests {
             document_from_str(p, r#"{"version": 7, "vertices": [], "faces": []}"#),
             Err(IoError::UnknownVersion { found: 7, .. })
         ));
-        match document_from_str(p, "{\"version\": 1,\n \"vertices\": [[0,0]], \"faces\": []}") {
+        match document_from_str(
+            p,
+            "{\"version\": 1,\n \"vertices\": [[0,0]], \"faces\": []}",
+        ) {
             Err(IoError::Json { line: 2, .. }) => {}
             other => panic!("{other:?}"),
         }

@@ -38,7 +38,9 @@ pub enum IoError {
         column: usize,
         message: String,
     },
-    #[error("{path}: document version {found} is not supported (this Prism reads version {DOCUMENT_VERSION})")]
+    #[error(
+        "{path}: document version {found} is not supported (this Prism reads version {DOCUMENT_VERSION})"
+    )]
     UnknownVersion { path: PathBuf, found: u64 },
     #[error("{path}: unknown file type (use .obj or .prism.json)")]
     UnknownExtension { path: PathBuf },

@@ -14,7 +14,7 @@
 //! lines.
 
 use super::{IoError, write_atomically};
-use crate::edge_attrs::{EdgeAttr, EdgeAttrs, EdgeKey};
+use crate::edge_attrs::{EdgeAttrs, EdgeKey};
 use crate::geometry::{face_normal_raw, unit_or_zero};
 use crate::mesh::PolyMesh;
 use glam::DVec3;
@@ -64,7 +64,10 @@ pub fn read_obj_str(path: &Path, text: &str) -> Result<ObjModel, IoError> {
             Some("v") => {
                 let coords: Vec<&str> = words.collect();
                 if coords.len() < 3 || coords[..3].iter().any(|w| w.parse::<f64>().is_err()) {
-                    return Err(err(Some(lineno), format!("'{line}' is not a vertex 'v x y z'")));
+                    return Err(err(
+                        Some(lineno),
+                        format!("'{line}' is not a vertex 'v x y z'"),
+                    ));
                 }
                 if saw_face {
                     interleaved = true;
@@ -79,7 +82,10 @@ pub fn read_obj_str(path: &Path, text: &str) -> Result<ObjModel, IoError> {
                 if idx.len() < 3 {
                     return Err(err(
                         Some(lineno),
-                        format!("a face needs at least 3 vertices, '{line}' has {}", idx.len()),
+                        format!(
+                            "a face needs at least 3 vertices, '{line}' has {}",
+                            idx.len()
+                        ),
                     ));
                 }
                 for w in &idx {
@@ -91,7 +97,9 @@ pub fn read_obj_str(path: &Path, text: &str) -> Result<ObjModel, IoError> {
                     if k == 0 || k > n || k < -n {
                         return Err(err(
                             Some(lineno),
-                            format!("vertex index {k} is out of range (the file has {n} vertices so far)"),
+                            format!(
+                                "vertex index {k} is out of range (the file has {n} vertices so far)"
+                            ),
                         ));
                     }
                     negative |= k < 0;
@@ -126,15 +134,16 @@ pub fn read_obj_str(path: &Path, text: &str) -> Result<ObjModel, IoError> {
         ignore_points: false,
         ignore_lines: true,
     };
-    let (models, _) = tobj::load_obj_buf(&mut buf.as_bytes(), &opts, |_| {
-        Ok(Default::default())
-    })
-    .map_err(|e| err(None, format!("OBJ reader: {e}")))?;
+    let (models, _) = tobj::load_obj_buf(&mut buf.as_bytes(), &opts, |_| Ok(Default::default()))
+        .map_err(|e| err(None, format!("OBJ reader: {e}")))?;
     let mut mesh = PolyMesh::new();
     if let Some(model) = models.first() {
         let m = &model.mesh;
         if m.positions.len() != 3 * n || models.len() != 1 {
-            return Err(err(None, "the OBJ reader returned an unexpected vertex layout".into()));
+            return Err(err(
+                None,
+                "the OBJ reader returned an unexpected vertex layout".into(),
+            ));
         }
         mesh.positions = m
             .positions
@@ -157,7 +166,12 @@ pub fn read_obj_str(path: &Path, text: &str) -> Result<ObjModel, IoError> {
         if words.first().map(String::as_str) != Some("crease") {
             continue;
         }
-        let bad = || err(Some(lineno), "expected 't crease 2/1/0 a b sharpness'".into());
+        let bad = || {
+            err(
+                Some(lineno),
+                "expected 't crease 2/1/0 a b sharpness'".into(),
+            )
+        };
         let counts = words.get(1).ok_or_else(bad)?;
         if !counts.starts_with("2/1") {
             return Err(bad());
@@ -166,9 +180,15 @@ pub fn read_obj_str(path: &Path, text: &str) -> Result<ObjModel, IoError> {
         let b: u32 = words.get(3).and_then(|w| w.parse().ok()).ok_or_else(bad)?;
         let s: f64 = words.get(4).and_then(|w| w.parse().ok()).ok_or_else(bad)?;
         if a as usize >= n || b as usize >= n || !s.is_finite() || s < 0.0 {
-            return Err(err(Some(lineno), format!("crease {a}-{b} sharpness {s}: vertex out of range or sharpness not ≥ 0")));
+            return Err(err(
+                Some(lineno),
+                format!("crease {a}-{b} sharpness {s}: vertex out of range or sharpness not ≥ 0"),
+            ));
         }
-        edge_attrs.entry(EdgeKey::new(a, b)).or_insert_with(EdgeAttr::default).crease = s;
+        edge_attrs
+            .entry(EdgeKey::new(a, b))
+            .or_default()
+            .crease = s;
     }
     Ok(ObjModel {
         mesh,
@@ -200,8 +220,16 @@ fn triangulate_face(m: &PolyMesh, f: usize) -> Vec<[u32; 3]> {
     tris.chunks_exact(3)
         .map(|t| {
             let [a, b, c] = [ids[t[0]], ids[t[1]], ids[t[2]]];
-            let (pa, pb, pc) = (m.positions[a as usize], m.positions[b as usize], m.positions[c as usize]);
-            if (pb - pa).cross(pc - pa).dot(n) < 0.0 { [a, c, b] } else { [a, b, c] }
+            let (pa, pb, pc) = (
+                m.positions[a as usize],
+                m.positions[b as usize],
+                m.positions[c as usize],
+            );
+            if (pb - pa).cross(pc - pa).dot(n) < 0.0 {
+                [a, c, b]
+            } else {
+                [a, b, c]
+            }
         })
         .collect()
 }
@@ -280,7 +308,8 @@ mod tests {
 
     #[test]
     fn errors_name_the_line() {
-        let e = read_obj_str(Path::new("t.obj"), "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 7\n").unwrap_err();
+        let e =
+            read_obj_str(Path::new("t.obj"), "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 7\n").unwrap_err();
         assert!(e.to_string().contains("line 4"), "{e}");
         let e = read_obj_str(Path::new("t.obj"), "v 0 0\n").unwrap_err();
         assert!(e.to_string().contains("line 1"), "{e}");

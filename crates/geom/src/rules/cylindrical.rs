@@ -52,7 +52,11 @@ fn widths(input: &RuleInput, c: usize) -> (f64, f64) {
     (x1, x2)
 }
 
-pub(super) fn simple(input: &RuleInput, c: usize, report: &mut RuleReport) -> Result<DVec3, RuleError> {
+pub(super) fn simple(
+    input: &RuleInput,
+    c: usize,
+    report: &mut RuleReport,
+) -> Result<DVec3, RuleError> {
     let fr = corner_frame(input, c)?;
     let (x1, x2) = widths(input, c);
     if 1.0 + fr.c < STRAIGHT_CORNER {
@@ -142,15 +146,31 @@ mod tests {
     fn simple_type_meets_the_offset_lines() {
         // Edge 0 (bottom, y=0) width 0.1, edge 3 (left, x=0) width 0.3.
         let p = square([0.1, 0.2, 0.05, 0.3], CornerRule::Cylindrical { r: 1.0 });
-        assert!((p[0] - DVec3::new(0.3, 0.1, 0.0)).length() < 1e-15, "{}", p[0]);
-        assert!((p[1] - DVec3::new(0.8, 0.1, 0.0)).length() < 1e-15, "{}", p[1]);
-        assert!((p[2] - DVec3::new(0.8, 0.95, 0.0)).length() < 1e-15, "{}", p[2]);
+        assert!(
+            (p[0] - DVec3::new(0.3, 0.1, 0.0)).length() < 1e-15,
+            "{}",
+            p[0]
+        );
+        assert!(
+            (p[1] - DVec3::new(0.8, 0.1, 0.0)).length() < 1e-15,
+            "{}",
+            p[1]
+        );
+        assert!(
+            (p[2] - DVec3::new(0.8, 0.95, 0.0)).length() < 1e-15,
+            "{}",
+            p[2]
+        );
     }
 
     #[test]
     fn minimum_type_caps_at_a_quarter_edge() {
         let p = square([0.1, 0.2, 0.05, 0.3], CornerRule::Minimum { r: 1.0 });
         // Corner 0: shift along u1 (x) is x2 = 0.3 → capped at 0.25; along u2 (y) 0.1.
-        assert!((p[0] - DVec3::new(0.25, 0.1, 0.0)).length() < 1e-15, "{}", p[0]);
+        assert!(
+            (p[0] - DVec3::new(0.25, 0.1, 0.0)).length() < 1e-15,
+            "{}",
+            p[0]
+        );
     }
 }

@@ -65,13 +65,19 @@ mod tests {
     fn closed_form_equals_eq1_and_keeps_the_centroid() {
         for n in 3..=10usize {
             let v: Vec<DVec3> = (0..n)
-                .map(|k| DVec3::new((k * k) as f64 * 0.3 + 1.0, (k as f64).sin() * 2.0, 0.1 * k as f64))
+                .map(|k| {
+                    DVec3::new(
+                        (k * k) as f64 * 0.3 + 1.0,
+                        (k as f64).sin() * 2.0,
+                        0.1 * k as f64,
+                    )
+                })
                 .collect();
             let m = PolyMesh::from_polygons(v.clone(), &[(0..n as u32).collect()]);
             let mut out = vec![DVec3::ZERO; n];
             loop_points(&m, 0, &mut out);
-            for i in 0..n {
-                assert!((out[i] - eq1(&v, i)).length() < 1e-13, "n={n} i={i}");
+            for (i, o) in out.iter().enumerate() {
+                assert!((*o - eq1(&v, i)).length() < 1e-13, "n={n} i={i}");
             }
             let c0: DVec3 = v.iter().sum::<DVec3>() / n as f64;
             let c1: DVec3 = out.iter().sum::<DVec3>() / n as f64;
@@ -82,7 +88,11 @@ mod tests {
     #[test]
     fn triangle_weights_by_hand() {
         // n = 3: W_ii = 8/12 = 2/3, W_ij = (3 + 2cos(120°))/12 = 1/6.
-        let v = vec![DVec3::ZERO, DVec3::new(6.0, 0.0, 0.0), DVec3::new(0.0, 6.0, 0.0)];
+        let v = vec![
+            DVec3::ZERO,
+            DVec3::new(6.0, 0.0, 0.0),
+            DVec3::new(0.0, 6.0, 0.0),
+        ];
         let m = PolyMesh::from_polygons(v, &[vec![0, 1, 2]]);
         let mut out = vec![DVec3::ZERO; 3];
         loop_points(&m, 0, &mut out);

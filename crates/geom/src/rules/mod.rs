@@ -89,9 +89,9 @@ impl CornerRule {
                     })
                 }
             }
-            CornerRule::Cylindrical { r } | CornerRule::Minimum { r } | CornerRule::Combination { r } => {
-                positive("r", r)
-            }
+            CornerRule::Cylindrical { r }
+            | CornerRule::Minimum { r }
+            | CornerRule::Combination { r } => positive("r", r),
         }
     }
 
@@ -99,16 +99,18 @@ impl CornerRule {
     pub fn is_cylindrical_family(&self) -> bool {
         matches!(
             self,
-            CornerRule::Cylindrical { .. } | CornerRule::Minimum { .. } | CornerRule::Combination { .. }
+            CornerRule::Cylindrical { .. }
+                | CornerRule::Minimum { .. }
+                | CornerRule::Combination { .. }
         )
     }
 
     /// The default radius of the cylindrical family.
     pub fn radius(&self) -> Option<f64> {
         match *self {
-            CornerRule::Cylindrical { r } | CornerRule::Minimum { r } | CornerRule::Combination { r } => {
-                Some(r)
-            }
+            CornerRule::Cylindrical { r }
+            | CornerRule::Minimum { r }
+            | CornerRule::Combination { r } => Some(r),
             _ => None,
         }
     }
@@ -117,15 +119,21 @@ impl CornerRule {
 /// Why corner points could not be placed.
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum RuleError {
-    #[error("face {face} has a hole: Doo–Sabin is not defined on faces with holes (seed 000 §2.1); use a chamfer or cylindrical rule, or split the face")]
+    #[error(
+        "face {face} has a hole: Doo–Sabin is not defined on faces with holes (seed 000 §2.1); use a chamfer or cylindrical rule, or split the face"
+    )]
     HoledFace { face: u32 },
-    #[error("face {face} has a zero-angle (needle) corner at vertex {vertex}: its bisector is undefined")]
+    #[error(
+        "face {face} has a zero-angle (needle) corner at vertex {vertex}: its bisector is undefined"
+    )]
     NeedleCorner { face: u32, vertex: u32 },
     #[error("face {face} has a zero-length edge at vertex {vertex}")]
     ZeroLengthEdge { face: u32, vertex: u32 },
     #[error("face {face} has no area (its normal is undefined)")]
     ZeroAreaFace { face: u32 },
-    #[error("edge {a}-{b} is a knife edge (bend angle {bend_deg:.3}°): the radius needs an infinite cut width there")]
+    #[error(
+        "edge {a}-{b} is a knife edge (bend angle {bend_deg:.3}°): the radius needs an infinite cut width there"
+    )]
     KnifeEdge { a: u32, b: u32, bend_deg: f64 },
     #[error("the new point of face {face} at vertex {vertex} is not finite")]
     NonFinite { face: u32, vertex: u32 },
@@ -215,7 +223,9 @@ pub fn corner_points(
     for f in 0..m.num_faces() {
         let use_doo_sabin = match rule {
             CornerRule::DooSabin => true,
-            CornerRule::Combination { .. } => input.vertex_neighbourhood.get(f).copied().unwrap_or(false),
+            CornerRule::Combination { .. } => {
+                input.vertex_neighbourhood.get(f).copied().unwrap_or(false)
+            }
             _ => false,
         };
         if use_doo_sabin {
@@ -230,7 +240,9 @@ pub fn corner_points(
             let placed = match *rule {
                 CornerRule::AngleBisector { l } => chamfer::angle_bisector(input, c, l),
                 CornerRule::CutWidth { d } => chamfer::cut_width(input, c, d),
-                CornerRule::VectorSum { alpha, reflex } => chamfer::vector_sum(input, c, alpha, reflex),
+                CornerRule::VectorSum { alpha, reflex } => {
+                    chamfer::vector_sum(input, c, alpha, reflex)
+                }
                 CornerRule::Cylindrical { .. } | CornerRule::Combination { .. } => {
                     cylindrical::simple(input, c, &mut report)
                 }

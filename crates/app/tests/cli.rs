@@ -1,0 +1,240 @@
+//! The `prism` binary as a user runs it: summaries, warnings, exit codes.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn prism(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_prism"))
+        .args(args)
+        .current_dir(Path::new(env!("CARGO_MANIFEST_DIR")).join("../.."))
+        .output()
+        .expect("runs")
+}
+
+fn tmp(name: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("prism-cli-{}", std::process::id()));
+    std::fs::create_dir_all(&d).unwrap();
+    d.join(name)
+}
+
+fn text(o: &Output) -> (String, String) {
+    (
+        String::from_utf8_lossy(&o.stdout).into_owned(),
+        String::from_utf8_lossy(&o.stderr).into_owned(),
+    )
+}
+
+#[test]
+fn rounding_the_tripod_reports_no_flipped_faces() {
+    let out = tmp("tripod-round.obj");
+    let o = prism(&[
+        "subdivide",
+        "assets/tripod.obj",
+        "-o",
+        out.to_str().unwrap(),
+        "--scheme",
+        "combination",
+        "--radius",
+        "0.2",
+        "--levels",
+        "5",
+    ]);
+    let (so, se) = text(&o);
+    assert!(o.status.success(), "{so}{se}");
+    let lines: Vec<&str> = so.lines().filter(|l| l.starts_with("level ")).collect();
+    assert_eq!(lines.len(), 6, "{so}");
+    for l in &lines[1..] {
+        assert!(l.contains(" 0 flipped"), "{l}");
+    }
+    assert!(lines[5].contains("13826 faces"), "{}", lines[5]);
+    let written = std::fs::read_to_string(&out).unwrap();
+    assert_eq!(
+        written.lines().filter(|l| l.starts_with("f ")).count(),
+        13826
+    );
+    assert!(!written.contains("NaN") && !written.contains("inf"));
+}
+
+#[test]
+fn the_simple_cylindrical_breakdown_is_reported() {
+    let out = tmp("cube-cyl.obj");
+    let o = prism(&[
+        "subdivide",
+        "assets/cube.obj",
+        "-o",
+        out.to_str().unwrap(),
+        "--scheme",
+        "cylindrical",
+        "--radius",
+        "0.45",
+        "--levels",
+        "5",
+    ]);
+    let (so, se) = text(&o);
+    assert!(o.status.success(), "{so}{se}");
+    assert!(
+        so.lines()
+            .any(|l| l.starts_with("level 4") && !l.contains(" 0 flipped")),
+        "{so}"
+    );
+    assert!(se.contains("inside out"), "{se}");
+    let written = std::fs::read_to_string(&out).unwrap();
+    assert!(!written.contains("NaN") && !written.contains("inf"));
+}
+
+#[test]
+fn pipelines_and_documents() {
+    let out = tmp("fig7.prism.json");
+    let o = prism(&[
+        "subdivide",
+        "assets/holed-block.prism.json",
+        "-o",
+        out.to_str().unwrap(),
+        "--pipeline",
+        "cut-width:d=0.1,cut-width:d=0.025,cut-width:d=0.00625",
+    ]);
+    let (so, se) = text(&o);
+    assert!(o.status.success(), "{so}{se}");
+    assert_eq!(so.matches(" 0 flipped").count(), 3, "{so}");
+    let doc = std::fs::read_to_string(&out).unwrap();
+    assert!(doc.starts_with("{\"version\":1"));
+    // Holed faces to OBJ: triangulated with a warning.
+    let obj = tmp("holed.obj");
+    let o = prism(&[
+        "subdivide",
+        "assets/holed-block.prism.json",
+        "-o",
+        obj.to_str().unwrap(),
+        "--scheme",
+        "combination",
+        "--radius",
+        "0.15",
+        "--levels",
+        "1",
+    ]);
+    let (_, se) = text(&o);
+    assert!(o.status.success());
+    assert!(se.contains("triangulated"), "{se}");
+}
+
+#[test]
+fn bad_usage_exits_2() {
+    for args in [
+        vec![
+            "subdivide",
+            "assets/cube.obj",
+            "-o",
+            "x.obj",
+            "--scheme",
+            "loopy",
+        ],
+        vec![
+            "subdivide",
+            "assets/cube.obj",
+            "-o",
+            "x.obj",
+            "--scheme",
+            "combination",
+        ],
+        vec![
+            "subdivide",
+            "assets/cube.obj",
+            "-o",
+            "x.obj",
+            "--scheme",
+            "vector-sum",
+            "--alpha",
+            "0.7",
+        ],
+        vec![
+            "subdivide",
+            "assets/cube.obj",
+            "-o",
+            "x.obj",
+            "--pipeline",
+            "doo-sabin,cut-width:d=oops",
+        ],
+        vec![
+            "subdivide",
+            "assets/cube.obj",
+            "-o",
+            "x.txt",
+            "--scheme",
+            "doo-sabin",
+        ],
+        vec!["subdivide", "assets/cube.obj", "--bogus"],
+    ] {
+        let o = prism(&args);
+        let (_, se) = text(&o);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {se}");
+        assert!(!se.contains("panicked"), "{se}");
+    }
+}
+
+#[test]
+fn bad_input_exits_1_and_names_the_element() {
+    let cases: Vec<(&str, &str, &str)> = vec![
+        ("missing.obj", "", "cannot read"),
+        (
+            "range.obj",
+            "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n",
+            "line 4",
+        ),
+        ("open.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "edge"),
+        (
+            "nan.obj",
+            "v 0 0 0\nv 1 0 0\nv 0 nan 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 3 1 4\n",
+            "vertex 2",
+        ),
+        (
+            "flip.obj",
+            "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 3 4 1\n",
+            "line 8",
+        ),
+        (
+            "bad.prism.json",
+            "{\"version\": 1, \"vertices\": [[0,0,0]],\n\"faces\": 5}",
+            "line 2",
+        ),
+        ("v9.prism.json", "{\"version\": 9}", "version 9"),
+    ];
+    for (name, body, expect) in cases {
+        let p = tmp(name);
+        if !body.is_empty() {
+            std::fs::write(&p, body).unwrap();
+        }
+        let out = tmp("out.obj");
+        let o = prism(&[
+            "subdivide",
+            p.to_str().unwrap(),
+            "-o",
+            out.to_str().unwrap(),
+            "--scheme",
+            "doo-sabin",
+        ]);
+        let (_, se) = text(&o);
+        assert_eq!(o.status.code(), Some(1), "{name}: {se}");
+        assert!(se.contains(expect), "{name}: {se}");
+        assert!(!se.contains("panicked"), "{se}");
+    }
+}
+
+#[test]
+fn a_failed_save_keeps_the_previous_file() {
+    let dir = tmp("ro");
+    std::fs::create_dir_all(&dir).unwrap();
+    // Writing into a path whose parent is a file fails; nothing is left behind.
+    let blocker = tmp("blocker");
+    std::fs::write(&blocker, "keep").unwrap();
+    let target = blocker.join("x.obj");
+    let o = prism(&[
+        "subdivide",
+        "assets/cube.obj",
+        "-o",
+        target.to_str().unwrap(),
+        "--scheme",
+        "doo-sabin",
+    ]);
+    assert_eq!(o.status.code(), Some(1));
+    assert_eq!(std::fs::read_to_string(&blocker).unwrap(), "keep");
+}
