@@ -185,10 +185,7 @@ pub fn read_obj_str(path: &Path, text: &str) -> Result<ObjModel, IoError> {
                 format!("crease {a}-{b} sharpness {s}: vertex out of range or sharpness not ≥ 0"),
             ));
         }
-        edge_attrs
-            .entry(EdgeKey::new(a, b))
-            .or_default()
-            .crease = s;
+        edge_attrs.entry(EdgeKey::new(a, b)).or_default().crease = s;
     }
     Ok(ObjModel {
         mesh,
