@@ -143,30 +143,6 @@ impl Topology {
         for c in 0..nc {
             let a = cv[c];
             let b = cv[next[c] as usize];
-            // Same direction used twice?
-            for &d in &out[out_start[a as usize] as usize..out_start[a as usize + 1] as usize] {
-                if d as usize != c && cv[next[d as usize] as usize] == b {
-                    let mut faces = vec![corner_face[c], corner_face[d as usize]];
-                    let opposite = out
-                        [out_start[b as usize] as usize..out_start[b as usize + 1] as usize]
-                        .iter()
-                        .filter(|&&e| cv[next[e as usize] as usize] == a)
-                        .map(|&e| corner_face[e as usize])
-                        .collect::<Vec<_>>();
-                    if opposite.is_empty() {
-                        let (f1, f2) = (faces[0].min(faces[1]), faces[0].max(faces[1]));
-                        return Err(MeshError::InconsistentOrientation { a, b, f1, f2 });
-                    }
-                    faces.extend(opposite);
-                    faces.sort_unstable();
-                    faces.dedup();
-                    return Err(MeshError::NonManifoldEdge {
-                        a: a.min(b),
-                        b: a.max(b),
-                        faces,
-                    });
-                }
-            }
             let mut found = NONE;
             let mut count = 0;
             for &d in &out[out_start[b as usize] as usize..out_start[b as usize + 1] as usize] {
@@ -192,6 +168,27 @@ impl Topology {
                 });
             }
             twin[c] = found;
+        }
+        // A half-edge without a twin may share its direction with another one (two faces
+        // traversing a→b and none b→a): inconsistent orientation. Where a twin exists, a
+        // repeated direction was caught above as a third use of the edge.
+        for c in 0..nc {
+            if twin[c] != NONE {
+                continue;
+            }
+            let a = cv[c];
+            let b = cv[next[c] as usize];
+            for &d in &out[out_start[a as usize] as usize..out_start[a as usize + 1] as usize] {
+                if d as usize != c && cv[next[d as usize] as usize] == b {
+                    let (f1, f2) = (corner_face[c], corner_face[d as usize]);
+                    return Err(MeshError::InconsistentOrientation {
+                        a,
+                        b,
+                        f1: f1.min(f2),
+                        f2: f1.max(f2),
+                    });
+                }
+            }
         }
 
         let mut corner_edge = vec![NONE; nc];
