@@ -224,3 +224,33 @@ fn vector_sum_flips_on_holed_faces_as_measured() {
         vec![0, 6, 6]
     );
 }
+
+#[test]
+fn an_edge_with_its_own_radius_gets_that_radius() {
+    use prism_geom::{EdgeAttr, EdgeKey};
+    let cube = primitives::cube3();
+    let mut attrs = EdgeAttrs::new();
+    attrs.insert(
+        EdgeKey::new(0, 1),
+        EdgeAttr {
+            crease: 0.0,
+            radius: Some(0.25),
+        },
+    );
+    let mut p = Pipeline::new(
+        cube.clone(),
+        attrs,
+        parse_pipeline(&repeat("combination:r=0.45", 5)).unwrap(),
+    );
+    p.compute().unwrap();
+    let last = &p.levels()[5];
+    assert!(!last.edge_attrs.is_empty());
+    let own = measure_fillet(&cube, 0, 1, &last.mesh, 0.25).unwrap();
+    let other = measure_fillet(&cube, 2, 3, &last.mesh, 0.45).unwrap();
+    assert!(
+        own.max_radial_error < 5e-4 && own.min_radial_error > -1e-9,
+        "{own:?}"
+    );
+    assert!(other.max_radial_error < 5e-4, "{other:?}");
+    assert_eq!(flips(&p), vec![0; 5]);
+}
