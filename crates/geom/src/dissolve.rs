@@ -9,6 +9,7 @@
 
 use crate::edge_attrs::{EdgeAttrs, EdgeKey};
 use crate::mesh::PolyMesh;
+use crate::rules::dissolve_needed;
 use crate::topology::{NONE, Topology};
 use glam::DVec3;
 use thiserror::Error;
@@ -54,7 +55,7 @@ pub fn dissolve_flat_edges(
     attrs: &EdgeAttrs,
     tol: f64,
 ) -> Result<Option<Dissolved>, DissolveError> {
-    let flat: Vec<bool> = bends.iter().map(|b| b.abs() < tol).collect();
+    let flat: Vec<bool> = bends.iter().map(|&b| dissolve_needed(b, tol)).collect();
     let dissolved_edges = flat.iter().filter(|&&f| f).count();
     if dissolved_edges == 0 {
         return Ok(None);

@@ -38,6 +38,14 @@ pub struct Topology {
     pub warnings: Vec<MeshWarning>,
 }
 
+/// Number of distinct vertex indices in a loop.
+fn distinct_count(verts: &[u32]) -> u32 {
+    let mut d = verts.to_vec();
+    d.sort_unstable();
+    d.dedup();
+    d.len() as u32
+}
+
 impl Topology {
     /// Builds and checks the topology of `mesh`.
     pub fn build(mesh: &PolyMesh) -> Result<Topology, MeshError> {
@@ -87,27 +95,22 @@ impl Topology {
                     }
                 }
                 if n < 3 {
-                    let mut d: Vec<u32> = mesh.corner_verts[r.clone()].to_vec();
-                    d.sort_unstable();
-                    d.dedup();
                     return Err(MeshError::DegenerateLoop {
                         face: f as u32,
                         lp: (l - mesh.face_loops(f).start) as u32,
-                        distinct: d.len() as u32,
+                        distinct: distinct_count(&mesh.corner_verts[r.clone()]),
                     });
                 }
                 for (k, c) in r.clone().enumerate() {
                     let v = mesh.corner_verts[c] as usize;
                     if stamp[v] == f as u32 {
                         // Distinguish "a loop with too few distinct vertices" from a repeat.
-                        let mut d: Vec<u32> = mesh.corner_verts[r.clone()].to_vec();
-                        d.sort_unstable();
-                        d.dedup();
-                        if d.len() < 3 {
+                        let distinct = distinct_count(&mesh.corner_verts[r.clone()]);
+                        if distinct < 3 {
                             return Err(MeshError::DegenerateLoop {
                                 face: f as u32,
                                 lp: (l - mesh.face_loops(f).start) as u32,
-                                distinct: d.len() as u32,
+                                distinct,
                             });
                         }
                         return Err(MeshError::RepeatedVertex {
