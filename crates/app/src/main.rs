@@ -7,6 +7,12 @@ mod cli;
 use clap::Parser;
 use std::process::ExitCode;
 
+/// mimalloc keeps freed pages for the next level instead of returning them to the kernel;
+/// with the system allocator page faults cost more than a subdivision step
+/// (docs/performance.md).
+#[global_allocator]
+static ALLOC: mimalloc::MiMalloc = mimalloc::MiMalloc;
+
 fn main() -> ExitCode {
     let args = match cli::Cli::try_parse() {
         Ok(a) => a,

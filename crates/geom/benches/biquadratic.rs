@@ -1,12 +1,21 @@
 //! One biquadratic level on a 100k-quad torus (316 × 316 = 99 856 quads), single thread.
 //!
+//! `doo_sabin_level1` is the kernel from face lists to the refined face lists and points:
+//! topology build with every input check, closed-solid check, Doo–Sabin points, split.
 //! `step_*` is the whole user-visible step (`biquadratic_step`: topology build and checks,
 //! normals, corner points, split, flipped-face report); `split_only` is the topology of the
 //! split alone from precomputed points. Figures: docs/performance.md.
+//!
+//! The benchmark uses mimalloc, as the `prism` binary does: with glibc's default
+//! thresholds every level's fresh tens of megabytes are returned to the kernel and faulted
+//! in again, which costs more than the subdivision itself.
 
 use prism_geom::biquadratic;
 use prism_geom::rules::{CornerRule, RuleInput, corner_points};
 use prism_geom::{EdgeAttrs, StepOptions, Topology, biquadratic_step, primitives};
+
+#[global_allocator]
+static ALLOC: mimalloc::MiMalloc = mimalloc::MiMalloc;
 
 fn main() {
     divan::main();
@@ -51,6 +60,24 @@ fn doo_sabin_points_and_split(b: divan::Bencher) {
     let m = torus();
     let t = Topology::build(&m).unwrap();
     b.bench(|| {
+        let input = RuleInput {
+            mesh: &m,
+            topo: &t,
+            normals: &[],
+            cut_widths: &[],
+            vertex_neighbourhood: &[],
+        };
+        let (pts, _) = corner_points(&CornerRule::DooSabin, &input).unwrap();
+        biquadratic::split(&m, &t, pts)
+    });
+}
+
+#[divan::bench(sample_count = 20)]
+fn doo_sabin_level1(b: divan::Bencher) {
+    let m = torus();
+    b.bench(|| {
+        let t = Topology::build(&m).unwrap();
+        t.require_closed(&m).unwrap();
         let input = RuleInput {
             mesh: &m,
             topo: &t,

@@ -14,7 +14,9 @@ use crate::biquadratic::{self, FaceKind, Provenance};
 use crate::dissolve::{DissolveError, dissolve_flat_edges};
 use crate::edge_attrs::{self, EdgeAttrs};
 use crate::error::MeshError;
-use crate::geometry::{face_normals_raw, signed_bend_angles, signed_volume, unit_or_zero};
+use crate::geometry::{
+    face_normal_and_volume6, face_normals_raw, loop_newell, signed_bend_angles, unit_or_zero,
+};
 use crate::mesh::PolyMesh;
 use crate::rules::{self, CornerRule, ParamError, RuleError, RuleInput};
 use crate::topology::Topology;
@@ -191,17 +193,17 @@ pub fn biquadratic_step(
     let new_attrs = edge_attrs::propagate_biquadratic(cur, &topo, cur_attrs);
     let new_vn = matches!(rule, CornerRule::Combination { .. })
         .then(|| biquadratic::vertex_neighbourhood_flags(cur, &topo, &prov, cur_vn));
-    let (flipped, degenerate) = flipped_and_degenerate(cur, &topo, &normals, &out, &prov);
+    let checked = check_children(cur, &topo, &normals, &out, &prov);
     let report = StepReport {
         vertices: out.num_vertices(),
         edges: 4 * topo.num_edges(),
         faces: out.num_faces(),
-        flipped,
-        degenerate,
+        flipped: checked.flipped,
+        degenerate: checked.degenerate,
         dissolved_edges: dissolved.as_ref().map_or(0, |d| d.dissolved_edges),
         guarded_corners: rule_report.guarded_corners,
         collapsed_corners: rule_report.collapsed_corners,
-        volume: signed_volume(&out),
+        volume: checked.volume,
         millis: start.elapsed().as_secs_f64() * 1e3,
     };
     Ok(StepOutput {
@@ -214,24 +216,43 @@ pub fn biquadratic_step(
     })
 }
 
-/// Flipped and degenerate new faces (ALGORITHMS.md §1.5).
-pub fn flipped_and_degenerate(
+/// Flipped and degenerate new faces, and the signed volume of the child: one pass over the
+/// child's faces.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct ChildCheck {
+    pub flipped: Vec<u32>,
+    pub degenerate: Vec<u32>,
+    pub volume: f64,
+}
+
+/// Checks every new face against its parent element's normal (ALGORITHMS.md §1.5) and sums
+/// the child's signed volume.
+pub fn check_children(
     parent: &PolyMesh,
     topo: &Topology,
     parent_normals: &[DVec3],
     child: &PolyMesh,
     prov: &Provenance,
-) -> (Vec<u32>, Vec<u32>) {
+) -> ChildCheck {
     let mut vsum = vec![DVec3::ZERO; parent.num_vertices()];
     for c in 0..parent.num_corners() {
         vsum[parent.corner_verts[c] as usize] += parent_normals[topo.corner_face[c] as usize];
     }
     let d = child.bbox_diagonal();
     let tiny = DEGENERATE_AREA * d * d;
-    let mut flipped = Vec::new();
-    let mut degenerate = Vec::new();
+    let mut out = ChildCheck::default();
+    let mut v6 = 0.0;
+    let single_loop = child.num_loops() == child.num_faces();
     for f in 0..child.num_faces() {
-        let n = crate::geometry::face_normal_raw(child, f);
+        let (n, fv) = if single_loop {
+            // Hole-free child (the usual case): the loop is the face.
+            let vs = child.loop_verts(f);
+            let n = loop_newell(child, vs);
+            (n, 2.0 * child.positions[vs[0] as usize].dot(n))
+        } else {
+            face_normal_and_volume6(child, f)
+        };
+        v6 += fv;
         let p = prov.face_parent[f] as usize;
         let np = match prov.face_kind[f] {
             FaceKind::Face => parent_normals[p],
@@ -242,11 +263,12 @@ pub fn flipped_and_degenerate(
             }
             FaceKind::Vertex => vsum[p],
         };
-        if n.length() < tiny {
-            degenerate.push(f as u32);
+        if n.length_squared() < tiny * tiny {
+            out.degenerate.push(f as u32);
         } else if n.dot(np) < 0.0 {
-            flipped.push(f as u32);
+            out.flipped.push(f as u32);
         }
     }
-    (flipped, degenerate)
+    out.volume = v6 / 6.0;
+    out
 }

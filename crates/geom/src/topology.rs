@@ -46,6 +46,43 @@ fn distinct_count(verts: &[u32]) -> u32 {
     d.len() as u32
 }
 
+/// The full check of one face's loops: indices in range, at least three distinct
+/// vertices per loop, no vertex twice in the face (`stamp` holds the last face that used
+/// each vertex).
+fn check_face(mesh: &PolyMesh, f: usize, stamp: &mut [u32]) -> Result<(), MeshError> {
+    let nv = stamp.len();
+    let loops = mesh.face_loops(f);
+    for l in loops.clone() {
+        let vs = mesh.loop_verts(l);
+        let lp = (l - loops.start) as u32;
+        if let Some(&v) = vs.iter().find(|&&v| v as usize >= nv) {
+            return Err(MeshError::IndexOutOfRange {
+                face: f as u32,
+                index: v,
+                count: nv as u32,
+            });
+        }
+        let distinct = distinct_count(vs);
+        if distinct < 3 {
+            return Err(MeshError::DegenerateLoop {
+                face: f as u32,
+                lp,
+                distinct,
+            });
+        }
+        for &v in vs {
+            if stamp[v as usize] == f as u32 {
+                return Err(MeshError::RepeatedVertex {
+                    face: f as u32,
+                    vertex: v,
+                });
+            }
+            stamp[v as usize] = f as u32;
+        }
+    }
+    Ok(())
+}
+
 impl Topology {
     /// Builds and checks the topology of `mesh`.
     pub fn build(mesh: &PolyMesh) -> Result<Topology, MeshError> {
@@ -74,94 +111,87 @@ impl Topology {
         let mut corner_face = vec![0u32; nc];
         let mut next = vec![0u32; nc];
         let mut prev = vec![0u32; nc];
-        // Per-vertex stamp of the last face that used it: detects a vertex repeated in a face.
+        // Per-vertex stamp of the last face that used it: detects a vertex repeated in a
+        // face with more than four corners (smaller ones compare their corners directly).
         let mut stamp = vec![NONE; nv];
         for f in 0..nf {
             let loops = mesh.face_loops(f);
             if loops.is_empty() {
                 return Err(MeshError::EmptyFace { face: f as u32 });
             }
+            let corners = mesh.face_corners(f);
+            let vs = &mesh.corner_verts[corners.clone()];
+            let small = loops.len() == 1 && (3..=4).contains(&vs.len());
+            let ok = small
+                && vs.iter().all(|&v| (v as usize) < nv)
+                && vs[0] != vs[1]
+                && vs[0] != vs[2]
+                && vs[1] != vs[2]
+                && (vs.len() == 3 || (vs[3] != vs[0] && vs[3] != vs[1] && vs[3] != vs[2]));
+            if !ok {
+                check_face(mesh, f, &mut stamp)?;
+            }
             for l in loops {
                 let r = mesh.loop_corners(l);
-                let n = r.len();
                 for c in r.clone() {
-                    let v = mesh.corner_verts[c];
-                    if v as usize >= nv {
-                        return Err(MeshError::IndexOutOfRange {
-                            face: f as u32,
-                            index: v,
-                            count: nv as u32,
-                        });
-                    }
-                }
-                if n < 3 {
-                    return Err(MeshError::DegenerateLoop {
-                        face: f as u32,
-                        lp: (l - mesh.face_loops(f).start) as u32,
-                        distinct: distinct_count(&mesh.corner_verts[r.clone()]),
-                    });
-                }
-                for (k, c) in r.clone().enumerate() {
-                    let v = mesh.corner_verts[c] as usize;
-                    if stamp[v] == f as u32 {
-                        // Distinguish "a loop with too few distinct vertices" from a repeat.
-                        let distinct = distinct_count(&mesh.corner_verts[r.clone()]);
-                        if distinct < 3 {
-                            return Err(MeshError::DegenerateLoop {
-                                face: f as u32,
-                                lp: (l - mesh.face_loops(f).start) as u32,
-                                distinct,
-                            });
-                        }
-                        return Err(MeshError::RepeatedVertex {
-                            face: f as u32,
-                            vertex: v as u32,
-                        });
-                    }
-                    stamp[v] = f as u32;
                     corner_face[c] = f as u32;
-                    next[c] = if k + 1 == n { r.start } else { c + 1 } as u32;
-                    prev[c] = if k == 0 { r.end - 1 } else { c - 1 } as u32;
+                    next[c] = (c + 1) as u32;
+                    prev[c] = c.wrapping_sub(1) as u32;
                 }
+                next[r.end - 1] = r.start as u32;
+                prev[r.start] = (r.end - 1) as u32;
             }
         }
 
-        // Outgoing half-edges per vertex (CSR).
+        // Outgoing half-edges per vertex (CSR), each stored with its destination vertex so
+        // that the twin search reads one contiguous run.
+        let cv = &mesh.corner_verts;
         let mut out_start = vec![0u32; nv + 1];
-        for &v in &mesh.corner_verts {
+        for &v in cv {
             out_start[v as usize + 1] += 1;
         }
         for i in 0..nv {
             out_start[i + 1] += out_start[i];
         }
-        let mut fill = out_start.clone();
-        let mut out = vec![0u32; nc];
-        for (c, &v) in mesh.corner_verts.iter().enumerate() {
-            out[fill[v as usize] as usize] = c as u32;
-            fill[v as usize] += 1;
+        let mut fill: Vec<u32> = out_start[..nv].to_vec();
+        let mut out: Vec<(u32, u32)> = vec![(0, 0); nc];
+        for (c, &v) in cv.iter().enumerate() {
+            let slot = &mut fill[v as usize];
+            out[*slot as usize] = (c as u32, cv[next[c] as usize]);
+            *slot += 1;
         }
+        drop(fill);
+        let outgoing =
+            |v: u32| &out[out_start[v as usize] as usize..out_start[v as usize + 1] as usize];
 
+        // One pass pairs every half-edge with its twin and numbers the edges: edge e's first
+        // half-edge is the smaller corner index of the pair, so edges come in corner order.
         let mut twin = vec![NONE; nc];
-        let cv = &mesh.corner_verts;
+        let mut corner_edge = vec![NONE; nc];
+        let mut edge_corner = Vec::with_capacity(nc / 2 + 1);
         for c in 0..nc {
+            if corner_edge[c] != NONE {
+                continue;
+            }
             let a = cv[c];
             let b = cv[next[c] as usize];
             let mut found = NONE;
             let mut count = 0;
-            for &d in &out[out_start[b as usize] as usize..out_start[b as usize + 1] as usize] {
-                if cv[next[d as usize] as usize] == a {
+            for &(d, dst) in outgoing(b) {
+                if dst == a {
                     found = d;
                     count += 1;
                 }
             }
-            if count > 1 {
-                let mut faces: Vec<u32> = out
-                    [out_start[b as usize] as usize..out_start[b as usize + 1] as usize]
+            // A third use of the edge: a second b→a half-edge, or a b→a half-edge that an
+            // earlier a→b half-edge already took.
+            if count > 1 || (found != NONE && corner_edge[found as usize] != NONE) {
+                let mut faces: Vec<u32> = outgoing(b)
                     .iter()
-                    .filter(|&&e| cv[next[e as usize] as usize] == a)
-                    .map(|&e| corner_face[e as usize])
+                    .filter(|&&(_, dst)| dst == a)
+                    .chain(outgoing(a).iter().filter(|&&(_, dst)| dst == b))
+                    .map(|&(e, _)| corner_face[e as usize])
                     .collect();
-                faces.push(corner_face[c]);
                 faces.sort_unstable();
                 faces.dedup();
                 return Err(MeshError::NonManifoldEdge {
@@ -170,51 +200,42 @@ impl Topology {
                     faces,
                 });
             }
-            twin[c] = found;
-        }
-        // A half-edge without a twin may share its direction with another one (two faces
-        // traversing a→b and none b→a): inconsistent orientation. Where a twin exists, a
-        // repeated direction was caught above as a third use of the edge.
-        for c in 0..nc {
-            if twin[c] != NONE {
-                continue;
-            }
-            let a = cv[c];
-            let b = cv[next[c] as usize];
-            for &d in &out[out_start[a as usize] as usize..out_start[a as usize + 1] as usize] {
-                if d as usize != c && cv[next[d as usize] as usize] == b {
-                    let (f1, f2) = (corner_face[c], corner_face[d as usize]);
-                    return Err(MeshError::InconsistentOrientation {
-                        a,
-                        b,
-                        f1: f1.min(f2),
-                        f2: f1.max(f2),
-                    });
+            let e = edge_corner.len() as u32;
+            edge_corner.push(c as u32);
+            corner_edge[c] = e;
+            if found != NONE {
+                twin[c] = found;
+                twin[found as usize] = c as u32;
+                corner_edge[found as usize] = e;
+            } else {
+                // Without a twin, another a→b half-edge means two faces run the edge the
+                // same way: inconsistent orientation.
+                for &(d, dst) in outgoing(a) {
+                    if d as usize != c && dst == b {
+                        let (f1, f2) = (corner_face[c], corner_face[d as usize]);
+                        return Err(MeshError::InconsistentOrientation {
+                            a,
+                            b,
+                            f1: f1.min(f2),
+                            f2: f1.max(f2),
+                        });
+                    }
                 }
             }
         }
 
-        let mut corner_edge = vec![NONE; nc];
-        let mut edge_corner = Vec::with_capacity(nc / 2 + 1);
-        for c in 0..nc {
-            let t = twin[c];
-            if t == NONE || (c as u32) < t {
-                let e = edge_corner.len() as u32;
-                edge_corner.push(c as u32);
-                corner_edge[c] = e;
-                if t != NONE {
-                    corner_edge[t as usize] = e;
-                }
-            }
-        }
-
+        // One outgoing half-edge per vertex; on a boundary the one without a twin, so that
+        // walking the ring with `ring_next` from it visits the whole fan.
         let mut vert_corner = vec![NONE; nv];
         let mut unused = 0u32;
         let mut first_unused = NONE;
-        for v in 0..nv {
-            let s = out_start[v] as usize;
-            if s < out_start[v + 1] as usize {
-                vert_corner[v] = out[s];
+        for (v, vc) in vert_corner.iter_mut().enumerate() {
+            let ring = outgoing(v as u32);
+            if let Some(&(first, _)) = ring.first() {
+                *vc = ring
+                    .iter()
+                    .find(|&&(d, _)| twin[d as usize] == NONE)
+                    .map_or(first, |&(d, _)| d);
             } else {
                 unused += 1;
                 if first_unused == NONE {

@@ -1,6 +1,6 @@
 //! Analysis that the app shows and the tests assert: counts, the fillet radius reached
 //! along an edge. Flipped and degenerate faces are found by each step
-//! ([`crate::step::flipped_and_degenerate`]).
+//! ([`crate::step::check_children`]).
 
 mod counts;
 mod fillet;
