@@ -9,10 +9,13 @@
 
 use crate::biquadratic::Provenance;
 use crate::edge_attrs::EdgeAttrs;
+use crate::geometry::signed_volume;
 use crate::mesh::PolyMesh;
+use crate::primal::refine_primal;
 use crate::rules::CornerRule;
 use crate::scheme::Scheme;
 use crate::step::{StepError, StepOptions, StepReport, biquadratic_step};
+use crate::tags::SubdivTags;
 use thiserror::Error;
 
 /// One computed level.
@@ -20,7 +23,10 @@ use thiserror::Error;
 pub struct Level {
     pub mesh: PolyMesh,
     pub edge_attrs: EdgeAttrs,
-    /// Where the faces came from (none for the input).
+    /// Corners, holes and options for the primal schemes. A biquadratic step keeps the
+    /// options and drops corners and holes (its vertices and faces are new).
+    pub tags: SubdivTags,
+    /// Where the faces came from (none for the input and after a primal step).
     pub provenance: Option<Provenance>,
     /// Vertex-neighbourhood flags, after a combination step.
     pub vertex_neighbourhood: Option<Vec<bool>>,
@@ -48,11 +54,22 @@ pub struct Pipeline {
 
 impl Pipeline {
     pub fn new(mesh: PolyMesh, edge_attrs: EdgeAttrs, steps: Vec<Scheme>) -> Self {
+        Self::with_tags(mesh, edge_attrs, SubdivTags::default(), steps)
+    }
+
+    /// A pipeline whose input carries corners, holes and options for the primal schemes.
+    pub fn with_tags(
+        mesh: PolyMesh,
+        edge_attrs: EdgeAttrs,
+        tags: SubdivTags,
+        steps: Vec<Scheme>,
+    ) -> Self {
         Pipeline {
             steps,
             levels: vec![Level {
                 mesh,
                 edge_attrs,
+                tags,
                 provenance: None,
                 vertex_neighbourhood: None,
                 report: None,
@@ -106,31 +123,69 @@ impl Pipeline {
             let k = self.levels.len() - 1;
             let scheme = self.steps[k];
             let prev = &self.levels[k];
-            let Scheme::Biquadratic(rule) = scheme;
-            let continuing = k > 0
-                && matches!(rule, CornerRule::Combination { .. })
-                && matches!(
-                    self.steps[k - 1],
-                    Scheme::Biquadratic(CornerRule::Combination { .. })
-                );
-            let vn = if continuing {
-                prev.vertex_neighbourhood.as_deref()
-            } else {
-                None
+            let err = |source: StepError| PipelineError {
+                step: k + 1,
+                scheme: scheme.to_string(),
+                source,
             };
-            let out = biquadratic_step(&prev.mesh, &prev.edge_attrs, &rule, vn, &self.options)
-                .map_err(|source| PipelineError {
-                    step: k + 1,
-                    scheme: scheme.to_string(),
-                    source,
-                })?;
-            self.levels.push(Level {
-                mesh: out.mesh,
-                edge_attrs: out.edge_attrs,
-                provenance: Some(out.provenance),
-                vertex_neighbourhood: out.vertex_neighbourhood,
-                report: Some(out.report),
-            });
+            let level = match scheme {
+                Scheme::Biquadratic(rule) => {
+                    let continuing = k > 0
+                        && matches!(rule, CornerRule::Combination { .. })
+                        && matches!(
+                            self.steps[k - 1],
+                            Scheme::Biquadratic(CornerRule::Combination { .. })
+                        );
+                    let vn = if continuing {
+                        prev.vertex_neighbourhood.as_deref()
+                    } else {
+                        None
+                    };
+                    let out =
+                        biquadratic_step(&prev.mesh, &prev.edge_attrs, &rule, vn, &self.options)
+                            .map_err(err)?;
+                    Level {
+                        mesh: out.mesh,
+                        edge_attrs: out.edge_attrs,
+                        tags: SubdivTags {
+                            corners: Default::default(),
+                            holes: Default::default(),
+                            ..prev.tags.clone()
+                        },
+                        provenance: Some(out.provenance),
+                        vertex_neighbourhood: out.vertex_neighbourhood,
+                        report: Some(out.report),
+                    }
+                }
+                Scheme::Primal(p) => {
+                    let out = refine_primal(
+                        &prev.mesh,
+                        &prev.edge_attrs,
+                        &prev.tags,
+                        p,
+                        self.options.memory_budget,
+                    )
+                    .map_err(|e| err(e.into()))?;
+                    let r = &out.report;
+                    let report = StepReport {
+                        vertices: r.vertices,
+                        edges: r.edges,
+                        faces: r.faces,
+                        volume: signed_volume(&out.mesh),
+                        millis: r.millis,
+                        ..StepReport::default()
+                    };
+                    Level {
+                        mesh: out.mesh,
+                        edge_attrs: out.edge_attrs,
+                        tags: out.tags,
+                        provenance: None,
+                        vertex_neighbourhood: None,
+                        report: Some(report),
+                    }
+                }
+            };
+            self.levels.push(level);
             each(k + 1, self.levels.last().expect("just pushed"));
         }
         Ok(&self.levels[upto])

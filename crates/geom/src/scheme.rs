@@ -3,9 +3,11 @@
 //! The text form is what the CLI, the files and the app's pipeline editor read and write:
 //! `doo-sabin`, `angle-bisector:l=0.1`, `cut-width:d=0.1`, `vector-sum:alpha=0.2`
 //! (`vector-sum:alpha=0.2:reflex=inward` for the paper's reflex-corner option),
-//! `cylindrical:r=0.2`, `minimum:r=0.2`, `combination:r=0.2`; a pipeline is a
-//! comma-separated list of steps. Parsing and printing round-trip.
+//! `cylindrical:r=0.2`, `minimum:r=0.2`, `combination:r=0.2`, and the primal schemes
+//! `catmull-clark` and `loop`; a pipeline is a comma-separated list of steps (e.g.
+//! `cut-width:d=0.1,catmull-clark,catmull-clark`). Parsing and printing round-trip.
 
+use crate::primal::PrimalScheme;
 use crate::rules::{CornerRule, ParamError, ReflexMode};
 use std::fmt;
 use thiserror::Error;
@@ -15,7 +17,12 @@ use thiserror::Error;
 pub enum Scheme {
     /// PRISM's biquadratic step (Doo–Sabin and the chamfer and cylindrical rules).
     Biquadratic(CornerRule),
+    /// Catmull–Clark or Loop, with the mesh's creases, corners and holes.
+    Primal(PrimalScheme),
 }
+
+/// The names of the primal schemes.
+pub const PRIMAL_NAMES: [&str; 2] = ["catmull-clark", "loop"];
 
 /// The names of the biquadratic schemes, in the order the paper presents them.
 pub const BIQUADRATIC_NAMES: [&str; 7] = [
@@ -31,7 +38,7 @@ pub const BIQUADRATIC_NAMES: [&str; 7] = [
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum SchemeError {
     #[error(
-        "unknown scheme '{0}' (known: doo-sabin, angle-bisector, cut-width, vector-sum, cylindrical, minimum, combination)"
+        "unknown scheme '{0}' (known: doo-sabin, angle-bisector, cut-width, vector-sum, cylindrical, minimum, combination, catmull-clark, loop)"
     )]
     Unknown(String),
     #[error("scheme '{scheme}' needs the parameter {param} (e.g. '{scheme}:{param}=0.1')")]
@@ -85,6 +92,8 @@ impl Scheme {
             "combination" => CornerRule::Combination {
                 r: need(radius, "r")?,
             },
+            "catmull-clark" => return Ok(Scheme::Primal(PrimalScheme::CatmullClark)),
+            "loop" => return Ok(Scheme::Primal(PrimalScheme::Loop)),
             other => return Err(SchemeError::Unknown(other.to_string())),
         };
         rule.validate()?;
@@ -103,6 +112,7 @@ impl Scheme {
                 CornerRule::Minimum { .. } => "minimum",
                 CornerRule::Combination { .. } => "combination",
             },
+            Scheme::Primal(p) => p.name(),
         }
     }
 
@@ -110,14 +120,17 @@ impl Scheme {
     pub fn validate(&self) -> Result<(), ParamError> {
         match self {
             Scheme::Biquadratic(r) => r.validate(),
+            Scheme::Primal(_) => Ok(()),
         }
     }
 }
 
 impl fmt::Display for Scheme {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        let Scheme::Biquadratic(r) = self;
         write!(f, "{}", self.name())?;
+        let Scheme::Biquadratic(r) = self else {
+            return Ok(());
+        };
         match *r {
             CornerRule::DooSabin => Ok(()),
             CornerRule::AngleBisector { l } => write!(f, ":l={l}"),
@@ -179,7 +192,9 @@ impl std::str::FromStr for Scheme {
                     });
                 }
             };
-            if !owner.contains(&name) && BIQUADRATIC_NAMES.contains(&name) {
+            if !owner.contains(&name)
+                && (BIQUADRATIC_NAMES.contains(&name) || PRIMAL_NAMES.contains(&name))
+            {
                 return Err(SchemeError::UnexpectedParam {
                     scheme: name.into(),
                     param: k.into(),
@@ -219,9 +234,9 @@ mod tests {
 
     #[test]
     fn text_form_round_trips() {
-        let text = "vector-sum:alpha=0.2,doo-sabin,cut-width:d=0.025,angle-bisector:l=0.1,cylindrical:r=0.45,minimum:r=0.3,combination:r=0.2,vector-sum:alpha=0.1:reflex=inward";
+        let text = "vector-sum:alpha=0.2,doo-sabin,cut-width:d=0.025,angle-bisector:l=0.1,cylindrical:r=0.45,minimum:r=0.3,combination:r=0.2,vector-sum:alpha=0.1:reflex=inward,catmull-clark,loop";
         let p = parse_pipeline(text).unwrap();
-        assert_eq!(p.len(), 8);
+        assert_eq!(p.len(), 10);
         assert_eq!(format_pipeline(&p), text);
     }
 
@@ -256,5 +271,9 @@ mod tests {
             Err(SchemeError::BadNumber(_))
         ));
         assert!(matches!(parse_pipeline(" , "), Err(SchemeError::Empty)));
+        assert!(matches!(
+            "loop:r=1".parse::<Scheme>(),
+            Err(SchemeError::UnexpectedParam { .. })
+        ));
     }
 }

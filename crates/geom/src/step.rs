@@ -56,6 +56,8 @@ pub enum StepError {
     Rule(#[from] RuleError),
     #[error(transparent)]
     Dissolve(#[from] DissolveError),
+    #[error(transparent)]
+    Primal(#[from] crate::primal::PrimalError),
     #[error(
         "the next level would need about {needed_mib} MiB, more than the budget of {budget_mib} MiB ({faces} faces)"
     )]

@@ -288,6 +288,13 @@ impl Topology {
                 });
             }
         }
+        self.require_single_fans(mesh)
+    }
+
+    /// Refuses a vertex whose faces do not form a single fan (closed around an interior
+    /// vertex, open at a boundary vertex): two cones touching at a tip, two sheets touching
+    /// at a corner.
+    pub fn require_single_fans(&self, mesh: &PolyMesh) -> Result<(), MeshError> {
         let mut valence = vec![0u32; mesh.num_vertices()];
         for &v in &mesh.corner_verts {
             valence[v as usize] += 1;
@@ -301,7 +308,7 @@ impl Topology {
             loop {
                 k += 1;
                 c = self.ring_next(c);
-                if c == start || k > valence[v] {
+                if c == NONE || c == start || k > valence[v] {
                     break;
                 }
             }
@@ -313,6 +320,55 @@ impl Topology {
             }
         }
         Ok(())
+    }
+
+    /// The edges around vertex `v` in ring order, each as (edge, other vertex), and the
+    /// faces between them: face i lies between edges i and i + 1. At a boundary vertex the
+    /// ring starts at the boundary edge with the fan on its left and ends at the other
+    /// boundary edge (one edge more than faces), as OpenSubdiv orders it.
+    pub fn vertex_ring(
+        &self,
+        mesh: &PolyMesh,
+        v: u32,
+        edges: &mut Vec<(u32, u32)>,
+        faces: &mut Vec<u32>,
+    ) {
+        edges.clear();
+        faces.clear();
+        let start = self.vert_corner[v as usize];
+        if start == NONE {
+            return;
+        }
+        let cv = &mesh.corner_verts;
+        let mut c = start;
+        loop {
+            edges.push((
+                self.corner_edge[c as usize],
+                cv[self.next[c as usize] as usize],
+            ));
+            faces.push(self.corner_face[c as usize]);
+            let n = self.ring_next(c);
+            if n == NONE {
+                let p = self.prev[c as usize] as usize;
+                edges.push((self.corner_edge[p], cv[p]));
+                return;
+            }
+            if n == start || faces.len() > self.corner_face.len() {
+                return;
+            }
+            c = n;
+        }
+    }
+
+    /// The edge joining vertices `a` and `b`, if there is one.
+    pub fn find_edge(&self, mesh: &PolyMesh, a: u32, b: u32) -> Option<u32> {
+        if a as usize >= self.vert_corner.len() || b as usize >= self.vert_corner.len() {
+            return None;
+        }
+        let mut edges = Vec::new();
+        let mut faces = Vec::new();
+        self.vertex_ring(mesh, a, &mut edges, &mut faces);
+        edges.iter().find(|&&(_, o)| o == b).map(|&(e, _)| e)
     }
 
     /// The two vertices of edge `e` as (a, b) in the direction of its first half-edge.

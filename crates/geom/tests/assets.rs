@@ -23,6 +23,7 @@ fn bundled_assets_are_the_builders_and_are_closed() {
         let doc = Document {
             mesh: mesh.clone(),
             edge_attrs: EdgeAttrs::new(),
+            tags: Default::default(),
             pipeline: None,
         };
         if std::env::var_os("PRISM_WRITE_ASSETS").is_some() {

@@ -19,7 +19,8 @@ pub struct SubdivideArgs {
     #[arg(short, long)]
     pub output: PathBuf,
     /// Scheme repeated --levels times: doo-sabin, angle-bisector, cut-width, vector-sum,
-    /// cylindrical, minimum, combination.
+    /// cylindrical, minimum, combination (closed solids), catmull-clark, loop (open meshes
+    /// too, with the file's creases, corners and holes).
     #[arg(long, conflicts_with = "pipeline")]
     pub scheme: Option<String>,
     /// Number of levels for --scheme.
@@ -100,7 +101,13 @@ pub fn run(a: SubdivideArgs) -> Result<(), CliError> {
     for w in &topo.warnings {
         eprintln!("warning: {}: {w}", a.input.display());
     }
-    topo.require_closed(&doc.mesh).map_err(|e| {
+    let needs_closed = matches!(steps.first(), Some(Scheme::Biquadratic(_)));
+    let check = if needs_closed {
+        topo.require_closed(&doc.mesh)
+    } else {
+        topo.require_single_fans(&doc.mesh)
+    };
+    check.map_err(|e| {
         CliError::input(format!(
             "{}: {}",
             a.input.display(),
@@ -113,7 +120,7 @@ pub fn run(a: SubdivideArgs) -> Result<(), CliError> {
         "level 0: {} vertices, {} edges, {} faces (input)",
         c0.vertices, c0.edges, c0.faces
     );
-    let mut pipeline = Pipeline::new(doc.mesh, doc.edge_attrs, steps.clone());
+    let mut pipeline = Pipeline::with_tags(doc.mesh, doc.edge_attrs, doc.tags, steps.clone());
     let n = steps.len();
     let result = pipeline.compute_with(n, |k, level| {
         let r = level.report.as_ref().expect("computed levels have a report");
@@ -162,6 +169,7 @@ pub fn run(a: SubdivideArgs) -> Result<(), CliError> {
     let out = Document {
         mesh: last.mesh.clone(),
         edge_attrs: last.edge_attrs.clone(),
+        tags: last.tags.clone(),
         pipeline: None,
     };
     let warnings = io::save(&a.output, &out).map_err(CliError::input)?;

@@ -6,6 +6,8 @@
 //!   "vertices": [[0, 0, 0], ...],
 //!   "faces": [[[0, 1, 2, 3]], [[4, 5, 6, 7], [8, 9, 10, 11]]],
 //!   "edges": [{ "a": 0, "b": 1, "radius": 0.3 }, { "a": 1, "b": 2, "crease": 10 }],
+//!   "subdivision": { "boundary": "edge-and-corner", "crease_method": "chaikin",
+//!                    "corners": { "4": 10 }, "holes": [2] },
 //!   "pipeline": "combination:r=0.2,combination:r=0.2" }
 //! ```
 //! A face is a list of loops, the outer loop first; indices are 0-based.
@@ -14,6 +16,7 @@ use super::{IoError, write_atomically};
 use crate::edge_attrs::{EdgeAttr, EdgeAttrs, EdgeKey};
 use crate::mesh::PolyMesh;
 use crate::scheme::{Scheme, format_pipeline, parse_pipeline};
+use crate::tags::SubdivTags;
 use glam::DVec3;
 use serde::{Deserialize, Serialize};
 use std::path::Path;
@@ -26,6 +29,8 @@ pub const DOCUMENT_VERSION: u64 = 1;
 pub struct Document {
     pub mesh: PolyMesh,
     pub edge_attrs: EdgeAttrs,
+    /// Corners, holes and options of the primal schemes.
+    pub tags: SubdivTags,
     pub pipeline: Option<Vec<Scheme>>,
 }
 
@@ -44,6 +49,8 @@ struct FileV1 {
     faces: Vec<Vec<Vec<u32>>>,
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     edges: Vec<EdgeRecord>,
+    #[serde(default, skip_serializing_if = "SubdivTags::is_default")]
+    subdivision: SubdivTags,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pipeline: Option<String>,
 }
@@ -95,6 +102,7 @@ pub fn document_from_str(path: &Path, text: &str) -> Result<Document, IoError> {
     Ok(Document {
         mesh,
         edge_attrs,
+        tags: f.subdivision,
         pipeline,
     })
 }
@@ -126,6 +134,7 @@ pub fn document_to_string(doc: &Document) -> String {
                 attr: *a,
             })
             .collect(),
+        subdivision: doc.tags.clone(),
         pipeline: doc.pipeline.as_deref().map(format_pipeline),
     };
     // Compact: one vertex or face per line would be nicer to diff, but serde_json's pretty
@@ -156,6 +165,12 @@ mod tests {
         let doc = Document {
             mesh: primitives::holed_block(),
             edge_attrs,
+            tags: SubdivTags {
+                boundary: crate::tags::BoundaryInterpolation::None,
+                corners: [(3, 2.5)].into_iter().collect(),
+                holes: [1].into_iter().collect(),
+                ..SubdivTags::default()
+            },
             pipeline: Some(parse_pipeline("combination:r=0.2,doo-sabin").unwrap()),
         };
         let text = document_to_string(&doc);

@@ -5,6 +5,7 @@
 mod atomic;
 mod document;
 mod obj;
+mod obj_tags;
 
 pub use atomic::write_atomically;
 pub use document::{DOCUMENT_VERSION, Document, read_document, write_document};
@@ -78,6 +79,7 @@ pub fn load(path: &Path) -> Result<(Document, Option<Vec<usize>>), IoError> {
                 Document {
                     mesh: m.mesh,
                     edge_attrs: m.edge_attrs,
+                    tags: m.tags,
                     pipeline: None,
                 },
                 Some(m.face_lines),
@@ -91,7 +93,7 @@ pub fn load(path: &Path) -> Result<(Document, Option<Vec<usize>>), IoError> {
 /// faces triangulated for OBJ).
 pub fn save(path: &Path, doc: &Document) -> Result<Vec<String>, IoError> {
     match FileKind::of(path)? {
-        FileKind::Obj => write_obj(path, &doc.mesh, &doc.edge_attrs),
+        FileKind::Obj => write_obj(path, &doc.mesh, &doc.edge_attrs, &doc.tags),
         FileKind::Document => write_document(path, doc).map(|_| Vec::new()),
     }
 }

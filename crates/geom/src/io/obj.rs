@@ -7,16 +7,18 @@
 //! handed to tobj has its `o`/`g`/`usemtl`/`mtllib` lines removed, all `v` lines first, and one
 //! point element per vertex in file order before the faces: tobj's positions are then exactly
 //! the file's. A pre-scan checks every `v` and `f` line and records line numbers, so errors
-//! name the line; `t crease 2/1/0 a b s` tags are read into edge attributes.
+//! name the line; OpenSubdiv's `t` tag lines are read by `obj_tags` (creases into edge
+//! attributes, corners, holes and options into [`SubdivTags`]).
 //!
 //! Writing keeps polygons; a face with holes, which OBJ cannot hold, is triangulated with
 //! `earcutr` in the face's plane and reported as a warning. Creases are written as `t crease`
-//! lines.
+//! lines, corners, holes and options as their `t` lines.
 
 use super::{IoError, write_atomically};
-use crate::edge_attrs::{EdgeAttrs, EdgeKey};
+use crate::edge_attrs::EdgeAttrs;
 use crate::geometry::{face_normal_raw, unit_or_zero};
 use crate::mesh::PolyMesh;
+use crate::tags::SubdivTags;
 use glam::DVec3;
 use std::fmt::Write as _;
 use std::path::Path;
@@ -26,6 +28,8 @@ use std::path::Path;
 pub struct ObjModel {
     pub mesh: PolyMesh,
     pub edge_attrs: EdgeAttrs,
+    /// Corners, holes and subdivision options from the `t` lines.
+    pub tags: SubdivTags,
     /// 1-based line number of each face.
     pub face_lines: Vec<usize>,
     /// 1-based line number of each vertex.
@@ -161,35 +165,13 @@ pub fn read_obj_str(path: &Path, text: &str) -> Result<ObjModel, IoError> {
     } else {
         mesh.positions.clear();
     }
-    let mut edge_attrs = EdgeAttrs::new();
-    for (lineno, words) in tags {
-        if words.first().map(String::as_str) != Some("crease") {
-            continue;
-        }
-        let bad = || {
-            err(
-                Some(lineno),
-                "expected 't crease 2/1/0 a b sharpness'".into(),
-            )
-        };
-        let counts = words.get(1).ok_or_else(bad)?;
-        if !counts.starts_with("2/1") {
-            return Err(bad());
-        }
-        let a: u32 = words.get(2).and_then(|w| w.parse().ok()).ok_or_else(bad)?;
-        let b: u32 = words.get(3).and_then(|w| w.parse().ok()).ok_or_else(bad)?;
-        let s: f64 = words.get(4).and_then(|w| w.parse().ok()).ok_or_else(bad)?;
-        if a as usize >= n || b as usize >= n || !s.is_finite() || s < 0.0 {
-            return Err(err(
-                Some(lineno),
-                format!("crease {a}-{b} sharpness {s}: vertex out of range or sharpness not ≥ 0"),
-            ));
-        }
-        edge_attrs.entry(EdgeKey::new(a, b)).or_default().crease = s;
-    }
+    let nf = mesh.num_faces();
+    let (edge_attrs, subdiv_tags) =
+        super::obj_tags::read_tags(&tags, n, nf).map_err(|(line, m)| err(Some(line), m))?;
     Ok(ObjModel {
         mesh,
         edge_attrs,
+        tags: subdiv_tags,
         face_lines,
         vertex_lines,
     })
@@ -232,7 +214,7 @@ fn triangulate_face(m: &PolyMesh, f: usize) -> Vec<[u32; 3]> {
 }
 
 /// The mesh as OBJ text, plus warnings.
-pub fn obj_to_string(m: &PolyMesh, attrs: &EdgeAttrs) -> (String, Vec<String>) {
+pub fn obj_to_string(m: &PolyMesh, attrs: &EdgeAttrs, tags: &SubdivTags) -> (String, Vec<String>) {
     let mut s = String::with_capacity(m.num_vertices() * 40 + m.num_corners() * 8);
     let mut warnings = Vec::new();
     s.push_str("# written by Prism\n");
@@ -254,10 +236,11 @@ pub fn obj_to_string(m: &PolyMesh, attrs: &EdgeAttrs) -> (String, Vec<String>) {
         }
         s.push('\n');
     }
-    for (k, a) in attrs {
-        if a.crease > 0.0 {
-            let _ = writeln!(s, "t crease 2/1/0 {} {} {}", k.0, k.1, a.crease);
-        }
+    super::obj_tags::write_tags(&mut s, attrs, tags);
+    if holed > 0 && !tags.holes.is_empty() {
+        warnings.push(
+            "hole tags refer to faces before triangulation; faces with holes and hole tags do not mix in OBJ".into(),
+        );
     }
     if holed > 0 {
         warnings.push(format!(
@@ -271,8 +254,13 @@ pub fn obj_to_string(m: &PolyMesh, attrs: &EdgeAttrs) -> (String, Vec<String>) {
 }
 
 /// Writes OBJ atomically; returns warnings.
-pub fn write_obj(path: &Path, m: &PolyMesh, attrs: &EdgeAttrs) -> Result<Vec<String>, IoError> {
-    let (s, w) = obj_to_string(m, attrs);
+pub fn write_obj(
+    path: &Path,
+    m: &PolyMesh,
+    attrs: &EdgeAttrs,
+    tags: &SubdivTags,
+) -> Result<Vec<String>, IoError> {
+    let (s, w) = obj_to_string(m, attrs, tags);
     write_atomically(path, s.as_bytes())?;
     Ok(w)
 }
@@ -280,12 +268,13 @@ pub fn write_obj(path: &Path, m: &PolyMesh, attrs: &EdgeAttrs) -> Result<Vec<Str
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::edge_attrs::EdgeKey;
     use crate::primitives;
 
     #[test]
     fn round_trip_keeps_vertex_order_and_polygons() {
         let m = primitives::tripod();
-        let (s, w) = obj_to_string(&m, &EdgeAttrs::new());
+        let (s, w) = obj_to_string(&m, &EdgeAttrs::new(), &SubdivTags::default());
         assert!(w.is_empty());
         let back = read_obj_str(Path::new("t.obj"), &s).unwrap();
         assert_eq!(back.mesh, m);
@@ -317,7 +306,7 @@ mod tests {
     #[test]
     fn holed_faces_are_triangulated_with_a_warning() {
         let m = primitives::holed_block();
-        let (s, w) = obj_to_string(&m, &EdgeAttrs::new());
+        let (s, w) = obj_to_string(&m, &EdgeAttrs::new(), &SubdivTags::default());
         assert_eq!(w.len(), 1);
         let back = read_obj_str(Path::new("t.obj"), &s).unwrap();
         // Two holed faces (8 vertices each, 1 hole) → 8 triangles each; 8 side quads.

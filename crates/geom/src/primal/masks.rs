@@ -1,0 +1,100 @@
+//! The smooth point masks of Catmull–Clark and Loop; crease (½, ½ and ⅛, ¾, ⅛) and corner
+//! masks are shared and live in the driver.
+//!
+//! Catmull–Clark (Catmull & Clark 1978; seed 000's reference scheme):
+//! - face point: the centroid of the face;
+//! - smooth edge point: `¼(a + b) + ¼(F₀ + F₁)` with the two face points; with the
+//!   "smooth triangles" option a triangle's face weight is 0.47 (OpenSubdiv's constant):
+//!   `w_f = ½(w₀ + w₁)`, `w_v = ½(1 − 2w_f)`;
+//! - smooth vertex point of valence n: `((n − 2)/n) v + (1/n²) Σ e_i + (1/n²) Σ F_i`.
+//!
+//! Loop (Loop 1987; seed 001 eq. 1–2):
+//! - smooth edge point: `⅜(a + b) + ⅛(c + d)` with c, d the opposite vertices;
+//! - smooth vertex point: `(1 − nβ) v + β Σ e_i`, `β = (⅝ − (⅜ + ¼ cos(2π/n))²)/n`, which is
+//!   1/16 at n = 6.
+//!
+//! Everything is `f64`; the references of OpenSubdiv 3.5 agree to 1e-15 of the model size
+//! (an `f32` cosine or an `f32` 0.47, as later OpenSubdiv sources spell them, would not:
+//! they differ by 1e-9).
+
+use crate::tags::TriangleSubdivision;
+use glam::DVec3;
+
+/// Catmull–Clark smooth edge point between vertices `a`, `b` with face points `f0`, `f1`
+/// of faces with `n0`, `n1` corners.
+#[inline]
+#[allow(clippy::too_many_arguments)]
+pub fn catmark_edge(
+    tri: TriangleSubdivision,
+    a: DVec3,
+    b: DVec3,
+    f0: DVec3,
+    f1: DVec3,
+    n0: usize,
+    n1: usize,
+) -> (f64, f64, DVec3) {
+    let (vw, fw) = catmark_edge_weights(tri, n0, n1);
+    (vw, fw, vw * (a + b) + fw * (f0 + f1))
+}
+
+/// Vertex and face weights of a Catmull–Clark smooth edge.
+#[inline]
+pub fn catmark_edge_weights(tri: TriangleSubdivision, n0: usize, n1: usize) -> (f64, f64) {
+    if tri == TriangleSubdivision::Smooth && (n0 == 3 || n1 == 3) {
+        let t = 0.47;
+        let w0 = if n0 == 3 { t } else { 0.25 };
+        let w1 = if n1 == 3 { t } else { 0.25 };
+        let fw = 0.5 * (w0 + w1);
+        (0.5 * (1.0 - 2.0 * fw), fw)
+    } else {
+        (0.25, 0.25)
+    }
+}
+
+/// Catmull–Clark smooth vertex point from the vertex, the sum of its neighbours along the
+/// n edges and the sum of its n face points.
+#[inline]
+pub fn catmark_vertex(v: DVec3, edge_sum: DVec3, face_sum: DVec3, n: usize) -> DVec3 {
+    let nf = n as f64;
+    let vw = (nf - 2.0) / nf;
+    let w = 1.0 / (nf * nf);
+    vw * v + w * edge_sum + w * face_sum
+}
+
+/// Loop's vertex and per-edge weights for valence `n`.
+#[inline]
+pub fn loop_vertex_weights(n: usize) -> (f64, f64) {
+    if n == 6 {
+        return (0.625, 0.0625);
+    }
+    let inv = 1.0 / n as f64;
+    let c = (std::f64::consts::PI * 2.0 * inv).cos();
+    let beta = 0.25 * c + 0.375;
+    let ew = (0.625 - beta * beta) * inv;
+    (1.0 - ew * n as f64, ew)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn weights_sum_to_one() {
+        for n in 3..12 {
+            let (v, e) = loop_vertex_weights(n);
+            assert!((v + n as f64 * e - 1.0).abs() < 1e-15);
+            let p = catmark_vertex(DVec3::ONE, DVec3::ONE * n as f64, DVec3::ONE * n as f64, n);
+            assert!((p - DVec3::ONE).length() < 1e-15);
+        }
+        assert_eq!(loop_vertex_weights(6), (0.625, 0.0625));
+        // Valence 3: β = 3/16 (Warren's value coincides with Loop's here).
+        let (_, e) = loop_vertex_weights(3);
+        assert!((e - 3.0 / 16.0).abs() < 1e-7);
+        let (vw, fw) = catmark_edge_weights(TriangleSubdivision::Smooth, 3, 3);
+        assert!((2.0 * vw + 2.0 * fw - 1.0).abs() < 1e-15);
+        assert_eq!(
+            catmark_edge_weights(TriangleSubdivision::Catmark, 3, 3),
+            (0.25, 0.25)
+        );
+    }
+}

@@ -1,0 +1,501 @@
+//! The primal schemes, Catmull–Clark and Loop, with creases, corners, boundaries and holes,
+//! written once: one driver classifies every vertex and edge (smooth, dart, crease, corner,
+//! and the blend where a semi-sharp feature runs out) and splits the faces, and only the
+//! smooth masks ([`masks`]) and the split pattern differ per scheme.
+//!
+//! Seeds: Loop with discontinuities, seed 001 §2 (crease masks eq. 3–4, limit eq. 5–7);
+//! Catmull–Clark, the reference scheme of seeds 000 and 002. Semi-sharp creases follow
+//! DeRose, Kass & Truong (1998) as OpenSubdiv implements them, so that results equal
+//! OpenSubdiv's (tests/opensubdiv.rs): new vertex = blend of the parent's and the child's
+//! rule masks with the fractional weight of [`crease::fractional_weight`].
+//!
+//! Child numbering: vertex points keep their parent's index (`0..V`), then one edge point
+//! per parent edge (`V + e`), then (Catmull–Clark) one face point per face (`V + E + f`).
+//! Catmull–Clark writes one quad per parent corner (child face = parent corner index);
+//! Loop four triangles per parent triangle (corner triangles, then the middle one).
+//!
+//! Boundaries: boundary edges are infinitely sharp; with [`BoundaryInterpolation::EdgeAndCorner`]
+//! a vertex with one face and two edges is a sharp corner; with `None` the faces around a
+//! boundary vertex whose boundary edges are not all tagged infinitely sharp become holes.
+//! Holes are refined like any face (they shape their neighbours) and their children stay
+//! holes.
+
+// Vertices, edges and corners are indices into parallel arrays here; iterator chains over
+// three arrays at once read worse than the index.
+#![allow(clippy::needless_range_loop)]
+
+pub mod crease;
+pub mod masks;
+
+use crate::edge_attrs::{EdgeAttr, EdgeAttrs, EdgeKey};
+use crate::error::MeshError;
+use crate::mesh::PolyMesh;
+use crate::tags::{BoundaryInterpolation, CreaseMethod, SubdivTags};
+use crate::topology::{NONE, Topology};
+use crease::{INFINITE, Rule, is_semi_sharp, is_sharp, vertex_rule};
+use glam::DVec3;
+use std::time::Instant;
+use thiserror::Error;
+
+/// Which primal scheme.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum PrimalScheme {
+    CatmullClark,
+    Loop,
+}
+
+impl PrimalScheme {
+    pub fn name(self) -> &'static str {
+        match self {
+            PrimalScheme::CatmullClark => "catmull-clark",
+            PrimalScheme::Loop => "loop",
+        }
+    }
+}
+
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum PrimalError {
+    #[error(transparent)]
+    Mesh(#[from] MeshError),
+    #[error("face {face} has holes: {scheme} needs faces without holes")]
+    HoledFace { face: u32, scheme: &'static str },
+    #[error("face {face} has {corners} corners: Loop subdivides triangles only")]
+    NotTriangle { face: u32, corners: usize },
+    #[error(
+        "the next level would need about {needed_mib} MiB, more than the budget of {budget_mib} MiB ({faces} faces)"
+    )]
+    TooLarge {
+        needed_mib: u64,
+        budget_mib: u64,
+        faces: u64,
+    },
+}
+
+/// What one primal step did.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct PrimalReport {
+    pub vertices: usize,
+    pub edges: usize,
+    pub faces: usize,
+    /// Faces of the result that are holes.
+    pub holes: usize,
+    pub millis: f64,
+}
+
+/// The next level with its creases, corners and holes.
+#[derive(Debug, Clone)]
+pub struct PrimalOutput {
+    pub mesh: PolyMesh,
+    pub edge_attrs: EdgeAttrs,
+    pub tags: SubdivTags,
+    pub report: PrimalReport,
+}
+
+/// Sharpness of every edge and vertex of one level, boundary rules applied.
+struct Sharpness {
+    edge: Vec<f32>,
+    vert: Vec<f32>,
+    /// Number of sharp edges at each vertex.
+    sharp_edges: Vec<u32>,
+    /// Vertex semi-sharp or touching a semi-sharp edge: its rule may change.
+    semi: Vec<bool>,
+    /// Edges carrying a user attribute, with it.
+    tagged: Vec<(u32, EdgeAttr)>,
+    hole: Vec<bool>,
+}
+
+fn sharpness(mesh: &PolyMesh, topo: &Topology, attrs: &EdgeAttrs, tags: &SubdivTags) -> Sharpness {
+    let nv = mesh.num_vertices();
+    let ne = topo.num_edges();
+    let mut edge = vec![0.0f32; ne];
+    let mut tagged = Vec::new();
+    for (k, a) in attrs {
+        if let Some(e) = topo.find_edge(mesh, k.0, k.1) {
+            edge[e as usize] = (a.crease as f32).max(0.0);
+            tagged.push((e, *a));
+        }
+    }
+    let mut vert = vec![0.0f32; nv];
+    for (&v, &s) in &tags.corners {
+        if (v as usize) < nv {
+            vert[v as usize] = (s as f32).max(0.0);
+        }
+    }
+    let mut hole = vec![false; mesh.num_faces()];
+    for &f in &tags.holes {
+        if (f as usize) < hole.len() {
+            hole[f as usize] = true;
+        }
+    }
+    let mut ring_e = Vec::new();
+    let mut ring_f = Vec::new();
+    // Boundary vertices: holes (no interpolation) and sharp corners, before the boundary
+    // edges themselves are sharpened.
+    if tags.boundary != BoundaryInterpolation::EdgeOnly {
+        for v in 0..nv {
+            let c = topo.vert_corner[v];
+            if c == NONE || topo.twin[c as usize] != NONE {
+                continue;
+            }
+            topo.vertex_ring(mesh, v as u32, &mut ring_e, &mut ring_f);
+            match tags.boundary {
+                BoundaryInterpolation::None => {
+                    let open = ring_e.iter().any(|&(e, _)| {
+                        let c = topo.edge_corner[e as usize] as usize;
+                        topo.twin[c] == NONE && !crease::is_infinite(edge[e as usize])
+                    });
+                    if open {
+                        for &f in &ring_f {
+                            hole[f as usize] = true;
+                        }
+                    }
+                }
+                BoundaryInterpolation::EdgeAndCorner => {
+                    if ring_f.len() == 1 && ring_e.len() == 2 {
+                        vert[v] = INFINITE;
+                    }
+                }
+                BoundaryInterpolation::EdgeOnly => {}
+            }
+        }
+    }
+    for (e, s) in edge.iter_mut().enumerate() {
+        if topo.twin[topo.edge_corner[e] as usize] == NONE {
+            *s = INFINITE;
+        }
+    }
+    let mut sharp_edges = vec![0u32; nv];
+    let mut semi: Vec<bool> = vert.iter().map(|&s| is_semi_sharp(s)).collect();
+    for (e, &s) in edge.iter().enumerate() {
+        if is_sharp(s) {
+            let (a, b) = topo.edge_verts(mesh, e);
+            sharp_edges[a as usize] += 1;
+            sharp_edges[b as usize] += 1;
+            if is_semi_sharp(s) {
+                semi[a as usize] = true;
+                semi[b as usize] = true;
+            }
+        }
+    }
+    Sharpness {
+        edge,
+        vert,
+        sharp_edges,
+        semi,
+        tagged,
+        hole,
+    }
+}
+
+/// Child sharpness of each edge around a vertex, in ring order (`parent` in ring order).
+fn child_sharpness_around(method: CreaseMethod, parent: &[f32], out: &mut Vec<f32>) {
+    let (sum, count) = crease::semi_sharp_sum(parent.iter().copied());
+    out.clear();
+    out.extend(
+        parent
+            .iter()
+            .map(|&s| crease::child_edge_sharpness(method, s, parent.len(), sum, count)),
+    );
+}
+
+/// Semi-sharp sum and count around each vertex that touches a semi-sharp edge (Chaikin
+/// only needs them), summed in ring order.
+fn semi_sums(mesh: &PolyMesh, topo: &Topology, sh: &Sharpness) -> Vec<(f32, u32, u32)> {
+    let mut out = vec![(0.0f32, 0u32, 0u32); mesh.num_vertices()];
+    let mut ring_e = Vec::new();
+    let mut ring_f = Vec::new();
+    for v in 0..mesh.num_vertices() {
+        if !sh.semi[v] {
+            continue;
+        }
+        topo.vertex_ring(mesh, v as u32, &mut ring_e, &mut ring_f);
+        let (sum, count) = crease::semi_sharp_sum(ring_e.iter().map(|&(e, _)| sh.edge[e as usize]));
+        out[v] = (sum, count, ring_e.len() as u32);
+    }
+    out
+}
+
+/// Bytes of the child of a mesh (positions, corners, offsets), to refuse a step that would
+/// not fit.
+pub fn estimated_bytes(mesh: &PolyMesh, edges: usize, scheme: PrimalScheme) -> (u64, u64) {
+    let (v, e, f, c) = (
+        mesh.num_vertices() as u64,
+        edges as u64,
+        mesh.num_faces() as u64,
+        mesh.num_corners() as u64,
+    );
+    let (verts, faces, corners) = match scheme {
+        PrimalScheme::CatmullClark => (v + e + f, c, 4 * c),
+        PrimalScheme::Loop => (v + e, 4 * f, 12 * f),
+    };
+    (verts * 24 + corners * 4 + faces * 8, faces)
+}
+
+/// One level of Catmull–Clark or Loop.
+pub fn refine_primal(
+    mesh: &PolyMesh,
+    attrs: &EdgeAttrs,
+    tags: &SubdivTags,
+    scheme: PrimalScheme,
+    memory_budget: u64,
+) -> Result<PrimalOutput, PrimalError> {
+    let start = Instant::now();
+    let topo = Topology::build(mesh)?;
+    topo.require_single_fans(mesh)?;
+    for f in 0..mesh.num_faces() {
+        if mesh.face_has_holes(f) {
+            return Err(PrimalError::HoledFace {
+                face: f as u32,
+                scheme: scheme.name(),
+            });
+        }
+        if scheme == PrimalScheme::Loop && mesh.face_corners(f).len() != 3 {
+            return Err(PrimalError::NotTriangle {
+                face: f as u32,
+                corners: mesh.face_corners(f).len(),
+            });
+        }
+    }
+    let (needed, faces) = estimated_bytes(mesh, topo.num_edges(), scheme);
+    if needed > memory_budget {
+        return Err(PrimalError::TooLarge {
+            needed_mib: needed >> 20,
+            budget_mib: memory_budget >> 20,
+            faces,
+        });
+    }
+    let sh = sharpness(mesh, &topo, attrs, tags);
+    let method = tags.crease_method;
+    let chaikin = method == CreaseMethod::Chaikin;
+    let sums = if chaikin {
+        semi_sums(mesh, &topo, &sh)
+    } else {
+        Vec::new()
+    };
+    // Child sharpness of edge `e` at its end vertex `v`.
+    let child_edge = |e: usize, v: usize| -> f32 {
+        let s = sh.edge[e];
+        if chaikin {
+            let (sum, count, edges) = sums[v];
+            crease::child_edge_sharpness(method, s, edges as usize, sum, count)
+        } else {
+            crease::decrement(s)
+        }
+    };
+
+    let nv = mesh.num_vertices();
+    let ne = topo.num_edges();
+    let nf = mesh.num_faces();
+    let p = &mesh.positions;
+    let cv = &mesh.corner_verts;
+    let cc = scheme == PrimalScheme::CatmullClark;
+    let n_child_verts = nv + ne + if cc { nf } else { 0 };
+    let mut out = vec![DVec3::ZERO; n_child_verts];
+
+    // Face points.
+    if cc {
+        for f in 0..nf {
+            let r = mesh.face_corners(f);
+            let n = r.len() as f64;
+            let s: DVec3 = cv[r].iter().map(|&v| p[v as usize]).sum();
+            out[nv + ne + f] = s / n;
+        }
+    }
+    let face_size = |f: u32| mesh.face_corners(f as usize).len();
+
+    // Edge points.
+    for e in 0..ne {
+        let c = topo.edge_corner[e] as usize;
+        let t = topo.twin[c];
+        let (a, b) = (cv[c] as usize, cv[topo.next[c] as usize] as usize);
+        let s = sh.edge[e];
+        let crease_pt = 0.5 * (p[a] + p[b]);
+        if t == NONE {
+            out[nv + e] = crease_pt;
+            continue;
+        }
+        let t = t as usize;
+        let (f0, f1) = (topo.corner_face[c], topo.corner_face[t]);
+        // Smooth mask as vertex weight, face weight and the two face terms.
+        let (vw, fw, fsum) = if cc {
+            let (vw, fw) =
+                masks::catmark_edge_weights(tags.triangles, face_size(f0), face_size(f1));
+            (
+                vw,
+                fw,
+                out[nv + ne + f0 as usize] + out[nv + ne + f1 as usize],
+            )
+        } else {
+            let o0 = cv[topo.prev[c] as usize] as usize;
+            let o1 = cv[topo.prev[t] as usize] as usize;
+            (0.375, 0.125, p[o0] + p[o1])
+        };
+        out[nv + e] = if !is_sharp(s) {
+            vw * (p[a] + p[b]) + fw * fsum
+        } else {
+            let child_crease = is_sharp(child_edge(e, a)) && is_sharp(child_edge(e, b));
+            // The child vertex's rule decides (as OpenSubdiv's refiner passes it): a crease
+            // when both child edges stay sharp, else the blend with the parent's sharpness
+            // as the weight.
+            if child_crease {
+                crease_pt
+            } else {
+                let pw = s as f64;
+                let cw = 1.0 - pw;
+                (pw * 0.5 + cw * vw) * (p[a] + p[b]) + cw * fw * fsum
+            }
+        };
+    }
+
+    // Vertex points: smooth ones from per-vertex sums over the corners.
+    let mut edge_sum = vec![DVec3::ZERO; nv];
+    let mut face_sum = vec![DVec3::ZERO; if cc { nv } else { 0 }];
+    let mut faces_at = vec![0u32; nv];
+    for c in 0..mesh.num_corners() {
+        let v = cv[c] as usize;
+        edge_sum[v] += p[cv[topo.next[c] as usize] as usize];
+        if cc {
+            face_sum[v] += out[nv + ne + topo.corner_face[c] as usize];
+        }
+        faces_at[v] += 1;
+    }
+    let smooth_point = |v: usize| -> DVec3 {
+        let n = faces_at[v] as usize;
+        if cc {
+            masks::catmark_vertex(p[v], edge_sum[v], face_sum[v], n)
+        } else {
+            let (vw, ew) = masks::loop_vertex_weights(n);
+            vw * p[v] + ew * edge_sum[v]
+        }
+    };
+    let mut ring_e = Vec::new();
+    let mut ring_f = Vec::new();
+    let mut ps = Vec::new();
+    let mut cs = Vec::new();
+    for v in 0..nv {
+        if faces_at[v] == 0 {
+            out[v] = p[v];
+            continue;
+        }
+        let p_rule = vertex_rule(sh.vert[v], sh.sharp_edges[v] as usize);
+        if matches!(p_rule, Rule::Smooth | Rule::Dart) {
+            out[v] = smooth_point(v);
+            continue;
+        }
+        topo.vertex_ring(mesh, v as u32, &mut ring_e, &mut ring_f);
+        ps.clear();
+        ps.extend(ring_e.iter().map(|&(e, _)| sh.edge[e as usize]));
+        let rule_point = |rule: Rule, sharp: &[f32]| -> DVec3 {
+            match rule {
+                Rule::Smooth | Rule::Dart => smooth_point(v),
+                Rule::Crease => {
+                    let [i, j] = crease::crease_ends(sharp);
+                    0.75 * p[v] + 0.125 * (p[ring_e[i].1 as usize] + p[ring_e[j].1 as usize])
+                }
+                Rule::Corner => p[v],
+            }
+        };
+        let parent_pt = rule_point(p_rule, &ps);
+        if !sh.semi[v] {
+            out[v] = parent_pt;
+            continue;
+        }
+        child_sharpness_around(method, &ps, &mut cs);
+        let c_vert = crease::decrement(sh.vert[v]);
+        let c_rule = vertex_rule(c_vert, cs.iter().filter(|&&s| is_sharp(s)).count());
+        if c_rule == p_rule {
+            out[v] = parent_pt;
+            continue;
+        }
+        let child_pt = rule_point(c_rule, &cs);
+        let pw = crease::fractional_weight(method, sh.vert[v], c_vert, &ps, &cs) as f64;
+        out[v] = pw * parent_pt + (1.0 - pw) * child_pt;
+    }
+
+    // Faces.
+    let mut child = PolyMesh::new();
+    let mut child_hole = Vec::new();
+    if cc {
+        let nc = mesh.num_corners();
+        child.corner_verts.reserve(4 * nc);
+        child.loop_starts = (0..=nc as u32).map(|i| 4 * i).collect();
+        child.face_starts = (0..=nc as u32).collect();
+        for c in 0..nc {
+            let f = topo.corner_face[c];
+            child.corner_verts.extend_from_slice(&[
+                cv[c],
+                (nv as u32) + topo.corner_edge[c],
+                (nv + ne) as u32 + f,
+                (nv as u32) + topo.corner_edge[topo.prev[c] as usize],
+            ]);
+            if sh.hole[f as usize] {
+                child_hole.push(c as u32);
+            }
+        }
+    } else {
+        child.corner_verts.reserve(12 * nf);
+        child.loop_starts = (0..=4 * nf as u32).map(|i| 3 * i).collect();
+        child.face_starts = (0..=4 * nf as u32).collect();
+        for f in 0..nf {
+            let c0 = mesh.face_corners(f).start;
+            let v = [cv[c0], cv[c0 + 1], cv[c0 + 2]];
+            let e = [0, 1, 2].map(|k| nv as u32 + topo.corner_edge[c0 + k]);
+            child.corner_verts.extend_from_slice(&[
+                v[0], e[0], e[2], v[1], e[1], e[0], v[2], e[2], e[1], e[0], e[1], e[2],
+            ]);
+            if sh.hole[f] {
+                child_hole.extend((0..4).map(|k| (4 * f + k) as u32));
+            }
+        }
+    }
+    child.positions = out;
+
+    // Creases and corners one level down.
+    let mut child_attrs = EdgeAttrs::new();
+    for &(e, a) in &sh.tagged {
+        let (va, vb) = topo.edge_verts(mesh, e as usize);
+        let mid = (nv + e as usize) as u32;
+        for (end, s) in [
+            (va, child_edge(e as usize, va as usize)),
+            (vb, child_edge(e as usize, vb as usize)),
+        ] {
+            let attr = EdgeAttr {
+                crease: s as f64,
+                ..a
+            };
+            if attr.crease > 0.0 || attr.radius.is_some() {
+                child_attrs.insert(EdgeKey::new(end, mid), attr);
+            }
+        }
+    }
+    let mut child_tags = SubdivTags {
+        boundary: tags.boundary,
+        crease_method: tags.crease_method,
+        triangles: tags.triangles,
+        ..SubdivTags::default()
+    };
+    for (&v, &s) in &tags.corners {
+        let d = crease::decrement((s as f32).max(0.0));
+        if (v as usize) < nv && d > 0.0 {
+            child_tags.corners.insert(v, d as f64);
+        }
+    }
+    child_tags.holes = child_hole.iter().copied().collect();
+
+    let report = PrimalReport {
+        vertices: child.num_vertices(),
+        edges: match scheme {
+            PrimalScheme::CatmullClark => 2 * ne + mesh.num_corners(),
+            PrimalScheme::Loop => 2 * ne + 3 * nf,
+        },
+        faces: child.num_faces(),
+        holes: child_tags.holes.len(),
+        millis: start.elapsed().as_secs_f64() * 1e3,
+    };
+    Ok(PrimalOutput {
+        mesh: child,
+        edge_attrs: child_attrs,
+        tags: child_tags,
+        report,
+    })
+}
