@@ -36,7 +36,10 @@ pub use error::{MeshError, MeshWarning};
 pub use glam::DVec3;
 pub use mesh::PolyMesh;
 pub use pipeline::{Level, Pipeline, PipelineError};
-pub use primal::{PrimalError, PrimalOutput, PrimalScheme, refine_primal};
+pub use primal::{
+    LimitPoints, PrimalError, PrimalOutput, PrimalScheme, RingOrder, limit_points,
+    limit_points_ordered, refine_primal, refine_primal_ordered,
+};
 pub use rules::{CornerRule, ReflexMode};
 pub use scheme::{Scheme, parse_pipeline};
 pub use step::{StepError, StepOptions, StepReport, biquadratic_step};

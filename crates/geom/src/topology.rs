@@ -323,7 +323,8 @@ impl Topology {
     }
 
     /// The edges around vertex `v` in ring order, each as (edge, other vertex), and the
-    /// faces between them: face i lies between edges i and i + 1. At a boundary vertex the
+    /// corners of `v` in the faces between them: the face of corner i lies between edges i
+    /// and i + 1. At a boundary vertex the
     /// ring starts at the boundary edge with the fan on its left and ends at the other
     /// boundary edge (one edge more than faces), as OpenSubdiv orders it.
     pub fn vertex_ring(
@@ -331,11 +332,22 @@ impl Topology {
         mesh: &PolyMesh,
         v: u32,
         edges: &mut Vec<(u32, u32)>,
-        faces: &mut Vec<u32>,
+        corners: &mut Vec<u32>,
+    ) {
+        self.vertex_ring_from(mesh, self.vert_corner[v as usize], edges, corners);
+    }
+
+    /// As [`Topology::vertex_ring`], starting at corner `start` of the vertex (an interior
+    /// vertex's ring may start at any of its corners; [`NONE`] gives an empty ring).
+    pub fn vertex_ring_from(
+        &self,
+        mesh: &PolyMesh,
+        start: u32,
+        edges: &mut Vec<(u32, u32)>,
+        corners: &mut Vec<u32>,
     ) {
         edges.clear();
-        faces.clear();
-        let start = self.vert_corner[v as usize];
+        corners.clear();
         if start == NONE {
             return;
         }
@@ -346,14 +358,14 @@ impl Topology {
                 self.corner_edge[c as usize],
                 cv[self.next[c as usize] as usize],
             ));
-            faces.push(self.corner_face[c as usize]);
+            corners.push(c);
             let n = self.ring_next(c);
             if n == NONE {
                 let p = self.prev[c as usize] as usize;
                 edges.push((self.corner_edge[p], cv[p]));
                 return;
             }
-            if n == start || faces.len() > self.corner_face.len() {
+            if n == start || corners.len() > self.corner_face.len() {
                 return;
             }
             c = n;

@@ -25,7 +25,10 @@
 #![allow(clippy::needless_range_loop)]
 
 pub mod crease;
+pub mod limit;
 pub mod masks;
+
+pub use limit::{LimitPoints, limit_points, limit_points_ordered};
 
 use crate::edge_attrs::{EdgeAttr, EdgeAttrs, EdgeKey};
 use crate::error::MeshError;
@@ -91,8 +94,97 @@ pub struct PrimalOutput {
     pub report: PrimalReport,
 }
 
+/// The order OpenSubdiv gives the edges and faces around each vertex, which decides the
+/// side of a one-sided crease normal and which two edges a corner's tangents follow. At
+/// the input it is the natural one (each ring starts in the vertex's lowest-numbered face,
+/// each edge's first face is its lower-numbered one); refinement passes it on as
+/// OpenSubdiv's refiner does (`Vtr::QuadRefinement`, `Vtr::TriRefinement`).
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct RingOrder {
+    /// The corner each vertex's ring starts at ([`NONE`] for a vertex without faces).
+    pub ring_start: Vec<u32>,
+    /// Whether each corner's half-edge lies in its edge's first face.
+    pub first_half_edge: Vec<bool>,
+}
+
+impl RingOrder {
+    /// The natural order of a mesh's topology.
+    pub fn natural(topo: &Topology) -> RingOrder {
+        RingOrder {
+            ring_start: topo.vert_corner.clone(),
+            first_half_edge: (0..topo.corner_edge.len())
+                .map(|c| topo.edge_corner[topo.corner_edge[c] as usize] == c as u32)
+                .collect(),
+        }
+    }
+
+    /// The order of the child of a mesh with this order.
+    fn child(&self, mesh: &PolyMesh, topo: &Topology, scheme: PrimalScheme) -> RingOrder {
+        let nv = mesh.num_vertices();
+        let ne = topo.num_edges();
+        let nc = mesh.num_corners();
+        let first = &self.first_half_edge;
+        let first_of_edge = |e: usize| {
+            let c = topo.edge_corner[e];
+            let t = topo.twin[c as usize];
+            if t != NONE && first[t as usize] { t } else { c }
+        };
+        // Position of corner c in its (single-loop) face.
+        let local = |c: u32| {
+            c - mesh
+                .face_corners(topo.corner_face[c as usize] as usize)
+                .start as u32
+        };
+        let mut ring_start = Vec::new();
+        let mut first_half_edge;
+        match scheme {
+            PrimalScheme::CatmullClark => {
+                ring_start.reserve(nv + ne + mesh.num_faces());
+                ring_start.extend(
+                    self.ring_start
+                        .iter()
+                        .map(|&s| if s == NONE { NONE } else { 4 * s }),
+                );
+                ring_start.extend((0..ne).map(|e| 4 * topo.next[first_of_edge(e) as usize] + 3));
+                ring_start.extend(
+                    (0..mesh.num_faces()).map(|f| 4 * mesh.face_corners(f).start as u32 + 2),
+                );
+                first_half_edge = vec![false; 4 * nc];
+                for c in 0..nc {
+                    first_half_edge[4 * c] = first[c];
+                    first_half_edge[4 * c + 1] = true;
+                    first_half_edge[4 * c + 3] = first[topo.prev[c] as usize];
+                }
+            }
+            PrimalScheme::Loop => {
+                // Corner triangle k of face f is child face 4f + k: (v_k, e_k, e_(k−1)).
+                let tri = |c: u32| 4 * topo.corner_face[c as usize] + local(c);
+                ring_start.reserve(nv + ne);
+                ring_start.extend(
+                    self.ring_start
+                        .iter()
+                        .map(|&s| if s == NONE { NONE } else { 3 * tri(s) }),
+                );
+                ring_start
+                    .extend((0..ne).map(|e| 3 * tri(topo.next[first_of_edge(e) as usize]) + 2));
+                first_half_edge = vec![false; 4 * nc];
+                for c in 0..nc {
+                    let t = 3 * tri(c as u32) as usize;
+                    first_half_edge[t] = first[c];
+                    first_half_edge[t + 1] = true;
+                    first_half_edge[t + 2] = first[topo.prev[c] as usize];
+                }
+            }
+        }
+        RingOrder {
+            ring_start,
+            first_half_edge,
+        }
+    }
+}
+
 /// Sharpness of every edge and vertex of one level, boundary rules applied.
-struct Sharpness {
+pub(crate) struct Sharpness {
     edge: Vec<f32>,
     vert: Vec<f32>,
     /// Number of sharp edges at each vertex.
@@ -104,7 +196,12 @@ struct Sharpness {
     hole: Vec<bool>,
 }
 
-fn sharpness(mesh: &PolyMesh, topo: &Topology, attrs: &EdgeAttrs, tags: &SubdivTags) -> Sharpness {
+pub(crate) fn sharpness(
+    mesh: &PolyMesh,
+    topo: &Topology,
+    attrs: &EdgeAttrs,
+    tags: &SubdivTags,
+) -> Sharpness {
     let nv = mesh.num_vertices();
     let ne = topo.num_edges();
     let mut edge = vec![0.0f32; ne];
@@ -145,8 +242,8 @@ fn sharpness(mesh: &PolyMesh, topo: &Topology, attrs: &EdgeAttrs, tags: &SubdivT
                         topo.twin[c] == NONE && !crease::is_infinite(edge[e as usize])
                     });
                     if open {
-                        for &f in &ring_f {
-                            hole[f as usize] = true;
+                        for &c in &ring_f {
+                            hole[topo.corner_face[c as usize] as usize] = true;
                         }
                     }
                 }
@@ -200,7 +297,12 @@ fn child_sharpness_around(method: CreaseMethod, parent: &[f32], out: &mut Vec<f3
 
 /// Semi-sharp sum and count around each vertex that touches a semi-sharp edge (Chaikin
 /// only needs them), summed in ring order.
-fn semi_sums(mesh: &PolyMesh, topo: &Topology, sh: &Sharpness) -> Vec<(f32, u32, u32)> {
+fn semi_sums(
+    mesh: &PolyMesh,
+    topo: &Topology,
+    sh: &Sharpness,
+    ring_start: &dyn Fn(usize) -> u32,
+) -> Vec<(f32, u32, u32)> {
     let mut out = vec![(0.0f32, 0u32, 0u32); mesh.num_vertices()];
     let mut ring_e = Vec::new();
     let mut ring_f = Vec::new();
@@ -208,11 +310,30 @@ fn semi_sums(mesh: &PolyMesh, topo: &Topology, sh: &Sharpness) -> Vec<(f32, u32,
         if !sh.semi[v] {
             continue;
         }
-        topo.vertex_ring(mesh, v as u32, &mut ring_e, &mut ring_f);
+        topo.vertex_ring_from(mesh, ring_start(v), &mut ring_e, &mut ring_f);
         let (sum, count) = crease::semi_sharp_sum(ring_e.iter().map(|&(e, _)| sh.edge[e as usize]));
         out[v] = (sum, count, ring_e.len() as u32);
     }
     out
+}
+
+/// Refuses faces with holes, and non-triangles under Loop, naming the face.
+pub(crate) fn check_faces(mesh: &PolyMesh, scheme: PrimalScheme) -> Result<(), PrimalError> {
+    for f in 0..mesh.num_faces() {
+        if mesh.face_has_holes(f) {
+            return Err(PrimalError::HoledFace {
+                face: f as u32,
+                scheme: scheme.name(),
+            });
+        }
+        if scheme == PrimalScheme::Loop && mesh.face_corners(f).len() != 3 {
+            return Err(PrimalError::NotTriangle {
+                face: f as u32,
+                corners: mesh.face_corners(f).len(),
+            });
+        }
+    }
+    Ok(())
 }
 
 /// Bytes of the child of a mesh (positions, corners, offsets), to refuse a step that would
@@ -239,23 +360,35 @@ pub fn refine_primal(
     scheme: PrimalScheme,
     memory_budget: u64,
 ) -> Result<PrimalOutput, PrimalError> {
+    refine(mesh, attrs, tags, scheme, memory_budget, None).map(|(o, _)| o)
+}
+
+/// One level, also passing on OpenSubdiv's ring order (`parent` `None`: the mesh is an
+/// input, its order the natural one). What [`limit_points`] needs after several levels.
+pub fn refine_primal_ordered(
+    mesh: &PolyMesh,
+    attrs: &EdgeAttrs,
+    tags: &SubdivTags,
+    scheme: PrimalScheme,
+    memory_budget: u64,
+    parent: Option<&RingOrder>,
+) -> Result<(PrimalOutput, RingOrder), PrimalError> {
+    refine(mesh, attrs, tags, scheme, memory_budget, Some(parent))
+        .map(|(o, r)| (o, r.expect("tracked")))
+}
+
+fn refine(
+    mesh: &PolyMesh,
+    attrs: &EdgeAttrs,
+    tags: &SubdivTags,
+    scheme: PrimalScheme,
+    memory_budget: u64,
+    order: Option<Option<&RingOrder>>,
+) -> Result<(PrimalOutput, Option<RingOrder>), PrimalError> {
     let start = Instant::now();
     let topo = Topology::build(mesh)?;
     topo.require_single_fans(mesh)?;
-    for f in 0..mesh.num_faces() {
-        if mesh.face_has_holes(f) {
-            return Err(PrimalError::HoledFace {
-                face: f as u32,
-                scheme: scheme.name(),
-            });
-        }
-        if scheme == PrimalScheme::Loop && mesh.face_corners(f).len() != 3 {
-            return Err(PrimalError::NotTriangle {
-                face: f as u32,
-                corners: mesh.face_corners(f).len(),
-            });
-        }
-    }
+    check_faces(mesh, scheme)?;
     let (needed, faces) = estimated_bytes(mesh, topo.num_edges(), scheme);
     if needed > memory_budget {
         return Err(PrimalError::TooLarge {
@@ -264,11 +397,21 @@ pub fn refine_primal(
             faces,
         });
     }
+    let natural;
+    let order: Option<&RingOrder> = match order {
+        Some(Some(o)) => Some(o),
+        Some(None) => {
+            natural = RingOrder::natural(&topo);
+            Some(&natural)
+        }
+        None => None,
+    };
+    let ring_start = |v: usize| order.map_or(topo.vert_corner[v], |o| o.ring_start[v]);
     let sh = sharpness(mesh, &topo, attrs, tags);
     let method = tags.crease_method;
     let chaikin = method == CreaseMethod::Chaikin;
     let sums = if chaikin {
-        semi_sums(mesh, &topo, &sh)
+        semi_sums(mesh, &topo, &sh, &ring_start)
     } else {
         Vec::new()
     };
@@ -382,7 +525,7 @@ pub fn refine_primal(
             out[v] = smooth_point(v);
             continue;
         }
-        topo.vertex_ring(mesh, v as u32, &mut ring_e, &mut ring_f);
+        topo.vertex_ring_from(mesh, ring_start(v), &mut ring_e, &mut ring_f);
         ps.clear();
         ps.extend(ring_e.iter().map(|&(e, _)| sh.edge[e as usize]));
         let rule_point = |rule: Rule, sharp: &[f32]| -> DVec3 {
@@ -492,10 +635,14 @@ pub fn refine_primal(
         holes: child_tags.holes.len(),
         millis: start.elapsed().as_secs_f64() * 1e3,
     };
-    Ok(PrimalOutput {
-        mesh: child,
-        edge_attrs: child_attrs,
-        tags: child_tags,
-        report,
-    })
+    let child_order = order.map(|o| o.child(mesh, &topo, scheme));
+    Ok((
+        PrimalOutput {
+            mesh: child,
+            edge_attrs: child_attrs,
+            tags: child_tags,
+            report,
+        },
+        child_order,
+    ))
 }
