@@ -238,3 +238,111 @@ fn a_failed_save_keeps_the_previous_file() {
     assert_eq!(o.status.code(), Some(1));
     assert_eq!(std::fs::read_to_string(&blocker).unwrap(), "keep");
 }
+
+/// v and vn lines of an OBJ (gzipped when the name ends in .gz).
+fn read_v_vn(path: &Path) -> (Vec<[f64; 3]>, Vec<[f64; 3]>) {
+    use std::io::Read;
+    let mut text = String::new();
+    if path.extension().is_some_and(|e| e == "gz") {
+        flate2::read::GzDecoder::new(std::fs::File::open(path).unwrap())
+            .read_to_string(&mut text)
+            .unwrap();
+    } else {
+        text = std::fs::read_to_string(path).unwrap();
+    }
+    let (mut v, mut n) = (Vec::new(), Vec::new());
+    for line in text.lines() {
+        let w: Vec<&str> = line.split_whitespace().collect();
+        let xyz = |w: &[&str]| {
+            [
+                w[1].parse().unwrap(),
+                w[2].parse().unwrap(),
+                w[3].parse().unwrap(),
+            ]
+        };
+        match w.first() {
+            Some(&"v") => v.push(xyz(&w)),
+            Some(&"vn") => n.push(xyz(&w)),
+            _ => {}
+        }
+    }
+    (v, n)
+}
+
+#[test]
+fn limit_equals_opensubdiv_and_refined_output_refines_on() {
+    let shape = "crates/geom/tests/data/opensubdiv/catmark_cube_creases1.obj";
+    let out = tmp("limit.obj");
+    let o = prism(&[
+        "limit",
+        shape,
+        "-o",
+        out.to_str().unwrap(),
+        "--scheme",
+        "catmull-clark",
+    ]);
+    assert!(o.status.success(), "{:?}", text(&o));
+    let (v, n) = read_v_vn(&out);
+    let reference = Path::new(env!("CARGO_MANIFEST_DIR")).join(
+        "../../crates/geom/tests/data/opensubdiv/reference/catmark_cube_creases1.L1.limit.obj.gz",
+    );
+    let (rv, rn) = read_v_vn(&reference);
+    assert_eq!((v.len(), n.len()), (rv.len(), rn.len()));
+    // Same vertices up to order: every limit point and normal has its OpenSubdiv twin.
+    let d = |a: [f64; 3], b: [f64; 3]| {
+        ((a[0] - b[0]).powi(2) + (a[1] - b[1]).powi(2) + (a[2] - b[2]).powi(2)).sqrt()
+    };
+    for (p, q) in v.iter().zip(&n) {
+        assert!(
+            rv.iter()
+                .zip(&rn)
+                .any(|(rp, rq)| d(*p, *rp) < 1e-12 && d(*q, *rq) < 1e-9),
+            "limit {p:?} normal {q:?} has no match in OpenSubdiv's"
+        );
+    }
+
+    // Two levels at once equal one level written to OBJ and refined again (creases decayed
+    // and carried by the file's tags).
+    let two = tmp("two.obj");
+    let one = tmp("one.obj");
+    let again = tmp("again.obj");
+    for (input, output, levels) in [
+        (shape, two.to_str().unwrap(), "2"),
+        (shape, one.to_str().unwrap(), "1"),
+        (one.to_str().unwrap(), again.to_str().unwrap(), "1"),
+    ] {
+        let o = prism(&[
+            "subdivide",
+            input,
+            "-o",
+            output,
+            "--scheme",
+            "catmull-clark",
+            "--levels",
+            levels,
+        ]);
+        assert!(o.status.success(), "{:?}", text(&o));
+    }
+    assert_eq!(read_v_vn(&two).0, read_v_vn(&again).0);
+    assert!(
+        std::fs::read_to_string(&one)
+            .unwrap()
+            .contains("t crease 2/1/0")
+    );
+
+    // Loop refuses a mesh with a hexagon, naming the face.
+    let o = prism(&[
+        "limit",
+        "assets/tripod.obj",
+        "-o",
+        out.to_str().unwrap(),
+        "--scheme",
+        "loop",
+    ]);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(
+        text(&o).1.contains("face 0 has 6 corners"),
+        "{:?}",
+        text(&o)
+    );
+}

@@ -1,8 +1,10 @@
 //! Command-line interface (clap derive): the subcommands and their shared error type.
 
+mod limit;
 mod subdivide;
 
 use clap::{Parser, Subcommand};
+use prism_geom::MeshError;
 
 /// Prism — interactive polyhedral subdivision: chamfer and round the edges of solids.
 #[derive(Debug, Parser)]
@@ -16,6 +18,9 @@ pub struct Cli {
 pub enum Command {
     /// Subdivide a solid with one scheme repeated, or with a pipeline of steps.
     Subdivide(subdivide::SubdivideArgs),
+    /// Limit positions and unit normals of the vertices after N levels of Catmull-Clark or
+    /// Loop, written as OBJ `v` and `vn` lines with the level's faces.
+    Limit(limit::LimitArgs),
 }
 
 /// An error for the user: one line, and the exit code (1 bad input, 2 bad usage).
@@ -43,10 +48,30 @@ impl CliError {
 pub fn run(cli: Cli) -> Result<(), CliError> {
     match cli.command {
         Some(Command::Subdivide(a)) => subdivide::run(a),
+        Some(Command::Limit(a)) => limit::run(a),
         None => Err(CliError::usage(
             "the graphical app is not built yet; use a subcommand, e.g. \
              `prism subdivide assets/tripod.obj -o tripod-round.obj --scheme combination --radius 0.2 --levels 5` \
              (see `prism --help`)",
         )),
+    }
+}
+
+/// Adds the OBJ line of the face a mesh error names, when known.
+pub(crate) fn with_line(e: &MeshError, face_lines: Option<&[usize]>) -> String {
+    let face = match e {
+        MeshError::IndexOutOfRange { face, .. }
+        | MeshError::EmptyFace { face }
+        | MeshError::DegenerateLoop { face, .. }
+        | MeshError::RepeatedVertex { face, .. }
+        | MeshError::BoundaryEdge { face, .. } => Some(*face),
+        MeshError::InconsistentOrientation { f2, .. } => Some(*f2),
+        _ => None,
+    };
+    match (face, face_lines) {
+        (Some(f), Some(lines)) if (f as usize) < lines.len() => {
+            format!("{e} (face {f} is on line {})", lines[f as usize])
+        }
+        _ => e.to_string(),
     }
 }

@@ -4,11 +4,11 @@
 //! and every warning in words: flipped or degenerate faces, a solid turned inside out,
 //! dissolved flat edges, the minimum type's stall.
 
-use super::CliError;
+use super::{CliError, with_line};
 use clap::Args;
 use prism_geom::io::{self, Document};
 use prism_geom::scheme::{Scheme, parse_pipeline};
-use prism_geom::{CornerRule, MeshError, Pipeline, ReflexMode, Topology};
+use prism_geom::{CornerRule, Pipeline, ReflexMode, Topology};
 use std::path::PathBuf;
 
 #[derive(Debug, Args)]
@@ -44,25 +44,6 @@ pub struct SubdivideArgs {
     /// Steps separated by commas, e.g. "vector-sum:alpha=0.2,doo-sabin,doo-sabin".
     #[arg(long)]
     pub pipeline: Option<String>,
-}
-
-/// Adds the OBJ line of the face a mesh error names, when known.
-fn with_line(e: &MeshError, face_lines: Option<&[usize]>) -> String {
-    let face = match e {
-        MeshError::IndexOutOfRange { face, .. }
-        | MeshError::EmptyFace { face }
-        | MeshError::DegenerateLoop { face, .. }
-        | MeshError::RepeatedVertex { face, .. }
-        | MeshError::BoundaryEdge { face, .. } => Some(*face),
-        MeshError::InconsistentOrientation { f2, .. } => Some(*f2),
-        _ => None,
-    };
-    match (face, face_lines) {
-        (Some(f), Some(lines)) if (f as usize) < lines.len() => {
-            format!("{e} (face {f} is on line {})", lines[f as usize])
-        }
-        _ => e.to_string(),
-    }
 }
 
 pub fn run(a: SubdivideArgs) -> Result<(), CliError> {

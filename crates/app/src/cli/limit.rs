@@ -1,0 +1,100 @@
+//! `prism limit IN -o OUT.obj --scheme catmull-clark|loop [--levels N]`.
+//!
+//! Refines N levels (default 1; 0 evaluates the input itself) and writes the limit
+//! position (`v`) and unit limit normal (`vn`) of every vertex of that level, in the order
+//! `prism subdivide` writes the level's vertices, followed by the level's faces (hole faces
+//! left out) as `f a//a …`. Across a crease the normal is one-sided (docs/schemes.md); a
+//! vertex with no normal (no faces, or vanishing tangents) gets `vn 0 0 0`.
+
+use super::{CliError, with_line};
+use clap::Args;
+use prism_geom::io::{self, write_atomically};
+use prism_geom::{PrimalScheme, StepOptions, limit_points_ordered, refine_primal_ordered};
+use std::fmt::Write as _;
+use std::path::PathBuf;
+
+#[derive(Debug, Args)]
+pub struct LimitArgs {
+    /// Input mesh (.obj with OpenSubdiv tags, or .prism.json).
+    pub input: PathBuf,
+    /// Output OBJ.
+    #[arg(short, long)]
+    pub output: PathBuf,
+    /// catmull-clark or loop.
+    #[arg(long)]
+    pub scheme: String,
+    /// Levels to refine before evaluating the limit.
+    #[arg(long, default_value_t = 1)]
+    pub levels: usize,
+}
+
+pub fn run(a: LimitArgs) -> Result<(), CliError> {
+    let scheme = match a.scheme.as_str() {
+        "catmull-clark" => PrimalScheme::CatmullClark,
+        "loop" => PrimalScheme::Loop,
+        other => {
+            return Err(CliError::usage(format!(
+                "unknown scheme '{other}' for limit (known: catmull-clark, loop)"
+            )));
+        }
+    };
+    let (doc, face_lines) = io::load(&a.input).map_err(CliError::input)?;
+    let input_error = |e: prism_geom::PrimalError| {
+        let msg = match &e {
+            prism_geom::PrimalError::Mesh(m) => with_line(m, face_lines.as_deref()),
+            other => other.to_string(),
+        };
+        CliError::input(format!("{}: {msg}", a.input.display()))
+    };
+    let budget = StepOptions::default().memory_budget;
+    let (mut mesh, mut attrs, mut tags) = (doc.mesh, doc.edge_attrs, doc.tags);
+    let mut order = None;
+    for k in 1..=a.levels {
+        let (out, o) = refine_primal_ordered(&mesh, &attrs, &tags, scheme, budget, order.as_ref())
+            .map_err(|e| CliError::input(format!("level {k}: {}", input_error(e).message)))?;
+        println!(
+            "level {k}: {} vertices, {} faces, {:.2} ms",
+            out.report.vertices, out.report.faces, out.report.millis
+        );
+        (mesh, attrs, tags, order) = (out.mesh, out.edge_attrs, out.tags, Some(o));
+    }
+    let lim =
+        limit_points_ordered(&mesh, &attrs, &tags, scheme, order.as_ref()).map_err(input_error)?;
+    let mut s = String::with_capacity(mesh.num_vertices() * 80);
+    let _ = writeln!(
+        s,
+        "# limit positions and normals after {} level(s) of {}, written by Prism",
+        a.levels,
+        scheme.name()
+    );
+    for p in &lim.positions {
+        let _ = writeln!(s, "v {} {} {}", p.x, p.y, p.z);
+    }
+    for n in &lim.normals {
+        let _ = writeln!(s, "vn {} {} {}", n.x, n.y, n.z);
+    }
+    for f in 0..mesh.num_faces() {
+        if tags.holes.contains(&(f as u32)) {
+            continue;
+        }
+        s.push('f');
+        for c in mesh.face_corners(f) {
+            let v = mesh.corner_verts[c] + 1;
+            let _ = write!(s, " {v}//{v}");
+        }
+        s.push('\n');
+    }
+    write_atomically(&a.output, s.as_bytes()).map_err(CliError::input)?;
+    let undefined = lim
+        .normals
+        .iter()
+        .filter(|n| **n == prism_geom::DVec3::ZERO)
+        .count();
+    if undefined > 0 {
+        eprintln!(
+            "note: {undefined} vertex(es) have no normal (no faces, or vanishing tangents): written as vn 0 0 0"
+        );
+    }
+    println!("wrote {}", a.output.display());
+    Ok(())
+}
