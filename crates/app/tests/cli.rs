@@ -346,3 +346,36 @@ fn limit_equals_opensubdiv_and_refined_output_refines_on() {
         text(&o)
     );
 }
+
+#[test]
+fn bench_prints_the_median_and_peak_memory() {
+    let o = prism(&[
+        "bench",
+        "crates/geom/tests/data/opensubdiv/catmark_car.obj",
+        "--scheme",
+        "catmull-clark",
+        "--levels",
+        "2",
+        "--runs",
+        "3",
+    ]);
+    let (out, err) = text(&o);
+    assert!(o.status.success(), "{err}");
+    assert_eq!(
+        out.matches("\nrun ").count() + usize::from(out.starts_with("run ")),
+        3,
+        "{out}"
+    );
+    let ms: f64 = out
+        .lines()
+        .find_map(|l| l.strip_prefix("time_ms="))
+        .expect("time_ms line")
+        .parse()
+        .unwrap();
+    assert!(ms > 0.0);
+    // 1575 faces, 6 300 quads after one level, 25 200 after two.
+    assert!(out.contains("faces=25200"), "{out}");
+    assert!(out.contains("peak_memory_mb="), "{out}");
+    let o = prism(&["bench", "assets/tripod.obj", "--scheme", "loop"]);
+    assert_eq!(o.status.code(), Some(1));
+}

@@ -1,5 +1,6 @@
 //! Command-line interface (clap derive): the subcommands and their shared error type.
 
+mod bench;
 mod limit;
 mod subdivide;
 
@@ -21,6 +22,9 @@ pub enum Command {
     /// Limit positions and unit normals of the vertices after N levels of Catmull-Clark or
     /// Loop, written as OBJ `v` and `vn` lines with the level's faces.
     Limit(limit::LimitArgs),
+    /// Time a refinement: load once, run it --runs times, print time_ms=<median> and the
+    /// peak memory.
+    Bench(bench::BenchArgs),
 }
 
 /// An error for the user: one line, and the exit code (1 bad input, 2 bad usage).
@@ -49,6 +53,7 @@ pub fn run(cli: Cli) -> Result<(), CliError> {
     match cli.command {
         Some(Command::Subdivide(a)) => subdivide::run(a),
         Some(Command::Limit(a)) => limit::run(a),
+        Some(Command::Bench(a)) => bench::run(a),
         None => Err(CliError::usage(
             "the graphical app is not built yet; use a subcommand, e.g. \
              `prism subdivide assets/tripod.obj -o tripod-round.obj --scheme combination --radius 0.2 --levels 5` \

@@ -1,0 +1,92 @@
+//! `prism bench IN --scheme S --levels N [--runs 5]`: loads the file once, then times the
+//! refinement from the face lists as read (the half-edge topology is built inside the timed
+//! region, as OpenSubdiv's `TopologyRefinerFactory::Create` is inside its) and prints the
+//! median as `time_ms=<median>`, every run, and the peak resident memory of the process.
+//! Single thread.
+
+use super::CliError;
+use clap::Args;
+use prism_geom::io;
+use prism_geom::{Pipeline, Scheme, StepOptions, parse_pipeline, refine_primal};
+use std::path::PathBuf;
+use std::time::Instant;
+
+#[derive(Debug, Args)]
+pub struct BenchArgs {
+    /// Input mesh (.obj or .prism.json).
+    pub input: PathBuf,
+    /// Scheme repeated --levels times (any scheme of `prism subdivide`).
+    #[arg(long)]
+    pub scheme: String,
+    /// Number of levels.
+    #[arg(long, default_value_t = 1)]
+    pub levels: usize,
+    /// Timed runs; the median is reported.
+    #[arg(long, default_value_t = 5)]
+    pub runs: usize,
+}
+
+/// Peak resident set size of this process in bytes (Linux `VmHWM`), if known.
+fn peak_rss() -> Option<u64> {
+    let s = std::fs::read_to_string("/proc/self/status").ok()?;
+    let line = s.lines().find(|l| l.starts_with("VmHWM:"))?;
+    let kb: u64 = line.split_whitespace().nth(1)?.parse().ok()?;
+    Some(kb * 1024)
+}
+
+pub fn run(a: BenchArgs) -> Result<(), CliError> {
+    let step = parse_pipeline(&a.scheme).map_err(CliError::usage)?;
+    if step.len() != 1 {
+        return Err(CliError::usage(
+            "--scheme takes one scheme (use it with --levels)",
+        ));
+    }
+    if a.runs == 0 || a.levels == 0 {
+        return Err(CliError::usage("--runs and --levels must be at least 1"));
+    }
+    let steps = vec![step[0]; a.levels];
+    let (doc, _) = io::load(&a.input).map_err(CliError::input)?;
+    println!(
+        "input: {} vertices, {} faces; {} × {}",
+        doc.mesh.num_vertices(),
+        doc.mesh.num_faces(),
+        a.levels,
+        step[0]
+    );
+    let mut times = Vec::with_capacity(a.runs);
+    let mut faces = 0;
+    let budget = StepOptions::default().memory_budget;
+    for run in 1..=a.runs {
+        let t = Instant::now();
+        if let Scheme::Primal(scheme) = step[0] {
+            // The refinement alone, level after level (no report extras).
+            let mut out = refine_primal(&doc.mesh, &doc.edge_attrs, &doc.tags, scheme, budget)
+                .map_err(CliError::input)?;
+            for _ in 1..a.levels {
+                out = refine_primal(&out.mesh, &out.edge_attrs, &out.tags, scheme, budget)
+                    .map_err(CliError::input)?;
+            }
+            faces = out.mesh.num_faces();
+        } else {
+            let mut p = Pipeline::with_tags(
+                doc.mesh.clone(),
+                doc.edge_attrs.clone(),
+                doc.tags.clone(),
+                steps.clone(),
+            );
+            faces = p.compute().map_err(CliError::input)?.mesh.num_faces();
+        }
+        let ms = t.elapsed().as_secs_f64() * 1e3;
+        println!("run {run}: {ms:.2} ms");
+        times.push(ms);
+    }
+    times.sort_by(f64::total_cmp);
+    let median = times[times.len() / 2];
+    println!("faces={faces}");
+    println!("time_ms={median:.2}");
+    match peak_rss() {
+        Some(b) => println!("peak_memory_mb={:.1}", b as f64 / (1 << 20) as f64),
+        None => println!("peak_memory_mb=unknown"),
+    }
+    Ok(())
+}

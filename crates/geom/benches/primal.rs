@@ -1,0 +1,59 @@
+//! Catmull–Clark and Loop, single thread, the jobs OpenSubdiv 3.5 was timed on
+//! (docs/performance.md): the timed region starts from the face lists (the half-edge
+//! topology is built inside, as `Far::TopologyRefinerFactory::Create` does) and ends with
+//! the refined face lists and positions.
+//!
+//! - `catmull_clark_l1_1m`: one level on a 1000 × 1000 quad torus (1M quads);
+//! - `catmull_clark_l2_100k`: two levels on a 316 × 316 quad torus (99 856 quads);
+//! - `loop_l1_1m`: one level on a 708 × 708 torus split into 1 002 528 triangles.
+
+use prism_geom::{EdgeAttrs, PolyMesh, PrimalScheme, SubdivTags, primitives, refine_primal};
+
+#[global_allocator]
+static ALLOC: mimalloc::MiMalloc = mimalloc::MiMalloc;
+
+fn main() {
+    divan::main();
+}
+
+fn triangulated(m: &PolyMesh) -> PolyMesh {
+    let mut t = PolyMesh::new();
+    t.positions = m.positions.clone();
+    for f in 0..m.num_faces() {
+        let v: Vec<u32> = m.face_corners(f).map(|c| m.corner_verts[c]).collect();
+        t.push_polygon(&[v[0], v[1], v[2]]);
+        t.push_polygon(&[v[0], v[2], v[3]]);
+    }
+    t
+}
+
+fn levels(m: &PolyMesh, scheme: PrimalScheme, n: usize) -> PolyMesh {
+    let (attrs, tags) = (EdgeAttrs::new(), SubdivTags::default());
+    let mut cur = refine_primal(m, &attrs, &tags, scheme, u64::MAX)
+        .unwrap()
+        .mesh;
+    for _ in 1..n {
+        cur = refine_primal(&cur, &attrs, &tags, scheme, u64::MAX)
+            .unwrap()
+            .mesh;
+    }
+    cur
+}
+
+#[divan::bench(sample_count = 5)]
+fn catmull_clark_l1_1m(b: divan::Bencher) {
+    let m = primitives::torus(1000, 1000, 3.0, 1.0);
+    b.bench(|| levels(&m, PrimalScheme::CatmullClark, 1));
+}
+
+#[divan::bench(sample_count = 10)]
+fn catmull_clark_l2_100k(b: divan::Bencher) {
+    let m = primitives::torus(316, 316, 3.0, 1.0);
+    b.bench(|| levels(&m, PrimalScheme::CatmullClark, 2));
+}
+
+#[divan::bench(sample_count = 5)]
+fn loop_l1_1m(b: divan::Bencher) {
+    let m = triangulated(&primitives::torus(708, 708, 3.0, 1.0));
+    b.bench(|| levels(&m, PrimalScheme::Loop, 1));
+}
