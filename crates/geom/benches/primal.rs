@@ -7,7 +7,7 @@
 //! - `catmull_clark_l2_100k`: two levels on a 316 × 316 quad torus (99 856 quads);
 //! - `loop_l1_1m`: one level on a 708 × 708 torus split into 1 002 528 triangles.
 
-use prism_geom::{EdgeAttrs, PolyMesh, PrimalScheme, SubdivTags, primitives, refine_primal};
+use prism_geom::{EdgeAttrs, PolyMesh, PrimalScheme, SubdivTags, primitives, refine_primal_levels};
 
 #[global_allocator]
 static ALLOC: mimalloc::MiMalloc = mimalloc::MiMalloc;
@@ -29,15 +29,9 @@ fn triangulated(m: &PolyMesh) -> PolyMesh {
 
 fn levels(m: &PolyMesh, scheme: PrimalScheme, n: usize) -> PolyMesh {
     let (attrs, tags) = (EdgeAttrs::new(), SubdivTags::default());
-    let mut cur = refine_primal(m, &attrs, &tags, scheme, u64::MAX)
+    refine_primal_levels(m, &attrs, &tags, scheme, n, u64::MAX)
         .unwrap()
-        .mesh;
-    for _ in 1..n {
-        cur = refine_primal(&cur, &attrs, &tags, scheme, u64::MAX)
-            .unwrap()
-            .mesh;
-    }
-    cur
+        .mesh
 }
 
 #[divan::bench(sample_count = 5)]

@@ -38,7 +38,7 @@ pub use mesh::PolyMesh;
 pub use pipeline::{Level, Pipeline, PipelineError};
 pub use primal::{
     LimitPoints, PrimalError, PrimalOutput, PrimalScheme, RingOrder, limit_points,
-    limit_points_ordered, refine_primal, refine_primal_ordered,
+    limit_points_ordered, refine_primal, refine_primal_levels, refine_primal_ordered,
 };
 pub use rules::{CornerRule, ReflexMode};
 pub use scheme::{Scheme, parse_pipeline};

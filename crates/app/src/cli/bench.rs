@@ -7,7 +7,7 @@
 use super::CliError;
 use clap::Args;
 use prism_geom::io;
-use prism_geom::{Pipeline, Scheme, StepOptions, parse_pipeline, refine_primal};
+use prism_geom::{Pipeline, Scheme, StepOptions, parse_pipeline, refine_primal_levels};
 use std::path::PathBuf;
 use std::time::Instant;
 
@@ -59,13 +59,17 @@ pub fn run(a: BenchArgs) -> Result<(), CliError> {
     for run in 1..=a.runs {
         let t = Instant::now();
         if let Scheme::Primal(scheme) = step[0] {
-            // The refinement alone, level after level (no report extras).
-            let mut out = refine_primal(&doc.mesh, &doc.edge_attrs, &doc.tags, scheme, budget)
-                .map_err(CliError::input)?;
-            for _ in 1..a.levels {
-                out = refine_primal(&out.mesh, &out.edge_attrs, &out.tags, scheme, budget)
-                    .map_err(CliError::input)?;
-            }
+            // The refinement alone (no report extras), the topology of levels after the
+            // first written down from the split.
+            let out = refine_primal_levels(
+                &doc.mesh,
+                &doc.edge_attrs,
+                &doc.tags,
+                scheme,
+                a.levels,
+                budget,
+            )
+            .map_err(CliError::input)?;
             faces = out.mesh.num_faces();
         } else {
             let mut p = Pipeline::with_tags(

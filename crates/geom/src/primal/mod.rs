@@ -24,6 +24,7 @@
 // three arrays at once read worse than the index.
 #![allow(clippy::needless_range_loop)]
 
+mod child_topology;
 pub mod crease;
 pub mod limit;
 pub mod masks;
@@ -360,7 +361,46 @@ pub fn refine_primal(
     scheme: PrimalScheme,
     memory_budget: u64,
 ) -> Result<PrimalOutput, PrimalError> {
-    refine(mesh, attrs, tags, scheme, memory_budget, None).map(|(o, _)| o)
+    refine(mesh, attrs, tags, scheme, memory_budget, None, None, false).map(|(o, _, _)| o)
+}
+
+/// `levels` levels at once, only the last one kept. From the second level on the topology
+/// is not searched for but written down from the split (`child_topology`), which saves a
+/// third of a level's time.
+pub fn refine_primal_levels(
+    mesh: &PolyMesh,
+    attrs: &EdgeAttrs,
+    tags: &SubdivTags,
+    scheme: PrimalScheme,
+    levels: usize,
+    memory_budget: u64,
+) -> Result<PrimalOutput, PrimalError> {
+    assert!(levels >= 1, "at least one level");
+    let (mut out, _, mut topo) = refine(
+        mesh,
+        attrs,
+        tags,
+        scheme,
+        memory_budget,
+        None,
+        None,
+        levels > 1,
+    )?;
+    for k in 2..=levels {
+        let (o, _, t) = refine(
+            &out.mesh,
+            &out.edge_attrs,
+            &out.tags,
+            scheme,
+            memory_budget,
+            None,
+            topo.take(),
+            k < levels,
+        )?;
+        out = o;
+        topo = t;
+    }
+    Ok(out)
 }
 
 /// One level, also passing on OpenSubdiv's ring order (`parent` `None`: the mesh is an
@@ -373,10 +413,20 @@ pub fn refine_primal_ordered(
     memory_budget: u64,
     parent: Option<&RingOrder>,
 ) -> Result<(PrimalOutput, RingOrder), PrimalError> {
-    refine(mesh, attrs, tags, scheme, memory_budget, Some(parent))
-        .map(|(o, r)| (o, r.expect("tracked")))
+    refine(
+        mesh,
+        attrs,
+        tags,
+        scheme,
+        memory_budget,
+        Some(parent),
+        None,
+        false,
+    )
+    .map(|(o, r, _)| (o, r.expect("tracked")))
 }
 
+#[allow(clippy::too_many_arguments)]
 fn refine(
     mesh: &PolyMesh,
     attrs: &EdgeAttrs,
@@ -384,10 +434,18 @@ fn refine(
     scheme: PrimalScheme,
     memory_budget: u64,
     order: Option<Option<&RingOrder>>,
-) -> Result<(PrimalOutput, Option<RingOrder>), PrimalError> {
+    known_topology: Option<Topology>,
+    derive_child_topology: bool,
+) -> Result<(PrimalOutput, Option<RingOrder>, Option<Topology>), PrimalError> {
     let start = Instant::now();
-    let topo = Topology::build(mesh)?;
-    topo.require_single_fans(mesh)?;
+    let topo = match known_topology {
+        Some(t) => t,
+        None => {
+            let t = Topology::build(mesh)?;
+            t.require_single_fans(mesh)?;
+            t
+        }
+    };
     check_faces(mesh, scheme)?;
     let (needed, faces) = estimated_bytes(mesh, topo.num_edges(), scheme);
     if needed > memory_budget {
@@ -636,6 +694,8 @@ fn refine(
         millis: start.elapsed().as_secs_f64() * 1e3,
     };
     let child_order = order.map(|o| o.child(mesh, &topo, scheme));
+    let child_topo =
+        derive_child_topology.then(|| child_topology::child_topology(mesh, &topo, scheme));
     Ok((
         PrimalOutput {
             mesh: child,
@@ -644,5 +704,75 @@ fn refine(
             report,
         },
         child_order,
+        child_topo,
     ))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::primitives;
+
+    /// The written-down child topology equals the searched one, on open and closed meshes
+    /// of both schemes.
+    #[test]
+    fn child_topology_equals_the_built_one() {
+        let mut open = primitives::torus(6, 5, 3.0, 1.0);
+        // Drop the last faces: a boundary.
+        open.face_starts.truncate(open.face_starts.len() - 4);
+        open.loop_starts.truncate(open.face_starts.len());
+        open.corner_verts
+            .truncate(*open.loop_starts.last().unwrap() as usize);
+        let tri = |m: &PolyMesh| {
+            let mut t = PolyMesh::new();
+            t.positions = m.positions.clone();
+            for f in 0..m.num_faces() {
+                let v: Vec<u32> = m.face_corners(f).map(|c| m.corner_verts[c]).collect();
+                t.push_polygon(&[v[0], v[1], v[2]]);
+                t.push_polygon(&[v[0], v[2], v[3]]);
+            }
+            t
+        };
+        let cases = [
+            (primitives::tripod(), PrimalScheme::CatmullClark),
+            (open.clone(), PrimalScheme::CatmullClark),
+            (tri(&primitives::torus(5, 4, 3.0, 1.0)), PrimalScheme::Loop),
+            (tri(&open), PrimalScheme::Loop),
+        ];
+        for (m, scheme) in cases {
+            let topo = Topology::build(&m).unwrap();
+            let out = refine_primal(
+                &m,
+                &EdgeAttrs::new(),
+                &SubdivTags::default(),
+                scheme,
+                u64::MAX,
+            )
+            .unwrap();
+            let built = Topology::build(&out.mesh).unwrap();
+            let derived = child_topology::child_topology(&m, &topo, scheme);
+            assert_eq!(derived.twin, built.twin, "{scheme:?}");
+            assert_eq!(derived.next, built.next);
+            assert_eq!(derived.corner_face, built.corner_face);
+            assert_eq!(derived.corner_edge, built.corner_edge);
+            assert_eq!(derived.edge_corner, built.edge_corner);
+            assert_eq!(derived.vert_corner, built.vert_corner, "{scheme:?}");
+            // And several levels at once equal level after level.
+            let two = refine_primal_levels(
+                &m,
+                &EdgeAttrs::new(),
+                &SubdivTags::default(),
+                scheme,
+                3,
+                u64::MAX,
+            )
+            .unwrap();
+            let mut step = out;
+            for _ in 0..2 {
+                step = refine_primal(&step.mesh, &step.edge_attrs, &step.tags, scheme, u64::MAX)
+                    .unwrap();
+            }
+            assert_eq!(two.mesh, step.mesh);
+        }
+    }
 }
