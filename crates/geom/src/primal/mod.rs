@@ -38,6 +38,7 @@ use crate::tags::{BoundaryInterpolation, CreaseMethod, SubdivTags};
 use crate::topology::{NONE, Topology};
 use crease::{INFINITE, Rule, is_semi_sharp, is_sharp, vertex_rule};
 use glam::DVec3;
+use rayon::prelude::*;
 use std::time::Instant;
 use thiserror::Error;
 
@@ -337,6 +338,74 @@ pub(crate) fn check_faces(mesh: &PolyMesh, scheme: PrimalScheme) -> Result<(), P
     Ok(())
 }
 
+/// Meshes with at least this many faces are refined on rayon's thread pool (when it has
+/// more than one thread).
+pub const PARALLEL_FACES: usize = 50_000;
+
+/// `out[i] = f(i)` for every i, in chunks on rayon's pool when `parallel`. `f` is called
+/// from one loop only, so that it is inlined into it.
+#[inline(always)]
+fn fill<T: Send>(out: &mut [T], parallel: bool, f: impl Fn(usize) -> T + Sync + Send) {
+    let chunk = if parallel {
+        (out.len() / (8 * rayon::current_num_threads())).max(4096)
+    } else {
+        out.len().max(1)
+    };
+    let run = |(k, q): (usize, &mut [T])| {
+        for (i, o) in q.iter_mut().enumerate() {
+            *o = f(k * chunk + i);
+        }
+    };
+    if parallel {
+        out.par_chunks_mut(chunk).enumerate().for_each(run);
+    } else {
+        out.chunks_mut(chunk).enumerate().for_each(run);
+    }
+}
+
+/// The point of a crease or corner vertex, blended with its child's rule where a
+/// semi-sharp feature runs out.
+#[allow(clippy::too_many_arguments)]
+fn sharp_vertex_point(
+    mesh: &PolyMesh,
+    topo: &Topology,
+    sh: &Sharpness,
+    method: CreaseMethod,
+    v: usize,
+    ring_start: u32,
+    p_rule: Rule,
+    smooth_point: &dyn Fn(usize) -> DVec3,
+) -> DVec3 {
+    let p = &mesh.positions;
+    let (mut ring_e, mut ring_c) = (Vec::new(), Vec::new());
+    topo.vertex_ring_from(mesh, ring_start, &mut ring_e, &mut ring_c);
+    let ps: Vec<f32> = ring_e.iter().map(|&(e, _)| sh.edge[e as usize]).collect();
+    let rule_point = |rule: Rule, sharp: &[f32]| -> DVec3 {
+        match rule {
+            Rule::Smooth | Rule::Dart => smooth_point(v),
+            Rule::Crease => {
+                let [i, j] = crease::crease_ends(sharp);
+                0.75 * p[v] + 0.125 * (p[ring_e[i].1 as usize] + p[ring_e[j].1 as usize])
+            }
+            Rule::Corner => p[v],
+        }
+    };
+    let parent_pt = rule_point(p_rule, &ps);
+    if !sh.semi[v] {
+        return parent_pt;
+    }
+    let mut cs = Vec::new();
+    child_sharpness_around(method, &ps, &mut cs);
+    let c_vert = crease::decrement(sh.vert[v]);
+    let c_rule = vertex_rule(c_vert, cs.iter().filter(|&&s| is_sharp(s)).count());
+    if c_rule == p_rule {
+        return parent_pt;
+    }
+    let child_pt = rule_point(c_rule, &cs);
+    let pw = crease::fractional_weight(method, sh.vert[v], c_vert, &ps, &cs) as f64;
+    pw * parent_pt + (1.0 - pw) * child_pt
+}
+
 /// Bytes of the child of a mesh (positions, corners, offsets), to refuse a step that would
 /// not fit.
 pub fn estimated_bytes(mesh: &PolyMesh, edges: usize, scheme: PrimalScheme) -> (u64, u64) {
@@ -492,28 +561,28 @@ fn refine(
     let cc = scheme == PrimalScheme::CatmullClark;
     let n_child_verts = nv + ne + if cc { nf } else { 0 };
     let mut out = vec![DVec3::ZERO; n_child_verts];
+    let parallel = nf >= PARALLEL_FACES && rayon::current_num_threads() > 1;
 
     // Face points.
-    if cc {
-        for f in 0..nf {
-            let r = mesh.face_corners(f);
-            let n = r.len() as f64;
-            let s: DVec3 = cv[r].iter().map(|&v| p[v as usize]).sum();
-            out[nv + ne + f] = s / n;
-        }
-    }
+    fill(&mut out[nv + ne..], parallel, |f| {
+        let r = mesh.face_corners(f);
+        let n = r.len() as f64;
+        let s: DVec3 = cv[r].iter().map(|&v| p[v as usize]).sum();
+        s / n
+    });
     let face_size = |f: u32| mesh.face_corners(f as usize).len();
 
     // Edge points.
-    for e in 0..ne {
+    let (head, face_pts) = out.split_at_mut(nv + ne);
+    let face_pts: &[DVec3] = face_pts;
+    fill(&mut head[nv..], parallel, |e| {
         let c = topo.edge_corner[e] as usize;
         let t = topo.twin[c];
         let (a, b) = (cv[c] as usize, cv[topo.next[c] as usize] as usize);
         let s = sh.edge[e];
         let crease_pt = 0.5 * (p[a] + p[b]);
         if t == NONE {
-            out[nv + e] = crease_pt;
-            continue;
+            return crease_pt;
         }
         let t = t as usize;
         let (f0, f1) = (topo.corner_face[c], topo.corner_face[t]);
@@ -521,97 +590,93 @@ fn refine(
         let (vw, fw, fsum) = if cc {
             let (vw, fw) =
                 masks::catmark_edge_weights(tags.triangles, face_size(f0), face_size(f1));
-            (
-                vw,
-                fw,
-                out[nv + ne + f0 as usize] + out[nv + ne + f1 as usize],
-            )
+            (vw, fw, face_pts[f0 as usize] + face_pts[f1 as usize])
         } else {
             let o0 = cv[topo.prev[c] as usize] as usize;
             let o1 = cv[topo.prev[t] as usize] as usize;
             (0.375, 0.125, p[o0] + p[o1])
         };
-        out[nv + e] = if !is_sharp(s) {
-            vw * (p[a] + p[b]) + fw * fsum
+        if !is_sharp(s) {
+            return vw * (p[a] + p[b]) + fw * fsum;
+        }
+        // The child vertex's rule decides (as OpenSubdiv's refiner passes it): a crease
+        // when both child edges stay sharp, else the blend with the parent's sharpness as
+        // the weight.
+        if is_sharp(child_edge(e, a)) && is_sharp(child_edge(e, b)) {
+            crease_pt
         } else {
-            let child_crease = is_sharp(child_edge(e, a)) && is_sharp(child_edge(e, b));
-            // The child vertex's rule decides (as OpenSubdiv's refiner passes it): a crease
-            // when both child edges stay sharp, else the blend with the parent's sharpness
-            // as the weight.
-            if child_crease {
-                crease_pt
-            } else {
-                let pw = s as f64;
-                let cw = 1.0 - pw;
-                (pw * 0.5 + cw * vw) * (p[a] + p[b]) + cw * fw * fsum
+            let pw = s as f64;
+            let cw = 1.0 - pw;
+            (pw * 0.5 + cw * vw) * (p[a] + p[b]) + cw * fw * fsum
+        }
+    });
+
+    // Vertex points. A smooth vertex (always interior: boundary vertices are creases or
+    // corners) needs the sums of its neighbours and of its face points. On one thread they
+    // are accumulated in one streaming pass over the corners; on several, each vertex
+    // gathers them around its ring.
+    let scattered = (!parallel).then(|| {
+        let mut esum = vec![DVec3::ZERO; nv];
+        let mut fsum = vec![DVec3::ZERO; if cc { nv } else { 0 }];
+        let mut count = vec![0u32; nv];
+        for c in 0..mesh.num_corners() {
+            let v = cv[c] as usize;
+            esum[v] += p[cv[topo.next[c] as usize] as usize];
+            if cc {
+                fsum[v] += face_pts[topo.corner_face[c] as usize];
+            }
+            count[v] += 1;
+        }
+        (esum, fsum, count)
+    });
+    let smooth_point = |v: usize| -> DVec3 {
+        let (esum, fsum, n) = match &scattered {
+            Some((e, f, n)) => (e[v], if cc { f[v] } else { DVec3::ZERO }, n[v] as usize),
+            None => {
+                let start = topo.vert_corner[v];
+                let (mut esum, mut fsum, mut n) = (DVec3::ZERO, DVec3::ZERO, 0usize);
+                let mut c = start;
+                loop {
+                    esum += p[cv[topo.next[c as usize] as usize] as usize];
+                    if cc {
+                        fsum += face_pts[topo.corner_face[c as usize] as usize];
+                    }
+                    n += 1;
+                    c = topo.ring_next(c);
+                    if c == start || c == NONE {
+                        break;
+                    }
+                }
+                (esum, fsum, n)
             }
         };
-    }
-
-    // Vertex points: smooth ones from per-vertex sums over the corners.
-    let mut edge_sum = vec![DVec3::ZERO; nv];
-    let mut face_sum = vec![DVec3::ZERO; if cc { nv } else { 0 }];
-    let mut faces_at = vec![0u32; nv];
-    for c in 0..mesh.num_corners() {
-        let v = cv[c] as usize;
-        edge_sum[v] += p[cv[topo.next[c] as usize] as usize];
         if cc {
-            face_sum[v] += out[nv + ne + topo.corner_face[c] as usize];
-        }
-        faces_at[v] += 1;
-    }
-    let smooth_point = |v: usize| -> DVec3 {
-        let n = faces_at[v] as usize;
-        if cc {
-            masks::catmark_vertex(p[v], edge_sum[v], face_sum[v], n)
+            masks::catmark_vertex(p[v], esum, fsum, n)
         } else {
             let (vw, ew) = masks::loop_vertex_weights(n);
-            vw * p[v] + ew * edge_sum[v]
+            vw * p[v] + ew * esum
         }
     };
-    let mut ring_e = Vec::new();
-    let mut ring_f = Vec::new();
-    let mut ps = Vec::new();
-    let mut cs = Vec::new();
-    for v in 0..nv {
-        if faces_at[v] == 0 {
-            out[v] = p[v];
-            continue;
+    fill(&mut head[..nv], parallel, |v| {
+        if topo.vert_corner[v] == NONE {
+            return p[v];
         }
         let p_rule = vertex_rule(sh.vert[v], sh.sharp_edges[v] as usize);
         if matches!(p_rule, Rule::Smooth | Rule::Dart) {
-            out[v] = smooth_point(v);
-            continue;
+            return smooth_point(v);
         }
-        topo.vertex_ring_from(mesh, ring_start(v), &mut ring_e, &mut ring_f);
-        ps.clear();
-        ps.extend(ring_e.iter().map(|&(e, _)| sh.edge[e as usize]));
-        let rule_point = |rule: Rule, sharp: &[f32]| -> DVec3 {
-            match rule {
-                Rule::Smooth | Rule::Dart => smooth_point(v),
-                Rule::Crease => {
-                    let [i, j] = crease::crease_ends(sharp);
-                    0.75 * p[v] + 0.125 * (p[ring_e[i].1 as usize] + p[ring_e[j].1 as usize])
-                }
-                Rule::Corner => p[v],
-            }
-        };
-        let parent_pt = rule_point(p_rule, &ps);
-        if !sh.semi[v] {
-            out[v] = parent_pt;
-            continue;
-        }
-        child_sharpness_around(method, &ps, &mut cs);
-        let c_vert = crease::decrement(sh.vert[v]);
-        let c_rule = vertex_rule(c_vert, cs.iter().filter(|&&s| is_sharp(s)).count());
-        if c_rule == p_rule {
-            out[v] = parent_pt;
-            continue;
-        }
-        let child_pt = rule_point(c_rule, &cs);
-        let pw = crease::fractional_weight(method, sh.vert[v], c_vert, &ps, &cs) as f64;
-        out[v] = pw * parent_pt + (1.0 - pw) * child_pt;
-    }
+        sharp_vertex_point(
+            mesh,
+            &topo,
+            &sh,
+            method,
+            v,
+            ring_start(v),
+            p_rule,
+            &smooth_point,
+        )
+    });
+    drop(scattered);
 
     // Faces.
     let mut child = PolyMesh::new();
