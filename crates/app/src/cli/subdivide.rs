@@ -105,12 +105,18 @@ pub fn run(a: SubdivideArgs) -> Result<(), CliError> {
     let n = steps.len();
     let result = pipeline.compute_with(n, |k, level| {
         let r = level.report.as_ref().expect("computed levels have a report");
+        // Biquadratic steps check every new face against its parent; primal steps
+        // (smooth schemes) report their holes instead.
+        let check = if level.provenance.is_some() {
+            format!("{} flipped", r.flipped.len())
+        } else {
+            format!("{} hole faces", level.tags.holes.len())
+        };
         println!(
-            "level {k}: {} vertices, {} edges, {} faces, {} flipped, {:.2} ms  [{}]",
+            "level {k}: {} vertices, {} edges, {} faces, {check}, {:.2} ms  [{}]",
             r.vertices,
             r.edges,
             r.faces,
-            r.flipped.len(),
             r.millis,
             steps[k - 1]
         );
