@@ -379,3 +379,45 @@ fn bench_prints_the_median_and_peak_memory() {
     let o = prism(&["bench", "assets/tripod.obj", "--scheme", "loop"]);
     assert_eq!(o.status.code(), Some(1));
 }
+
+#[test]
+fn render_writes_a_picture() {
+    let out = tmp("tripod.png");
+    let o = prism(&[
+        "render",
+        "assets/tripod.obj",
+        "-o",
+        out.to_str().unwrap(),
+        "--scheme",
+        "combination",
+        "--radius",
+        "0.2",
+        "--levels",
+        "2",
+        "--shading",
+        "smooth",
+        "--wireframe",
+        "--size",
+        "200x150",
+        "--view",
+        "top",
+    ]);
+    let (stdout, err) = text(&o);
+    assert!(o.status.success(), "{err}");
+    assert!(stdout.contains("rendered"), "{stdout}");
+    let png = std::fs::read(&out).unwrap();
+    assert_eq!(&png[1..4], b"PNG");
+    // Width and height in the IHDR chunk.
+    let w = u32::from_be_bytes(png[16..20].try_into().unwrap());
+    let h = u32::from_be_bytes(png[20..24].try_into().unwrap());
+    assert_eq!((w, h), (200, 150));
+    let o = prism(&[
+        "render",
+        "assets/tripod.obj",
+        "-o",
+        out.to_str().unwrap(),
+        "--size",
+        "big",
+    ]);
+    assert_eq!(o.status.code(), Some(2));
+}

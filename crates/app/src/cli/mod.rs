@@ -2,6 +2,7 @@
 
 mod bench;
 mod limit;
+mod render;
 mod subdivide;
 
 use clap::{Parser, Subcommand};
@@ -25,6 +26,8 @@ pub enum Command {
     /// Time a refinement: load once, run it --runs times, print time_ms=<median> and the
     /// peak memory.
     Bench(bench::BenchArgs),
+    /// Render a picture offscreen (any adapter, software Vulkan included).
+    Render(render::RenderArgs),
 }
 
 /// An error for the user: one line, and the exit code (1 bad input, 2 bad usage).
@@ -54,6 +57,7 @@ pub fn run(cli: Cli) -> Result<(), CliError> {
         Some(Command::Subdivide(a)) => subdivide::run(a),
         Some(Command::Limit(a)) => limit::run(a),
         Some(Command::Bench(a)) => bench::run(a),
+        Some(Command::Render(a)) => render::run(a),
         None => Err(CliError::usage(
             "the graphical app is not built yet; use a subcommand, e.g. \
              `prism subdivide assets/tripod.obj -o tripod-round.obj --scheme combination --radius 0.2 --levels 5` \

@@ -11,13 +11,10 @@ use prism_geom::scheme::{Scheme, parse_pipeline};
 use prism_geom::{CornerRule, Pipeline, ReflexMode, Topology};
 use std::path::PathBuf;
 
+/// The steps to run: one scheme repeated, or a pipeline (shared by `subdivide` and
+/// `render`).
 #[derive(Debug, Args)]
-pub struct SubdivideArgs {
-    /// Input solid (.obj or .prism.json).
-    pub input: PathBuf,
-    /// Output file (.obj or .prism.json).
-    #[arg(short, long)]
-    pub output: PathBuf,
+pub struct StepArgs {
     /// Scheme repeated --levels times: doo-sabin, angle-bisector, cut-width, vector-sum,
     /// cylindrical, minimum, combination (closed solids), catmull-clark, loop (open meshes
     /// too, with the file's creases, corners and holes).
@@ -46,7 +43,24 @@ pub struct SubdivideArgs {
     pub pipeline: Option<String>,
 }
 
-pub fn run(a: SubdivideArgs) -> Result<(), CliError> {
+#[derive(Debug, Args)]
+pub struct SubdivideArgs {
+    /// Input solid (.obj or .prism.json).
+    pub input: PathBuf,
+    /// Output file (.obj or .prism.json).
+    #[arg(short, long)]
+    pub output: PathBuf,
+    #[command(flatten)]
+    pub steps: StepArgs,
+}
+
+/// The steps the arguments ask for; without any, the document's pipeline, or none when
+/// `allow_none` (render the input as it is).
+pub fn steps_from(
+    a: &StepArgs,
+    document: Option<&[Scheme]>,
+    allow_none: bool,
+) -> Result<Vec<Scheme>, CliError> {
     let steps: Vec<Scheme> = match (&a.scheme, &a.pipeline) {
         (Some(name), None) => {
             let reflex = if a.reflex_inward {
@@ -61,16 +75,26 @@ pub fn run(a: SubdivideArgs) -> Result<(), CliError> {
         (None, Some(p)) => parse_pipeline(p).map_err(CliError::usage)?,
         _ => Vec::new(),
     };
+    if !steps.is_empty() {
+        return Ok(steps);
+    }
+    match document {
+        Some(p) => Ok(p.to_vec()),
+        None if allow_none => Ok(Vec::new()),
+        None => Err(CliError::usage(
+            "give --scheme and --levels, or --pipeline (the input holds no pipeline)",
+        )),
+    }
+}
+
+pub fn run(a: SubdivideArgs) -> Result<(), CliError> {
+    let parsed = steps_from(&a.steps, None, true)?;
     io::FileKind::of(&a.output).map_err(CliError::usage)?;
     let (doc, face_lines) = io::load(&a.input).map_err(CliError::input)?;
-    let steps = if steps.is_empty() {
-        doc.pipeline.clone().ok_or_else(|| {
-            CliError::usage(
-                "give --scheme and --levels, or --pipeline (the input holds no pipeline)",
-            )
-        })?
+    let steps = if parsed.is_empty() {
+        steps_from(&a.steps, doc.pipeline.as_deref(), false)?
     } else {
-        steps
+        parsed
     };
     let topo = Topology::build(&doc.mesh).map_err(|e| {
         CliError::input(format!(

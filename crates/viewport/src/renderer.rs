@@ -1,0 +1,214 @@
+//! The wgpu renderer: one pipeline for faces, one for lines, 4× multisampling, a depth
+//! buffer. The same code draws into the app's window and into an offscreen texture
+//! ([`crate::offscreen`]).
+
+use crate::camera::Camera;
+use crate::scene::{LineVertex, Scene, Vertex};
+use wgpu::util::DeviceExt;
+
+/// The WGSL sources, validated by naga in a test.
+pub const MESH_WGSL: &str = include_str!("../../../shaders/mesh.wgsl");
+pub const LINES_WGSL: &str = include_str!("../../../shaders/lines.wgsl");
+
+pub const DEPTH_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Depth32Float;
+pub const SAMPLES: u32 = 4;
+
+/// Background colour (linear).
+pub const BACKGROUND: wgpu::Color = wgpu::Color {
+    r: 0.035,
+    g: 0.040,
+    b: 0.052,
+    a: 1.0,
+};
+
+#[repr(C)]
+#[derive(Debug, Clone, Copy, bytemuck::Pod, bytemuck::Zeroable)]
+struct Globals {
+    view_proj: [[f32; 4]; 4],
+    eye_dir: [f32; 4],
+    params: [f32; 4],
+}
+
+/// A scene uploaded to the GPU.
+pub struct GpuScene {
+    vertices: wgpu::Buffer,
+    indices: wgpu::Buffer,
+    index_count: u32,
+    lines: Option<(wgpu::Buffer, u32)>,
+}
+
+/// Pipelines and the uniform buffer for one colour format.
+pub struct Renderer {
+    mesh_pipeline: wgpu::RenderPipeline,
+    line_pipeline: wgpu::RenderPipeline,
+    globals: wgpu::Buffer,
+    bind_group: wgpu::BindGroup,
+}
+
+impl Renderer {
+    pub fn new(device: &wgpu::Device, format: wgpu::TextureFormat) -> Renderer {
+        let bgl = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+            label: Some("prism globals"),
+            entries: &[wgpu::BindGroupLayoutEntry {
+                binding: 0,
+                visibility: wgpu::ShaderStages::VERTEX_FRAGMENT,
+                ty: wgpu::BindingType::Buffer {
+                    ty: wgpu::BufferBindingType::Uniform,
+                    has_dynamic_offset: false,
+                    min_binding_size: None,
+                },
+                count: None,
+            }],
+        });
+        let globals = device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("prism globals"),
+            size: std::mem::size_of::<Globals>() as u64,
+            usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
+            mapped_at_creation: false,
+        });
+        let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("prism globals"),
+            layout: &bgl,
+            entries: &[wgpu::BindGroupEntry {
+                binding: 0,
+                resource: globals.as_entire_binding(),
+            }],
+        });
+        let layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+            label: Some("prism"),
+            bind_group_layouts: &[Some(&bgl)],
+            ..Default::default()
+        });
+        let pipeline = |src: &str,
+                        attrs: &[wgpu::VertexAttribute],
+                        stride: usize,
+                        topology: wgpu::PrimitiveTopology| {
+            let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
+                label: Some("prism shader"),
+                source: wgpu::ShaderSource::Wgsl(src.into()),
+            });
+            device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+                label: Some("prism pipeline"),
+                layout: Some(&layout),
+                vertex: wgpu::VertexState {
+                    module: &module,
+                    entry_point: Some("vs_main"),
+                    compilation_options: Default::default(),
+                    buffers: &[Some(wgpu::VertexBufferLayout {
+                        array_stride: stride as u64,
+                        step_mode: wgpu::VertexStepMode::Vertex,
+                        attributes: attrs,
+                    })],
+                },
+                primitive: wgpu::PrimitiveState {
+                    topology,
+                    cull_mode: None,
+                    ..Default::default()
+                },
+                depth_stencil: Some(wgpu::DepthStencilState {
+                    format: DEPTH_FORMAT,
+                    depth_write_enabled: Some(true),
+                    depth_compare: Some(wgpu::CompareFunction::LessEqual),
+                    stencil: Default::default(),
+                    bias: Default::default(),
+                }),
+                multisample: wgpu::MultisampleState {
+                    count: SAMPLES,
+                    mask: !0,
+                    alpha_to_coverage_enabled: false,
+                },
+                fragment: Some(wgpu::FragmentState {
+                    module: &module,
+                    entry_point: Some("fs_main"),
+                    compilation_options: Default::default(),
+                    targets: &[Some(wgpu::ColorTargetState {
+                        format,
+                        blend: Some(wgpu::BlendState::REPLACE),
+                        write_mask: wgpu::ColorWrites::ALL,
+                    })],
+                }),
+                multiview_mask: None,
+                cache: None,
+            })
+        };
+        let mesh_pipeline = pipeline(
+            MESH_WGSL,
+            &wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3, 2 => Float32x3],
+            std::mem::size_of::<Vertex>(),
+            wgpu::PrimitiveTopology::TriangleList,
+        );
+        let line_pipeline = pipeline(
+            LINES_WGSL,
+            &wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3],
+            std::mem::size_of::<LineVertex>(),
+            wgpu::PrimitiveTopology::LineList,
+        );
+        Renderer {
+            mesh_pipeline,
+            line_pipeline,
+            globals,
+            bind_group,
+        }
+    }
+
+    /// Uploads a scene.
+    pub fn upload(&self, device: &wgpu::Device, scene: &Scene) -> GpuScene {
+        let vertices = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+            label: Some("prism vertices"),
+            contents: bytemuck::cast_slice(&scene.vertices),
+            usage: wgpu::BufferUsages::VERTEX,
+        });
+        let indices = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+            label: Some("prism indices"),
+            contents: bytemuck::cast_slice(&scene.indices),
+            usage: wgpu::BufferUsages::INDEX,
+        });
+        let lines = (!scene.lines.is_empty()).then(|| {
+            (
+                device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+                    label: Some("prism lines"),
+                    contents: bytemuck::cast_slice(&scene.lines),
+                    usage: wgpu::BufferUsages::VERTEX,
+                }),
+                scene.lines.len() as u32,
+            )
+        });
+        GpuScene {
+            vertices,
+            indices,
+            index_count: scene.indices.len() as u32,
+            lines,
+        }
+    }
+
+    /// Sets the camera for the next draw.
+    pub fn set_camera(&self, queue: &wgpu::Queue, camera: &Camera, aspect: f32) {
+        let eye_dir = (camera.eye() - camera.target).normalize_or_zero();
+        // A key light above and to the left of the eye, fixed to the camera.
+        let right = (-eye_dir).cross(glam::Vec3::Z).normalize_or(glam::Vec3::X);
+        let up = right.cross(-eye_dir);
+        let key = (eye_dir + 0.7 * up - 0.5 * right).normalize_or_zero();
+        let g = Globals {
+            view_proj: camera.view_proj(aspect).to_cols_array_2d(),
+            eye_dir: [eye_dir.x, eye_dir.y, eye_dir.z, 0.0],
+            params: [2e-4, key.x, key.y, key.z],
+        };
+        queue.write_buffer(&self.globals, 0, bytemuck::bytes_of(&g));
+    }
+
+    /// Draws a scene into a render pass (the pass must use [`SAMPLES`] and [`DEPTH_FORMAT`]).
+    pub fn draw<'a>(&'a self, pass: &mut wgpu::RenderPass<'a>, scene: &'a GpuScene) {
+        pass.set_bind_group(0, &self.bind_group, &[]);
+        if scene.index_count > 0 {
+            pass.set_pipeline(&self.mesh_pipeline);
+            pass.set_vertex_buffer(0, scene.vertices.slice(..));
+            pass.set_index_buffer(scene.indices.slice(..), wgpu::IndexFormat::Uint32);
+            pass.draw_indexed(0..scene.index_count, 0, 0..1);
+        }
+        if let Some((buf, n)) = &scene.lines {
+            pass.set_pipeline(&self.line_pipeline);
+            pass.set_vertex_buffer(0, buf.slice(..));
+            pass.draw(0..*n, 0..1);
+        }
+    }
+}

@@ -1,0 +1,388 @@
+//! What is drawn, prepared on the CPU: triangles with normals and colours, and the lines of
+//! the polygon edges (not of the triangulation).
+//!
+//! Faces are triangulated with `earcutr` in their own plane (concave faces and holes
+//! included); triangles and convex quads take a fan. **Flat** shading gives every corner its
+//! face's normal; **smooth** shading averages the area-weighted normals of the faces around
+//! a vertex within each fan between *sharp* edges — crease edges and edges whose faces meet
+//! at more than the crease angle — so that creases stay crisp.
+
+use glam::{DVec3, Vec3};
+use prism_geom::biquadratic::FaceKind;
+use prism_geom::geometry::{face_normals_raw, unit_or_zero};
+use prism_geom::topology::{NONE, Topology};
+use prism_geom::{EdgeAttrs, EdgeKey, PolyMesh};
+
+/// How faces are shaded.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Shading {
+    #[default]
+    Flat,
+    Smooth,
+}
+
+/// How faces are coloured.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum ColorBy {
+    /// One material colour.
+    #[default]
+    Uniform,
+    /// FACE-, EDGE- and VERTEX-faces of the last biquadratic step in three colours.
+    Kind,
+}
+
+/// The colours of the FACE-, EDGE- and VERTEX-faces (also the legend's).
+pub const KIND_COLORS: [[f32; 3]; 3] = [[0.85, 0.62, 0.35], [0.35, 0.62, 0.85], [0.55, 0.80, 0.45]];
+/// The material colour.
+pub const BASE_COLOR: [f32; 3] = [0.72, 0.74, 0.80];
+
+/// One vertex of the triangle buffer.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
+pub struct Vertex {
+    pub position: [f32; 3],
+    pub normal: [f32; 3],
+    pub color: [f32; 3],
+}
+
+/// One end of a line.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
+pub struct LineVertex {
+    pub position: [f32; 3],
+    pub color: [f32; 3],
+}
+
+/// Options of [`Scene::build`].
+#[derive(Debug, Clone, PartialEq)]
+pub struct SceneOptions {
+    pub shading: Shading,
+    pub color_by: ColorBy,
+    /// Draw the polygon edges.
+    pub wireframe: bool,
+    /// Edges whose faces meet at more than this (degrees) stay sharp in smooth shading.
+    pub crease_angle_deg: f64,
+}
+
+impl Default for SceneOptions {
+    fn default() -> Self {
+        SceneOptions {
+            shading: Shading::Flat,
+            color_by: ColorBy::Uniform,
+            wireframe: false,
+            crease_angle_deg: 40.0,
+        }
+    }
+}
+
+/// Triangles and lines ready for the GPU, positions relative to `origin` (kept in `f64`
+/// on the CPU so that large coordinates keep their digits on the GPU's `f32`).
+#[derive(Debug, Clone, Default)]
+pub struct Scene {
+    pub vertices: Vec<Vertex>,
+    pub indices: Vec<u32>,
+    pub lines: Vec<LineVertex>,
+    pub origin: DVec3,
+    /// Bounding box of the mesh (absolute coordinates).
+    pub bbox: (DVec3, DVec3),
+}
+
+/// Triangles of face `f` as corner indices, oriented like the face.
+pub fn triangulate_face(mesh: &PolyMesh, f: usize, normal: DVec3) -> Vec<[u32; 3]> {
+    let loops = mesh.face_loops(f);
+    let outer = mesh.loop_corners(loops.start);
+    let n = outer.len();
+    if loops.len() == 1 && n == 3 {
+        let s = outer.start as u32;
+        return vec![[s, s + 1, s + 2]];
+    }
+    let u = normal.any_orthonormal_vector();
+    let w = normal.cross(u);
+    let mut coords = Vec::new();
+    let mut corners = Vec::new();
+    let mut holes = Vec::new();
+    for (k, l) in loops.enumerate() {
+        if k > 0 {
+            holes.push(corners.len());
+        }
+        for c in mesh.loop_corners(l) {
+            let p = mesh.positions[mesh.corner_verts[c] as usize];
+            coords.extend([p.dot(u), p.dot(w)]);
+            corners.push(c as u32);
+        }
+    }
+    let tris = earcutr::earcut(&coords, &holes, 2).unwrap_or_default();
+    if tris.is_empty() {
+        // Degenerate outline: a fan keeps the face visible.
+        let s = outer.start as u32;
+        return (1..n as u32 - 1).map(|i| [s, s + i, s + i + 1]).collect();
+    }
+    tris.chunks_exact(3)
+        .map(|t| {
+            let [a, b, c] = [corners[t[0]], corners[t[1]], corners[t[2]]];
+            let p = |c: u32| mesh.positions[mesh.corner_verts[c as usize] as usize];
+            if (p(b) - p(a)).cross(p(c) - p(a)).dot(normal) < 0.0 {
+                [a, c, b]
+            } else {
+                [a, b, c]
+            }
+        })
+        .collect()
+}
+
+/// Per-corner normals for smooth shading: faces around a vertex are averaged within each
+/// fan between sharp edges.
+fn smooth_corner_normals(
+    mesh: &PolyMesh,
+    topo: &Topology,
+    raw: &[DVec3],
+    sharp: &[bool],
+) -> Vec<DVec3> {
+    let mut out: Vec<DVec3> = topo
+        .corner_face
+        .iter()
+        .map(|&f| unit_or_zero(raw[f as usize]))
+        .collect();
+    let (mut ring_e, mut ring_c) = (Vec::new(), Vec::new());
+    for v in 0..mesh.num_vertices() {
+        topo.vertex_ring(mesh, v as u32, &mut ring_e, &mut ring_c);
+        let n = ring_c.len();
+        if n == 0 {
+            continue;
+        }
+        // Face i lies between edges i and i + 1; a sharp edge i + 1 ends a group.
+        let closed = ring_e.len() == n;
+        // Start a group after a sharp edge if there is one, so no group wraps around.
+        let first = if closed {
+            (0..n).find(|&i| sharp[ring_e[i].0 as usize]).unwrap_or(0)
+        } else {
+            0
+        };
+        let mut group: Vec<u32> = Vec::new();
+        let mut sum = DVec3::ZERO;
+        for k in 0..n {
+            let i = (first + k) % n;
+            let c = ring_c[i];
+            group.push(c);
+            sum += raw[topo.corner_face[c as usize] as usize];
+            let next_edge = ring_e[(i + 1) % ring_e.len()].0 as usize;
+            let ends = k + 1 == n || sharp[next_edge];
+            if ends {
+                let nrm = unit_or_zero(sum);
+                for &g in &group {
+                    out[g as usize] = nrm;
+                }
+                group.clear();
+                sum = DVec3::ZERO;
+            }
+        }
+    }
+    out
+}
+
+impl Scene {
+    /// Prepares `mesh` for drawing. `kinds` colours faces by kind when given; `attrs`
+    /// marks crease edges, which stay sharp in smooth shading; `hidden` faces (holes) are
+    /// not drawn.
+    pub fn build(
+        mesh: &PolyMesh,
+        attrs: &EdgeAttrs,
+        kinds: Option<&[FaceKind]>,
+        hidden: &dyn Fn(usize) -> bool,
+        opts: &SceneOptions,
+    ) -> Scene {
+        let (lo, hi) = mesh.bbox();
+        let origin = if mesh.positions.is_empty() {
+            DVec3::ZERO
+        } else {
+            0.5 * (lo + hi)
+        };
+        let raw = face_normals_raw(mesh);
+        let rel = |c: usize| -> [f32; 3] {
+            (mesh.positions[mesh.corner_verts[c] as usize] - origin)
+                .as_vec3()
+                .to_array()
+        };
+        let topo = Topology::build(mesh).ok();
+        let corner_normals: Vec<DVec3> = match (opts.shading, &topo) {
+            (Shading::Smooth, Some(t)) => {
+                let cos_limit = opts.crease_angle_deg.to_radians().cos();
+                let sharp: Vec<bool> = t
+                    .edge_corner
+                    .iter()
+                    .map(|&c| {
+                        let tw = t.twin[c as usize];
+                        if tw == NONE {
+                            return true;
+                        }
+                        let (a, b) = (
+                            mesh.corner_verts[c as usize],
+                            mesh.corner_verts[t.next[c as usize] as usize],
+                        );
+                        if attrs
+                            .get(&EdgeKey::new(a, b))
+                            .is_some_and(|x| x.crease > 0.0)
+                        {
+                            return true;
+                        }
+                        let n1 = unit_or_zero(raw[t.corner_face[c as usize] as usize]);
+                        let n2 = unit_or_zero(raw[t.corner_face[tw as usize] as usize]);
+                        n1.dot(n2) < cos_limit
+                    })
+                    .collect();
+                smooth_corner_normals(mesh, t, &raw, &sharp)
+            }
+            _ => (0..mesh.num_corners())
+                .map(|c| {
+                    let f = topo
+                        .as_ref()
+                        .map(|t| t.corner_face[c] as usize)
+                        .unwrap_or_else(|| face_of_corner(mesh, c));
+                    unit_or_zero(raw[f])
+                })
+                .collect(),
+        };
+        let mut scene = Scene {
+            origin,
+            bbox: (lo, hi),
+            ..Scene::default()
+        };
+        scene.vertices = (0..mesh.num_corners())
+            .map(|c| Vertex {
+                position: rel(c),
+                normal: corner_normals[c].as_vec3().to_array(),
+                color: BASE_COLOR,
+            })
+            .collect();
+        for f in 0..mesh.num_faces() {
+            if hidden(f) {
+                continue;
+            }
+            if let (ColorBy::Kind, Some(k)) = (opts.color_by, kinds) {
+                let col = KIND_COLORS[match k.get(f) {
+                    Some(FaceKind::Face) | None => 0,
+                    Some(FaceKind::Edge) => 1,
+                    Some(FaceKind::Vertex) => 2,
+                }];
+                for c in mesh.face_corners(f) {
+                    scene.vertices[c].color = col;
+                }
+            }
+            for t in triangulate_face(mesh, f, unit_or_zero(raw[f])) {
+                scene.indices.extend_from_slice(&t);
+            }
+            if opts.wireframe {
+                for l in mesh.face_loops(f) {
+                    let r = mesh.loop_corners(l);
+                    for c in r.clone() {
+                        let n = if c + 1 == r.end { r.start } else { c + 1 };
+                        for e in [c, n] {
+                            scene.lines.push(LineVertex {
+                                position: rel(e),
+                                color: [0.08, 0.09, 0.12],
+                            });
+                        }
+                    }
+                }
+            }
+        }
+        scene
+    }
+
+    /// Adds the polygon edges of another mesh (e.g. the previous level as a ghost cage).
+    pub fn add_cage(&mut self, mesh: &PolyMesh, color: [f32; 3]) {
+        for f in 0..mesh.num_faces() {
+            for l in mesh.face_loops(f) {
+                let vs = mesh.loop_verts(l);
+                for i in 0..vs.len() {
+                    for v in [vs[i], vs[(i + 1) % vs.len()]] {
+                        let p = (mesh.positions[v as usize] - self.origin).as_vec3();
+                        self.lines.push(LineVertex {
+                            position: p.to_array(),
+                            color,
+                        });
+                    }
+                }
+            }
+        }
+    }
+
+    /// Radius of the bounding sphere around the origin.
+    pub fn radius(&self) -> f32 {
+        (0.5 * (self.bbox.1 - self.bbox.0).length()).max(1e-9) as f32
+    }
+
+    /// Number of triangles.
+    pub fn triangles(&self) -> usize {
+        self.indices.len() / 3
+    }
+
+    /// Centre offset helper for callers placing extra geometry.
+    pub fn to_local(&self, p: DVec3) -> Vec3 {
+        (p - self.origin).as_vec3()
+    }
+}
+
+fn face_of_corner(mesh: &PolyMesh, c: usize) -> usize {
+    (0..mesh.num_faces())
+        .find(|&f| mesh.face_corners(f).contains(&c))
+        .unwrap_or(0)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use prism_geom::primitives;
+
+    #[test]
+    fn concave_and_holed_faces_triangulate_to_their_area() {
+        for m in [primitives::tripod(), primitives::holed_block()] {
+            let raw = face_normals_raw(&m);
+            for (f, &r) in raw.iter().enumerate() {
+                let n = unit_or_zero(r);
+                let area: f64 = triangulate_face(&m, f, n)
+                    .iter()
+                    .map(|t| {
+                        let p = |c: u32| m.positions[m.corner_verts[c as usize] as usize];
+                        0.5 * (p(t[1]) - p(t[0])).cross(p(t[2]) - p(t[0])).dot(n)
+                    })
+                    .sum();
+                assert!((area - r.length()).abs() < 1e-12, "face {f}: {area}");
+            }
+        }
+    }
+
+    #[test]
+    fn smooth_normals_split_at_sharp_edges() {
+        // A cube: every edge is 90°, so smooth shading with a 40° crease angle is flat.
+        let m = primitives::cube3();
+        let flat = Scene::build(
+            &m,
+            &EdgeAttrs::new(),
+            None,
+            &|_| false,
+            &SceneOptions::default(),
+        );
+        let opts = SceneOptions {
+            shading: Shading::Smooth,
+            ..SceneOptions::default()
+        };
+        let smooth = Scene::build(&m, &EdgeAttrs::new(), None, &|_| false, &opts);
+        assert_eq!(flat.vertices, smooth.vertices);
+        // With a 100° crease angle the corners average three faces: (±1, ±1, ±1)/√3.
+        let opts = SceneOptions {
+            shading: Shading::Smooth,
+            crease_angle_deg: 100.0,
+            ..SceneOptions::default()
+        };
+        let round = Scene::build(&m, &EdgeAttrs::new(), None, &|_| false, &opts);
+        for v in &round.vertices {
+            let n = Vec3::from(v.normal);
+            assert!(
+                (n.abs() - Vec3::splat(1.0 / 3f32.sqrt())).length() < 1e-6,
+                "{n}"
+            );
+        }
+        assert_eq!(round.triangles(), 12);
+    }
+}

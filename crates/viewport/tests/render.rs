@@ -1,0 +1,144 @@
+//! Shaders validated by naga; offscreen renders compared with stored golden pictures.
+//!
+//! The renders need a wgpu adapter; on a machine without a GPU that is Mesa's software
+//! Vulkan (`apt-get install mesa-vulkan-drivers`, which `.ci/run` installs). Set
+//! `PRISM_WRITE_GOLDEN=1` to rewrite the golden PNGs after a deliberate change, and look
+//! at them before committing.
+
+use prism_geom::{EdgeAttrs, Pipeline, parse_pipeline, primitives};
+use prism_viewport::{Camera, ColorBy, Offscreen, Scene, SceneOptions, Shading, View};
+use std::path::PathBuf;
+
+#[test]
+fn every_shader_validates() {
+    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../shaders");
+    let mut n = 0;
+    for entry in std::fs::read_dir(&dir).unwrap() {
+        let path = entry.unwrap().path();
+        if path.extension().is_some_and(|e| e == "wgsl") {
+            let src = std::fs::read_to_string(&path).unwrap();
+            let module = naga::front::wgsl::parse_str(&src)
+                .unwrap_or_else(|e| panic!("{}: {}", path.display(), e.emit_to_string(&src)));
+            naga::valid::Validator::new(
+                naga::valid::ValidationFlags::all(),
+                naga::valid::Capabilities::all(),
+            )
+            .validate(&module)
+            .unwrap_or_else(|e| panic!("{}: {e:?}", path.display()));
+            n += 1;
+        }
+    }
+    assert!(n >= 2, "shaders missing");
+}
+
+/// Mean absolute difference per channel (0..255) and the share of pixels off by more
+/// than 48 in some channel.
+fn difference(a: &image::RgbaImage, b: &image::RgbaImage) -> (f64, f64) {
+    assert_eq!(a.dimensions(), b.dimensions());
+    let mut sum = 0u64;
+    let mut off = 0usize;
+    for (p, q) in a.pixels().zip(b.pixels()) {
+        let d: Vec<u32> = (0..3).map(|k| p.0[k].abs_diff(q.0[k]) as u32).collect();
+        sum += d.iter().map(|&x| x as u64).sum::<u64>();
+        if d.iter().any(|&x| x > 48) {
+            off += 1;
+        }
+    }
+    let n = (a.width() * a.height()) as f64;
+    (sum as f64 / (3.0 * n), off as f64 / n)
+}
+
+fn golden(name: &str, img: &image::RgbaImage) {
+    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/golden")
+        .join(name);
+    if std::env::var_os("PRISM_WRITE_GOLDEN").is_some() {
+        img.save(&path).unwrap();
+    }
+    let want = image::open(&path)
+        .unwrap_or_else(|e| panic!("{}: {e} (PRISM_WRITE_GOLDEN=1 writes it)", path.display()))
+        .to_rgba8();
+    let (mean, off) = difference(img, &want);
+    if mean > 1.5 || off > 0.005 {
+        let got = std::env::temp_dir().join(format!("got-{name}"));
+        img.save(&got).unwrap();
+        panic!(
+            "{name}: mean difference {mean:.2}/255, {:.2} % of pixels off; this render is at {}",
+            100.0 * off,
+            got.display()
+        );
+    }
+}
+
+fn tripod_scene(pipeline: &str, opts: &SceneOptions, cage: bool) -> Scene {
+    let mut p = Pipeline::new(
+        primitives::tripod(),
+        EdgeAttrs::new(),
+        parse_pipeline(pipeline).unwrap(),
+    );
+    p.compute().unwrap();
+    let levels = p.levels();
+    let last = levels.last().unwrap();
+    let kinds = last.provenance.as_ref().map(|p| p.face_kind.as_slice());
+    let mut scene = Scene::build(&last.mesh, &last.edge_attrs, kinds, &|_| false, opts);
+    if cage {
+        scene.add_cage(&levels[levels.len() - 2].mesh, [0.95, 0.75, 0.25]);
+    }
+    scene
+}
+
+#[test]
+fn golden_renders() {
+    let gpu = Offscreen::new().expect("a wgpu adapter (install mesa-vulkan-drivers)");
+    let cases = [
+        (
+            "tripod-smooth.png",
+            "combination:r=0.2,combination:r=0.2,combination:r=0.2,combination:r=0.2",
+            SceneOptions {
+                shading: Shading::Smooth,
+                ..SceneOptions::default()
+            },
+            false,
+            View::Iso,
+        ),
+        (
+            "tripod-kinds-wireframe.png",
+            "combination:r=0.3,combination:r=0.3",
+            SceneOptions {
+                color_by: ColorBy::Kind,
+                wireframe: true,
+                ..SceneOptions::default()
+            },
+            true,
+            View::Iso,
+        ),
+        (
+            "tripod-front-catmull-clark.png",
+            "cut-width:d=0.1,catmull-clark,catmull-clark",
+            SceneOptions {
+                shading: Shading::Smooth,
+                wireframe: true,
+                ..SceneOptions::default()
+            },
+            false,
+            View::Front,
+        ),
+    ];
+    for (name, pipeline, opts, cage, view) in cases {
+        let scene = tripod_scene(pipeline, &opts, cage);
+        let camera = Camera::looking(view, glam::Vec3::ZERO, scene.radius());
+        let img = gpu.render(&scene, &camera, 320, 240).unwrap();
+        // Something was drawn: the model covers a good part of the picture.
+        let bg = img.get_pixel(0, 0).0;
+        let covered = img.pixels().filter(|p| p.0 != bg).count() as f64 / (320.0 * 240.0);
+        assert!(
+            covered > 0.15,
+            "{name}: only {:.1} % covered",
+            100.0 * covered
+        );
+        golden(name, &img);
+    }
+    // Bad sizes are refused, not a panic.
+    let scene = tripod_scene("doo-sabin", &SceneOptions::default(), false);
+    assert!(gpu.render(&scene, &Camera::default(), 0, 10).is_err());
+}
