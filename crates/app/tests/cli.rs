@@ -421,3 +421,83 @@ fn render_writes_a_picture() {
     ]);
     assert_eq!(o.status.code(), Some(2));
 }
+
+#[test]
+fn curve_refines_and_round_trips_its_json() {
+    let input = tmp("square.json");
+    std::fs::write(
+        &input,
+        r#"{"closed": true, "points": [[1,0],[0,1],[-1,0],[0,-1]]}"#,
+    )
+    .unwrap();
+    let out = tmp("square-out.json");
+    let o = prism(&[
+        "curve",
+        input.to_str().unwrap(),
+        "-o",
+        out.to_str().unwrap(),
+        "--scheme",
+        "circle",
+        "--levels",
+        "3",
+    ]);
+    assert!(o.status.success(), "{:?}", text(&o));
+    let v: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&out).unwrap()).unwrap();
+    let pts = v["points"].as_array().unwrap();
+    let k = v["curvature"].as_array().unwrap();
+    assert_eq!((pts.len(), k.len()), (32, 32));
+    // Method 1 keeps the square's points on one circle: every curvature equal.
+    let k0 = k[0].as_f64().unwrap();
+    assert!(
+        k.iter()
+            .all(|x| (x.as_f64().unwrap() - k0).abs() < 1e-9 * k0),
+        "{k:?}"
+    );
+    // The output reads back as input.
+    let again = tmp("square-again.json");
+    let o = prism(&[
+        "curve",
+        out.to_str().unwrap(),
+        "-o",
+        again.to_str().unwrap(),
+        "--scheme",
+        "log-spiral",
+        "--levels",
+        "1",
+    ]);
+    assert!(o.status.success(), "{:?}", text(&o));
+    // Bad input: too few points, repeated points, bad JSON, unknown scheme.
+    for (body, needle) in [
+        (
+            r#"{"closed": false, "points": [[0,0],[1,1]]}"#,
+            "at least 3 points",
+        ),
+        (
+            r#"{"closed": false, "points": [[0,0],[1,1],[1,1]]}"#,
+            "same point",
+        ),
+        (r#"{"closed": false, "points": [[0,0],[1,1],"#, "line 1"),
+    ] {
+        std::fs::write(&input, body).unwrap();
+        let o = prism(&[
+            "curve",
+            input.to_str().unwrap(),
+            "-o",
+            out.to_str().unwrap(),
+            "--scheme",
+            "circle",
+        ]);
+        assert_eq!(o.status.code(), Some(1));
+        assert!(text(&o).1.contains(needle), "{:?}", text(&o));
+    }
+    let o = prism(&[
+        "curve",
+        input.to_str().unwrap(),
+        "-o",
+        out.to_str().unwrap(),
+        "--scheme",
+        "spline",
+    ]);
+    assert_eq!(o.status.code(), Some(2));
+}

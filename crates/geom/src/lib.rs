@@ -16,6 +16,7 @@
 
 pub mod analysis;
 pub mod biquadratic;
+pub mod curve;
 pub mod dissolve;
 pub mod edge_attrs;
 pub mod error;

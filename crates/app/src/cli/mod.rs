@@ -1,6 +1,7 @@
 //! Command-line interface (clap derive): the subcommands and their shared error type.
 
 mod bench;
+mod curve;
 mod limit;
 mod render;
 mod subdivide;
@@ -28,6 +29,9 @@ pub enum Command {
     Bench(bench::BenchArgs),
     /// Render a picture offscreen (any adapter, software Vulkan included).
     Render(render::RenderArgs),
+    /// Refine a 2D polyline with Catmull-Clark, the circle-preserving or the
+    /// log-spiral-preserving rule; writes the points and their curvature.
+    Curve(curve::CurveArgs),
 }
 
 /// An error for the user: one line, and the exit code (1 bad input, 2 bad usage).
@@ -58,6 +62,7 @@ pub fn run(cli: Cli) -> Result<(), CliError> {
         Some(Command::Limit(a)) => limit::run(a),
         Some(Command::Bench(a)) => bench::run(a),
         Some(Command::Render(a)) => render::run(a),
+        Some(Command::Curve(a)) => curve::run(a),
         None => Err(CliError::usage(
             "the graphical app is not built yet; use a subcommand, e.g. \
              `prism subdivide assets/tripod.obj -o tripod-round.obj --scheme combination --radius 0.2 --levels 5` \
