@@ -16,17 +16,6 @@ fn main() {
     divan::main();
 }
 
-fn triangulated(m: &PolyMesh) -> PolyMesh {
-    let mut t = PolyMesh::new();
-    t.positions = m.positions.clone();
-    for f in 0..m.num_faces() {
-        let v: Vec<u32> = m.face_corners(f).map(|c| m.corner_verts[c]).collect();
-        t.push_polygon(&[v[0], v[1], v[2]]);
-        t.push_polygon(&[v[0], v[2], v[3]]);
-    }
-    t
-}
-
 fn levels(m: &PolyMesh, scheme: PrimalScheme, n: usize) -> PolyMesh {
     let (attrs, tags) = (EdgeAttrs::new(), SubdivTags::default());
     refine_primal_levels(m, &attrs, &tags, scheme, n, u64::MAX)
@@ -48,6 +37,6 @@ fn catmull_clark_l2_100k(b: divan::Bencher) {
 
 #[divan::bench(sample_count = 5)]
 fn loop_l1_1m(b: divan::Bencher) {
-    let m = triangulated(&primitives::torus(708, 708, 3.0, 1.0));
+    let m = primitives::fan_triangulated(&primitives::torus(708, 708, 3.0, 1.0));
     b.bench(|| levels(&m, PrimalScheme::Loop, 1));
 }

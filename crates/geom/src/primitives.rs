@@ -154,6 +154,20 @@ pub fn torus(rings: u32, segments: u32, big_r: f64, small_r: f64) -> PolyMesh {
     m
 }
 
+/// Every hole-free face split into a fan of triangles from its first corner (for Loop
+/// tests and benchmarks on the quad primitives; a fan is right for convex faces only).
+pub fn fan_triangulated(m: &PolyMesh) -> PolyMesh {
+    let mut t = PolyMesh::new();
+    t.positions = m.positions.clone();
+    for f in 0..m.num_faces() {
+        let v: Vec<u32> = m.face_corners(f).map(|c| m.corner_verts[c]).collect();
+        for k in 1..v.len() - 1 {
+            t.push_polygon(&[v[0], v[k], v[k + 1]]);
+        }
+    }
+    t
+}
+
 /// Several disjoint closed solids joined into one mesh.
 pub fn union_disjoint(parts: &[PolyMesh]) -> PolyMesh {
     let mut m = PolyMesh::new();

@@ -213,17 +213,7 @@ proptest! {
         corner in proptest::option::of((0u32..40, 0.0f64..12.0)),
         chaikin in any::<bool>(),
     ) {
-        let tri = |m: PolyMesh| {
-            let mut t = PolyMesh::new();
-            t.positions = m.positions.clone();
-            for f in 0..m.num_faces() {
-                let v: Vec<u32> = m.face_corners(f).map(|c| m.corner_verts[c]).collect();
-                for k in 1..v.len() - 1 {
-                    t.push_polygon(&[v[0], v[k], v[k + 1]]);
-                }
-            }
-            t
-        };
+        let tri = |m: PolyMesh| primitives::fan_triangulated(&m);
         let (mut m, s) = match shape {
             0 => (primitives::tripod(), PrimalScheme::CatmullClark),
             1 => (primitives::torus(6, 5, 3.0, 1.0), PrimalScheme::CatmullClark),

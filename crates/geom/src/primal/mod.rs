@@ -788,16 +788,7 @@ mod tests {
         open.loop_starts.truncate(open.face_starts.len());
         open.corner_verts
             .truncate(*open.loop_starts.last().unwrap() as usize);
-        let tri = |m: &PolyMesh| {
-            let mut t = PolyMesh::new();
-            t.positions = m.positions.clone();
-            for f in 0..m.num_faces() {
-                let v: Vec<u32> = m.face_corners(f).map(|c| m.corner_verts[c]).collect();
-                t.push_polygon(&[v[0], v[1], v[2]]);
-                t.push_polygon(&[v[0], v[2], v[3]]);
-            }
-            t
-        };
+        let tri = primitives::fan_triangulated;
         let cases = [
             (primitives::tripod(), PrimalScheme::CatmullClark),
             (open.clone(), PrimalScheme::CatmullClark),
