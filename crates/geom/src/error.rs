@@ -36,6 +36,32 @@ pub enum MeshError {
     TooLarge { what: &'static str },
 }
 
+/// A step whose result would not fit the memory budget, refused before it starts.
+#[derive(Debug, Clone, PartialEq, Error)]
+#[error(
+    "the next level would need about {needed_mib} MiB, more than the budget of {budget_mib} MiB ({faces} faces)"
+)]
+pub struct OverBudget {
+    pub needed_mib: u64,
+    pub budget_mib: u64,
+    pub faces: u64,
+}
+
+impl OverBudget {
+    /// Refuses `needed` bytes over `budget`.
+    pub fn check(needed: u64, budget: u64, faces: u64) -> Result<(), OverBudget> {
+        if needed > budget {
+            Err(OverBudget {
+                needed_mib: needed >> 20,
+                budget_mib: budget >> 20,
+                faces,
+            })
+        } else {
+            Ok(())
+        }
+    }
+}
+
 /// Something odd about the input that does not stop the work.
 #[derive(Debug, Clone, PartialEq)]
 pub enum MeshWarning {

@@ -13,7 +13,7 @@
 use crate::biquadratic::{self, FaceKind, Provenance};
 use crate::dissolve::{DissolveError, dissolve_flat_edges};
 use crate::edge_attrs::{self, EdgeAttrs};
-use crate::error::MeshError;
+use crate::error::{MeshError, OverBudget};
 use crate::geometry::{
     face_normal_and_volume6, face_normals_raw, loop_newell, signed_bend_angles, unit_or_zero,
 };
@@ -58,14 +58,8 @@ pub enum StepError {
     Dissolve(#[from] DissolveError),
     #[error(transparent)]
     Primal(#[from] crate::primal::PrimalError),
-    #[error(
-        "the next level would need about {needed_mib} MiB, more than the budget of {budget_mib} MiB ({faces} faces)"
-    )]
-    TooLarge {
-        needed_mib: u64,
-        budget_mib: u64,
-        faces: u64,
-    },
+    #[error(transparent)]
+    TooLarge(#[from] OverBudget),
 }
 
 /// What a step did, for the summary line, the status bar and the tests.
@@ -148,14 +142,11 @@ pub fn biquadratic_step(
         None => (mesh, attrs, vn),
     };
 
-    let needed = biquadratic::estimated_bytes(cur, topo.num_edges());
-    if needed > options.memory_budget {
-        return Err(StepError::TooLarge {
-            needed_mib: needed >> 20,
-            budget_mib: options.memory_budget >> 20,
-            faces: (cur.num_faces() + topo.num_edges() + cur.num_vertices()) as u64,
-        });
-    }
+    OverBudget::check(
+        biquadratic::estimated_bytes(cur, topo.num_edges()),
+        options.memory_budget,
+        (cur.num_faces() + topo.num_edges() + cur.num_vertices()) as u64,
+    )?;
 
     let mut widths = Vec::new();
     if let Some(r) = rule.radius() {

@@ -120,6 +120,17 @@ fn loop_masks_by_hand_on_an_octahedron() {
         }) => {}
         other => panic!("{other:?}"),
     }
+    // A level over the memory budget is refused before it starts.
+    match refine_primal(
+        &m,
+        &EdgeAttrs::new(),
+        &SubdivTags::default(),
+        PrimalScheme::Loop,
+        100,
+    ) {
+        Err(PrimalError::TooLarge(e)) => assert_eq!(e.faces, 32),
+        other => panic!("{other:?}"),
+    }
 }
 
 #[test]

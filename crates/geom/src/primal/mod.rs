@@ -32,7 +32,7 @@ pub mod masks;
 pub use limit::{LimitPoints, limit_points, limit_points_ordered};
 
 use crate::edge_attrs::{EdgeAttr, EdgeAttrs, EdgeKey};
-use crate::error::MeshError;
+use crate::error::{MeshError, OverBudget};
 use crate::mesh::PolyMesh;
 use crate::tags::{BoundaryInterpolation, CreaseMethod, SubdivTags};
 use crate::topology::{NONE, Topology};
@@ -66,14 +66,8 @@ pub enum PrimalError {
     HoledFace { face: u32, scheme: &'static str },
     #[error("face {face} has {corners} corners: Loop subdivides triangles only")]
     NotTriangle { face: u32, corners: usize },
-    #[error(
-        "the next level would need about {needed_mib} MiB, more than the budget of {budget_mib} MiB ({faces} faces)"
-    )]
-    TooLarge {
-        needed_mib: u64,
-        budget_mib: u64,
-        faces: u64,
-    },
+    #[error(transparent)]
+    TooLarge(#[from] OverBudget),
 }
 
 /// What one primal step did.
@@ -517,13 +511,7 @@ fn refine(
     };
     check_faces(mesh, scheme)?;
     let (needed, faces) = estimated_bytes(mesh, topo.num_edges(), scheme);
-    if needed > memory_budget {
-        return Err(PrimalError::TooLarge {
-            needed_mib: needed >> 20,
-            budget_mib: memory_budget >> 20,
-            faces,
-        });
-    }
+    OverBudget::check(needed, memory_budget, faces)?;
     let natural;
     let order: Option<&RingOrder> = match order {
         Some(Some(o)) => Some(o),
