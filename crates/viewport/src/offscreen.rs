@@ -3,7 +3,7 @@
 //! Works on any adapter wgpu finds, Mesa's software Vulkan (lavapipe) included.
 
 use crate::camera::Camera;
-use crate::renderer::{BACKGROUND, DEPTH_FORMAT, Renderer, SAMPLES};
+use crate::renderer::{BACKGROUND, DEPTH_FORMAT, GpuScene, Renderer, SAMPLES};
 use crate::scene::Scene;
 use thiserror::Error;
 
@@ -68,6 +68,23 @@ impl Offscreen {
         width: u32,
         height: u32,
     ) -> Result<image::RgbaImage, RenderError> {
+        let gpu = self.upload(scene);
+        self.render_uploaded(&gpu, camera, width, height)
+    }
+
+    /// Uploads a scene once, to render it many times (a frame-time benchmark, a turntable).
+    pub fn upload(&self, scene: &Scene) -> GpuScene {
+        self.renderer.upload(&self.device, scene)
+    }
+
+    /// Renders an uploaded scene: one frame, read back as an image.
+    pub fn render_uploaded(
+        &self,
+        gpu: &GpuScene,
+        camera: &Camera,
+        width: u32,
+        height: u32,
+    ) -> Result<image::RgbaImage, RenderError> {
         let max = self.device.limits().max_texture_dimension_2d;
         if width == 0 || height == 0 || width > max || height > max {
             return Err(RenderError::Size {
@@ -76,7 +93,6 @@ impl Offscreen {
                 max,
             });
         }
-        let gpu = self.renderer.upload(&self.device, scene);
         self.renderer
             .set_camera(&self.queue, camera, width as f32 / height as f32);
         let size = wgpu::Extent3d {
@@ -155,7 +171,7 @@ impl Offscreen {
                 occlusion_query_set: None,
                 multiview_mask: None,
             });
-            self.renderer.draw(&mut pass, &gpu);
+            self.renderer.draw(&mut pass, gpu);
         }
         enc.copy_texture_to_buffer(
             wgpu::TexelCopyTextureInfo {

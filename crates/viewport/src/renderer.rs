@@ -197,7 +197,7 @@ impl Renderer {
     }
 
     /// Draws a scene into a render pass (the pass must use [`SAMPLES`] and [`DEPTH_FORMAT`]).
-    pub fn draw<'a>(&'a self, pass: &mut wgpu::RenderPass<'a>, scene: &'a GpuScene) {
+    pub fn draw(&self, pass: &mut wgpu::RenderPass<'_>, scene: &GpuScene) {
         pass.set_bind_group(0, &self.bind_group, &[]);
         if scene.index_count > 0 {
             pass.set_pipeline(&self.mesh_pipeline);
