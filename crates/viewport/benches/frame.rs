@@ -1,6 +1,7 @@
 //! Frame time offscreen: a 1M-triangle mesh (a 708 × 708 torus split into 1 002 528
-//! triangles, flat shaded) at 1024 × 768 with 4× multisampling, read back to the CPU. The
-//! scene is uploaded once; one iteration is one frame. On Mesa's software Vulkan here a bare
+//! triangles, flat shaded) at 1024 × 768 with the interactive sample count of the adapter
+//! (none on a software rasterizer, 4× on a GPU), read back to the CPU. The scene is
+//! uploaded once; one iteration is one frame. On Mesa's software Vulkan here a bare
 //! probe drew such a frame in about 125 ms (docs/performance.md).
 
 use prism_geom::{EdgeAttrs, primitives};
@@ -21,7 +22,7 @@ fn frame_1m_triangles_1024x768(b: divan::Bencher) {
         &SceneOptions::default(),
     );
     assert_eq!(scene.triangles(), 1_002_528);
-    let gpu = Offscreen::new().expect("a wgpu adapter");
+    let gpu = Offscreen::interactive().expect("a wgpu adapter");
     eprintln!(
         "adapter: {} ({:?})",
         gpu.adapter_info.name, gpu.adapter_info.device_type

@@ -3,7 +3,9 @@
 //! Works on any adapter wgpu finds, Mesa's software Vulkan (lavapipe) included.
 
 use crate::camera::Camera;
-use crate::renderer::{BACKGROUND, DEPTH_FORMAT, GpuScene, Renderer, SAMPLES};
+use crate::renderer::{
+    BACKGROUND, DEPTH_FORMAT, GpuScene, PICTURE_SAMPLES, Renderer, interactive_samples,
+};
 use crate::scene::Scene;
 use thiserror::Error;
 
@@ -33,8 +35,19 @@ pub struct Offscreen {
 const FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8UnormSrgb;
 
 impl Offscreen {
-    /// Opens the best adapter (`WGPU_BACKEND` and friends steer the choice).
+    /// Opens the best adapter (`WGPU_BACKEND` and friends steer the choice), for pictures
+    /// (4× multisampling).
     pub fn new() -> Result<Offscreen, RenderError> {
+        Self::with_samples(|_| PICTURE_SAMPLES)
+    }
+
+    /// As [`Offscreen::new`] with the sample count of interactive frames on this adapter
+    /// (what a frame-time benchmark measures).
+    pub fn interactive() -> Result<Offscreen, RenderError> {
+        Self::with_samples(interactive_samples)
+    }
+
+    fn with_samples(samples: impl Fn(&wgpu::AdapterInfo) -> u32) -> Result<Offscreen, RenderError> {
         let instance =
             wgpu::Instance::new(wgpu::InstanceDescriptor::new_without_display_handle_from_env());
         let adapter = pollster::block_on(instance.request_adapter(&wgpu::RequestAdapterOptions {
@@ -51,7 +64,7 @@ impl Offscreen {
             ..Default::default()
         }))
         .map_err(|e| RenderError::Device(e.to_string()))?;
-        let renderer = Renderer::new(&device, FORMAT);
+        let renderer = Renderer::new(&device, FORMAT, samples(&adapter_info));
         Ok(Offscreen {
             device,
             queue,
@@ -112,12 +125,15 @@ impl Offscreen {
                 view_formats: &[],
             })
         };
-        let msaa = texture(
-            "prism msaa",
-            SAMPLES,
-            FORMAT,
-            wgpu::TextureUsages::RENDER_ATTACHMENT,
-        );
+        let samples = self.renderer.samples;
+        let msaa = (samples > 1).then(|| {
+            texture(
+                "prism msaa",
+                samples,
+                FORMAT,
+                wgpu::TextureUsages::RENDER_ATTACHMENT,
+            )
+        });
         let resolved = texture(
             "prism resolved",
             1,
@@ -126,15 +142,20 @@ impl Offscreen {
         );
         let depth = texture(
             "prism depth",
-            SAMPLES,
+            samples,
             DEPTH_FORMAT,
             wgpu::TextureUsages::RENDER_ATTACHMENT,
         );
         let (msaa_v, resolved_v, depth_v) = (
-            msaa.create_view(&Default::default()),
+            msaa.as_ref().map(|t| t.create_view(&Default::default())),
             resolved.create_view(&Default::default()),
             depth.create_view(&Default::default()),
         );
+        // With multisampling draw into the samples and resolve; without, draw directly.
+        let (target, resolve) = match &msaa_v {
+            Some(m) => (m, Some(&resolved_v)),
+            None => (&resolved_v, None),
+        };
         let padded = (4 * width).div_ceil(256) * 256;
         let readback = self.device.create_buffer(&wgpu::BufferDescriptor {
             label: Some("prism readback"),
@@ -151,12 +172,16 @@ impl Offscreen {
             let mut pass = enc.begin_render_pass(&wgpu::RenderPassDescriptor {
                 label: Some("prism offscreen"),
                 color_attachments: &[Some(wgpu::RenderPassColorAttachment {
-                    view: &msaa_v,
+                    view: target,
                     depth_slice: None,
-                    resolve_target: Some(&resolved_v),
+                    resolve_target: resolve,
                     ops: wgpu::Operations {
                         load: wgpu::LoadOp::Clear(BACKGROUND),
-                        store: wgpu::StoreOp::Discard,
+                        store: if resolve.is_some() {
+                            wgpu::StoreOp::Discard
+                        } else {
+                            wgpu::StoreOp::Store
+                        },
                     },
                 })],
                 depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {

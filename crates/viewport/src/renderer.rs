@@ -11,7 +11,18 @@ pub const MESH_WGSL: &str = include_str!("../../../shaders/mesh.wgsl");
 pub const LINES_WGSL: &str = include_str!("../../../shaders/lines.wgsl");
 
 pub const DEPTH_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Depth32Float;
-pub const SAMPLES: u32 = 4;
+/// Multisampling for pictures (`prism render`, golden images).
+pub const PICTURE_SAMPLES: u32 = 4;
+
+/// Multisampling for interactive frames on an adapter: 4× on a GPU, none on a software
+/// rasterizer, where it costs more than the picture gains while the user turns the model.
+pub fn interactive_samples(info: &wgpu::AdapterInfo) -> u32 {
+    if info.device_type == wgpu::DeviceType::Cpu {
+        1
+    } else {
+        4
+    }
+}
 
 /// Background colour (linear).
 pub const BACKGROUND: wgpu::Color = wgpu::Color {
@@ -39,6 +50,8 @@ pub struct GpuScene {
 
 /// Pipelines and the uniform buffer for one colour format.
 pub struct Renderer {
+    /// Sample count of the render passes this renderer draws into.
+    pub samples: u32,
     mesh_pipeline: wgpu::RenderPipeline,
     line_pipeline: wgpu::RenderPipeline,
     globals: wgpu::Buffer,
@@ -46,7 +59,7 @@ pub struct Renderer {
 }
 
 impl Renderer {
-    pub fn new(device: &wgpu::Device, format: wgpu::TextureFormat) -> Renderer {
+    pub fn new(device: &wgpu::Device, format: wgpu::TextureFormat, samples: u32) -> Renderer {
         let bgl = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("prism globals"),
             entries: &[wgpu::BindGroupLayoutEntry {
@@ -113,7 +126,7 @@ impl Renderer {
                     bias: Default::default(),
                 }),
                 multisample: wgpu::MultisampleState {
-                    count: SAMPLES,
+                    count: samples,
                     mask: !0,
                     alpha_to_coverage_enabled: false,
                 },
@@ -144,6 +157,7 @@ impl Renderer {
             wgpu::PrimitiveTopology::LineList,
         );
         Renderer {
+            samples,
             mesh_pipeline,
             line_pipeline,
             globals,
@@ -196,7 +210,7 @@ impl Renderer {
         queue.write_buffer(&self.globals, 0, bytemuck::bytes_of(&g));
     }
 
-    /// Draws a scene into a render pass (the pass must use [`SAMPLES`] and [`DEPTH_FORMAT`]).
+    /// Draws a scene into a render pass (with `self.samples` samples and [`DEPTH_FORMAT`]).
     pub fn draw(&self, pass: &mut wgpu::RenderPass<'_>, scene: &GpuScene) {
         pass.set_bind_group(0, &self.bind_group, &[]);
         if scene.index_count > 0 {
