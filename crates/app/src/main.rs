@@ -1,8 +1,9 @@
-//! `prism`: the desktop modeller (GUI by default, coming with the viewport) and its headless
-//! subcommands. Exit codes: 0 success, 1 bad input (unreadable file, bad mesh, a step that
+//! `prism`: the desktop modeller (the window by default, `prism FILE` opens a file) and its
+//! headless subcommands. Exit codes: 0 success, 1 bad input (unreadable file, bad mesh, a step that
 //! fails), 2 bad usage (unknown flag, bad scheme or parameter).
 
 mod cli;
+mod gui;
 
 use clap::Parser;
 use std::process::ExitCode;

@@ -11,10 +11,18 @@ use prism_geom::MeshError;
 
 /// Prism — interactive polyhedral subdivision: chamfer and round the edges of solids.
 #[derive(Debug, Parser)]
-#[command(name = "prism", version, about, long_about = None)]
+#[command(name = "prism", version, about, long_about = None, args_conflicts_with_subcommands = true)]
 pub struct Cli {
     #[command(subcommand)]
     pub command: Option<Command>,
+    /// Without a subcommand: the file to open in the window (the bundled tripod if none).
+    pub file: Option<std::path::PathBuf>,
+    /// Without a subcommand: the steps to start with, e.g. "combination:r=0.2,combination:r=0.2".
+    #[arg(long)]
+    pub pipeline: Option<String>,
+    /// Without a subcommand: open the window, save a screenshot of it to this PNG, exit.
+    #[arg(long)]
+    pub screenshot: Option<std::path::PathBuf>,
 }
 
 #[derive(Debug, Subcommand)]
@@ -63,11 +71,18 @@ pub fn run(cli: Cli) -> Result<(), CliError> {
         Some(Command::Bench(a)) => bench::run(a),
         Some(Command::Render(a)) => render::run(a),
         Some(Command::Curve(a)) => curve::run(a),
-        None => Err(CliError::usage(
-            "the graphical app is not built yet; use a subcommand, e.g. \
-             `prism subdivide assets/tripod.obj -o tripod-round.obj --scheme combination --radius 0.2 --levels 5` \
-             (see `prism --help`)",
-        )),
+        None => {
+            let pipeline = match &cli.pipeline {
+                Some(p) => prism_geom::parse_pipeline(p).map_err(CliError::usage)?,
+                None => Vec::new(),
+            };
+            crate::gui::run(crate::gui::Launch {
+                file: cli.file,
+                pipeline,
+                screenshot: cli.screenshot,
+            })
+            .map_err(CliError::input)
+        }
     }
 }
 
