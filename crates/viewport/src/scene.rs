@@ -203,9 +203,13 @@ impl Scene {
                 .as_vec3()
                 .to_array()
         };
-        let topo = Topology::build(mesh).ok();
-        let corner_normals: Vec<DVec3> = match (opts.shading, &topo) {
-            (Shading::Smooth, Some(t)) => {
+        // Smooth shading needs the vertex rings; a mesh without valid topology is drawn flat.
+        let topo = match opts.shading {
+            Shading::Smooth => Topology::build(mesh).ok(),
+            Shading::Flat => None,
+        };
+        let corner_normals: Vec<DVec3> = match &topo {
+            Some(t) => {
                 let cos_limit = opts.crease_angle_deg.to_radians().cos();
                 let sharp: Vec<bool> = t
                     .edge_corner
@@ -232,15 +236,13 @@ impl Scene {
                     .collect();
                 smooth_corner_normals(mesh, t, &raw, &sharp)
             }
-            _ => (0..mesh.num_corners())
-                .map(|c| {
-                    let f = topo
-                        .as_ref()
-                        .map(|t| t.corner_face[c] as usize)
-                        .unwrap_or_else(|| face_of_corner(mesh, c));
-                    unit_or_zero(raw[f])
-                })
-                .collect(),
+            None => {
+                let mut n = vec![DVec3::ZERO; mesh.num_corners()];
+                for (f, &r) in raw.iter().enumerate() {
+                    n[mesh.face_corners(f)].fill(unit_or_zero(r));
+                }
+                n
+            }
         };
         let mut scene = Scene {
             origin,
@@ -296,7 +298,7 @@ impl Scene {
                 let vs = mesh.loop_verts(l);
                 for i in 0..vs.len() {
                     for v in [vs[i], vs[(i + 1) % vs.len()]] {
-                        let p = (mesh.positions[v as usize] - self.origin).as_vec3();
+                        let p = self.to_local(mesh.positions[v as usize]);
                         self.lines.push(LineVertex {
                             position: p.to_array(),
                             color,
@@ -317,16 +319,10 @@ impl Scene {
         self.indices.len() / 3
     }
 
-    /// Centre offset helper for callers placing extra geometry.
+    /// A point in the scene's coordinates (relative to its origin, `f32`).
     pub fn to_local(&self, p: DVec3) -> Vec3 {
         (p - self.origin).as_vec3()
     }
-}
-
-fn face_of_corner(mesh: &PolyMesh, c: usize) -> usize {
-    (0..mesh.num_faces())
-        .find(|&f| mesh.face_corners(f).contains(&c))
-        .unwrap_or(0)
 }
 
 #[cfg(test)]
