@@ -116,6 +116,19 @@ impl PolyMesh {
             .count()
     }
 
+    /// Keeps the first `faces` faces and drops the rest (their corners and loops); the
+    /// vertices stay. Opens a closed mesh for tests of boundaries.
+    pub fn truncate_faces(&mut self, faces: usize) {
+        if faces >= self.num_faces() {
+            return;
+        }
+        self.face_starts.truncate(faces + 1);
+        self.loop_starts
+            .truncate(self.face_starts[faces] as usize + 1);
+        self.corner_verts
+            .truncate(*self.loop_starts.last().expect("loop offsets start at 0") as usize);
+    }
+
     /// Diagonal of the axis-aligned bounding box (0 for an empty mesh).
     pub fn bbox_diagonal(&self) -> f64 {
         let (lo, hi) = self.bbox();
@@ -140,5 +153,25 @@ impl PolyMesh {
     /// Whether every coordinate is finite.
     pub fn all_finite(&self) -> bool {
         self.positions.iter().all(|p| p.is_finite())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn truncating_faces_keeps_the_first_ones_and_every_vertex() {
+        let mut m = crate::primitives::holed_block();
+        let (v, f) = (m.num_vertices(), m.num_faces());
+        let first_loops = m.face_loops(0).len() + m.face_loops(1).len();
+        m.truncate_faces(2);
+        assert_eq!(
+            (m.num_faces(), m.num_vertices(), m.num_loops()),
+            (2, v, first_loops)
+        );
+        assert_eq!(m.num_corners(), m.loop_starts[first_loops] as usize);
+        m.truncate_faces(f);
+        assert_eq!(m.num_faces(), 2);
     }
 }

@@ -140,10 +140,7 @@ fn repeated_subdivision_converges_to_the_limit_points() {
     // (Not at a dart — a crease ending inside the surface —, where OpenSubdiv, and so
     // Prism, uses the smooth limit mask although the crease beside it changes the limit.)
     let mut open = primitives::torus(8, 6, 3.0, 1.0);
-    open.face_starts.truncate(open.face_starts.len() - 8);
-    open.loop_starts.truncate(open.face_starts.len());
-    open.corner_verts
-        .truncate(*open.loop_starts.last().unwrap() as usize);
+    open.truncate_faces(open.num_faces() - 8);
     let cases = [
         (primitives::tripod(), PrimalScheme::CatmullClark, false),
         (open, PrimalScheme::CatmullClark, false),

@@ -772,10 +772,7 @@ mod tests {
     fn child_topology_equals_the_built_one() {
         let mut open = primitives::torus(6, 5, 3.0, 1.0);
         // Drop the last faces: a boundary.
-        open.face_starts.truncate(open.face_starts.len() - 4);
-        open.loop_starts.truncate(open.face_starts.len());
-        open.corner_verts
-            .truncate(*open.loop_starts.last().unwrap() as usize);
+        open.truncate_faces(open.num_faces() - 4);
         let tri = primitives::fan_triangulated;
         let cases = [
             (primitives::tripod(), PrimalScheme::CatmullClark),
