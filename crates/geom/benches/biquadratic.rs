@@ -55,21 +55,24 @@ fn topology_build(b: divan::Bencher) {
     b.bench(|| Topology::build(&m).unwrap());
 }
 
+/// Doo–Sabin corner points and the split, given the topology.
+fn points_and_split(m: &prism_geom::PolyMesh, t: &Topology) -> prism_geom::PolyMesh {
+    let input = RuleInput {
+        mesh: m,
+        topo: t,
+        normals: &[],
+        cut_widths: &[],
+        vertex_neighbourhood: &[],
+    };
+    let (pts, _) = corner_points(&CornerRule::DooSabin, &input).unwrap();
+    biquadratic::split(m, t, pts).0
+}
+
 #[divan::bench(sample_count = 20)]
 fn doo_sabin_points_and_split(b: divan::Bencher) {
     let m = torus();
     let t = Topology::build(&m).unwrap();
-    b.bench(|| {
-        let input = RuleInput {
-            mesh: &m,
-            topo: &t,
-            normals: &[],
-            cut_widths: &[],
-            vertex_neighbourhood: &[],
-        };
-        let (pts, _) = corner_points(&CornerRule::DooSabin, &input).unwrap();
-        biquadratic::split(&m, &t, pts)
-    });
+    b.bench(|| points_and_split(&m, &t));
 }
 
 #[divan::bench(sample_count = 20)]
@@ -78,14 +81,6 @@ fn doo_sabin_level1(b: divan::Bencher) {
     b.bench(|| {
         let t = Topology::build(&m).unwrap();
         t.require_closed(&m).unwrap();
-        let input = RuleInput {
-            mesh: &m,
-            topo: &t,
-            normals: &[],
-            cut_widths: &[],
-            vertex_neighbourhood: &[],
-        };
-        let (pts, _) = corner_points(&CornerRule::DooSabin, &input).unwrap();
-        biquadratic::split(&m, &t, pts)
+        points_and_split(&m, &t)
     });
 }
