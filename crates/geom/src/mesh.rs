@@ -158,8 +158,6 @@ impl PolyMesh {
 
 #[cfg(test)]
 mod tests {
-    use super::*;
-
     #[test]
     fn truncating_faces_keeps_the_first_ones_and_every_vertex() {
         let mut m = crate::primitives::holed_block();
