@@ -501,3 +501,35 @@ fn curve_refines_and_round_trips_its_json() {
     ]);
     assert_eq!(o.status.code(), Some(2));
 }
+
+#[test]
+fn subdivide_exports_stl_and_glb() {
+    for (name, magic) in [("cube.stl", None), ("cube.glb", Some(b"glTF"))] {
+        let out = tmp(name);
+        let o = prism(&[
+            "subdivide",
+            "assets/cube.obj",
+            "-o",
+            out.to_str().unwrap(),
+            "--pipeline",
+            "catmull-clark,catmull-clark",
+        ]);
+        assert!(o.status.success(), "{:?}", text(&o));
+        let bytes = std::fs::read(&out).unwrap();
+        match magic {
+            // 6·16 quads at level 2, two triangles each.
+            None => assert_eq!(bytes.len(), 84 + 50 * 2 * 96),
+            Some(m) => assert_eq!(&bytes[..4], m),
+        }
+    }
+    let o = prism(&[
+        "subdivide",
+        "assets/cube.obj",
+        "-o",
+        "x.ply",
+        "--pipeline",
+        "doo-sabin",
+    ]);
+    assert!(!o.status.success());
+    assert!(text(&o).1.contains("x.ply"));
+}

@@ -31,6 +31,7 @@ pub mod scheme;
 pub mod step;
 pub mod tags;
 pub mod topology;
+pub mod triangulate;
 
 pub use edge_attrs::{EdgeAttr, EdgeAttrs, EdgeKey};
 pub use error::{MeshError, MeshWarning};

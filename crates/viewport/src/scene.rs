@@ -11,6 +11,7 @@ use glam::{DVec3, Vec3};
 use prism_geom::biquadratic::FaceKind;
 use prism_geom::geometry::{face_normals_raw, unit_or_zero};
 use prism_geom::topology::{NONE, Topology};
+use prism_geom::triangulate::face_triangles;
 use prism_geom::{EdgeAttrs, EdgeKey, PolyMesh};
 
 /// How faces are shaded.
@@ -85,49 +86,6 @@ pub struct Scene {
     pub origin: DVec3,
     /// Bounding box of the mesh (absolute coordinates).
     pub bbox: (DVec3, DVec3),
-}
-
-/// Triangles of face `f` as corner indices, oriented like the face.
-pub fn triangulate_face(mesh: &PolyMesh, f: usize, normal: DVec3) -> Vec<[u32; 3]> {
-    let loops = mesh.face_loops(f);
-    let outer = mesh.loop_corners(loops.start);
-    let n = outer.len();
-    if loops.len() == 1 && n == 3 {
-        let s = outer.start as u32;
-        return vec![[s, s + 1, s + 2]];
-    }
-    let u = normal.any_orthonormal_vector();
-    let w = normal.cross(u);
-    let mut coords = Vec::new();
-    let mut corners = Vec::new();
-    let mut holes = Vec::new();
-    for (k, l) in loops.enumerate() {
-        if k > 0 {
-            holes.push(corners.len());
-        }
-        for c in mesh.loop_corners(l) {
-            let p = mesh.positions[mesh.corner_verts[c] as usize];
-            coords.extend([p.dot(u), p.dot(w)]);
-            corners.push(c as u32);
-        }
-    }
-    let tris = earcutr::earcut(&coords, &holes, 2).unwrap_or_default();
-    if tris.is_empty() {
-        // Degenerate outline: a fan keeps the face visible.
-        let s = outer.start as u32;
-        return (1..n as u32 - 1).map(|i| [s, s + i, s + i + 1]).collect();
-    }
-    tris.chunks_exact(3)
-        .map(|t| {
-            let [a, b, c] = [corners[t[0]], corners[t[1]], corners[t[2]]];
-            let p = |c: u32| mesh.positions[mesh.corner_verts[c as usize] as usize];
-            if (p(b) - p(a)).cross(p(c) - p(a)).dot(normal) < 0.0 {
-                [a, c, b]
-            } else {
-                [a, b, c]
-            }
-        })
-        .collect()
 }
 
 /// Per-corner normals for smooth shading: faces around a vertex are averaged within each
@@ -270,7 +228,7 @@ impl Scene {
                     scene.vertices[c].color = col;
                 }
             }
-            for t in triangulate_face(mesh, f, unit_or_zero(raw[f])) {
+            for t in face_triangles(mesh, f, unit_or_zero(raw[f])) {
                 scene.indices.extend_from_slice(&t);
             }
             if opts.wireframe {
@@ -336,7 +294,7 @@ mod tests {
             let raw = face_normals_raw(&m);
             for (f, &r) in raw.iter().enumerate() {
                 let n = unit_or_zero(r);
-                let area: f64 = triangulate_face(&m, f, n)
+                let area: f64 = face_triangles(&m, f, n)
                     .iter()
                     .map(|t| {
                         let p = |c: u32| m.positions[m.corner_verts[c as usize] as usize];

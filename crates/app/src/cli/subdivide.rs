@@ -47,7 +47,7 @@ pub struct StepArgs {
 pub struct SubdivideArgs {
     /// Input solid (.obj or .prism.json).
     pub input: PathBuf,
-    /// Output file (.obj or .prism.json).
+    /// Output file: .obj or .prism.json (with creases and tags), or .stl / .glb (triangles).
     #[arg(short, long)]
     pub output: PathBuf,
     #[command(flatten)]
@@ -89,7 +89,9 @@ pub fn steps_from(
 
 pub fn run(a: SubdivideArgs) -> Result<(), CliError> {
     let parsed = steps_from(&a.steps, None, true)?;
-    io::FileKind::of(&a.output).map_err(CliError::usage)?;
+    if io::ExportFormat::of(&a.output).is_none() {
+        io::FileKind::of(&a.output).map_err(CliError::usage)?;
+    }
     let (doc, face_lines) = io::load(&a.input).map_err(CliError::input)?;
     let steps = if parsed.is_empty() {
         steps_from(&a.steps, doc.pipeline.as_deref(), false)?
@@ -177,6 +179,13 @@ pub fn run(a: SubdivideArgs) -> Result<(), CliError> {
         );
     }
     let last = result.map_err(CliError::input)?;
+    if io::ExportFormat::of(&a.output).is_some() {
+        let holes = &last.tags.holes;
+        io::export(&a.output, &last.mesh, &|f| holes.contains(&(f as u32)))
+            .map_err(CliError::input)?;
+        println!("wrote {}", a.output.display());
+        return Ok(());
+    }
     let out = Document {
         mesh: last.mesh.clone(),
         edge_attrs: last.edge_attrs.clone(),

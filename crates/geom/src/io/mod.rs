@@ -4,11 +4,13 @@
 
 mod atomic;
 mod document;
+mod export;
 mod obj;
 mod obj_tags;
 
 pub use atomic::write_atomically;
 pub use document::{DOCUMENT_VERSION, Document, read_document, write_document};
+pub use export::{ExportFormat, export, glb_bytes, stl_bytes};
 pub use obj::{ObjModel, obj_to_string, read_obj, read_obj_str, write_obj};
 
 use std::path::{Path, PathBuf};

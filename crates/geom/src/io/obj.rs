@@ -16,9 +16,9 @@
 
 use super::{IoError, write_atomically};
 use crate::edge_attrs::EdgeAttrs;
-use crate::geometry::{face_normal_raw, unit_or_zero};
 use crate::mesh::PolyMesh;
 use crate::tags::SubdivTags;
+use crate::triangulate::face_vertex_triangles;
 use glam::DVec3;
 use std::fmt::Write as _;
 use std::path::Path;
@@ -177,42 +177,6 @@ pub fn read_obj_str(path: &Path, text: &str) -> Result<ObjModel, IoError> {
     })
 }
 
-/// Triangulates face `f` (with holes) in its plane; triangles oriented like the face.
-fn triangulate_face(m: &PolyMesh, f: usize) -> Vec<[u32; 3]> {
-    let n = unit_or_zero(face_normal_raw(m, f));
-    let u = n.any_orthonormal_vector();
-    let w = n.cross(u);
-    let mut coords = Vec::new();
-    let mut ids = Vec::new();
-    let mut holes = Vec::new();
-    for (k, l) in m.face_loops(f).enumerate() {
-        if k > 0 {
-            holes.push(ids.len());
-        }
-        for &v in m.loop_verts(l) {
-            let p = m.positions[v as usize];
-            coords.extend([p.dot(u), p.dot(w)]);
-            ids.push(v);
-        }
-    }
-    let tris = earcutr::earcut(&coords, &holes, 2).unwrap_or_default();
-    tris.chunks_exact(3)
-        .map(|t| {
-            let [a, b, c] = [ids[t[0]], ids[t[1]], ids[t[2]]];
-            let (pa, pb, pc) = (
-                m.positions[a as usize],
-                m.positions[b as usize],
-                m.positions[c as usize],
-            );
-            if (pb - pa).cross(pc - pa).dot(n) < 0.0 {
-                [a, c, b]
-            } else {
-                [a, b, c]
-            }
-        })
-        .collect()
-}
-
 /// The mesh as OBJ text, plus warnings.
 pub fn obj_to_string(m: &PolyMesh, attrs: &EdgeAttrs, tags: &SubdivTags) -> (String, Vec<String>) {
     let mut s = String::with_capacity(m.num_vertices() * 40 + m.num_corners() * 8);
@@ -225,7 +189,7 @@ pub fn obj_to_string(m: &PolyMesh, attrs: &EdgeAttrs, tags: &SubdivTags) -> (Str
     for f in 0..m.num_faces() {
         if m.face_has_holes(f) {
             holed += 1;
-            for t in triangulate_face(m, f) {
+            for t in face_vertex_triangles(m, f) {
                 let _ = writeln!(s, "f {} {} {}", t[0] + 1, t[1] + 1, t[2] + 1);
             }
             continue;

@@ -1,0 +1,273 @@
+//! Export of a computed level for other programs: binary STL (`stl_io`) and binary glTF
+//! (`.glb`; the JSON part built with `gltf-json`, the typed serde model of the glTF 2.0
+//! schema). Both formats hold triangles only: polygon faces, concave ones and faces with
+//! holes included, are cut by [`crate::triangulate`]; hole faces of the primal schemes are
+//! left out. Coordinates are written as `f32`, which both formats prescribe.
+//!
+//! The glTF file carries positions and indices, no normals: the glTF specification tells a
+//! viewer to compute flat normals then, which keeps the chamfered and rounded edges crisp.
+
+use super::{IoError, write_atomically};
+use crate::geometry::{face_normal_raw, unit_or_zero};
+use crate::mesh::PolyMesh;
+use crate::triangulate::mesh_triangles;
+use gltf_json as json;
+use json::validation::Checked::Valid;
+use json::validation::USize64;
+use std::path::Path;
+
+/// Formats a level can be exported to.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ExportFormat {
+    Stl,
+    Glb,
+}
+
+impl ExportFormat {
+    /// By the file name's extension (`.stl`, `.glb`).
+    pub fn of(path: &Path) -> Option<ExportFormat> {
+        let ext = path.extension()?.to_string_lossy().to_lowercase();
+        match ext.as_str() {
+            "stl" => Some(ExportFormat::Stl),
+            "glb" => Some(ExportFormat::Glb),
+            _ => None,
+        }
+    }
+}
+
+/// Binary STL of `mesh` (faces for which `skip` is true are left out).
+pub fn stl_bytes(mesh: &PolyMesh, skip: &dyn Fn(usize) -> bool) -> Vec<u8> {
+    let p = |v: u32| {
+        let q = mesh.positions[v as usize];
+        stl_io::Vertex::new([q.x as f32, q.y as f32, q.z as f32])
+    };
+    let mut tris = Vec::new();
+    for f in (0..mesh.num_faces()).filter(|&f| !skip(f)) {
+        let n = unit_or_zero(face_normal_raw(mesh, f));
+        for t in crate::triangulate::face_vertex_triangles(mesh, f) {
+            tris.push(stl_io::Triangle {
+                normal: stl_io::Normal::new([n.x as f32, n.y as f32, n.z as f32]),
+                vertices: t.map(p),
+            });
+        }
+    }
+    let mut out = Vec::with_capacity(84 + 50 * tris.len());
+    stl_io::write_stl(&mut out, tris.iter()).expect("writing into memory cannot fail");
+    out
+}
+
+/// Binary glTF 2.0 (`.glb`) of `mesh`: one mesh, one node, one scene.
+pub fn glb_bytes(mesh: &PolyMesh, skip: &dyn Fn(usize) -> bool) -> Vec<u8> {
+    let tris = mesh_triangles(mesh, skip);
+    let positions: Vec<f32> = mesh
+        .positions
+        .iter()
+        .flat_map(|p| [p.x as f32, p.y as f32, p.z as f32])
+        .collect();
+    let mut min = [f32::MAX; 3];
+    let mut max = [f32::MIN; 3];
+    for p in positions.chunks_exact(3) {
+        for i in 0..3 {
+            min[i] = min[i].min(p[i]);
+            max[i] = max[i].max(p[i]);
+        }
+    }
+    if positions.is_empty() {
+        (min, max) = ([0.0; 3], [0.0; 3]);
+    }
+    let mut bin: Vec<u8> = positions.iter().flat_map(|x| x.to_le_bytes()).collect();
+    let pos_len = bin.len();
+    bin.extend(tris.iter().flatten().flat_map(|i| i.to_le_bytes()));
+    let idx_len = bin.len() - pos_len;
+
+    let mut root = json::Root::default();
+    root.asset.generator = Some(format!("Prism {}", env!("CARGO_PKG_VERSION")));
+    let buffer = root.push(json::Buffer {
+        byte_length: USize64::from(bin.len()),
+        name: None,
+        uri: None,
+        extensions: None,
+        extras: Default::default(),
+    });
+    let view = |root: &mut json::Root, offset: usize, len: usize, target| {
+        root.push(json::buffer::View {
+            buffer,
+            byte_length: USize64::from(len),
+            byte_offset: Some(USize64::from(offset)),
+            byte_stride: None,
+            name: None,
+            target: Some(Valid(target)),
+            extensions: None,
+            extras: Default::default(),
+        })
+    };
+    let pos_view = view(&mut root, 0, pos_len, json::buffer::Target::ArrayBuffer);
+    let idx_view = view(
+        &mut root,
+        pos_len,
+        idx_len,
+        json::buffer::Target::ElementArrayBuffer,
+    );
+    let accessor =
+        |view, count: usize, ty, component, bounds: Option<([f32; 3], [f32; 3])>| json::Accessor {
+            buffer_view: Some(view),
+            byte_offset: Some(USize64(0)),
+            count: USize64::from(count),
+            component_type: Valid(json::accessor::GenericComponentType(component)),
+            type_: Valid(ty),
+            min: bounds.map(|b| json::Value::from(Vec::from(b.0))),
+            max: bounds.map(|b| json::Value::from(Vec::from(b.1))),
+            name: None,
+            normalized: false,
+            sparse: None,
+            extensions: None,
+            extras: Default::default(),
+        };
+    let pos = root.push(accessor(
+        pos_view,
+        mesh.num_vertices(),
+        json::accessor::Type::Vec3,
+        json::accessor::ComponentType::F32,
+        Some((min, max)),
+    ));
+    let idx = root.push(accessor(
+        idx_view,
+        3 * tris.len(),
+        json::accessor::Type::Scalar,
+        json::accessor::ComponentType::U32,
+        None,
+    ));
+    let primitive = json::mesh::Primitive {
+        attributes: [(Valid(json::mesh::Semantic::Positions), pos)].into(),
+        indices: Some(idx),
+        material: None,
+        mode: Valid(json::mesh::Mode::Triangles),
+        targets: None,
+        extensions: None,
+        extras: Default::default(),
+    };
+    let m = root.push(json::Mesh {
+        name: Some("prism".into()),
+        primitives: vec![primitive],
+        weights: None,
+        extensions: None,
+        extras: Default::default(),
+    });
+    let node = root.push(json::Node {
+        mesh: Some(m),
+        ..Default::default()
+    });
+    let scene = root.push(json::Scene {
+        name: None,
+        nodes: vec![node],
+        extensions: None,
+        extras: Default::default(),
+    });
+    root.scene = Some(scene);
+
+    let mut text = json::serialize::to_vec(&root).expect("the glTF model serialises");
+    while !text.len().is_multiple_of(4) {
+        text.push(b' ');
+    }
+    while !bin.len().is_multiple_of(4) {
+        bin.push(0);
+    }
+    let total = 12 + 8 + text.len() + 8 + bin.len();
+    let mut out = Vec::with_capacity(total);
+    out.extend(b"glTF");
+    out.extend(2u32.to_le_bytes());
+    out.extend((total as u32).to_le_bytes());
+    out.extend((text.len() as u32).to_le_bytes());
+    out.extend(b"JSON");
+    out.extend(text);
+    out.extend((bin.len() as u32).to_le_bytes());
+    out.extend(b"BIN\0");
+    out.extend(bin);
+    out
+}
+
+/// Writes `mesh` as STL or glTF by the file name, through a temporary file.
+pub fn export(path: &Path, mesh: &PolyMesh, skip: &dyn Fn(usize) -> bool) -> Result<(), IoError> {
+    let bytes = match ExportFormat::of(path) {
+        Some(ExportFormat::Stl) => stl_bytes(mesh, skip),
+        Some(ExportFormat::Glb) => glb_bytes(mesh, skip),
+        None => return Err(IoError::UnknownExtension { path: path.into() }),
+    };
+    // The GLB header stores the length in 32 bits.
+    if bytes.len() > u32::MAX as usize {
+        return Err(IoError::Write {
+            path: path.into(),
+            source: std::io::Error::other("the mesh is larger than a 4 GiB file allows"),
+        });
+    }
+    write_atomically(path, &bytes)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::primitives;
+
+    #[test]
+    fn stl_reads_back_with_every_triangle() {
+        let m = primitives::cube3();
+        let bytes = stl_bytes(&m, &|_| false);
+        let back = stl_io::read_stl(&mut std::io::Cursor::new(&bytes)).unwrap();
+        assert_eq!(back.faces.len(), 12);
+        assert_eq!(back.vertices.len(), 8);
+        // Normals point out of the cube.
+        for f in &back.faces {
+            let c: [f32; 3] = std::array::from_fn(|i| {
+                f.vertices
+                    .iter()
+                    .map(|&v| back.vertices[v].0[i])
+                    .sum::<f32>()
+                    / 3.0
+            });
+            let (lo, hi) = m.bbox();
+            let mid = 0.5 * (lo + hi);
+            let d = [
+                c[0] - mid.x as f32,
+                c[1] - mid.y as f32,
+                c[2] - mid.z as f32,
+            ];
+            assert!(f.normal.0.iter().zip(d).map(|(a, b)| a * b).sum::<f32>() > 0.0);
+        }
+        assert_eq!(stl_bytes(&m, &|f| f < 3).len(), 84 + 50 * 6);
+    }
+
+    #[test]
+    fn glb_is_valid_gltf_with_the_mesh() {
+        let m = primitives::cube3();
+        let bytes = glb_bytes(&m, &|_| false);
+        assert_eq!(&bytes[0..4], b"glTF");
+        let u32_at = |i: usize| u32::from_le_bytes(bytes[i..i + 4].try_into().unwrap());
+        assert_eq!(u32_at(8) as usize, bytes.len());
+        let json_len = u32_at(12) as usize;
+        assert_eq!(&bytes[16..20], b"JSON");
+        let root: json::Root = json::deserialize::from_slice(&bytes[20..20 + json_len]).unwrap();
+        let mut errors = Vec::new();
+        use json::validation::Validate;
+        root.validate(&root, json::Path::new, &mut |p, e| errors.push((p(), e)));
+        assert!(errors.is_empty(), "{errors:?}");
+        let bin_at = 20 + json_len;
+        assert_eq!(&bytes[bin_at + 4..bin_at + 8], b"BIN\0");
+        let bin = &bytes[bin_at + 8..];
+        assert_eq!(root.accessors[0].count.0, 8);
+        assert_eq!(root.accessors[1].count.0, 36);
+        // Every index is a vertex, and the positions are the cube's.
+        let idx_at = 8 * 12;
+        for k in 0..36 {
+            let i = u32::from_le_bytes(bin[idx_at + 4 * k..idx_at + 4 * k + 4].try_into().unwrap());
+            assert!(i < 8);
+        }
+        let x0 = f32::from_le_bytes(bin[0..4].try_into().unwrap());
+        assert_eq!(x0 as f64, m.positions[0].x);
+    }
+
+    #[test]
+    fn unknown_extension_is_an_error() {
+        let e = export(Path::new("/tmp/x.ply"), &primitives::cube3(), &|_| false).unwrap_err();
+        assert!(e.to_string().contains("x.ply"));
+    }
+}
