@@ -15,6 +15,7 @@
 //! `docs/ALGORITHMS.md` (shared) and in each module's doc.
 
 pub mod analysis;
+pub mod ancestry;
 pub mod biquadratic;
 pub mod curve;
 pub mod dissolve;
