@@ -104,6 +104,24 @@ impl Pipeline {
         self.levels.truncate(self.steps.len() + 1);
         s
     }
+    /// A pipeline of `steps` on the same input that keeps (clones) the levels both share:
+    /// those before the first step that differs. The app computes a changed pipeline from it
+    /// on a worker thread while the old one stays on screen.
+    pub fn rebased(&self, steps: Vec<Scheme>) -> Pipeline {
+        let same = self
+            .steps
+            .iter()
+            .zip(&steps)
+            .take_while(|(a, b)| a == b)
+            .count();
+        let keep = (same + 1).min(self.levels.len());
+        Pipeline {
+            steps,
+            levels: self.levels[..keep].to_vec(),
+            options: self.options.clone(),
+        }
+    }
+
     /// Replaces the input; every level is dropped.
     pub fn set_input(&mut self, mesh: PolyMesh, edge_attrs: EdgeAttrs) {
         self.levels.truncate(1);
@@ -189,6 +207,11 @@ impl Pipeline {
             each(k + 1, self.levels.last().expect("just pushed"));
         }
         Ok(&self.levels[upto])
+    }
+
+    /// Whether every step has its level.
+    pub fn is_complete(&self) -> bool {
+        self.levels.len() == self.steps.len() + 1
     }
 
     /// Computes every step.

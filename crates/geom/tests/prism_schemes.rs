@@ -254,3 +254,21 @@ fn an_edge_with_its_own_radius_gets_that_radius() {
     assert!(other.max_radial_error < 5e-4, "{other:?}");
     assert_eq!(flips(&p), vec![0; 5]);
 }
+
+#[test]
+fn a_rebased_pipeline_keeps_the_shared_levels_and_recomputes_the_same() {
+    let p = run(&primitives::tripod(), "vector-sum:alpha=0.2,doo-sabin,doo-sabin");
+    let steps = parse_pipeline("vector-sum:alpha=0.2,combination:r=0.2,doo-sabin").unwrap();
+    let mut q = p.rebased(steps.clone());
+    // Input and the vector-sum level are shared.
+    assert_eq!(q.levels().len(), 2);
+    assert_eq!(q.levels()[1].mesh, p.levels()[1].mesh);
+    assert!(!q.is_complete());
+    q.compute().unwrap();
+    assert!(q.is_complete());
+    let fresh = run(&primitives::tripod(), "vector-sum:alpha=0.2,combination:r=0.2,doo-sabin");
+    assert_eq!(q.levels()[3].mesh, fresh.levels()[3].mesh);
+    // Same steps keep everything; fewer steps keep what they still have.
+    assert_eq!(p.rebased(p.steps().to_vec()).levels().len(), 4);
+    assert_eq!(p.rebased(p.steps()[..1].to_vec()).levels().len(), 2);
+}

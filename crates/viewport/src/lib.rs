@@ -10,5 +10,5 @@ pub mod scene;
 
 pub use camera::{Camera, View};
 pub use offscreen::{Offscreen, RenderError};
-pub use renderer::{GpuScene, Renderer};
+pub use renderer::{CameraSlot, GpuScene, Renderer};
 pub use scene::{ColorBy, Scene, SceneOptions, Shading};

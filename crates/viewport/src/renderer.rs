@@ -48,14 +48,21 @@ pub struct GpuScene {
     lines: Option<(wgpu::Buffer, u32)>,
 }
 
-/// Pipelines and the uniform buffer for one colour format.
+/// The camera uniforms of one view; several views (the compare split) draw in one pass,
+/// each with its own slot.
+pub struct CameraSlot {
+    globals: wgpu::Buffer,
+    bind_group: wgpu::BindGroup,
+}
+
+/// Pipelines for one colour format, and the camera slot of a single view.
 pub struct Renderer {
     /// Sample count of the render passes this renderer draws into.
     pub samples: u32,
     mesh_pipeline: wgpu::RenderPipeline,
     line_pipeline: wgpu::RenderPipeline,
-    globals: wgpu::Buffer,
-    bind_group: wgpu::BindGroup,
+    layout: wgpu::BindGroupLayout,
+    slot: CameraSlot,
 }
 
 impl Renderer {
@@ -73,20 +80,7 @@ impl Renderer {
                 count: None,
             }],
         });
-        let globals = device.create_buffer(&wgpu::BufferDescriptor {
-            label: Some("prism globals"),
-            size: std::mem::size_of::<Globals>() as u64,
-            usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
-            mapped_at_creation: false,
-        });
-        let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
-            label: Some("prism globals"),
-            layout: &bgl,
-            entries: &[wgpu::BindGroupEntry {
-                binding: 0,
-                resource: globals.as_entire_binding(),
-            }],
-        });
+        let slot = camera_slot(device, &bgl);
         let layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
             label: Some("prism"),
             bind_group_layouts: &[Some(&bgl)],
@@ -160,9 +154,14 @@ impl Renderer {
             samples,
             mesh_pipeline,
             line_pipeline,
-            globals,
-            bind_group,
+            layout: bgl,
+            slot,
         }
+    }
+
+    /// A camera slot for one more view.
+    pub fn camera_slot(&self, device: &wgpu::Device) -> CameraSlot {
+        camera_slot(device, &self.layout)
     }
 
     /// Uploads a scene.
@@ -195,24 +194,30 @@ impl Renderer {
         }
     }
 
-    /// Sets the camera for the next draw.
+    /// Sets the camera for the next [`Renderer::draw`].
     pub fn set_camera(&self, queue: &wgpu::Queue, camera: &Camera, aspect: f32) {
-        let eye_dir = (camera.eye() - camera.target).normalize_or_zero();
-        // A key light above and to the left of the eye, fixed to the camera.
-        let right = (-eye_dir).cross(glam::Vec3::Z).normalize_or(glam::Vec3::X);
-        let up = right.cross(-eye_dir);
-        let key = (eye_dir + 0.7 * up - 0.5 * right).normalize_or_zero();
-        let g = Globals {
-            view_proj: camera.view_proj(aspect).to_cols_array_2d(),
-            eye_dir: [eye_dir.x, eye_dir.y, eye_dir.z, 0.0],
-            params: [2e-4, key.x, key.y, key.z],
-        };
-        queue.write_buffer(&self.globals, 0, bytemuck::bytes_of(&g));
+        set_slot_camera(queue, &self.slot, camera, aspect);
+    }
+
+    /// Sets the camera of one view's slot.
+    pub fn set_slot_camera(
+        &self,
+        queue: &wgpu::Queue,
+        slot: &CameraSlot,
+        camera: &Camera,
+        aspect: f32,
+    ) {
+        set_slot_camera(queue, slot, camera, aspect);
     }
 
     /// Draws a scene into a render pass (with `self.samples` samples and [`DEPTH_FORMAT`]).
     pub fn draw(&self, pass: &mut wgpu::RenderPass<'_>, scene: &GpuScene) {
-        pass.set_bind_group(0, &self.bind_group, &[]);
+        self.draw_in(pass, &self.slot, scene);
+    }
+
+    /// Draws a scene with the camera of `slot`.
+    pub fn draw_in(&self, pass: &mut wgpu::RenderPass<'_>, slot: &CameraSlot, scene: &GpuScene) {
+        pass.set_bind_group(0, &slot.bind_group, &[]);
         if scene.index_count > 0 {
             pass.set_pipeline(&self.mesh_pipeline);
             pass.set_vertex_buffer(0, scene.vertices.slice(..));
@@ -225,4 +230,39 @@ impl Renderer {
             pass.draw(0..*n, 0..1);
         }
     }
+}
+
+fn camera_slot(device: &wgpu::Device, layout: &wgpu::BindGroupLayout) -> CameraSlot {
+    let globals = device.create_buffer(&wgpu::BufferDescriptor {
+        label: Some("prism globals"),
+        size: std::mem::size_of::<Globals>() as u64,
+        usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
+        mapped_at_creation: false,
+    });
+    let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+        label: Some("prism globals"),
+        layout,
+        entries: &[wgpu::BindGroupEntry {
+            binding: 0,
+            resource: globals.as_entire_binding(),
+        }],
+    });
+    CameraSlot {
+        globals,
+        bind_group,
+    }
+}
+
+fn set_slot_camera(queue: &wgpu::Queue, slot: &CameraSlot, camera: &Camera, aspect: f32) {
+    let eye_dir = (camera.eye() - camera.target).normalize_or_zero();
+    // A key light above and to the left of the eye, fixed to the camera.
+    let right = (-eye_dir).cross(glam::Vec3::Z).normalize_or(glam::Vec3::X);
+    let up = right.cross(-eye_dir);
+    let key = (eye_dir + 0.7 * up - 0.5 * right).normalize_or_zero();
+    let g = Globals {
+        view_proj: camera.view_proj(aspect).to_cols_array_2d(),
+        eye_dir: [eye_dir.x, eye_dir.y, eye_dir.z, 0.0],
+        params: [2e-4, key.x, key.y, key.z],
+    };
+    queue.write_buffer(&slot.globals, 0, bytemuck::bytes_of(&g));
 }

@@ -251,20 +251,39 @@ impl Scene {
 
     /// Adds the polygon edges of another mesh (e.g. the previous level as a ghost cage).
     pub fn add_cage(&mut self, mesh: &PolyMesh, color: [f32; 3]) {
-        for f in 0..mesh.num_faces() {
-            for l in mesh.face_loops(f) {
-                let vs = mesh.loop_verts(l);
-                for i in 0..vs.len() {
-                    for v in [vs[i], vs[(i + 1) % vs.len()]] {
-                        let p = self.to_local(mesh.positions[v as usize]);
-                        self.lines.push(LineVertex {
-                            position: p.to_array(),
-                            color,
-                        });
-                    }
-                }
+        let mut segs = Vec::new();
+        for l in 0..mesh.num_loops() {
+            let vs = mesh.loop_verts(l);
+            for i in 0..vs.len() {
+                let (a, b) = (vs[i], vs[(i + 1) % vs.len()]);
+                segs.push((mesh.positions[a as usize], mesh.positions[b as usize]));
             }
         }
+        self.add_segments(&segs, color);
+    }
+
+    /// Line segments (absolute coordinates): highlighted edges, displacement vectors,
+    /// normals.
+    pub fn add_segments(&mut self, segs: &[(DVec3, DVec3)], color: [f32; 3]) {
+        for &(a, b) in segs {
+            for p in [a, b] {
+                self.lines.push(LineVertex {
+                    position: self.to_local(p).to_array(),
+                    color,
+                });
+            }
+        }
+    }
+
+    /// Points drawn as small three-axis crosses of half-size `size`.
+    pub fn add_points(&mut self, points: &[DVec3], size: f64, color: [f32; 3]) {
+        let mut segs = Vec::with_capacity(3 * points.len());
+        for &p in points {
+            for axis in [DVec3::X, DVec3::Y, DVec3::Z] {
+                segs.push((p - size * axis, p + size * axis));
+            }
+        }
+        self.add_segments(&segs, color);
     }
 
     /// Radius of the bounding sphere around the origin.
