@@ -1,23 +1,24 @@
-//! The window under Xvfb (installed by `.ci/run`): `prism --screenshot` opens it, lets it
-//! settle, saves a picture of the whole window and exits.
+//! The window under Xvfb (installed by `.ci/run`): `prism --screenshot` opens it, waits for
+//! the levels, saves a picture of the whole window and exits.
 
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use std::process::Command;
 
-#[test]
-fn the_window_opens_and_screenshots_itself() {
-    let out = std::env::temp_dir().join(format!("prism-gui-{}.png", std::process::id()));
+fn screenshot(name: &str, args: &[&str]) -> image::RgbaImage {
+    let out: PathBuf =
+        std::env::temp_dir().join(format!("prism-gui-{}-{name}.png", std::process::id()));
     let runtime = std::env::temp_dir().join(format!("prism-xdg-{}", std::process::id()));
     std::fs::create_dir_all(&runtime).unwrap();
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::PermissionsExt;
+        std::fs::set_permissions(&runtime, std::fs::Permissions::from_mode(0o700)).unwrap();
+    }
     let o = Command::new("xvfb-run")
         .args(["-a", "-s", "-screen 0 1280x800x24"])
         .arg(env!("CARGO_BIN_EXE_prism"))
-        .args([
-            "--screenshot",
-            out.to_str().unwrap(),
-            "--pipeline",
-            "combination:r=0.2,combination:r=0.2",
-        ])
+        .args(["--screenshot", out.to_str().unwrap()])
+        .args(args)
         .env("XDG_RUNTIME_DIR", &runtime)
         .current_dir(Path::new(env!("CARGO_MANIFEST_DIR")).join("../.."))
         .output()
@@ -26,22 +27,83 @@ fn the_window_opens_and_screenshots_itself() {
     assert!(o.status.success(), "{err}");
     let img = image::open(&out).expect("the screenshot").to_rgba8();
     assert_eq!(img.dimensions(), (1280, 800));
-    // The 3D view (right of the panel) shows the model: many distinct shades there.
-    let mut shades = std::collections::BTreeSet::new();
-    for y in (200..600).step_by(7) {
-        for x in (500..1100).step_by(7) {
-            shades.insert(img.get_pixel(x, y).0);
+    img
+}
+
+/// Distinct colours in a rectangle (sampled every 5 pixels).
+fn shades(img: &image::RgbaImage, x: std::ops::Range<u32>, y: std::ops::Range<u32>) -> usize {
+    let mut s = std::collections::BTreeSet::new();
+    for yy in y.step_by(5) {
+        for xx in x.clone().step_by(5) {
+            s.insert(img.get_pixel(xx, yy).0);
         }
     }
-    assert!(
-        shades.len() > 20,
-        "only {} shades in the view",
-        shades.len()
+    s.len()
+}
+
+#[test]
+fn the_window_opens_and_screenshots_itself() {
+    let img = screenshot(
+        "model",
+        &[
+            "--pipeline",
+            "combination:r=0.2,combination:r=0.2",
+            "--show",
+            "smooth",
+        ],
     );
+    // The 3D view (right of the panel) shows the model: many distinct shades there.
+    let n = shades(&img, 500..1100, 200..600);
+    assert!(n > 20, "only {n} shades in the view");
     // The pipeline panel's text is there (light pixels in the left panel).
     let light = (0..250)
         .flat_map(|x| (0..120).map(move |y| (x, y)))
         .filter(|&(x, y)| img.get_pixel(x, y).0[0] > 180)
         .count();
     assert!(light > 100, "no text in the panel");
+}
+
+#[test]
+fn the_compare_split_draws_a_model_in_each_of_four_views() {
+    let img = screenshot(
+        "compare",
+        &[
+            "--pipeline",
+            "combination:r=0.2,combination:r=0.2",
+            "--compare",
+            "cut-width:d=0.1,doo-sabin",
+            "--compare",
+            "catmull-clark,catmull-clark",
+            "--compare",
+            "doo-sabin,doo-sabin",
+            "--show",
+            "kinds",
+        ],
+    );
+    // The views fill x 405..1280 and y 25..~650 in a 2×2 grid.
+    for (x, y) in [
+        (480..800, 80..320),
+        (920..1240, 80..320),
+        (480..800, 400..620),
+        (920..1240, 400..620),
+    ] {
+        let n = shades(&img, x.clone(), y.clone());
+        assert!(n > 8, "only {n} shades in the view at {x:?} {y:?}");
+    }
+}
+
+#[test]
+fn the_curves_tab_draws_curves_and_the_curvature_plot() {
+    let img = screenshot("curves", &["--tab", "curves"]);
+    // Curve colours: the main scheme's orange in the canvas, the plot's lines below it.
+    let orange = |x: std::ops::Range<u32>, y: std::ops::Range<u32>| {
+        y.flat_map(|yy| x.clone().map(move |xx| (xx, yy)))
+            .filter(|&(xx, yy)| {
+                let p = img.get_pixel(xx, yy).0;
+                p[0] > 180 && p[1] > 110 && p[2] < 120
+            })
+            .count()
+    };
+    assert!(orange(0..1280, 100..560) > 200, "no curve in the canvas");
+    assert!(orange(0..1280, 570..790) > 50, "no curvature plot");
 }

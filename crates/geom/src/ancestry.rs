@@ -107,11 +107,20 @@ pub fn edge_origins(
 ) -> Result<HashMap<EdgeKey, EdgeKey>, AncestryError> {
     let mut map: Option<HashMap<EdgeKey, EdgeKey>> = None;
     for j in 1..=k.min(levels.len().saturating_sub(1)) {
-        if levels[j].report.as_ref().is_some_and(|r| r.dissolved_edges > 0) {
+        if levels[j]
+            .report
+            .as_ref()
+            .is_some_and(|r| r.dissolved_edges > 0)
+        {
             return Err(AncestryError::Dissolved { step: j });
         }
-        let step = parent_edges(&levels[j - 1].mesh, &levels[j].mesh, steps[j - 1])
-            .map_err(|source| AncestryError::Mesh { level: j - 1, source })?;
+        let step =
+            parent_edges(&levels[j - 1].mesh, &levels[j].mesh, steps[j - 1]).map_err(|source| {
+                AncestryError::Mesh {
+                    level: j - 1,
+                    source,
+                }
+            })?;
         map = Some(match map {
             None => step,
             Some(prev) => step

@@ -118,7 +118,7 @@ impl Pipeline {
         Pipeline {
             steps,
             levels: self.levels[..keep].to_vec(),
-            options: self.options.clone(),
+            options: self.options,
         }
     }
 

@@ -257,7 +257,10 @@ fn an_edge_with_its_own_radius_gets_that_radius() {
 
 #[test]
 fn a_rebased_pipeline_keeps_the_shared_levels_and_recomputes_the_same() {
-    let p = run(&primitives::tripod(), "vector-sum:alpha=0.2,doo-sabin,doo-sabin");
+    let p = run(
+        &primitives::tripod(),
+        "vector-sum:alpha=0.2,doo-sabin,doo-sabin",
+    );
     let steps = parse_pipeline("vector-sum:alpha=0.2,combination:r=0.2,doo-sabin").unwrap();
     let mut q = p.rebased(steps.clone());
     // Input and the vector-sum level are shared.
@@ -266,7 +269,10 @@ fn a_rebased_pipeline_keeps_the_shared_levels_and_recomputes_the_same() {
     assert!(!q.is_complete());
     q.compute().unwrap();
     assert!(q.is_complete());
-    let fresh = run(&primitives::tripod(), "vector-sum:alpha=0.2,combination:r=0.2,doo-sabin");
+    let fresh = run(
+        &primitives::tripod(),
+        "vector-sum:alpha=0.2,combination:r=0.2,doo-sabin",
+    );
     assert_eq!(q.levels()[3].mesh, fresh.levels()[3].mesh);
     // Same steps keep everything; fewer steps keep what they still have.
     assert_eq!(p.rebased(p.steps().to_vec()).levels().len(), 4);

@@ -20,9 +20,44 @@ pub struct Cli {
     /// Without a subcommand: the steps to start with, e.g. "combination:r=0.2,combination:r=0.2".
     #[arg(long)]
     pub pipeline: Option<String>,
+    /// Without a subcommand: open the compare split with this pipeline in a further view
+    /// (give it up to three times).
+    #[arg(long, value_name = "PIPELINE")]
+    pub compare: Vec<String>,
+    /// Without a subcommand: display options to turn on.
+    #[arg(long, value_delimiter = ',')]
+    pub show: Vec<crate::gui::Show>,
+    /// Without a subcommand: the tool to start with.
+    #[arg(long)]
+    pub tool: Option<crate::gui::Tool>,
+    /// Without a subcommand: control edges to start with selected, e.g. "0-1,4-5".
+    #[arg(long, value_name = "EDGES")]
+    pub select_edges: Option<String>,
+    /// Without a subcommand: the tab to open.
+    #[arg(long)]
+    pub tab: Option<crate::gui::Tab>,
     /// Without a subcommand: open the window, save a screenshot of it to this PNG, exit.
     #[arg(long)]
     pub screenshot: Option<std::path::PathBuf>,
+}
+
+/// "0-1,4-5" as edges.
+fn parse_edges(s: &str) -> Result<Vec<prism_geom::EdgeKey>, String> {
+    s.split(',')
+        .filter(|t| !t.trim().is_empty())
+        .map(|t| {
+            let (a, b) = t
+                .trim()
+                .split_once('-')
+                .ok_or_else(|| format!("edge '{t}' is not written as A-B"))?;
+            let n = |x: &str| {
+                x.trim()
+                    .parse::<u32>()
+                    .map_err(|_| format!("'{x}' in edge '{t}' is not a vertex number"))
+            };
+            Ok(prism_geom::EdgeKey::new(n(a)?, n(b)?))
+        })
+        .collect()
 }
 
 #[derive(Debug, Subcommand)]
@@ -76,9 +111,28 @@ pub fn run(cli: Cli) -> Result<(), CliError> {
                 Some(p) => prism_geom::parse_pipeline(p).map_err(CliError::usage)?,
                 None => Vec::new(),
             };
+            let compare = cli
+                .compare
+                .iter()
+                .map(|p| prism_geom::parse_pipeline(p).map_err(CliError::usage))
+                .collect::<Result<Vec<_>, _>>()?;
+            if compare.len() > 3 {
+                return Err(CliError::usage(
+                    "at most three --compare pipelines (four views)",
+                ));
+            }
+            let select_edges = match &cli.select_edges {
+                Some(s) => parse_edges(s).map_err(CliError::usage)?,
+                None => Vec::new(),
+            };
             crate::gui::run(crate::gui::Launch {
                 file: cli.file,
                 pipeline,
+                compare,
+                show: cli.show,
+                tool: cli.tool,
+                select_edges,
+                tab: cli.tab,
                 screenshot: cli.screenshot,
             })
             .map_err(CliError::input)

@@ -1,394 +1,829 @@
-//! The desktop app (eframe/egui, wgpu): a pipeline panel on the left — the steps, each a
-//! scheme with its parameter, Step >> (S) and << Back (B), a level slider —, display options,
-//! the 3D view in the middle (drag to orbit, right-drag to pan, scroll to zoom, F flat/smooth,
-//! W wireframe), counts and timings in the status bar.
+//! The desktop app (eframe/egui, wgpu). A menu bar (File: open, bundled samples, save,
+//! export; Edit: undo/redo; tabs Model and Curves), on the left the panels — pipeline
+//! (steps, each a scheme with its parameter, Step >> (S), << Back (B), reorder, level
+//! slider, progress and Cancel), tools (orbit, select and move vertices, pick edges),
+//! vertex coordinates, edge marks (crease, own radius, "sharper than X°"), display
+//! options, compare split —, the 3D views in the middle (one, or two or four with linked
+//! cameras and a table under them), counts, timings and warnings in the status bar.
 //!
-//! `prism --screenshot OUT.png [FILE] [--pipeline P]` opens the window, lets it settle, saves
-//! a picture of the whole window (egui's screenshot command) and exits: the test under Xvfb
-//! and the pictures in docs/ use it.
+//! The document (control mesh, edge marks, tags, the pipeline of every view) changes only
+//! through [`PrismApp::change`], which records the state before for undo; each view's levels
+//! are then recomputed on a worker thread from the first step that changed
+//! ([`view_pipe::ViewPipe::submit`]), so the window never waits for a step.
+//!
+//! `prism --screenshot OUT.png [FILE] [--pipeline P] ...` opens the window, waits for the
+//! computation, saves a picture of the whole window (egui's screenshot command) and exits:
+//! the test under Xvfb and the pictures in docs/ use it.
 
+mod compare;
+mod curves;
+mod document;
+mod panels;
+mod pick;
+mod scheme_editor;
+mod view_pipe;
 mod viewport;
+mod views;
+mod worker;
 
+#[cfg(test)]
+mod tests;
+
+use document::{DocState, History, Origin};
 use glam::Vec3;
-use prism_geom::biquadratic::FaceKind;
-use prism_geom::io::{self, Document};
-use prism_geom::scheme::{BIQUADRATIC_NAMES, PRIMAL_NAMES};
-use prism_geom::{Pipeline, ReflexMode, Scheme};
-use prism_viewport::{Camera, ColorBy, Scene, SceneOptions, Shading, View};
-use std::path::PathBuf;
+use prism_geom::io;
+use prism_geom::{EdgeKey, Pipeline, Scheme};
+use prism_viewport::{Camera, ColorBy, SceneOptions, Shading, View};
+use std::collections::BTreeSet;
+use std::path::{Path, PathBuf};
 use std::sync::{Arc, Mutex};
+use view_pipe::{Outcome, ViewPipe, Waker};
 
 /// Window multisampling (and the renderer's, which must match).
 const SAMPLES: u16 = 4;
 
+/// Display toggles, also given on the command line (`--show smooth,wireframe`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum Show {
+    Smooth,
+    Wireframe,
+    Kinds,
+    Cage,
+    Corners,
+    Limit,
+}
+
+/// The tool the primary mouse button uses in the views.
+#[derive(
+    Debug,
+    Clone,
+    Copy,
+    PartialEq,
+    Eq,
+    Default,
+    clap::ValueEnum,
+    serde::Serialize,
+    serde::Deserialize,
+)]
+pub enum Tool {
+    /// Drag turns the model.
+    #[default]
+    Orbit,
+    /// Click, shift-click or box-select control vertices; drag a selected one to move it.
+    Vertices,
+    /// Click, shift-click or box-select edges on any level.
+    Edges,
+}
+
+/// The app's two tabs.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, clap::ValueEnum)]
+pub enum Tab {
+    #[default]
+    Model,
+    Curves,
+}
+
 /// How the app was started.
+#[derive(Debug, Default)]
 pub struct Launch {
     pub file: Option<PathBuf>,
     pub pipeline: Vec<Scheme>,
+    /// Pipelines of further views: opens the compare split.
+    pub compare: Vec<Vec<Scheme>>,
+    pub show: Vec<Show>,
+    pub tool: Option<Tool>,
+    pub select_edges: Vec<EdgeKey>,
+    pub tab: Option<Tab>,
     pub screenshot: Option<PathBuf>,
 }
 
 /// Where the screenshot callback leaves the picture for the next frame.
 type ScreenshotSlot = Arc<Mutex<Option<Arc<egui::ColorImage>>>>;
 
-/// The bundled sample opened when no file is given.
-const TRIPOD: &str = include_str!("../../../../assets/tripod.obj");
+/// The bundled samples: name, file name, contents.
+pub const SAMPLES_FILES: [(&str, &str, &str); 5] = [
+    (
+        "Tripod",
+        "tripod.obj",
+        include_str!("../../../../assets/tripod.obj"),
+    ),
+    (
+        "Cube",
+        "cube.obj",
+        include_str!("../../../../assets/cube.obj"),
+    ),
+    (
+        "L-block",
+        "l-block.obj",
+        include_str!("../../../../assets/l-block.obj"),
+    ),
+    (
+        "Holed block",
+        "holed-block.prism.json",
+        include_str!("../../../../assets/holed-block.prism.json"),
+    ),
+    (
+        "Computer room",
+        "computer-room.obj",
+        include_str!("../../../../assets/computer-room.obj"),
+    ),
+];
 
-struct PrismApp {
-    name: String,
-    pipeline: Pipeline,
-    /// The level shown (0 = input).
-    level: usize,
-    opts: SceneOptions,
-    cage: bool,
-    camera: Camera,
-    scene: Arc<Scene>,
-    version: u64,
-    dirty: bool,
-    /// The scheme Step >> appends.
-    next: Scheme,
-    error: Option<String>,
-    screenshot: Option<(PathBuf, u32, ScreenshotSlot)>,
+/// What is drawn besides the faces.
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
+pub struct Display {
+    pub smooth: bool,
+    pub wireframe: bool,
+    pub kinds: bool,
+    pub cage: bool,
+    pub corners: bool,
+    pub limit: bool,
 }
 
-fn default_param(name: &str) -> Scheme {
-    let v = |x| Some(x);
-    Scheme::from_name(name, v(0.2), v(0.2), v(0.1), v(0.1), ReflexMode::AsPrinted)
-        .expect("known scheme with its default parameter")
-}
-
-/// The parameter of a scheme, by name and value, if it has one.
-fn param(s: &Scheme) -> Option<(&'static str, f64)> {
-    use prism_geom::CornerRule::*;
-    match s {
-        Scheme::Biquadratic(r) => match *r {
-            DooSabin => None,
-            AngleBisector { l } => Some(("l", l)),
-            CutWidth { d } => Some(("d", d)),
-            VectorSum { alpha, .. } => Some(("α", alpha)),
-            Cylindrical { r } | Minimum { r } | Combination { r } => Some(("r", r)),
-        },
-        Scheme::Primal(_) => None,
-    }
-}
-
-fn with_param(s: &Scheme, x: f64) -> Scheme {
-    use prism_geom::CornerRule::*;
-    match *s {
-        Scheme::Biquadratic(r) => Scheme::Biquadratic(match r {
-            AngleBisector { .. } => AngleBisector { l: x },
-            CutWidth { .. } => CutWidth { d: x },
-            VectorSum { reflex, .. } => VectorSum { alpha: x, reflex },
-            Cylindrical { .. } => Cylindrical { r: x },
-            Minimum { .. } => Minimum { r: x },
-            Combination { .. } => Combination { r: x },
-            DooSabin => DooSabin,
-        }),
-        p => p,
-    }
-}
-
-/// A scheme picker with its parameter; returns the new scheme when the user changed it.
-fn scheme_editor(
-    ui: &mut egui::Ui,
-    id: impl std::hash::Hash + std::fmt::Debug,
-    s: &Scheme,
-) -> Option<Scheme> {
-    let mut out = None;
-    ui.horizontal(|ui| {
-        egui::ComboBox::from_id_salt(id)
-            .selected_text(s.name())
-            .show_ui(ui, |ui| {
-                for name in BIQUADRATIC_NAMES.iter().chain(PRIMAL_NAMES.iter()) {
-                    if ui.selectable_label(s.name() == *name, *name).clicked() && s.name() != *name
-                    {
-                        out = Some(default_param(name));
-                    }
-                }
-            });
-        if let Some((label, value)) = param(s) {
-            let mut x = value;
-            let max = if label == "α" { 0.499 } else { 10.0 };
-            let resp = ui.add(
-                egui::DragValue::new(&mut x)
-                    .speed(0.005)
-                    .range(1e-4..=max)
-                    .prefix(format!("{label} = ")),
-            );
-            if resp.changed() && with_param(s, x).validate().is_ok() {
-                out = Some(with_param(s, x));
-            }
+impl Default for Display {
+    fn default() -> Self {
+        Display {
+            smooth: false,
+            wireframe: true,
+            kinds: false,
+            cage: false,
+            corners: false,
+            limit: false,
         }
-    });
-    out
+    }
+}
+
+impl Display {
+    pub fn scene_options(&self) -> SceneOptions {
+        SceneOptions {
+            shading: if self.smooth {
+                Shading::Smooth
+            } else {
+                Shading::Flat
+            },
+            color_by: if self.kinds {
+                ColorBy::Kind
+            } else {
+                ColorBy::Uniform
+            },
+            wireframe: self.wireframe,
+            ..SceneOptions::default()
+        }
+    }
+}
+
+/// What eframe remembers between runs.
+#[derive(Debug, Clone, serde::Serialize, serde::Deserialize)]
+#[serde(default)]
+pub struct Settings {
+    display: Display,
+    tool: Tool,
+    budget_mib: u64,
+    next: String,
+    last_file: Option<PathBuf>,
+}
+
+impl Default for Settings {
+    fn default() -> Self {
+        Settings {
+            display: Display::default(),
+            tool: Tool::Orbit,
+            budget_mib: 4096,
+            next: "combination:r=0.2".into(),
+            last_file: None,
+        }
+    }
+}
+
+const SETTINGS_KEY: &str = "prism-settings";
+
+/// A vertex drag in progress.
+struct MoveDrag {
+    start: Vec<(u32, glam::DVec3)>,
+}
+
+pub struct PrismApp {
+    pub doc: DocState,
+    pub origin: Origin,
+    pub history: History,
+    pub views: Vec<ViewPipe>,
+    /// The view the pipeline panel edits.
+    pub active: usize,
+    /// One camera for every view (linked).
+    pub camera: Camera,
+    framed: bool,
+    /// Width / height of the narrowest view, for framing.
+    view_aspect: f32,
+    pub display: Display,
+    pub tool: Tool,
+    pub sel_verts: BTreeSet<u32>,
+    /// Selected control edges.
+    pub sel_edges: BTreeSet<EdgeKey>,
+    /// Axis a vertex drag is held to (0 x, 1 y, 2 z).
+    pub axis: Option<usize>,
+    /// The scheme Step >> appends.
+    pub next: Scheme,
+    pub budget_mib: u64,
+    /// A step stopped at the budget: (view, estimate) waiting for the user's answer.
+    pub question: Option<(usize, prism_geom::error::OverBudget)>,
+    /// A message for the status bar (what the last action did, or why it did nothing).
+    pub note: Option<String>,
+    pub tab: Tab,
+    pub curves: curves::CurvesTab,
+    moving: Option<MoveDrag>,
+    box_start: Option<egui::Pos2>,
+    /// Inputs of the edge panel.
+    pub crease_value: f64,
+    pub radius_value: f64,
+    pub sharper_deg: f64,
+    waker: Waker,
+    has_gpu: bool,
+    screenshot: Option<(PathBuf, u32, ScreenshotSlot)>,
+    last_file: Option<PathBuf>,
 }
 
 impl PrismApp {
+    /// The app without a window (tests drive it this way; `new` adds the GPU).
+    pub fn headless(launch: Launch, settings: Option<Settings>) -> Result<PrismApp, String> {
+        let settings = settings.unwrap_or_default();
+        let remembered = settings.last_file.clone().filter(|p| p.exists());
+        let (mut doc, origin) = match launch.file.as_ref().or(remembered.as_ref()) {
+            Some(p) => document::open(p)?,
+            None => sample(0)?,
+        };
+        if !launch.pipeline.is_empty() {
+            doc.pipelines[0] = launch.pipeline;
+        }
+        doc.pipelines.extend(launch.compare.into_iter().take(3));
+        if doc.pipelines.len() == 3 {
+            doc.pipelines.push(doc.pipelines[0].clone());
+        }
+        let mut display = settings.display.clone();
+        for s in &launch.show {
+            match s {
+                Show::Smooth => display.smooth = true,
+                Show::Wireframe => display.wireframe = true,
+                Show::Kinds => display.kinds = true,
+                Show::Cage => display.cage = true,
+                Show::Corners => display.corners = true,
+                Show::Limit => display.limit = true,
+            }
+        }
+        let next = prism_geom::parse_pipeline(&settings.next)
+            .ok()
+            .and_then(|v| v.first().copied())
+            .unwrap_or_else(|| scheme_editor::default_param("combination"));
+        let mut app = PrismApp {
+            doc,
+            origin,
+            history: History::default(),
+            views: Vec::new(),
+            active: 0,
+            camera: Camera::default(),
+            framed: false,
+            view_aspect: 1.5,
+            display,
+            tool: launch.tool.unwrap_or(settings.tool),
+            sel_verts: BTreeSet::new(),
+            sel_edges: launch.select_edges.into_iter().collect(),
+            axis: None,
+            next,
+            budget_mib: settings.budget_mib.max(64),
+            question: None,
+            note: None,
+            tab: launch.tab.unwrap_or_default(),
+            curves: curves::CurvesTab::default(),
+            moving: None,
+            box_start: None,
+            crease_value: 10.0,
+            radius_value: 0.1,
+            sharper_deg: 60.0,
+            waker: Arc::new(|| {}),
+            has_gpu: false,
+            screenshot: launch
+                .screenshot
+                .map(|p| (p, 0, Arc::new(Mutex::new(None)))),
+            last_file: settings.last_file,
+        };
+        if let Some(p) = &app.origin.path {
+            app.last_file = Some(p.clone());
+        }
+        app.sync(false);
+        Ok(app)
+    }
+
     fn new(cc: &eframe::CreationContext<'_>, launch: Launch) -> Result<PrismApp, String> {
         let rs = cc
             .wgpu_render_state
             .as_ref()
             .ok_or("the wgpu renderer is not available")?;
         viewport::install(rs, SAMPLES as u32);
-        let (doc, name) = match &launch.file {
-            Some(p) => (
-                io::load(p).map_err(|e| e.to_string())?.0,
-                p.display().to_string(),
-            ),
-            None => {
-                let m = io::read_obj_str(std::path::Path::new("tripod.obj"), TRIPOD)
-                    .map_err(|e| e.to_string())?;
-                (
-                    Document {
-                        mesh: m.mesh,
-                        edge_attrs: m.edge_attrs,
-                        tags: m.tags,
-                        pipeline: None,
-                    },
-                    "tripod (bundled sample)".to_string(),
-                )
-            }
-        };
-        let steps = if launch.pipeline.is_empty() {
-            doc.pipeline.clone().unwrap_or_default()
+        // A screenshot run shows what its arguments say, not what the last session left.
+        let settings = if launch.screenshot.is_some() {
+            None
         } else {
-            launch.pipeline
+            cc.storage
+                .and_then(|s| eframe::get_value::<Settings>(s, SETTINGS_KEY))
         };
-        let level = steps.len();
-        let mut app = PrismApp {
-            name,
-            pipeline: Pipeline::with_tags(doc.mesh, doc.edge_attrs, doc.tags, steps),
-            level,
-            opts: SceneOptions::default(),
-            cage: false,
-            camera: Camera::default(),
-            scene: Arc::new(Scene::default()),
-            version: 0,
-            dirty: true,
-            next: default_param("combination"),
-            error: None,
-            screenshot: launch
-                .screenshot
-                .map(|p| (p, 0, Arc::new(Mutex::new(None)))),
-        };
-        app.compute();
-        app.rebuild_scene();
-        app.camera = Camera::looking(View::Iso, Vec3::ZERO, app.scene.radius());
+        let mut app = PrismApp::headless(launch, settings)?;
+        app.has_gpu = true;
+        let ctx = cc.egui_ctx.clone();
+        app.waker = Arc::new(move || ctx.request_repaint());
         Ok(app)
     }
 
-    /// Computes the levels up to the shown one; an error is shown, not fatal.
-    fn compute(&mut self) {
-        self.error = None;
-        let upto = self.level.min(self.pipeline.steps().len());
-        if let Err(e) = self.pipeline.compute_with(upto, |_, _| {}) {
-            self.error = Some(e.to_string());
-        }
-        self.level = self.level.min(self.pipeline.levels().len() - 1);
-        self.dirty = true;
-    }
-
-    fn rebuild_scene(&mut self) {
-        let levels = self.pipeline.levels();
-        let lv = &levels[self.level];
-        let kinds: Option<&[FaceKind]> = lv.provenance.as_ref().map(|p| p.face_kind.as_slice());
-        let holes = &lv.tags.holes;
-        let mut scene = Scene::build(
-            &lv.mesh,
-            &lv.edge_attrs,
-            kinds,
-            &|f| holes.contains(&(f as u32)),
-            &self.opts,
-        );
-        if self.cage && self.level > 0 {
-            scene.add_cage(&levels[self.level - 1].mesh, [0.95, 0.75, 0.25]);
-        }
-        // Keep the camera's target where it was: scenes are centred on their own box.
-        self.scene = Arc::new(scene);
-        self.version += 1;
-        self.dirty = false;
-    }
-
-    fn step(&mut self) {
-        self.pipeline.push_step(self.next);
-        self.level = self.pipeline.steps().len();
-        self.compute();
-    }
-
-    fn back(&mut self) {
-        if self.pipeline.pop_step().is_some() {
-            self.level = self.level.min(self.pipeline.steps().len());
-            self.compute();
+    fn settings(&self) -> Settings {
+        Settings {
+            display: self.display.clone(),
+            tool: self.tool,
+            budget_mib: self.budget_mib,
+            next: self.next.to_string(),
+            last_file: self.last_file.clone(),
         }
     }
 
-    fn pipeline_panel(&mut self, ui: &mut egui::Ui) {
-        ui.heading("Pipeline");
-        ui.label(&self.name);
-        ui.separator();
-        let mut changed: Option<(usize, Scheme)> = None;
-        for (k, s) in self.pipeline.steps().iter().enumerate() {
-            ui.horizontal(|ui| {
-                ui.label(format!("{}.", k + 1));
-                if let Some(n) = scheme_editor(ui, ("step", k), s) {
-                    changed = Some((k, n));
+    // ---- the document ----
+
+    /// Applies a document change, recorded for undo, and recomputes what it affects.
+    pub fn change(&mut self, f: impl FnOnce(&mut DocState)) {
+        let before = self.doc.clone();
+        f(&mut self.doc);
+        if self.doc != before {
+            self.history.record(before);
+            self.sync(false);
+        }
+    }
+
+    /// Brings every view's pipeline in line with the document: views added or removed,
+    /// changed steps recomputed from the first that changed, a changed input from scratch.
+    pub fn sync(&mut self, live: bool) {
+        let n = self.doc.pipelines.len().max(1);
+        if self.doc.pipelines.is_empty() {
+            self.doc.pipelines.push(Vec::new());
+        }
+        self.views.truncate(n);
+        self.active = self.active.min(n - 1);
+        let budget = self.budget_mib << 20;
+        for i in 0..n {
+            let steps = self.doc.pipelines[i].clone();
+            let fresh = || {
+                Pipeline::with_tags(
+                    self.doc.mesh.clone(),
+                    self.doc.edge_attrs.clone(),
+                    self.doc.tags.clone(),
+                    steps.clone(),
+                )
+            };
+            if i >= self.views.len() {
+                let mut v = ViewPipe::new(Pipeline::with_tags(
+                    self.doc.mesh.clone(),
+                    self.doc.edge_attrs.clone(),
+                    self.doc.tags.clone(),
+                    Vec::new(),
+                ));
+                v.level = steps.len();
+                v.submit(fresh(), budget, live, &self.waker);
+                self.views.push(v);
+                continue;
+            }
+            let v = &mut self.views[i];
+            let input = v.pipeline.input();
+            let same_input = input.mesh == self.doc.mesh
+                && input.edge_attrs == self.doc.edge_attrs
+                && input.tags == self.doc.tags;
+            if same_input && v.pipeline.steps() == steps.as_slice() && !v.busy() {
+                continue;
+            }
+            let next = if same_input {
+                v.pipeline.rebased(steps.clone())
+            } else {
+                fresh()
+            };
+            let grew = steps.len() > v.pipeline.steps().len();
+            if grew || v.level > steps.len() {
+                v.level = steps.len();
+            }
+            v.submit(next, budget, live, &self.waker);
+        }
+    }
+
+    /// Takes finished jobs; returns whether anything changed.
+    pub fn poll_jobs(&mut self) -> bool {
+        let mut any = false;
+        for (i, v) in self.views.iter_mut().enumerate() {
+            match v.poll(&self.waker) {
+                Outcome::Nothing => {}
+                Outcome::Updated => any = true,
+                Outcome::AskBudget(o) => {
+                    any = true;
+                    self.question = Some((i, o));
                 }
-            });
-        }
-        if let Some((k, s)) = changed {
-            self.pipeline.set_step(k, s);
-            self.level = self.level.max(k + 1);
-            self.compute();
-        }
-        ui.separator();
-        ui.label("Next step:");
-        if let Some(n) = scheme_editor(ui, "next", &self.next) {
-            self.next = n;
-        }
-        ui.horizontal(|ui| {
-            if ui.button("Step >> (S)").clicked() {
-                self.step();
-            }
-            if ui.button("<< Back (B)").clicked() {
-                self.back();
-            }
-        });
-        let n = self.pipeline.steps().len();
-        if n > 0 {
-            let mut lv = self.level;
-            if ui
-                .add(egui::Slider::new(&mut lv, 0..=n).text("level"))
-                .changed()
-            {
-                self.level = lv;
-                self.compute();
             }
         }
-        ui.separator();
-        ui.heading("Display");
-        let mut smooth = self.opts.shading == Shading::Smooth;
-        let mut kind = self.opts.color_by == ColorBy::Kind;
-        let before = (smooth, self.opts.wireframe, kind, self.cage);
-        ui.checkbox(&mut smooth, "smooth shading (F)");
-        ui.checkbox(&mut self.opts.wireframe, "wireframe (W)");
-        ui.checkbox(&mut kind, "colour by face kind");
-        ui.checkbox(&mut self.cage, "previous level as cage");
-        if before != (smooth, self.opts.wireframe, kind, self.cage) {
-            self.opts.shading = if smooth {
-                Shading::Smooth
-            } else {
-                Shading::Flat
-            };
-            self.opts.color_by = if kind {
-                ColorBy::Kind
-            } else {
-                ColorBy::Uniform
-            };
-            self.dirty = true;
-        }
-        if ui.button("Frame the model").clicked() {
-            self.camera = Camera::looking(View::Iso, Vec3::ZERO, self.scene.radius());
+        any
+    }
+
+    /// Blocks until every view's levels are computed.
+    #[cfg(test)]
+    pub fn wait_idle(&mut self) {
+        while self.views.iter().any(|v| v.busy()) {
+            self.poll_jobs();
+            std::thread::sleep(std::time::Duration::from_millis(2));
         }
     }
 
-    fn keys(&mut self, ui: &egui::Ui) {
-        if ui.ctx().egui_wants_keyboard_input() {
+    pub fn busy(&self) -> bool {
+        self.views.iter().any(|v| v.busy())
+    }
+
+    pub fn undo(&mut self) {
+        if let Some(s) = self.history.undo(self.doc.clone()) {
+            self.doc = s;
+            self.after_history();
+            self.note = Some("undone".into());
+        }
+    }
+
+    pub fn redo(&mut self) {
+        if let Some(s) = self.history.redo(self.doc.clone()) {
+            self.doc = s;
+            self.after_history();
+            self.note = Some("redone".into());
+        }
+    }
+
+    fn after_history(&mut self) {
+        let nv = self.doc.mesh.num_vertices() as u32;
+        self.sel_verts.retain(|&v| v < nv);
+        self.sync(false);
+    }
+
+    /// Appends the next step to the active view's pipeline.
+    pub fn step(&mut self) {
+        let (a, s) = (self.active, self.next);
+        self.change(|d| d.pipelines[a].push(s));
+    }
+
+    /// Removes the last step of the active view's pipeline.
+    pub fn back(&mut self) {
+        let a = self.active;
+        self.change(|d| {
+            d.pipelines[a].pop();
+        });
+    }
+
+    /// Splits the view into `n` (1, 2 or 4) views; new views start with the main pipeline.
+    pub fn set_compare(&mut self, n: usize) {
+        self.change(|d| {
+            let main = d.pipelines[0].clone();
+            d.pipelines.resize(n.max(1), main);
+        });
+        self.framed = false;
+    }
+
+    /// Gives the selected control edges a crease sharpness (0 removes it).
+    pub fn mark_crease(&mut self, sharpness: f64) {
+        let sel: Vec<EdgeKey> = self.sel_edges.iter().copied().collect();
+        if sel.is_empty() {
+            self.note =
+                Some("select edges first (Edges tool: click, shift-click or drag a box)".into());
             return;
         }
-        let (s, b, f, w) = ui.input(|i| {
-            (
-                i.key_pressed(egui::Key::S),
-                i.key_pressed(egui::Key::B),
-                i.key_pressed(egui::Key::F),
-                i.key_pressed(egui::Key::W),
-            )
-        });
-        if s {
-            self.step();
-        }
-        if b {
-            self.back();
-        }
-        if f {
-            self.opts.shading = match self.opts.shading {
-                Shading::Flat => Shading::Smooth,
-                Shading::Smooth => Shading::Flat,
-            };
-            self.dirty = true;
-        }
-        if w {
-            self.opts.wireframe = !self.opts.wireframe;
-            self.dirty = true;
-        }
-    }
-
-    fn view(&mut self, ui: &mut egui::Ui) {
-        let (rect, resp) = ui.allocate_exact_size(ui.available_size(), egui::Sense::drag());
-        if resp.dragged_by(egui::PointerButton::Primary) {
-            let d = resp.drag_delta();
-            self.camera.orbit(-d.x * 0.01, d.y * 0.01);
-        }
-        if resp.dragged_by(egui::PointerButton::Secondary)
-            || resp.dragged_by(egui::PointerButton::Middle)
-        {
-            let d = resp.drag_delta();
-            self.camera.pan(d.x / rect.height(), d.y / rect.height());
-        }
-        if resp.hovered() {
-            let scroll = ui.input(|i| i.smooth_scroll_delta.y);
-            if scroll != 0.0 {
-                self.camera.zoom((-scroll * 0.002).exp());
+        self.change(|d| {
+            for e in &sel {
+                let a = d.edge_attrs.entry(*e).or_default();
+                a.crease = sharpness;
             }
-        }
-        let bg = prism_viewport::renderer::BACKGROUND;
-        let srgb = |x: f64| (255.0 * x.powf(1.0 / 2.2)) as u8;
-        ui.painter().rect_filled(
-            rect,
-            0.0,
-            egui::Color32::from_rgb(srgb(bg.r), srgb(bg.g), srgb(bg.b)),
-        );
-        ui.painter().add(egui_wgpu::Callback::new_paint_callback(
-            rect,
-            viewport::ViewCallback {
-                scene: self.scene.clone(),
-                version: self.version,
-                camera: self.camera,
-                aspect: rect.width() / rect.height().max(1.0),
-            },
+            d.edge_attrs
+                .retain(|_, a| a.crease != 0.0 || a.radius.is_some());
+        });
+        self.note = Some(format!(
+            "{} edge(s) creased with sharpness {sharpness}",
+            sel.len()
         ));
     }
 
-    fn status(&self, ui: &mut egui::Ui) {
-        let lv = &self.pipeline.levels()[self.level];
-        let m = &lv.mesh;
-        let mut text = format!(
-            "level {} of {}: {} vertices, {} faces, {} triangles",
-            self.level,
-            self.pipeline.steps().len(),
-            m.num_vertices(),
-            m.num_faces(),
-            self.scene.triangles()
-        );
-        if let Some(r) = &lv.report {
-            text += &format!(", {:.2} ms", r.millis);
-            if !r.flipped.is_empty() {
-                text += &format!(" — warning: {} flipped face(s)", r.flipped.len());
-            }
+    /// Gives the selected control edges their own fillet radius (None: the step's).
+    pub fn mark_radius(&mut self, radius: Option<f64>) {
+        let sel: Vec<EdgeKey> = self.sel_edges.iter().copied().collect();
+        if sel.is_empty() {
+            self.note =
+                Some("select edges first (Edges tool: click, shift-click or drag a box)".into());
+            return;
         }
-        ui.horizontal(|ui| {
-            ui.label(text);
-            if let Some(e) = &self.error {
-                ui.colored_label(egui::Color32::from_rgb(240, 110, 90), e);
+        if let Some(r) = radius
+            && !(r.is_finite() && r > 0.0)
+        {
+            self.note = Some(format!("a radius must be positive, not {r}"));
+            return;
+        }
+        self.change(|d| {
+            for e in &sel {
+                d.edge_attrs.entry(*e).or_default().radius = radius;
             }
+            d.edge_attrs
+                .retain(|_, a| a.crease != 0.0 || a.radius.is_some());
         });
     }
 
+    /// Selects every control edge whose faces meet at more than `deg` degrees.
+    pub fn select_sharper_than(&mut self, deg: f64, add: bool) {
+        let m = &self.doc.mesh;
+        let Ok(topo) = prism_geom::Topology::build(m) else {
+            self.note = Some("the control mesh is not a manifold: no bend angles".into());
+            return;
+        };
+        let normals: Vec<_> = prism_geom::geometry::face_normals_raw(m)
+            .into_iter()
+            .map(prism_geom::geometry::unit_or_zero)
+            .collect();
+        let bends = prism_geom::geometry::signed_bend_angles(m, &topo, &normals);
+        if !add {
+            self.sel_edges.clear();
+        }
+        let mut n = 0;
+        for (e, b) in bends.iter().enumerate() {
+            if b.abs().to_degrees() > deg {
+                let (a, c) = topo.edge_verts(m, e);
+                self.sel_edges.insert(EdgeKey::new(a, c));
+                n += 1;
+            }
+        }
+        self.note = Some(format!("{n} edge(s) sharper than {deg}°"));
+        self.mark_overlays();
+    }
+
+    /// Moves control vertices by `d` (typed coordinates; one undo step).
+    pub fn move_vertices(&mut self, verts: &[u32], d: glam::DVec3) {
+        if !d.is_finite() {
+            self.note = Some("coordinates must be numbers".into());
+            return;
+        }
+        self.change(|doc| {
+            for &v in verts {
+                if let Some(q) = doc.mesh.positions.get_mut(v as usize) {
+                    *q += d;
+                }
+            }
+        });
+        self.mark_overlays();
+    }
+
+    pub fn mark_overlays(&mut self) {
+        for v in &mut self.views {
+            v.overlay_dirty = true;
+        }
+    }
+
+    // ---- files ----
+
+    /// Opens a file as the document (undoable: the previous document is one Ctrl+Z away).
+    pub fn open_path(&mut self, path: &Path) {
+        match document::open(path) {
+            Ok((doc, origin)) => self.replace_document(doc, origin),
+            Err(e) => self.note = Some(format!("could not open: {e}")),
+        }
+    }
+
+    pub fn open_sample(&mut self, k: usize) {
+        match sample(k) {
+            Ok((doc, origin)) => self.replace_document(doc, origin),
+            Err(e) => self.note = Some(e),
+        }
+    }
+
+    fn replace_document(&mut self, doc: DocState, origin: Origin) {
+        self.cancel_all();
+        let before = std::mem::replace(&mut self.doc, doc);
+        self.history.record(before);
+        if let Some(p) = &origin.path {
+            self.last_file = Some(p.clone());
+        }
+        self.note = Some(format!("opened {}", origin.name));
+        self.origin = origin;
+        self.sel_verts.clear();
+        self.sel_edges.clear();
+        self.active = 0;
+        self.framed = false;
+        self.sync(false);
+    }
+
+    /// Saves the document (`.prism.json` keeps the pipeline, OBJ the mesh and its tags).
+    pub fn save_to(&mut self, path: &Path) -> Result<(), String> {
+        let warnings = io::save(path, &self.doc.to_document()).map_err(|e| e.to_string())?;
+        if io::FileKind::of(path).ok() == Some(io::FileKind::Document) {
+            self.origin.path = Some(path.to_path_buf());
+            self.last_file = Some(path.to_path_buf());
+        }
+        self.origin.name = path.display().to_string();
+        self.note = Some(if warnings.is_empty() {
+            format!("saved {}", path.display())
+        } else {
+            format!("saved {} ({})", path.display(), warnings.join("; "))
+        });
+        Ok(())
+    }
+
+    /// Exports the level shown in the active view (OBJ with its creases, STL, glTF).
+    pub fn export_to(&mut self, path: &Path) -> Result<(), String> {
+        let v = &self.views[self.active];
+        let lv = &v.pipeline.levels()[v.shown()];
+        let holes = &lv.tags.holes;
+        if io::ExportFormat::of(path).is_some() {
+            io::export(path, &lv.mesh, &|f| holes.contains(&(f as u32)))
+                .map_err(|e| e.to_string())?;
+        } else {
+            io::write_obj(path, &lv.mesh, &lv.edge_attrs, &lv.tags).map_err(|e| e.to_string())?;
+        }
+        self.note = Some(format!(
+            "exported level {} to {}",
+            v.shown(),
+            path.display()
+        ));
+        Ok(())
+    }
+
+    pub fn cancel_all(&mut self) {
+        for v in &mut self.views {
+            v.cancel();
+        }
+    }
+
+    /// Frames the model of the active view.
+    pub fn frame(&mut self) {
+        let v = &self.views[self.active];
+        let r = if v.scene.vertices.is_empty() {
+            let (lo, hi) = self.doc.mesh.bbox();
+            (0.5 * (hi - lo).length()).max(1e-9) as f32
+        } else {
+            v.scene.radius()
+        };
+        // A narrow view (the compare split) has the smaller horizontal field: fit that too.
+        let half_y = 0.5 * Camera::default().fov_y;
+        let half_x = (half_y.tan() * self.view_aspect.clamp(0.1, 10.0)).atan();
+        let r = r * half_y.sin() / half_x.min(half_y).sin();
+        self.camera = Camera::looking(View::Iso, Vec3::ZERO, r);
+        self.framed = true;
+    }
+
+    // ---- the frame ----
+
+    fn keys(&mut self, ctx: &egui::Context) {
+        use egui::{Key, KeyboardShortcut, Modifiers};
+        let undo = KeyboardShortcut::new(Modifiers::COMMAND, Key::Z);
+        let redo = KeyboardShortcut::new(Modifiers::COMMAND | Modifiers::SHIFT, Key::Z);
+        let redo_y = KeyboardShortcut::new(Modifiers::COMMAND, Key::Y);
+        let save = KeyboardShortcut::new(Modifiers::COMMAND, Key::S);
+        let open = KeyboardShortcut::new(Modifiers::COMMAND, Key::O);
+        // Longest shortcut first: Ctrl+Shift+Z must not be eaten as Ctrl+Z.
+        if ctx.input_mut(|i| i.consume_shortcut(&redo) || i.consume_shortcut(&redo_y)) {
+            self.redo();
+        } else if ctx.input_mut(|i| i.consume_shortcut(&undo)) {
+            self.undo();
+        }
+        if ctx.input_mut(|i| i.consume_shortcut(&save)) {
+            self.save_dialog(false);
+        }
+        if ctx.input_mut(|i| i.consume_shortcut(&open)) {
+            self.open_dialog();
+        }
+        if ctx.egui_wants_keyboard_input() || self.tab != Tab::Model {
+            return;
+        }
+        let plain = |k: Key| ctx.input(|i| i.modifiers.is_none() && i.key_pressed(k));
+        if plain(Key::S) {
+            self.step();
+        }
+        if plain(Key::B) {
+            self.back();
+        }
+        if plain(Key::F) {
+            self.display.smooth = !self.display.smooth;
+            self.display_changed();
+        }
+        if plain(Key::W) {
+            self.display.wireframe = !self.display.wireframe;
+            self.display_changed();
+        }
+        for (k, a) in [(Key::X, 0), (Key::Y, 1), (Key::Z, 2)] {
+            if plain(k) {
+                self.axis = if self.axis == Some(a) { None } else { Some(a) };
+            }
+        }
+        if plain(Key::Escape) {
+            self.sel_verts.clear();
+            self.sel_edges.clear();
+            self.mark_overlays();
+        }
+    }
+
+    pub fn display_changed(&mut self) {
+        for v in &mut self.views {
+            v.scene_dirty = true;
+            v.overlay_dirty = true;
+        }
+    }
+
+    fn open_dialog(&mut self) {
+        if let Some(p) = rfd::FileDialog::new()
+            .add_filter("Prism documents and OBJ", &["json", "obj"])
+            .pick_file()
+        {
+            self.open_path(&p);
+        }
+    }
+
+    /// Saves to the document's own file, or asks where (`as_new`: always asks).
+    fn save_dialog(&mut self, as_new: bool) {
+        let path = match (&self.origin.path, as_new) {
+            (Some(p), false) => Some(p.clone()),
+            _ => rfd::FileDialog::new()
+                .add_filter("Prism document", &["prism.json"])
+                .add_filter("OBJ", &["obj"])
+                .set_file_name("model.prism.json")
+                .save_file(),
+        };
+        if let Some(p) = path
+            && let Err(e) = self.save_to(&p)
+        {
+            self.note = Some(format!("could not save: {e}"));
+        }
+    }
+
+    fn export_dialog(&mut self, ext: &str) {
+        if let Some(p) = rfd::FileDialog::new()
+            .add_filter(ext, &[ext])
+            .set_file_name(format!("level.{ext}"))
+            .save_file()
+            && let Err(e) = self.export_to(&p)
+        {
+            self.note = Some(format!("could not export: {e}"));
+        }
+    }
+
+    fn dropped_files(&mut self, ctx: &egui::Context) {
+        let dropped = ctx.input(|i| i.raw.dropped_files.clone());
+        if let Some(f) = dropped.first() {
+            let p = f.path().to_path_buf();
+            self.open_path(&p);
+        }
+    }
+
+    fn budget_question(&mut self, ctx: &egui::Context) {
+        let Some((view, o)) = self.question.clone() else {
+            return;
+        };
+        let mut answer = None;
+        egui::Modal::new(egui::Id::unique("prism-budget-question")).show(ctx, |ui| {
+            ui.heading("This step needs a lot of memory");
+            ui.label(format!(
+                "View {}: the next level would have {} faces and need about {} MiB; the budget is {} MiB.",
+                view + 1,
+                o.faces,
+                o.needed_mib,
+                o.budget_mib
+            ));
+            ui.horizontal(|ui| {
+                if ui.button("Compute anyway").clicked() {
+                    answer = Some(true);
+                }
+                if ui.button("Remove the step").clicked() {
+                    answer = Some(false);
+                }
+            });
+        });
+        match answer {
+            Some(true) => self.compute_anyway(),
+            Some(false) => {
+                self.question = None;
+                let v = view;
+                let keep = self.views[v].pipeline.levels().len() - 1;
+                self.change(|d| d.pipelines[v].truncate(keep));
+            }
+            None => {}
+        }
+    }
+
+    /// The answer "compute anyway" to the budget question.
+    pub fn compute_anyway(&mut self) {
+        if let Some((view, o)) = self.question.take() {
+            let v = &mut self.views[view];
+            v.budget_override = Some((o.needed_mib + o.needed_mib / 4 + 16) << 20);
+            let next = v.pipeline.rebased(self.doc.pipelines[view].clone());
+            v.submit(next, self.budget_mib << 20, false, &self.waker);
+        }
+    }
+
     fn screenshot(&mut self, ctx: &egui::Context) {
+        let busy = self.busy();
         let Some((path, frames, slot)) = &mut self.screenshot else {
             return;
         };
-        *frames += 1;
         ctx.request_repaint();
+        if busy {
+            return;
+        }
+        *frames += 1;
         if *frames == 8 {
             let slot = slot.clone();
             ctx.send_viewport_cmd(egui::ViewportCommand::Screenshot(
@@ -416,24 +851,76 @@ impl PrismApp {
     }
 }
 
+/// A bundled sample as a document.
+fn sample(k: usize) -> Result<(DocState, Origin), String> {
+    let (name, file, text) = SAMPLES_FILES[k];
+    let path = Path::new(file);
+    let doc = match io::FileKind::of(path).map_err(|e| e.to_string())? {
+        io::FileKind::Obj => {
+            let m = io::read_obj_str(path, text).map_err(|e| e.to_string())?;
+            io::Document {
+                mesh: m.mesh,
+                edge_attrs: m.edge_attrs,
+                tags: m.tags,
+                pipeline: None,
+            }
+        }
+        io::FileKind::Document => io::document_from_str(path, text).map_err(|e| e.to_string())?,
+    };
+    Ok((
+        DocState::from_document(doc),
+        Origin {
+            path: None,
+            name: format!("{} (bundled sample)", name.to_lowercase()),
+        },
+    ))
+}
+
 impl eframe::App for PrismApp {
     fn ui(&mut self, ui: &mut egui::Ui, _frame: &mut eframe::Frame) {
-        self.keys(ui);
-        egui::Panel::left("pipeline")
-            .resizable(true)
-            .default_size(280.0)
-            .show(ui, |ui| {
-                egui::ScrollArea::vertical().show(ui, |ui| self.pipeline_panel(ui));
-            });
-        egui::Panel::bottom("status").show(ui, |ui| self.status(ui));
-        if self.dirty {
-            self.rebuild_scene();
-        }
-        egui::CentralPanel::default()
-            .frame(egui::Frame::NONE)
-            .show(ui, |ui| self.view(ui));
         let ctx = ui.ctx().clone();
+        if self.poll_jobs() {
+            ctx.request_repaint();
+        }
+        if self.busy() {
+            ctx.request_repaint_after(std::time::Duration::from_millis(50));
+        }
+        self.keys(&ctx);
+        self.dropped_files(&ctx);
+        egui::Panel::top("menu").show(ui, |ui| self.menu_bar(ui));
+        match self.tab {
+            Tab::Model => {
+                egui::Panel::left("panels")
+                    .resizable(true)
+                    .default_size(300.0)
+                    .show(ui, |ui| {
+                        egui::ScrollArea::vertical().show(ui, |ui| self.side_panel(ui));
+                    });
+                egui::Panel::bottom("status").show(ui, |ui| self.status(ui));
+                let n = self.doc.pipelines.len();
+                if n > 1 {
+                    egui::Panel::bottom(("compare", n))
+                        .resizable(true)
+                        .default_size(34.0 + 22.0 * n as f32)
+                        .show(ui, |ui| self.compare_table(ui));
+                }
+                self.rebuild_scenes();
+                egui::CentralPanel::default()
+                    .frame(egui::Frame::NONE)
+                    .show(ui, |ui| self.views_ui(ui));
+                self.budget_question(&ctx);
+            }
+            Tab::Curves => {
+                egui::CentralPanel::default().show(ui, |ui| self.curves.ui(ui));
+            }
+        }
         self.screenshot(&ctx);
+    }
+
+    fn save(&mut self, storage: &mut dyn eframe::Storage) {
+        if self.screenshot.is_none() {
+            eframe::set_value(storage, SETTINGS_KEY, &self.settings());
+        }
     }
 }
 
@@ -442,7 +929,8 @@ pub fn run(launch: Launch) -> Result<(), String> {
     let options = eframe::NativeOptions {
         viewport: egui::ViewportBuilder::default()
             .with_title("Prism")
-            .with_inner_size([1280.0, 800.0]),
+            .with_inner_size([1280.0, 800.0])
+            .with_drag_and_drop(true),
         renderer: eframe::Renderer::Wgpu,
         multisampling: SAMPLES,
         depth_buffer: 32,

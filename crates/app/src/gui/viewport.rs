@@ -1,22 +1,32 @@
-//! The 3D view inside the egui window: the viewport crate's renderer drawn in egui's own
-//! render pass through an `egui_wgpu` paint callback (same device, same pass: no copies).
+//! The 3D views inside the egui window: the viewport crate's renderer drawn in egui's own
+//! render pass through `egui_wgpu` paint callbacks (same device, same pass: no copies). Each
+//! view (one, or two or four in the compare split) has its own camera slot and buffers.
 
-use prism_viewport::{Camera, GpuScene, Renderer, Scene};
+use prism_viewport::{Camera, CameraSlot, GpuScene, Renderer, Scene};
+use std::collections::HashMap;
 use std::sync::Arc;
 
-/// What the callback needs for one frame.
+/// What the callback of one view needs for one frame.
 pub struct ViewCallback {
+    pub view: usize,
     pub scene: Arc<Scene>,
-    /// Bumped whenever `scene` changes, so the upload happens once per change.
+    /// Lines and points drawn over the scene (same origin).
+    pub overlay: Arc<Scene>,
+    /// Bumped whenever `scene` or `overlay` changes, so the upload happens once per change.
     pub version: u64,
     pub camera: Camera,
     pub aspect: f32,
 }
 
+struct ViewGpu {
+    slot: CameraSlot,
+    uploaded: Option<(u64, GpuScene, GpuScene)>,
+}
+
 /// GPU state kept in egui's callback resources.
 struct Resources {
     renderer: Renderer,
-    uploaded: Option<(u64, GpuScene)>,
+    views: HashMap<usize, ViewGpu>,
 }
 
 /// Creates the renderer once, for the window's colour format and sample count.
@@ -28,7 +38,7 @@ pub fn install(render_state: &egui_wgpu::RenderState, samples: u32) {
         .callback_resources
         .insert(Resources {
             renderer,
-            uploaded: None,
+            views: HashMap::new(),
         });
 }
 
@@ -44,10 +54,19 @@ impl egui_wgpu::CallbackTrait for ViewCallback {
         let Some(res) = resources.get_mut::<Resources>() else {
             return Vec::new();
         };
-        if res.uploaded.as_ref().map(|(v, _)| *v) != Some(self.version) {
-            res.uploaded = Some((self.version, res.renderer.upload(device, &self.scene)));
+        let renderer = &res.renderer;
+        let v = res.views.entry(self.view).or_insert_with(|| ViewGpu {
+            slot: renderer.camera_slot(device),
+            uploaded: None,
+        });
+        if v.uploaded.as_ref().map(|u| u.0) != Some(self.version) {
+            v.uploaded = Some((
+                self.version,
+                renderer.upload(device, &self.scene),
+                renderer.upload(device, &self.overlay),
+            ));
         }
-        res.renderer.set_camera(queue, &self.camera, self.aspect);
+        renderer.set_slot_camera(queue, &v.slot, &self.camera, self.aspect);
         Vec::new()
     }
 
@@ -58,9 +77,11 @@ impl egui_wgpu::CallbackTrait for ViewCallback {
         resources: &egui_wgpu::CallbackResources,
     ) {
         if let Some(res) = resources.get::<Resources>()
-            && let Some((_, gpu)) = &res.uploaded
+            && let Some(v) = res.views.get(&self.view)
+            && let Some((_, scene, overlay)) = &v.uploaded
         {
-            res.renderer.draw(pass, gpu);
+            res.renderer.draw_in(pass, &v.slot, scene);
+            res.renderer.draw_in(pass, &v.slot, overlay);
         }
     }
 }

@@ -1,0 +1,197 @@
+//! One view's pipeline: the last computed result on screen, the job computing the next one,
+//! the scene of the level shown and the overlay drawn over it (cages, marked and selected
+//! edges, points, normals), and caches that depend on the level (edge lists, edge origins).
+
+use super::worker::{Finished, Job, over_budget};
+use prism_geom::ancestry::edge_origins;
+use prism_geom::error::OverBudget;
+use prism_geom::{EdgeKey, Pipeline, Scheme};
+use prism_viewport::Scene;
+use std::collections::HashMap;
+use std::sync::Arc;
+
+/// Asks the window for a repaint (from a worker thread).
+pub type Waker = Arc<dyn Fn() + Send + Sync>;
+
+/// A level of a given result: (generation, level).
+type LevelKey = (u64, usize);
+/// The control edge of every edge of a level, or why there is none.
+pub type Origins = Result<HashMap<EdgeKey, EdgeKey>, String>;
+
+/// What a finished job left to say.
+pub enum Outcome {
+    Nothing,
+    Updated,
+    /// A step stopped at the memory budget: the app asks the user.
+    AskBudget(OverBudget),
+}
+
+pub struct ViewPipe {
+    /// The last result: complete, or cut short by an error.
+    pub pipeline: Pipeline,
+    /// Bumped whenever `pipeline` is replaced (caches compare it).
+    pub generation: u64,
+    /// The level the user wants to see; the one shown is the nearest computed.
+    pub level: usize,
+    pub job: Option<Job>,
+    /// The pipeline to compute once the running job has finished.
+    wanted: Option<Pipeline>,
+    pub error: Option<String>,
+    /// Budget for the next job when the user allowed more than the default.
+    pub budget_override: Option<u64>,
+    pub scene: Arc<Scene>,
+    pub overlay: Arc<Scene>,
+    /// Bumped whenever the scene or overlay changes (the GPU upload compares it).
+    pub version: u64,
+    pub scene_dirty: bool,
+    pub overlay_dirty: bool,
+    edges: Option<(LevelKey, Arc<Vec<EdgeKey>>)>,
+    origins: Option<(LevelKey, Arc<Origins>)>,
+    /// Cached compare-table fillet measure: key (generation, edge), text.
+    pub fillet: Option<((u64, Option<EdgeKey>), String)>,
+}
+
+impl ViewPipe {
+    pub fn new(pipeline: Pipeline) -> ViewPipe {
+        let level = pipeline.steps().len();
+        ViewPipe {
+            pipeline,
+            generation: 0,
+            level,
+            job: None,
+            wanted: None,
+            error: None,
+            budget_override: None,
+            scene: Arc::new(Scene::default()),
+            overlay: Arc::new(Scene::default()),
+            version: 0,
+            scene_dirty: true,
+            overlay_dirty: true,
+            edges: None,
+            origins: None,
+            fillet: None,
+        }
+    }
+
+    /// The level shown: the wanted one, or the last computed if it is not there yet.
+    pub fn shown(&self) -> usize {
+        self.level.min(self.pipeline.levels().len() - 1)
+    }
+
+    pub fn steps(&self) -> &[Scheme] {
+        self.pipeline.steps()
+    }
+
+    pub fn busy(&self) -> bool {
+        self.job.is_some() || self.wanted.is_some()
+    }
+
+    /// Computes `next` (which carries the levels it shares with the current pipeline).
+    /// `live` changes (a vertex drag) let a running job finish and queue behind it; others
+    /// cancel it. A pipeline with nothing to compute replaces the current one at once.
+    pub fn submit(&mut self, mut next: Pipeline, budget: u64, live: bool, wake: &Waker) {
+        next.options.memory_budget = self.budget_override.unwrap_or(budget);
+        if next.is_complete() && self.job.is_none() {
+            self.replace(next);
+            self.error = None;
+            return;
+        }
+        if let Some(job) = &self.job {
+            if !live {
+                job.cancel();
+            }
+            self.wanted = Some(next);
+        } else {
+            self.spawn(next, wake);
+        }
+    }
+
+    fn spawn(&mut self, p: Pipeline, wake: &Waker) {
+        let w = wake.clone();
+        self.job = Some(Job::spawn(p, move || w()));
+    }
+
+    /// Takes a finished job's result.
+    pub fn poll(&mut self, wake: &Waker) -> Outcome {
+        let Some(job) = &mut self.job else {
+            return Outcome::Nothing;
+        };
+        let Some(Finished {
+            pipeline,
+            error,
+            cancelled,
+        }) = job.poll()
+        else {
+            return Outcome::Nothing;
+        };
+        self.job = None;
+        let mut out = Outcome::Updated;
+        let superseded = cancelled && self.wanted.is_some();
+        if pipeline.is_none() {
+            self.error =
+                Some("the computation stopped unexpectedly; the last result is kept".into());
+        }
+        if let Some(pipeline) = pipeline
+            && !superseded
+        {
+            self.error = error.as_ref().map(|e| e.to_string());
+            if let Some(o) = error.as_ref().and_then(over_budget) {
+                out = Outcome::AskBudget(o.clone());
+            }
+            if cancelled && error.is_none() {
+                self.error =
+                    Some("cancelled: the levels after the last one shown were not computed".into());
+            }
+            self.replace(pipeline);
+        }
+        if let Some(next) = self.wanted.take() {
+            self.spawn(next, wake);
+        }
+        out
+    }
+
+    /// Cancels the running job and forgets the queued one.
+    pub fn cancel(&mut self) {
+        self.wanted = None;
+        if let Some(j) = &self.job {
+            j.cancel();
+        }
+    }
+
+    fn replace(&mut self, p: Pipeline) {
+        self.pipeline = p;
+        self.generation += 1;
+        self.scene_dirty = true;
+        self.overlay_dirty = true;
+        self.budget_override = None;
+    }
+
+    /// The edges of the shown level.
+    pub fn edges(&mut self) -> Arc<Vec<EdgeKey>> {
+        let key = (self.generation, self.shown());
+        if let Some((k, e)) = &self.edges
+            && *k == key
+        {
+            return e.clone();
+        }
+        let e = Arc::new(super::pick::mesh_edges(&self.pipeline.levels()[key.1].mesh));
+        self.edges = Some((key, e.clone()));
+        e
+    }
+
+    /// The control edge each edge of the shown level descends from.
+    pub fn origins(&mut self) -> Arc<Origins> {
+        let key = (self.generation, self.shown());
+        if let Some((k, o)) = &self.origins
+            && *k == key
+        {
+            return o.clone();
+        }
+        let o = Arc::new(
+            edge_origins(self.pipeline.levels(), self.pipeline.steps(), key.1)
+                .map_err(|e| e.to_string()),
+        );
+        self.origins = Some((key, o.clone()));
+        o
+    }
+}

@@ -1,0 +1,492 @@
+//! The 3D views: the grid of one, two or four views, the mouse in them (orbit, pan, zoom;
+//! pick, box-select and move with the Vertices and Edges tools), and the scene and overlay
+//! of each view's shown level.
+
+use super::pick::{self, Projector};
+use super::{MoveDrag, PrismApp, Tool, viewport};
+use glam::{DVec3, Vec3};
+use prism_geom::biquadratic::FaceKind;
+use prism_geom::{EdgeKey, Scheme};
+use prism_viewport::Scene;
+use std::collections::BTreeSet;
+use std::sync::Arc;
+
+const CONTROL: [f32; 3] = [0.55, 0.62, 0.80];
+const SELECTED: [f32; 3] = [1.0, 0.86, 0.20];
+const CREASE: [f32; 3] = [0.95, 0.30, 0.25];
+const RADIUS: [f32; 3] = [0.25, 0.85, 0.90];
+const CAGE: [f32; 3] = [0.95, 0.75, 0.25];
+const CORNER: [f32; 3] = [0.45, 0.95, 0.45];
+const LIMIT: [f32; 3] = [0.95, 0.45, 0.95];
+
+/// Rectangles of `n` views in `area` (side by side for two, 2×2 for four).
+pub fn grid(area: egui::Rect, n: usize) -> Vec<egui::Rect> {
+    let gap = 2.0;
+    match n {
+        0 | 1 => vec![area],
+        2 => {
+            let w = (area.width() - gap) / 2.0;
+            (0..2)
+                .map(|i| {
+                    egui::Rect::from_min_size(
+                        area.min + egui::vec2(i as f32 * (w + gap), 0.0),
+                        egui::vec2(w, area.height()),
+                    )
+                })
+                .collect()
+        }
+        _ => {
+            let w = (area.width() - gap) / 2.0;
+            let h = (area.height() - gap) / 2.0;
+            (0..4)
+                .map(|i| {
+                    egui::Rect::from_min_size(
+                        area.min
+                            + egui::vec2((i % 2) as f32 * (w + gap), (i / 2) as f32 * (h + gap)),
+                        egui::vec2(w, h),
+                    )
+                })
+                .collect()
+        }
+    }
+}
+
+impl PrismApp {
+    /// The projector of view rectangle `rect` for view `i`.
+    pub fn projector(&self, i: usize, rect: egui::Rect) -> Projector {
+        Projector {
+            view_proj: self.camera.view_proj(rect.width() / rect.height().max(1.0)),
+            rect,
+            origin: self.views[i].scene.origin,
+        }
+    }
+
+    pub(super) fn views_ui(&mut self, ui: &mut egui::Ui) {
+        let area = ui.available_rect_before_wrap();
+        let n = self.views.len();
+        let cells = grid(area, n);
+        self.view_aspect = cells
+            .iter()
+            .map(|c| c.width() / (c.height() - if n > 1 { 20.0 } else { 0.0 }).max(1.0))
+            .fold(f32::MAX, f32::min);
+        if !self.framed && !self.views[0].scene.vertices.is_empty() {
+            self.frame();
+        }
+        for (i, cell) in cells.into_iter().enumerate() {
+            let header = if n > 1 {
+                egui::Rect::from_min_size(cell.min, egui::vec2(cell.width(), 20.0))
+            } else {
+                egui::Rect::from_min_size(cell.min, egui::vec2(0.0, 0.0))
+            };
+            let rect = egui::Rect::from_min_max(egui::pos2(cell.left(), header.bottom()), cell.max);
+            if n > 1 {
+                let active = i == self.active;
+                ui.painter().rect_filled(
+                    header,
+                    0.0,
+                    if active {
+                        egui::Color32::from_rgb(60, 70, 95)
+                    } else {
+                        egui::Color32::from_gray(35)
+                    },
+                );
+                let text = format!(
+                    "View {}: {}",
+                    i + 1,
+                    prism_geom::scheme::format_pipeline(&self.doc.pipelines[i])
+                );
+                ui.painter().text(
+                    header.left_center() + egui::vec2(6.0, 0.0),
+                    egui::Align2::LEFT_CENTER,
+                    text,
+                    egui::FontId::proportional(13.0),
+                    egui::Color32::from_gray(220),
+                );
+            }
+            self.view_input(ui, i, rect);
+            let bg = prism_viewport::renderer::BACKGROUND;
+            let srgb = |x: f64| (255.0 * x.powf(1.0 / 2.2)) as u8;
+            ui.painter().rect_filled(
+                rect,
+                0.0,
+                egui::Color32::from_rgb(srgb(bg.r), srgb(bg.g), srgb(bg.b)),
+            );
+            let v = &self.views[i];
+            if self.has_gpu {
+                ui.painter().add(egui_wgpu::Callback::new_paint_callback(
+                    rect,
+                    viewport::ViewCallback {
+                        view: i,
+                        scene: v.scene.clone(),
+                        overlay: v.overlay.clone(),
+                        version: v.version,
+                        camera: self.camera,
+                        aspect: rect.width() / rect.height().max(1.0),
+                    },
+                ));
+            }
+            if let Some(start) = self.box_start
+                && i == self.active
+                && let Some(now) = ui.ctx().pointer_latest_pos()
+            {
+                ui.painter().rect_stroke(
+                    egui::Rect::from_two_pos(start, now),
+                    0.0,
+                    egui::Stroke::new(1.0, egui::Color32::from_rgb(255, 220, 50)),
+                    egui::StrokeKind::Inside,
+                );
+            }
+            if v.job.is_some() {
+                ui.painter().text(
+                    rect.right_top() + egui::vec2(-8.0, 8.0),
+                    egui::Align2::RIGHT_TOP,
+                    format!(
+                        "computing level {} of {} …",
+                        v.pipeline.levels().len() + v.job.as_ref().map_or(0, |j| j.done),
+                        v.steps().len()
+                    ),
+                    egui::FontId::proportional(13.0),
+                    egui::Color32::from_gray(230),
+                );
+            }
+        }
+        ui.allocate_rect(area, egui::Sense::hover());
+    }
+
+    fn view_input(&mut self, ui: &mut egui::Ui, i: usize, rect: egui::Rect) {
+        let resp = ui.interact(
+            rect,
+            ui.scope_id().with(("view", i)),
+            egui::Sense::click_and_drag(),
+        );
+        if (resp.clicked() || resp.drag_started() || resp.secondary_clicked()) && self.active != i {
+            self.active = i;
+            self.mark_overlays();
+        }
+        let shift = ui.input(|inp| inp.modifiers.shift);
+        let (orbit_button, pan_buttons) = match self.tool {
+            Tool::Orbit => (
+                egui::PointerButton::Primary,
+                [egui::PointerButton::Secondary, egui::PointerButton::Middle],
+            ),
+            _ => (
+                egui::PointerButton::Secondary,
+                [egui::PointerButton::Middle, egui::PointerButton::Middle],
+            ),
+        };
+        if resp.dragged_by(orbit_button) {
+            let d = resp.drag_delta();
+            self.camera.orbit(-d.x * 0.01, d.y * 0.01);
+        }
+        if pan_buttons.iter().any(|b| resp.dragged_by(*b)) {
+            let d = resp.drag_delta();
+            self.camera.pan(d.x / rect.height(), d.y / rect.height());
+        }
+        if resp.hovered() {
+            let scroll = ui.input(|inp| inp.smooth_scroll_delta.y);
+            if scroll != 0.0 {
+                self.camera.zoom((-scroll * 0.002).exp());
+            }
+        }
+        if self.tool == Tool::Orbit {
+            return;
+        }
+        let Some(pos) = resp.interact_pointer_pos() else {
+            return;
+        };
+        let proj = self.projector(i, rect);
+        if resp.clicked() {
+            self.click_pick(i, &proj, pos, shift);
+        }
+        if resp.drag_started_by(egui::PointerButton::Primary) {
+            let press = ui.input(|inp| inp.pointer.press_origin()).unwrap_or(pos);
+            let on_selected = self.tool == Tool::Vertices
+                && pick::pick_vertex(&proj, None, &self.doc.mesh.positions, press, 8.0)
+                    .is_some_and(|v| {
+                        if !self.sel_verts.contains(&v) && !shift {
+                            self.sel_verts = BTreeSet::from([v]);
+                            self.mark_overlays();
+                        }
+                        self.sel_verts.contains(&v)
+                    });
+            if on_selected {
+                self.history.record(self.doc.clone());
+                self.moving = Some(MoveDrag {
+                    start: self
+                        .sel_verts
+                        .iter()
+                        .map(|&v| (v, self.doc.mesh.positions[v as usize]))
+                        .collect(),
+                });
+            } else {
+                self.box_start = Some(press);
+            }
+        }
+        if resp.dragged_by(egui::PointerButton::Primary)
+            && let Some(mv) = &self.moving
+        {
+            let press = ui.input(|inp| inp.pointer.press_origin()).unwrap_or(pos);
+            let d = self.drag_vector(pos - press, rect);
+            for &(v, p) in &mv.start {
+                self.doc.mesh.positions[v as usize] = p + d;
+            }
+            self.sync(true);
+            self.mark_overlays();
+        }
+        if resp.drag_stopped() {
+            self.moving = None;
+            if let Some(start) = self.box_start.take() {
+                self.box_pick(i, &proj, egui::Rect::from_two_pos(start, pos), shift);
+            }
+        }
+    }
+
+    /// A screen drag as a movement in the model: in the view plane, or along the held axis.
+    pub fn drag_vector(&self, delta: egui::Vec2, rect: egui::Rect) -> DVec3 {
+        let c = &self.camera;
+        let fwd = (c.target - c.eye()).normalize();
+        let right = fwd.cross(Vec3::Z).normalize_or(Vec3::X);
+        let up = right.cross(fwd);
+        let scale = 2.0 * c.distance * (0.5 * c.fov_y).tan() / rect.height().max(1.0);
+        let d = (scale * (delta.x * right - delta.y * up)).as_dvec3();
+        match self.axis {
+            Some(a) => {
+                let mut axis = DVec3::ZERO;
+                axis[a] = 1.0;
+                // The screen motion along the axis' own screen direction.
+                let s = (right.as_dvec3().dot(axis), up.as_dvec3().dot(axis));
+                let len2 = s.0 * s.0 + s.1 * s.1;
+                if len2 < 1e-6 {
+                    return DVec3::ZERO;
+                }
+                let along = (delta.x as f64 * s.0 - delta.y as f64 * s.1) / len2;
+                axis * along * scale as f64
+            }
+            None => d,
+        }
+    }
+
+    /// A click with the Vertices or Edges tool.
+    pub fn click_pick(&mut self, i: usize, proj: &Projector, pos: egui::Pos2, add: bool) {
+        match self.tool {
+            Tool::Vertices => {
+                let hit = pick::pick_vertex(proj, None, &self.doc.mesh.positions, pos, 8.0);
+                toggle(&mut self.sel_verts, hit, add);
+            }
+            Tool::Edges => {
+                let v = &mut self.views[i];
+                let edges = v.edges();
+                let k = v.shown();
+                let scene = v.scene.clone();
+                let mesh = &v.pipeline.levels()[k].mesh;
+                let hit = pick::pick_edge(proj, Some(&scene), mesh, &edges, pos, 6.0);
+                let control = match hit {
+                    None => None,
+                    Some(e) => match self.views[i].origins().as_ref() {
+                        Ok(map) => {
+                            let o = map.get(&e).copied();
+                            if o.is_none() {
+                                self.note = Some(
+                                    "that edge lies inside a face of the control mesh: it follows no control edge".into(),
+                                );
+                            }
+                            o
+                        }
+                        Err(msg) => {
+                            self.note = Some(msg.clone());
+                            None
+                        }
+                    },
+                };
+                if hit.is_none() || control.is_some() {
+                    toggle(&mut self.sel_edges, control, add);
+                }
+            }
+            Tool::Orbit => {}
+        }
+        self.mark_overlays();
+    }
+
+    /// A dragged box with the Vertices or Edges tool.
+    pub fn box_pick(&mut self, i: usize, proj: &Projector, rect: egui::Rect, add: bool) {
+        match self.tool {
+            Tool::Vertices => {
+                if !add {
+                    self.sel_verts.clear();
+                }
+                self.sel_verts
+                    .extend(pick::box_vertices(proj, &self.doc.mesh.positions, rect));
+            }
+            Tool::Edges => {
+                let v = &mut self.views[i];
+                let edges = v.edges();
+                let k = v.shown();
+                let inside = pick::box_edges(proj, &v.pipeline.levels()[k].mesh, &edges, rect);
+                let origins = v.origins();
+                if !add {
+                    self.sel_edges.clear();
+                }
+                match origins.as_ref() {
+                    Ok(map) => self
+                        .sel_edges
+                        .extend(inside.iter().filter_map(|e| map.get(e).copied())),
+                    Err(msg) => self.note = Some(msg.clone()),
+                }
+            }
+            Tool::Orbit => {}
+        }
+        self.mark_overlays();
+    }
+
+    /// Rebuilds the scenes and overlays that changed.
+    pub(super) fn rebuild_scenes(&mut self) {
+        for i in 0..self.views.len() {
+            let v = &mut self.views[i];
+            if v.scene_dirty {
+                let k = v.shown();
+                let lv = &v.pipeline.levels()[k];
+                let kinds: Option<&[FaceKind]> =
+                    lv.provenance.as_ref().map(|p| p.face_kind.as_slice());
+                let holes = &lv.tags.holes;
+                v.scene = Arc::new(Scene::build(
+                    &lv.mesh,
+                    &lv.edge_attrs,
+                    kinds,
+                    &|f| holes.contains(&(f as u32)),
+                    &self.display.scene_options(),
+                ));
+                v.scene_dirty = false;
+                v.overlay_dirty = true;
+                v.version += 1;
+            }
+            if self.views[i].overlay_dirty {
+                let overlay = self.build_overlay(i);
+                let v = &mut self.views[i];
+                v.overlay = Arc::new(overlay);
+                v.overlay_dirty = false;
+                v.version += 1;
+            }
+        }
+    }
+
+    /// Lines and points over view `i`'s level: cages, marked and selected edges, corner
+    /// points with their displacement vectors, limit points with normals.
+    fn build_overlay(&mut self, i: usize) -> Scene {
+        let (origin, bbox, radius) = {
+            let s = &self.views[i].scene;
+            (s.origin, s.bbox, s.radius() as f64)
+        };
+        let mut o = Scene {
+            origin,
+            bbox,
+            ..Scene::default()
+        };
+        let k = self.views[i].shown();
+        let size = 0.008 * radius;
+        let doc = &self.doc;
+        if self.display.cage && k > 0 {
+            o.add_cage(&self.views[i].pipeline.levels()[k - 1].mesh, CAGE);
+        }
+        if self.tool == Tool::Vertices && i == self.active {
+            o.add_cage(&doc.mesh, CONTROL);
+            o.add_points(&doc.mesh.positions, size, CONTROL);
+            let sel: Vec<DVec3> = self
+                .sel_verts
+                .iter()
+                .filter_map(|&v| doc.mesh.positions.get(v as usize).copied())
+                .collect();
+            o.add_points(&sel, 2.0 * size, SELECTED);
+        }
+        // Marked and selected control edges, drawn where they are on this level.
+        let creased: BTreeSet<EdgeKey> = doc
+            .edge_attrs
+            .iter()
+            .filter(|(_, a)| a.crease > 0.0)
+            .map(|(e, _)| *e)
+            .collect();
+        let radiused: BTreeSet<EdgeKey> = doc
+            .edge_attrs
+            .iter()
+            .filter(|(_, a)| a.radius.is_some())
+            .map(|(e, _)| *e)
+            .collect();
+        let want = !creased.is_empty() || !radiused.is_empty() || !self.sel_edges.is_empty();
+        if want {
+            let origins = self.views[i].origins();
+            if let Ok(map) = origins.as_ref() {
+                let mesh = &self.views[i].pipeline.levels()[k].mesh;
+                let segs = |set: &BTreeSet<EdgeKey>| -> Vec<(DVec3, DVec3)> {
+                    map.iter()
+                        .filter(|(_, c)| set.contains(c))
+                        .map(|(e, _)| (mesh.positions[e.0 as usize], mesh.positions[e.1 as usize]))
+                        .collect()
+                };
+                o.add_segments(&segs(&creased), CREASE);
+                o.add_segments(&segs(&radiused), RADIUS);
+                o.add_segments(&segs(&self.sel_edges), SELECTED);
+            }
+        }
+        let v = &self.views[i];
+        let levels = v.pipeline.levels();
+        if self.display.corners && k > 0 && matches!(v.steps()[k - 1], Scheme::Biquadratic(_)) {
+            let lv = &levels[k];
+            let parent = &levels[k - 1].mesh;
+            if lv.report.as_ref().is_some_and(|r| r.dissolved_edges == 0)
+                && lv.mesh.num_vertices() == parent.num_corners()
+            {
+                // Vertex c of a biquadratic level is the corner point of parent corner c.
+                let vecs: Vec<(DVec3, DVec3)> = (0..parent.num_corners())
+                    .map(|c| {
+                        (
+                            parent.positions[parent.corner_verts[c] as usize],
+                            lv.mesh.positions[c],
+                        )
+                    })
+                    .collect();
+                o.add_segments(&vecs, [0.30, 0.65, 0.30]);
+                o.add_points(&lv.mesh.positions, size, CORNER);
+            }
+        }
+        if self.display.limit {
+            let scheme = if k > 0 {
+                Some(v.steps()[k - 1])
+            } else {
+                v.steps().first().copied()
+            };
+            if let Some(Scheme::Primal(s)) = scheme {
+                let lv = &levels[k];
+                match prism_geom::limit_points(&lv.mesh, &lv.edge_attrs, &lv.tags, s) {
+                    Ok(lp) => {
+                        o.add_points(&lp.positions, size, LIMIT);
+                        let len = 0.05 * radius;
+                        let normals: Vec<(DVec3, DVec3)> = lp
+                            .positions
+                            .iter()
+                            .zip(&lp.normals)
+                            .map(|(p, n)| (*p, *p + len * *n))
+                            .collect();
+                        o.add_segments(&normals, LIMIT);
+                    }
+                    Err(e) => self.note = Some(format!("limit points: {e}")),
+                }
+            }
+        }
+        o
+    }
+}
+
+fn toggle<T: Ord + Copy>(set: &mut BTreeSet<T>, hit: Option<T>, add: bool) {
+    match (hit, add) {
+        (Some(x), true) => {
+            if !set.remove(&x) {
+                set.insert(x);
+            }
+        }
+        (Some(x), false) => {
+            set.clear();
+            set.insert(x);
+        }
+        (None, false) => set.clear(),
+        (None, true) => {}
+    }
+}
