@@ -31,3 +31,20 @@ fn frame_1m_triangles_1024x768(b: divan::Bencher) {
     let camera = Camera::looking(View::Iso, glam::Vec3::ZERO, scene.radius());
     b.bench(|| gpu.render_uploaded(&uploaded, &camera, 1024, 768).unwrap());
 }
+
+/// Preparing the same mesh for drawing on the CPU (triangles, normals, wireframe lines):
+/// what the app does once per new level or display change.
+#[divan::bench(sample_count = 5, args = [false, true])]
+fn scene_build_1m_triangles(b: divan::Bencher, smooth: bool) {
+    let mesh = primitives::fan_triangulated(&primitives::torus(708, 708, 3.0, 1.0));
+    let opts = SceneOptions {
+        shading: if smooth {
+            prism_viewport::Shading::Smooth
+        } else {
+            prism_viewport::Shading::Flat
+        },
+        wireframe: true,
+        ..SceneOptions::default()
+    };
+    b.bench(|| Scene::build(&mesh, &EdgeAttrs::new(), None, &|_| false, &opts));
+}

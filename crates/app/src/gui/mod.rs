@@ -382,6 +382,7 @@ impl PrismApp {
                     Vec::new(),
                 ));
                 v.level = steps.len();
+                v.scene_opts = self.display.scene_options();
                 v.submit(fresh(), budget, live, &self.waker);
                 self.views.push(v);
                 continue;
@@ -719,6 +720,7 @@ impl PrismApp {
 
     pub fn display_changed(&mut self) {
         for v in &mut self.views {
+            v.scene_opts = self.display.scene_options();
             v.scene_dirty = true;
             v.overlay_dirty = true;
         }

@@ -4,14 +4,28 @@
 
 use super::worker::{Finished, Job, over_budget};
 use prism_geom::ancestry::edge_origins;
+use prism_geom::biquadratic::FaceKind;
 use prism_geom::error::OverBudget;
-use prism_geom::{EdgeKey, Pipeline, Scheme};
-use prism_viewport::Scene;
+use prism_geom::{EdgeKey, Level, Pipeline, Scheme};
+use prism_viewport::{Scene, SceneOptions};
 use std::collections::HashMap;
 use std::sync::Arc;
 
 /// Asks the window for a repaint (from a worker thread).
 pub type Waker = Arc<dyn Fn() + Send + Sync>;
+
+/// The scene of a level: its faces (holes left out), coloured by kind when asked.
+pub fn level_scene(lv: &Level, opts: &SceneOptions) -> Scene {
+    let kinds: Option<&[FaceKind]> = lv.provenance.as_ref().map(|p| p.face_kind.as_slice());
+    let holes = &lv.tags.holes;
+    Scene::build(
+        &lv.mesh,
+        &lv.edge_attrs,
+        kinds,
+        &|f| holes.contains(&(f as u32)),
+        opts,
+    )
+}
 
 /// A level of a given result: (generation, level).
 type LevelKey = (u64, usize);
@@ -44,6 +58,8 @@ pub struct ViewPipe {
     /// Bumped whenever the scene or overlay changes (the GPU upload compares it).
     pub version: u64,
     pub scene_dirty: bool,
+    /// The display options scenes are built with (the worker prepares the next one).
+    pub scene_opts: SceneOptions,
     pub overlay_dirty: bool,
     edges: Option<(LevelKey, Arc<Vec<EdgeKey>>)>,
     origins: Option<(LevelKey, Arc<Origins>)>,
@@ -66,6 +82,7 @@ impl ViewPipe {
             overlay: Arc::new(Scene::default()),
             version: 0,
             scene_dirty: true,
+            scene_opts: SceneOptions::default(),
             overlay_dirty: true,
             edges: None,
             origins: None,
@@ -108,7 +125,13 @@ impl ViewPipe {
 
     fn spawn(&mut self, p: Pipeline, wake: &Waker) {
         let w = wake.clone();
-        self.job = Some(Job::spawn(p, move || w()));
+        let (want, opts) = (self.level, self.scene_opts.clone());
+        let prepare = move |p: &Pipeline| {
+            let k = want.min(p.levels().len() - 1);
+            let scene = level_scene(&p.levels()[k], &opts);
+            Some((k, opts, scene))
+        };
+        self.job = Some(Job::spawn(p, prepare, move || w()));
     }
 
     /// Takes a finished job's result.
@@ -120,6 +143,7 @@ impl ViewPipe {
             pipeline,
             error,
             cancelled,
+            prepared,
         }) = job.poll()
         else {
             return Outcome::Nothing;
@@ -143,6 +167,14 @@ impl ViewPipe {
                     Some("cancelled: the levels after the last one shown were not computed".into());
             }
             self.replace(pipeline);
+            if let Some(p) = prepared
+                && p.0 == self.shown()
+                && p.1 == self.scene_opts
+            {
+                self.scene = Arc::new(p.2);
+                self.scene_dirty = false;
+                self.version += 1;
+            }
         }
         if let Some(next) = self.wanted.take() {
             self.spawn(next, wake);

@@ -3,9 +3,9 @@
 //! of each view's shown level.
 
 use super::pick::{self, Projector};
+use super::view_pipe::level_scene;
 use super::{MoveDrag, PrismApp, Tool, viewport};
 use glam::{DVec3, Vec3};
-use prism_geom::biquadratic::FaceKind;
 use prism_geom::{EdgeKey, Scheme};
 use prism_viewport::Scene;
 use std::collections::BTreeSet;
@@ -343,18 +343,8 @@ impl PrismApp {
         for i in 0..self.views.len() {
             let v = &mut self.views[i];
             if v.scene_dirty {
-                let k = v.shown();
-                let lv = &v.pipeline.levels()[k];
-                let kinds: Option<&[FaceKind]> =
-                    lv.provenance.as_ref().map(|p| p.face_kind.as_slice());
-                let holes = &lv.tags.holes;
-                v.scene = Arc::new(Scene::build(
-                    &lv.mesh,
-                    &lv.edge_attrs,
-                    kinds,
-                    &|f| holes.contains(&(f as u32)),
-                    &self.display.scene_options(),
-                ));
+                let lv = &v.pipeline.levels()[v.shown()];
+                v.scene = Arc::new(level_scene(lv, &v.scene_opts));
                 v.scene_dirty = false;
                 v.overlay_dirty = true;
                 v.version += 1;

@@ -1,19 +1,25 @@
 //! Computing levels off the UI thread. A job owns a [`Pipeline`] (the levels it shares with
 //! the old one already in it, see [`Pipeline::rebased`]), computes the missing levels one by
-//! one on its own thread, reports each finished level, and hands the pipeline back. Cancel
-//! is checked between levels; the window stays live meanwhile and keeps showing the old
-//! result.
+//! one on its own thread, reports each finished level, prepares the scene of the level to be
+//! shown (a million triangles take 0.3–0.5 s to prepare, docs/performance.md), and hands
+//! both back. Cancel is checked between levels; the window stays live meanwhile and keeps
+//! showing the old result.
 
 use prism_geom::error::OverBudget;
 use prism_geom::{Pipeline, PipelineError, StepError};
+use prism_viewport::{Scene, SceneOptions};
 use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::mpsc::{Receiver, TryRecvError, channel};
 use std::time::Instant;
 
+/// What the job prepares after the levels: the scene of one level, with the level and the
+/// display options it was made for.
+pub type Prepared = (usize, SceneOptions, Scene);
+
 enum Msg {
     Level,
-    Done(Box<Pipeline>, Option<PipelineError>),
+    Done(Box<Pipeline>, Option<PipelineError>, Option<Box<Prepared>>),
 }
 
 /// A running computation.
@@ -32,12 +38,17 @@ pub struct Finished {
     pub pipeline: Option<Pipeline>,
     pub error: Option<PipelineError>,
     pub cancelled: bool,
+    pub prepared: Option<Box<Prepared>>,
 }
 
 impl Job {
     /// Starts computing every missing level of `pipeline`; `wake` is called after each
     /// level (the window asks for a repaint there).
-    pub fn spawn(mut pipeline: Pipeline, wake: impl Fn() + Send + 'static) -> Job {
+    pub fn spawn(
+        mut pipeline: Pipeline,
+        prepare: impl FnOnce(&Pipeline) -> Option<Prepared> + Send + 'static,
+        wake: impl Fn() + Send + 'static,
+    ) -> Job {
         let (tx, rx) = channel();
         let cancel = Arc::new(AtomicBool::new(false));
         let flag = cancel.clone();
@@ -56,7 +67,12 @@ impl Job {
                 let _ = tx.send(Msg::Level);
                 wake();
             }
-            let _ = tx.send(Msg::Done(Box::new(pipeline), error));
+            let prepared = if flag.load(Ordering::Relaxed) {
+                None
+            } else {
+                prepare(&pipeline).map(Box::new)
+            };
+            let _ = tx.send(Msg::Done(Box::new(pipeline), error, prepared));
             wake();
         });
         Job {
@@ -78,11 +94,12 @@ impl Job {
         loop {
             match self.rx.try_recv() {
                 Ok(Msg::Level) => self.done += 1,
-                Ok(Msg::Done(p, error)) => {
+                Ok(Msg::Done(p, error, prepared)) => {
                     return Some(Finished {
                         pipeline: Some(*p),
                         error,
                         cancelled: self.cancel.load(Ordering::Relaxed),
+                        prepared,
                     });
                 }
                 Err(TryRecvError::Empty) => return None,
@@ -91,6 +108,7 @@ impl Job {
                         pipeline: None,
                         error: None,
                         cancelled: true,
+                        prepared: None,
                     });
                 }
             }
@@ -128,7 +146,7 @@ mod tests {
     fn a_job_computes_every_level_and_reports_them() {
         let steps = parse_pipeline("combination:r=0.2,combination:r=0.2,doo-sabin").unwrap();
         let p = Pipeline::new(primitives::tripod(), EdgeAttrs::new(), steps);
-        let f = Job::spawn(p, || {}).wait();
+        let f = Job::spawn(p, |_| None, || {}).wait();
         assert!(f.error.is_none() && !f.cancelled);
         assert!(f.pipeline.unwrap().is_complete());
     }
@@ -142,7 +160,7 @@ mod tests {
             steps,
         );
         p.options.memory_budget = 8 << 20;
-        let f = Job::spawn(p, || {}).wait();
+        let f = Job::spawn(p, |_| None, || {}).wait();
         let e = f.error.expect("over the budget");
         let o = over_budget(&e).expect("an estimate");
         assert!(o.needed_mib >= 8, "{o:?}");
@@ -153,7 +171,7 @@ mod tests {
     fn a_cancelled_job_stops_between_levels() {
         let steps = parse_pipeline(&["catmull-clark"; 6].join(",")).unwrap();
         let p = Pipeline::new(primitives::torus(64, 64, 3.0, 1.0), EdgeAttrs::new(), steps);
-        let job = Job::spawn(p, || {});
+        let job = Job::spawn(p, |_| None, || {});
         job.cancel();
         let f = job.wait();
         assert!(f.cancelled);
