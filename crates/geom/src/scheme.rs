@@ -22,7 +22,7 @@ pub enum Scheme {
 }
 
 /// The names of the primal schemes.
-pub const PRIMAL_NAMES: [&str; 2] = ["catmull-clark", "loop"];
+pub const PRIMAL_NAMES: [&str; 3] = ["catmull-clark", "loop", "catmull-clark-circle"];
 
 /// The names of the biquadratic schemes, in the order the paper presents them.
 pub const BIQUADRATIC_NAMES: [&str; 7] = [
@@ -94,6 +94,9 @@ impl Scheme {
             },
             "catmull-clark" => return Ok(Scheme::Primal(PrimalScheme::CatmullClark)),
             "loop" => return Ok(Scheme::Primal(PrimalScheme::Loop)),
+            "catmull-clark-circle" => {
+                return Ok(Scheme::Primal(PrimalScheme::CatmullClarkCircle));
+            }
             other => return Err(SchemeError::Unknown(other.to_string())),
         };
         rule.validate()?;

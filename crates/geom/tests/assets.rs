@@ -36,3 +36,22 @@ fn bundled_assets_are_the_builders_and_are_closed() {
         assert!(prism_geom::geometry::signed_volume(&back.mesh) > 0.0);
     }
 }
+
+/// The cube whose top rim is creased, with the circle-preserving Catmull–Clark pipeline:
+/// the sample for seed 002's weight on surfaces (docs/curves.md).
+#[test]
+fn the_creased_rim_sample_is_the_cube_with_four_creases_and_its_pipeline() {
+    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../assets/cube-rim.prism.json");
+    let (doc, _) = io::load(&path).unwrap();
+    assert_eq!(doc.mesh, primitives::cube3());
+    assert_eq!(doc.edge_attrs.len(), 4);
+    assert!(doc.edge_attrs.iter().all(|(e, a)| {
+        a.crease == 10.0
+            && doc.mesh.positions[e.0 as usize].z == 3.0
+            && doc.mesh.positions[e.1 as usize].z == 3.0
+    }));
+    assert_eq!(
+        prism_geom::scheme::format_pipeline(&doc.pipeline.unwrap()),
+        "catmull-clark-circle,catmull-clark-circle,catmull-clark-circle,catmull-clark-circle"
+    );
+}

@@ -199,7 +199,7 @@ fn counts_closedness_and_euler_per_level() {
             let out = refine(&cur, &EdgeAttrs::new(), s);
             let n = &out.mesh;
             match s {
-                PrimalScheme::CatmullClark => {
+                PrimalScheme::CatmullClark | PrimalScheme::CatmullClarkCircle => {
                     assert_eq!((n.num_vertices(), n.num_faces()), (v + e + f, c));
                 }
                 PrimalScheme::Loop => assert_eq!((n.num_vertices(), n.num_faces()), (v + e, 4 * f)),

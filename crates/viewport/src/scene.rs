@@ -23,13 +23,65 @@ pub enum Shading {
 }
 
 /// How faces are coloured.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub enum ColorBy {
     /// One material colour.
     #[default]
     Uniform,
     /// FACE-, EDGE- and VERTEX-faces of the last biquadratic step in three colours.
     Kind,
+    /// Mean curvature per vertex (`geom::analysis::mean_curvature`), mapped from the 2nd to
+    /// the 98th percentile of the vertices off crease edges onto a viridis-like scale
+    /// (dark blue low, yellow high).
+    Curvature,
+    /// One colour chosen by the caller: [`scheme_color`] of the step that made the level,
+    /// so that schemes side by side are told apart at a glance.
+    Solid([f32; 3]),
+}
+
+/// The colour of the faces a scheme made (Tableau-like palette, linear), by the scheme's
+/// place in the list of names; the input level (no scheme) gets the material colour.
+pub fn scheme_color(s: Option<&prism_geom::Scheme>) -> [f32; 3] {
+    const PALETTE: [[f32; 3]; 10] = [
+        [0.12, 0.47, 0.71],
+        [1.00, 0.50, 0.05],
+        [0.17, 0.63, 0.17],
+        [0.84, 0.15, 0.16],
+        [0.58, 0.40, 0.74],
+        [0.55, 0.34, 0.29],
+        [0.89, 0.47, 0.76],
+        [0.50, 0.50, 0.50],
+        [0.74, 0.74, 0.13],
+        [0.09, 0.75, 0.81],
+    ];
+    let Some(s) = s else { return BASE_COLOR };
+    let names = prism_geom::scheme::BIQUADRATIC_NAMES
+        .iter()
+        .chain(prism_geom::scheme::PRIMAL_NAMES.iter());
+    let k = names.take_while(|n| **n != s.name()).count();
+    PALETTE[k % PALETTE.len()].map(|x| x.powf(2.2))
+}
+
+/// The curvature colour scale: viridis at five stops (sRGB), interpolated, made linear.
+pub fn curvature_color(t: f64) -> [f32; 3] {
+    const STOPS: [[f64; 3]; 5] = [
+        [0.267, 0.005, 0.329],
+        [0.229, 0.322, 0.546],
+        [0.128, 0.567, 0.551],
+        [0.369, 0.789, 0.383],
+        [0.993, 0.906, 0.144],
+    ];
+    let x = if t.is_finite() {
+        t.clamp(0.0, 1.0)
+    } else {
+        0.0
+    } * 4.0;
+    let i = (x.floor() as usize).min(3);
+    let f = x - i as f64;
+    std::array::from_fn(|k| {
+        let s = STOPS[i][k] * (1.0 - f) + STOPS[i + 1][k] * f;
+        s.powf(2.2) as f32
+    })
 }
 
 /// The colours of the FACE-, EDGE- and VERTEX-faces (also the legend's).
@@ -86,6 +138,8 @@ pub struct Scene {
     pub origin: DVec3,
     /// Bounding box of the mesh (absolute coordinates).
     pub bbox: (DVec3, DVec3),
+    /// The values at the two ends of the colour scale, when colouring by curvature.
+    pub color_range: Option<(f64, f64)>,
 }
 
 /// Per-corner normals for smooth shading: faces around a vertex are averaged within each
@@ -211,9 +265,44 @@ impl Scene {
             .map(|c| Vertex {
                 position: rel(c),
                 normal: corner_normals[c].as_vec3().to_array(),
-                color: BASE_COLOR,
+                color: match opts.color_by {
+                    ColorBy::Solid(c) => c,
+                    _ => BASE_COLOR,
+                },
             })
             .collect();
+        if opts.color_by == ColorBy::Curvature
+            && let Ok(h) = prism_geom::analysis::mean_curvature(mesh)
+        {
+            // The scale is set by the surface, not by the spikes on crease edges.
+            let mut on_crease = vec![false; h.len()];
+            for (e, a) in attrs {
+                if a.crease > 0.0 {
+                    for v in [e.0, e.1] {
+                        if let Some(x) = on_crease.get_mut(v as usize) {
+                            *x = true;
+                        }
+                    }
+                }
+            }
+            let mut sorted: Vec<f64> = h
+                .iter()
+                .zip(&on_crease)
+                .filter(|(x, c)| x.is_finite() && !**c)
+                .map(|(x, _)| *x)
+                .collect();
+            sorted.sort_by(f64::total_cmp);
+            if let (Some(_), n) = (sorted.first(), sorted.len()) {
+                let lo = sorted[n * 2 / 100];
+                let hi = sorted[(n * 98 / 100).min(n - 1)];
+                let span = (hi - lo).max(1e-12);
+                for (c, v) in scene.vertices.iter_mut().enumerate() {
+                    let x = h[mesh.corner_verts[c] as usize];
+                    v.color = curvature_color((x - lo) / span);
+                }
+                scene.color_range = Some((lo, hi));
+            }
+        }
         for f in 0..mesh.num_faces() {
             if hidden(f) {
                 continue;
@@ -306,6 +395,28 @@ impl Scene {
 mod tests {
     use super::*;
     use prism_geom::primitives;
+
+    #[test]
+    fn curvature_colours_run_from_the_inner_to_the_outer_equator_of_a_torus() {
+        let m = primitives::torus(48, 24, 3.0, 1.0);
+        let opts = SceneOptions {
+            color_by: ColorBy::Curvature,
+            ..SceneOptions::default()
+        };
+        let s = Scene::build(&m, &EdgeAttrs::new(), None, &|_| false, &opts);
+        let (lo, hi) = s.color_range.expect("a range");
+        assert!(lo < hi);
+        let distinct: std::collections::BTreeSet<[u32; 3]> = s
+            .vertices
+            .iter()
+            .map(|v| v.color.map(f32::to_bits))
+            .collect();
+        assert!(distinct.len() > 10);
+        // The scale's ends are its first and last colours.
+        assert_eq!(curvature_color(-1.0), curvature_color(0.0));
+        assert_eq!(curvature_color(f64::NAN), curvature_color(0.0));
+        assert!(curvature_color(1.0)[0] > curvature_color(0.0)[0]);
+    }
 
     #[test]
     fn concave_and_holed_faces_triangulate_to_their_area() {

@@ -1,5 +1,5 @@
 //! `prism render IN -o OUT.png [--pipeline P | --scheme S --levels N ...] [--shading flat|smooth]
-//! [--wireframe] [--cage] [--color-by kind|uniform] [--size 1280x800] [--view iso|front|top]`:
+//! [--wireframe] [--cage] [--color-by kind|uniform|curvature|scheme] [--size 1280x800] [--view iso|front|top]`:
 //! a headless picture with the viewport's renderer, on any adapter (Mesa's software Vulkan
 //! on a machine without a GPU).
 
@@ -22,6 +22,8 @@ pub enum ShadingArg {
 pub enum ColorArg {
     Uniform,
     Kind,
+    Curvature,
+    Scheme,
 }
 
 #[derive(Debug, Clone, Copy, ValueEnum)]
@@ -81,6 +83,10 @@ pub fn run(a: RenderArgs) -> Result<(), CliError> {
         color_by: match a.color_by {
             ColorArg::Uniform => ColorBy::Uniform,
             ColorArg::Kind => ColorBy::Kind,
+            ColorArg::Curvature => ColorBy::Curvature,
+            ColorArg::Scheme => {
+                ColorBy::Solid(prism_viewport::scene::scheme_color(pipeline.steps().last()))
+            }
         },
         wireframe: a.wireframe,
         ..SceneOptions::default()

@@ -48,6 +48,8 @@ pub enum Show {
     Smooth,
     Wireframe,
     Kinds,
+    Curvature,
+    Schemes,
     Cage,
     Corners,
     Limit,
@@ -101,7 +103,7 @@ pub struct Launch {
 type ScreenshotSlot = Arc<Mutex<Option<Arc<egui::ColorImage>>>>;
 
 /// The bundled samples: name, file name, contents.
-pub const SAMPLES_FILES: [(&str, &str, &str); 5] = [
+pub const SAMPLES_FILES: [(&str, &str, &str); 6] = [
     (
         "Tripod",
         "tripod.obj",
@@ -123,18 +125,36 @@ pub const SAMPLES_FILES: [(&str, &str, &str); 5] = [
         include_str!("../../../../assets/holed-block.prism.json"),
     ),
     (
+        "Cube with a creased rim (circle weight)",
+        "cube-rim.prism.json",
+        include_str!("../../../../assets/cube-rim.prism.json"),
+    ),
+    (
         "Computer room",
         "computer-room.obj",
         include_str!("../../../../assets/computer-room.obj"),
     ),
 ];
 
+/// How faces are coloured.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+pub enum Coloring {
+    Uniform,
+    /// FACE / EDGE / VERTEX faces of the last biquadratic step.
+    Kind,
+    /// Mean curvature colour map.
+    Curvature,
+    /// One colour per scheme (the step that made the level).
+    Scheme,
+}
+
 /// What is drawn besides the faces.
 #[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Display {
     pub smooth: bool,
     pub wireframe: bool,
-    pub kinds: bool,
+    /// Face colours.
+    pub color: Coloring,
     pub cage: bool,
     pub corners: bool,
     pub limit: bool,
@@ -145,7 +165,7 @@ impl Default for Display {
         Display {
             smooth: false,
             wireframe: true,
-            kinds: false,
+            color: Coloring::Uniform,
             cage: false,
             corners: false,
             limit: false,
@@ -161,10 +181,12 @@ impl Display {
             } else {
                 Shading::Flat
             },
-            color_by: if self.kinds {
-                ColorBy::Kind
-            } else {
-                ColorBy::Uniform
+            color_by: match self.color {
+                Coloring::Uniform => ColorBy::Uniform,
+                Coloring::Kind => ColorBy::Kind,
+                Coloring::Curvature => ColorBy::Curvature,
+                // Resolved per level by `view_pipe::level_scene`.
+                Coloring::Scheme => ColorBy::Solid(prism_viewport::scene::BASE_COLOR),
             },
             wireframe: self.wireframe,
             ..SceneOptions::default()
@@ -263,7 +285,9 @@ impl PrismApp {
             match s {
                 Show::Smooth => display.smooth = true,
                 Show::Wireframe => display.wireframe = true,
-                Show::Kinds => display.kinds = true,
+                Show::Kinds => display.color = Coloring::Kind,
+                Show::Curvature => display.color = Coloring::Curvature,
+                Show::Schemes => display.color = Coloring::Scheme,
                 Show::Cage => display.cage = true,
                 Show::Corners => display.corners = true,
                 Show::Limit => display.limit = true,

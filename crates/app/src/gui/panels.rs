@@ -2,7 +2,7 @@
 //! the status bar.
 
 use super::scheme_editor::scheme_editor;
-use super::{PrismApp, SAMPLES_FILES, Tab, Tool};
+use super::{Coloring, PrismApp, SAMPLES_FILES, Tab, Tool};
 use glam::DVec3;
 use prism_geom::Scheme;
 
@@ -299,14 +299,44 @@ impl PrismApp {
         let d = &mut self.display;
         ui.checkbox(&mut d.smooth, "smooth shading (F)");
         ui.checkbox(&mut d.wireframe, "wireframe (W)");
-        ui.checkbox(&mut d.kinds, "colour by face kind (F / E / V)");
+        ui.horizontal(|ui| {
+            ui.label("colour:");
+            ui.radio_value(&mut d.color, Coloring::Uniform, "one");
+            ui.radio_value(&mut d.color, Coloring::Kind, "face kind (F / E / V)");
+            ui.radio_value(&mut d.color, Coloring::Curvature, "mean curvature");
+            ui.radio_value(&mut d.color, Coloring::Scheme, "scheme");
+        });
         ui.checkbox(&mut d.cage, "previous level as cage");
         ui.checkbox(&mut d.corners, "corner points and displacement vectors");
         ui.checkbox(
             &mut d.limit,
             "limit points and normals (Catmull–Clark, Loop)",
         );
-        if d.kinds {
+        if d.color == Coloring::Curvature {
+            let v = &self.views[self.active];
+            if let Some((lo, hi)) = v.scene.color_range {
+                ui.horizontal(|ui| {
+                    ui.label(format!("H {lo:.3}"));
+                    let (rect, _) =
+                        ui.allocate_exact_size(egui::vec2(120.0, 12.0), egui::Sense::hover());
+                    for k in 0..24 {
+                        let [r, g, b] = prism_viewport::scene::curvature_color(k as f64 / 23.0);
+                        let s = |x: f32| (255.0 * x.powf(1.0 / 2.2)) as u8;
+                        let w = rect.width() / 24.0;
+                        ui.painter().rect_filled(
+                            egui::Rect::from_min_size(
+                                rect.min + egui::vec2(k as f32 * w, 0.0),
+                                egui::vec2(w + 0.5, rect.height()),
+                            ),
+                            0.0,
+                            egui::Color32::from_rgb(s(r), s(g), s(b)),
+                        );
+                    }
+                    ui.label(format!("{hi:.3}"));
+                });
+            }
+        }
+        if d.color == Coloring::Kind {
             ui.horizontal(|ui| {
                 for (name, c) in ["FACE", "EDGE", "VERTEX"]
                     .iter()
@@ -320,7 +350,7 @@ impl PrismApp {
         if *d != before {
             let shading = d.smooth != before.smooth
                 || d.wireframe != before.wireframe
-                || d.kinds != before.kinds;
+                || d.color != before.color;
             if shading {
                 self.display_changed();
             } else {

@@ -243,3 +243,29 @@ fn bundled_samples_open_and_bad_files_say_why() {
     a.wait_idle();
     assert!(a.doc.mesh.num_faces() > 0);
 }
+
+#[test]
+fn remembered_settings_reopen_the_last_file_with_the_display_options() {
+    let path = std::env::temp_dir().join(format!("prism-last-{}.prism.json", std::process::id()));
+    let mut a = app();
+    a.change(|d| d.pipelines[0] = parse_pipeline("doo-sabin").unwrap());
+    a.save_to(&path).unwrap();
+    a.display.color = Coloring::Scheme;
+    a.display.smooth = true;
+    // What eframe stores is the settings struct (RON through serde).
+    let stored = serde_json::to_string(&a.settings()).unwrap();
+    let back: Settings = serde_json::from_str(&stored).unwrap();
+    let mut b = PrismApp::headless(Launch::default(), Some(back)).unwrap();
+    b.wait_idle();
+    assert_eq!(b.origin.path.as_deref(), Some(path.as_path()));
+    assert_eq!(b.doc.pipelines[0].len(), 1);
+    assert!(b.display.smooth && b.display.color == Coloring::Scheme);
+    // Colour by scheme paints the Doo–Sabin level in the scheme's colour.
+    b.rebuild_scenes();
+    let want = prism_viewport::scene::scheme_color(b.doc.pipelines[0].first());
+    assert!(b.views[0].scene.vertices.iter().all(|v| v.color == want));
+    // A file that is gone falls back to the bundled tripod.
+    std::fs::remove_file(&path).unwrap();
+    let c = PrismApp::headless(Launch::default(), Some(a.settings())).unwrap();
+    assert!(c.origin.name.contains("tripod"));
+}

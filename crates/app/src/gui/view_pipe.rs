@@ -6,24 +6,32 @@ use super::worker::{Finished, Job, over_budget};
 use prism_geom::ancestry::edge_origins;
 use prism_geom::biquadratic::FaceKind;
 use prism_geom::error::OverBudget;
-use prism_geom::{EdgeKey, Level, Pipeline, Scheme};
-use prism_viewport::{Scene, SceneOptions};
+use prism_geom::{EdgeKey, Pipeline, Scheme};
+use prism_viewport::scene::scheme_color;
+use prism_viewport::{ColorBy, Scene, SceneOptions};
 use std::collections::HashMap;
 use std::sync::Arc;
 
 /// Asks the window for a repaint (from a worker thread).
 pub type Waker = Arc<dyn Fn() + Send + Sync>;
 
-/// The scene of a level: its faces (holes left out), coloured by kind when asked.
-pub fn level_scene(lv: &Level, opts: &SceneOptions) -> Scene {
+/// The scene of level `k` of `p`: its faces (holes left out), coloured by kind, curvature
+/// or, for a solid colour, by the scheme of the step that made it.
+pub fn level_scene(p: &Pipeline, k: usize, opts: &SceneOptions) -> Scene {
+    let lv = &p.levels()[k];
     let kinds: Option<&[FaceKind]> = lv.provenance.as_ref().map(|p| p.face_kind.as_slice());
     let holes = &lv.tags.holes;
+    let mut opts = opts.clone();
+    if let ColorBy::Solid(_) = opts.color_by {
+        let made_by = k.checked_sub(1).and_then(|s| p.steps().get(s));
+        opts.color_by = ColorBy::Solid(scheme_color(made_by));
+    }
     Scene::build(
         &lv.mesh,
         &lv.edge_attrs,
         kinds,
         &|f| holes.contains(&(f as u32)),
-        opts,
+        &opts,
     )
 }
 
@@ -128,7 +136,7 @@ impl ViewPipe {
         let (want, opts) = (self.level, self.scene_opts.clone());
         let prepare = move |p: &Pipeline| {
             let k = want.min(p.levels().len() - 1);
-            let scene = level_scene(&p.levels()[k], &opts);
+            let scene = level_scene(p, k, &opts);
             Some((k, opts, scene))
         };
         self.job = Some(Job::spawn(p, prepare, move || w()));

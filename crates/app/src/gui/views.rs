@@ -343,8 +343,7 @@ impl PrismApp {
         for i in 0..self.views.len() {
             let v = &mut self.views[i];
             if v.scene_dirty {
-                let lv = &v.pipeline.levels()[v.shown()];
-                v.scene = Arc::new(level_scene(lv, &v.scene_opts));
+                v.scene = Arc::new(level_scene(&v.pipeline, v.shown(), &v.scene_opts));
                 v.scene_dirty = false;
                 v.overlay_dirty = true;
                 v.version += 1;

@@ -1,9 +1,11 @@
 //! Analysis that the app shows and the tests assert: counts, the fillet radius reached
-//! along an edge. Flipped and degenerate faces are found by each step
+//! along an edge, mean curvature per vertex. Flipped and degenerate faces are found by each step
 //! ([`crate::step::check_children`]).
 
 mod counts;
+mod curvature;
 mod fillet;
 
 pub use counts::{MeshCounts, counts};
+pub use curvature::mean_curvature;
 pub use fillet::{FilletError, FilletMeasure, measure_fillet};

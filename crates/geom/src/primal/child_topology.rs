@@ -19,7 +19,7 @@ pub(crate) fn child_topology(mesh: &PolyMesh, topo: &Topology, scheme: PrimalSch
     let nv = mesh.num_vertices();
     let ne = topo.num_edges();
     let (twin, corner_face, next, prev, vert_corner) = match scheme {
-        PrimalScheme::CatmullClark => {
+        PrimalScheme::CatmullClark | PrimalScheme::CatmullClarkCircle => {
             let n = 4 * nc;
             let mut twin = vec![NONE; n];
             for c in 0..nc {

@@ -59,6 +59,11 @@ pub fn limit_points_ordered(
     scheme: PrimalScheme,
     order: Option<&RingOrder>,
 ) -> Result<LimitPoints, PrimalError> {
+    if scheme.circle_creases() {
+        return Err(PrimalError::NoLimitMasks {
+            scheme: scheme.name(),
+        });
+    }
     let topo = Topology::build(mesh)?;
     topo.require_single_fans(mesh)?;
     super::check_faces(mesh, scheme)?;
@@ -93,7 +98,7 @@ pub fn limit_points_ordered(
         es.extend(ring_e.iter().map(|&(e, _)| sh.edge[e as usize]));
         let n_faces = ring_c.len();
         let rule = vertex_rule(sh.vert[v], sh.sharp_edges[v] as usize);
-        let cc = scheme == PrimalScheme::CatmullClark;
+        let cc = scheme.family() == PrimalScheme::CatmullClark;
         let (pos, t1, t2) = match rule {
             Rule::Smooth | Rule::Dart if cc && n_faces == 2 => corner(pv, &e_pts, 1.0),
             Rule::Smooth | Rule::Dart => {

@@ -47,6 +47,13 @@ use thiserror::Error;
 pub enum PrimalScheme {
     CatmullClark,
     Loop,
+    /// Catmull–Clark whose crease curves (chains of sharp edges, boundaries included) are
+    /// refined by seed 002's circle-preserving curve rule (method 1) instead of the cubic
+    /// B-spline rule: a crease vertex moves to `(1 − ω) v + ω/2 (a + b)` with
+    /// `ω = 1/(4 cos²(θ₀/4))`, θ₀ the turning angle of the crease at v (`ω = 1/4`, the
+    /// B-spline's `¾ v + ⅛ (a + b)`, on a straight crease). A crease that is a regular polygon
+    /// becomes a circle (docs/curves.md, "On surfaces").
+    CatmullClarkCircle,
 }
 
 impl PrimalScheme {
@@ -54,7 +61,21 @@ impl PrimalScheme {
         match self {
             PrimalScheme::CatmullClark => "catmull-clark",
             PrimalScheme::Loop => "loop",
+            PrimalScheme::CatmullClarkCircle => "catmull-clark-circle",
         }
+    }
+
+    /// The split pattern and smooth masks: Catmull–Clark for both of its variants.
+    pub fn family(self) -> PrimalScheme {
+        match self {
+            PrimalScheme::CatmullClarkCircle => PrimalScheme::CatmullClark,
+            s => s,
+        }
+    }
+
+    /// Whether crease vertices use the circle-preserving weight.
+    pub fn circle_creases(self) -> bool {
+        self == PrimalScheme::CatmullClarkCircle
     }
 }
 
@@ -68,6 +89,10 @@ pub enum PrimalError {
     NotTriangle { face: u32, corners: usize },
     #[error(transparent)]
     TooLarge(#[from] OverBudget),
+    #[error(
+        "{scheme} has no limit masks: its crease curves are not B-splines (refine more levels instead)"
+    )]
+    NoLimitMasks { scheme: &'static str },
 }
 
 /// What one primal step did.
@@ -134,7 +159,7 @@ impl RingOrder {
         let mut ring_start = Vec::new();
         let mut first_half_edge;
         match scheme {
-            PrimalScheme::CatmullClark => {
+            PrimalScheme::CatmullClark | PrimalScheme::CatmullClarkCircle => {
                 ring_start.reserve(nv + ne + mesh.num_faces());
                 ring_start.extend(
                     self.ring_start
@@ -357,6 +382,17 @@ fn fill<T: Send>(out: &mut [T], parallel: bool, f: impl Fn(usize) -> T + Sync + 
     }
 }
 
+/// Seed 002's method-1 weight `ω = 1/(4 cos²(θ₀/4))` for a crease turning from direction
+/// `d1` to `d2` (as [`crate::curve::circle_weight`], in space).
+fn circle_weight_3d(d1: DVec3, d2: DVec3) -> f64 {
+    let den = d1.length() * d2.length();
+    if den == 0.0 {
+        return 0.25;
+    }
+    let c = (d1.dot(d2) / den).clamp(-1.0, 1.0);
+    1.0 / (2.0 + 2.0 * ((1.0 + c) * 0.5).sqrt())
+}
+
 /// The point of a crease or corner vertex, blended with its child's rule where a
 /// semi-sharp feature runs out.
 #[allow(clippy::too_many_arguments)]
@@ -368,6 +404,7 @@ fn sharp_vertex_point(
     v: usize,
     ring_start: u32,
     p_rule: Rule,
+    circle: bool,
     smooth_point: &dyn Fn(usize) -> DVec3,
 ) -> DVec3 {
     let p = &mesh.positions;
@@ -379,7 +416,13 @@ fn sharp_vertex_point(
             Rule::Smooth | Rule::Dart => smooth_point(v),
             Rule::Crease => {
                 let [i, j] = crease::crease_ends(sharp);
-                0.75 * p[v] + 0.125 * (p[ring_e[i].1 as usize] + p[ring_e[j].1 as usize])
+                let (a, b) = (p[ring_e[i].1 as usize], p[ring_e[j].1 as usize]);
+                let w = if circle {
+                    circle_weight_3d(p[v] - a, b - p[v])
+                } else {
+                    0.25
+                };
+                (1.0 - w) * p[v] + 0.5 * w * (a + b)
             }
             Rule::Corner => p[v],
         }
@@ -410,7 +453,7 @@ pub fn estimated_bytes(mesh: &PolyMesh, edges: usize, scheme: PrimalScheme) -> (
         mesh.num_corners() as u64,
     );
     let (verts, faces, corners) = match scheme {
-        PrimalScheme::CatmullClark => (v + e + f, c, 4 * c),
+        PrimalScheme::CatmullClark | PrimalScheme::CatmullClarkCircle => (v + e + f, c, 4 * c),
         PrimalScheme::Loop => (v + e, 4 * f, 12 * f),
     };
     (verts * 24 + corners * 4 + faces * 8, faces)
@@ -546,7 +589,7 @@ fn refine(
     let nf = mesh.num_faces();
     let p = &mesh.positions;
     let cv = &mesh.corner_verts;
-    let cc = scheme == PrimalScheme::CatmullClark;
+    let cc = scheme.family() == PrimalScheme::CatmullClark;
     let n_child_verts = nv + ne + if cc { nf } else { 0 };
     let mut out = vec![DVec3::ZERO; n_child_verts];
     let parallel = nf >= PARALLEL_FACES && rayon::current_num_threads() > 1;
@@ -661,6 +704,7 @@ fn refine(
             v,
             ring_start(v),
             p_rule,
+            scheme.circle_creases(),
             &smooth_point,
         )
     });
@@ -739,7 +783,9 @@ fn refine(
     let report = PrimalReport {
         vertices: child.num_vertices(),
         edges: match scheme {
-            PrimalScheme::CatmullClark => 2 * ne + mesh.num_corners(),
+            PrimalScheme::CatmullClark | PrimalScheme::CatmullClarkCircle => {
+                2 * ne + mesh.num_corners()
+            }
             PrimalScheme::Loop => 2 * ne + 3 * nf,
         },
         faces: child.num_faces(),
