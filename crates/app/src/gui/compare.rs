@@ -44,7 +44,8 @@ impl PrismApp {
                     Some(e) => vec![e],
                     None => super::pick::mesh_edges(control),
                 };
-                let found = candidates.iter().find_map(|e| {
+                // Each try slices the refined mesh: a few edges, not all of a big model.
+                let found = candidates.iter().take(16).find_map(|e| {
                     let r = self
                         .doc
                         .edge_attrs

@@ -399,15 +399,12 @@ impl PrismApp {
                 )
             };
             if i >= self.views.len() {
-                let mut v = ViewPipe::new(Pipeline::with_tags(
-                    self.doc.mesh.clone(),
-                    self.doc.edge_attrs.clone(),
-                    self.doc.tags.clone(),
-                    Vec::new(),
-                ));
+                // The input alone on screen until the job brings the levels.
+                let next = fresh();
+                let mut v = ViewPipe::new(next.rebased(Vec::new()));
                 v.level = steps.len();
                 v.scene_opts = self.display.scene_options();
-                v.submit(fresh(), budget, live, &self.waker);
+                v.submit(next, budget, live, &self.waker);
                 self.views.push(v);
                 continue;
             }

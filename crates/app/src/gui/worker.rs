@@ -53,7 +53,7 @@ impl Job {
         let cancel = Arc::new(AtomicBool::new(false));
         let flag = cancel.clone();
         let first = pipeline.levels().len();
-        let total = pipeline.steps().len() + 1 - first.min(pipeline.steps().len() + 1);
+        let total = (pipeline.steps().len() + 1).saturating_sub(first);
         std::thread::spawn(move || {
             let mut error = None;
             for k in first..=pipeline.steps().len() {

@@ -13,16 +13,14 @@
 //! values whose width is one ring — the map is read away from creases.
 
 use crate::error::MeshError;
-use crate::geometry::{face_normal_raw, signed_bend_angles, unit_or_zero};
+use crate::geometry::{face_normals_raw, signed_bend_angles, unit_or_zero};
 use crate::mesh::PolyMesh;
 use crate::topology::Topology;
 
 /// Mean curvature `H = (κ₁ + κ₂)/2` at every vertex (0 at unused vertices).
 pub fn mean_curvature(mesh: &PolyMesh) -> Result<Vec<f64>, MeshError> {
     let topo = Topology::build(mesh)?;
-    let raw: Vec<_> = (0..mesh.num_faces())
-        .map(|f| face_normal_raw(mesh, f))
-        .collect();
+    let raw = face_normals_raw(mesh);
     let normals: Vec<_> = raw.iter().map(|&n| unit_or_zero(n)).collect();
     let bends = signed_bend_angles(mesh, &topo, &normals);
     let nv = mesh.num_vertices();
