@@ -39,7 +39,8 @@ pub enum ColorBy {
     Solid([f32; 3]),
 }
 
-/// The colour of the faces a scheme made (Tableau-like palette, linear), by the scheme's
+/// The colour of the faces a scheme made (Tableau-like palette, given like the other
+/// material colours), by the scheme's
 /// place in the list of names; the input level (no scheme) gets the material colour.
 pub fn scheme_color(s: Option<&prism_geom::Scheme>) -> [f32; 3] {
     const PALETTE: [[f32; 3]; 10] = [
@@ -50,19 +51,20 @@ pub fn scheme_color(s: Option<&prism_geom::Scheme>) -> [f32; 3] {
         [0.58, 0.40, 0.74],
         [0.55, 0.34, 0.29],
         [0.89, 0.47, 0.76],
-        [0.50, 0.50, 0.50],
-        [0.74, 0.74, 0.13],
         [0.09, 0.75, 0.81],
+        [0.74, 0.74, 0.13],
+        [0.60, 0.60, 0.60],
     ];
     let Some(s) = s else { return BASE_COLOR };
     let names = prism_geom::scheme::BIQUADRATIC_NAMES
         .iter()
         .chain(prism_geom::scheme::PRIMAL_NAMES.iter());
     let k = names.take_while(|n| **n != s.name()).count();
-    PALETTE[k % PALETTE.len()].map(|x| x.powf(2.2))
+    PALETTE[k % PALETTE.len()]
 }
 
-/// The curvature colour scale: viridis at five stops (sRGB), interpolated, made linear.
+/// The curvature colour scale: viridis at five stops, interpolated (given like the other
+/// material colours).
 pub fn curvature_color(t: f64) -> [f32; 3] {
     const STOPS: [[f64; 3]; 5] = [
         [0.267, 0.005, 0.329],
@@ -78,10 +80,7 @@ pub fn curvature_color(t: f64) -> [f32; 3] {
     } * 4.0;
     let i = (x.floor() as usize).min(3);
     let f = x - i as f64;
-    std::array::from_fn(|k| {
-        let s = STOPS[i][k] * (1.0 - f) + STOPS[i + 1][k] * f;
-        s.powf(2.2) as f32
-    })
+    std::array::from_fn(|k| (STOPS[i][k] * (1.0 - f) + STOPS[i + 1][k] * f) as f32)
 }
 
 /// The colours of the FACE-, EDGE- and VERTEX-faces (also the legend's).

@@ -321,7 +321,7 @@ impl PrismApp {
                         ui.allocate_exact_size(egui::vec2(120.0, 12.0), egui::Sense::hover());
                     for k in 0..24 {
                         let [r, g, b] = prism_viewport::scene::curvature_color(k as f64 / 23.0);
-                        let s = |x: f32| (255.0 * x.powf(1.0 / 2.2)) as u8;
+                        let s = |x: f32| (255.0 * x) as u8;
                         let w = rect.width() / 24.0;
                         ui.painter().rect_filled(
                             egui::Rect::from_min_size(
