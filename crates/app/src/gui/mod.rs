@@ -901,6 +901,19 @@ fn sample(k: usize) -> Result<(DocState, Origin), String> {
 
 impl eframe::App for PrismApp {
     fn ui(&mut self, ui: &mut egui::Ui, _frame: &mut eframe::Frame) {
+        self.frame_ui(ui);
+    }
+
+    fn save(&mut self, storage: &mut dyn eframe::Storage) {
+        if self.screenshot.is_none() {
+            eframe::set_value(storage, SETTINGS_KEY, &self.settings());
+        }
+    }
+}
+
+impl PrismApp {
+    /// One frame of the whole window (eframe calls it; the UI tests drive it directly).
+    pub fn frame_ui(&mut self, ui: &mut egui::Ui) {
         let ctx = ui.ctx().clone();
         if self.poll_jobs() {
             ctx.request_repaint();
@@ -938,12 +951,6 @@ impl eframe::App for PrismApp {
             }
         }
         self.screenshot(&ctx);
-    }
-
-    fn save(&mut self, storage: &mut dyn eframe::Storage) {
-        if self.screenshot.is_none() {
-            eframe::set_value(storage, SETTINGS_KEY, &self.settings());
-        }
     }
 }
 

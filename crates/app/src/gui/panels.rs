@@ -102,7 +102,8 @@ impl PrismApp {
         for (k, s) in steps.iter().enumerate() {
             ui.horizontal(|ui| {
                 ui.label(format!("{}.", k + 1));
-                if let Some(new) = scheme_editor(ui, ("step", a, k), s) {
+                let name = format!("scheme of step {}", k + 1);
+                if let Some(new) = scheme_editor(ui, ("step", a, k), &name, s) {
                     edit = Some(Box::new(move |p| p[k] = new));
                 }
                 if ui
@@ -136,7 +137,7 @@ impl PrismApp {
             self.change(|d| f(&mut d.pipelines[a]));
         }
         ui.label("Next step:");
-        if let Some(n) = scheme_editor(ui, "next", &self.next) {
+        if let Some(n) = scheme_editor(ui, "next", "scheme of the next step", &self.next) {
             self.next = n;
         }
         ui.horizontal(|ui| {

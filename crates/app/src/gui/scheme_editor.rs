@@ -42,23 +42,27 @@ pub fn with_param(s: &Scheme, x: f64) -> Scheme {
 }
 
 /// A scheme picker with its parameter; returns the new scheme when the user changed it.
+/// `name` is what screen readers (and the UI tests) call the picker.
 pub fn scheme_editor(
     ui: &mut egui::Ui,
     id: impl std::hash::Hash + std::fmt::Debug,
+    name: &str,
     s: &Scheme,
 ) -> Option<Scheme> {
     let mut out = None;
     ui.horizontal(|ui| {
-        egui::ComboBox::from_id_salt(id)
+        let combo = egui::ComboBox::from_id_salt(id)
             .selected_text(s.name())
             .show_ui(ui, |ui| {
-                for name in BIQUADRATIC_NAMES.iter().chain(PRIMAL_NAMES.iter()) {
-                    if ui.selectable_label(s.name() == *name, *name).clicked() && s.name() != *name
-                    {
-                        out = Some(default_param(name));
+                for n in BIQUADRATIC_NAMES.iter().chain(PRIMAL_NAMES.iter()) {
+                    if ui.selectable_label(s.name() == *n, *n).clicked() && s.name() != *n {
+                        out = Some(default_param(n));
                     }
                 }
             });
+        combo
+            .response
+            .widget_info(|| egui::WidgetInfo::labeled(egui::Role::ComboBox, true, name));
         if let Some((label, value)) = param(s) {
             let mut x = value;
             // α lives in (0, 1/2); lengths are in model units, so their slider is

@@ -269,3 +269,66 @@ fn remembered_settings_reopen_the_last_file_with_the_display_options() {
     let c = PrismApp::headless(Launch::default(), Some(a.settings())).unwrap();
     assert!(c.origin.name.contains("tripod"));
 }
+
+/// The real panels, driven through egui_kittest: buttons, checkboxes, radio buttons, keys
+/// and the menu bar reach the document as a user's clicks would.
+#[test]
+fn the_panels_buttons_and_keys_drive_the_document() {
+    use egui_kittest::Harness;
+    use egui_kittest::kittest::Queryable;
+    let mut h = Harness::builder()
+        .with_size(egui::vec2(1280.0, 800.0))
+        .build_ui_state(|ui, app: &mut PrismApp| app.frame_ui(ui), app());
+    let settle = |h: &mut Harness<'_, PrismApp>| {
+        for _ in 0..3 {
+            h.step();
+            h.state_mut().wait_idle();
+        }
+    };
+    settle(&mut h);
+    h.get_by_label("Step >> (S)").click();
+    settle(&mut h);
+    assert_eq!(h.state().doc.pipelines[0].len(), 1);
+    h.key_press(egui::Key::S);
+    settle(&mut h);
+    assert_eq!(h.state().doc.pipelines[0].len(), 2);
+    assert_eq!(h.state().views[0].pipeline.levels().len(), 3);
+    h.get_by_label("<< Back (B)").click();
+    settle(&mut h);
+    assert_eq!(h.state().doc.pipelines[0].len(), 1);
+
+    h.get_by_label("smooth shading (F)").click();
+    settle(&mut h);
+    assert!(h.state().display.smooth);
+    h.key_press(egui::Key::F);
+    settle(&mut h);
+    assert!(!h.state().display.smooth);
+
+    h.get_by_label("2 views").click();
+    settle(&mut h);
+    assert_eq!(h.state().views.len(), 2);
+    // Ctrl+Z undoes the split, then the Back.
+    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::Z);
+    settle(&mut h);
+    assert_eq!(h.state().views.len(), 1);
+    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::Z);
+    settle(&mut h);
+    assert_eq!(h.state().doc.pipelines[0].len(), 2);
+
+    h.get_by_label("Edges").click();
+    settle(&mut h);
+    assert_eq!(h.state().tool, Tool::Edges);
+    h.get_by_label("Select edges sharper than").click();
+    settle(&mut h);
+    assert!(!h.state().sel_edges.is_empty());
+    h.get_by_label("Crease").click();
+    settle(&mut h);
+    assert!(h.state().doc.edge_attrs.values().all(|a| a.crease == 10.0));
+
+    h.get_by_label("Curves").click();
+    settle(&mut h);
+    assert_eq!(h.state().tab, Tab::Curves);
+    h.get_by_label("hexagon").click();
+    settle(&mut h);
+    assert_eq!(h.state().curves.control.points.len(), 6);
+}
