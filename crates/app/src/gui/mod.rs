@@ -455,7 +455,7 @@ impl PrismApp {
     }
 
     pub fn busy(&self) -> bool {
-        self.views.iter().any(|v| v.busy())
+        self.views.iter().any(|v| v.busy() || v.preparing())
     }
 
     pub fn undo(&mut self) {

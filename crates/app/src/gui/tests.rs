@@ -332,3 +332,49 @@ fn the_panels_buttons_and_keys_drive_the_document() {
     settle(&mut h);
     assert_eq!(h.state().curves.control.points.len(), 6);
 }
+
+#[test]
+fn a_big_level_gets_its_scene_on_a_thread_and_the_old_one_stays_meanwhile() {
+    let path = std::env::temp_dir().join(format!("prism-big-{}.prism.json", std::process::id()));
+    let doc = prism_geom::io::Document {
+        mesh: prism_geom::primitives::torus(320, 320, 3.0, 1.0),
+        edge_attrs: Default::default(),
+        tags: Default::default(),
+        pipeline: None,
+    };
+    prism_geom::io::save(&path, &doc).unwrap();
+    let mut a = PrismApp::headless(
+        Launch {
+            file: Some(path.clone()),
+            ..Launch::default()
+        },
+        None,
+    )
+    .unwrap();
+    a.wait_idle();
+    // The first scene comes from a thread; the window keeps drawing the empty one.
+    a.rebuild_scenes();
+    assert!(a.views[0].preparing());
+    assert_eq!(a.views[0].scene.triangles(), 0);
+    while a.views[0].preparing() {
+        std::thread::sleep(std::time::Duration::from_millis(5));
+        a.rebuild_scenes();
+    }
+    assert_eq!(a.views[0].scene.triangles(), 2 * 320 * 320);
+    // A display change prepares again; the flat scene stays until the smooth one is there.
+    let before = a.views[0].version;
+    a.display.smooth = true;
+    a.display_changed();
+    a.rebuild_scenes();
+    assert!(a.views[0].preparing());
+    while a.views[0].preparing() {
+        std::thread::sleep(std::time::Duration::from_millis(5));
+        a.rebuild_scenes();
+    }
+    assert!(a.views[0].version > before);
+    assert_eq!(
+        a.views[0].scene_opts.shading,
+        prism_viewport::Shading::Smooth
+    );
+    std::fs::remove_file(&path).ok();
+}

@@ -6,25 +6,34 @@ use super::worker::{Finished, Job, over_budget};
 use prism_geom::ancestry::edge_origins;
 use prism_geom::biquadratic::FaceKind;
 use prism_geom::error::OverBudget;
-use prism_geom::{EdgeKey, Pipeline, Scheme};
+use prism_geom::{EdgeKey, Level, Pipeline, Scheme};
 use prism_viewport::scene::scheme_color;
 use prism_viewport::{ColorBy, Scene, SceneOptions};
 use std::collections::HashMap;
 use std::sync::Arc;
+use std::sync::mpsc::{Receiver, TryRecvError};
 
 /// Asks the window for a repaint (from a worker thread).
 pub type Waker = Arc<dyn Fn() + Send + Sync>;
 
-/// The scene of level `k` of `p`: its faces (holes left out), coloured by kind, curvature
-/// or, for a solid colour, by the scheme of the step that made it.
-pub fn level_scene(p: &Pipeline, k: usize, opts: &SceneOptions) -> Scene {
-    let lv = &p.levels()[k];
+/// Levels with more corners than this get their scene prepared on a thread; smaller ones
+/// right away (100 000 triangles: about 30 ms flat, 50 ms smooth, scaled from the
+/// 1M-triangle benchmark in docs/performance.md).
+const ASYNC_SCENE_CORNERS: usize = 200_000;
+
+/// The step that made level `k` of `p` (none for the input).
+fn made_by(p: &Pipeline, k: usize) -> Option<Scheme> {
+    k.checked_sub(1).and_then(|s| p.steps().get(s)).copied()
+}
+
+/// The scene of a level: its faces (holes left out), coloured by kind, curvature or, for a
+/// solid colour, by the scheme of the step that made it (`made_by`).
+pub fn level_scene(lv: &Level, made_by: Option<Scheme>, opts: &SceneOptions) -> Scene {
     let kinds: Option<&[FaceKind]> = lv.provenance.as_ref().map(|p| p.face_kind.as_slice());
     let holes = &lv.tags.holes;
     let mut opts = opts.clone();
     if let ColorBy::Solid(_) = opts.color_by {
-        let made_by = k.checked_sub(1).and_then(|s| p.steps().get(s));
-        opts.color_by = ColorBy::Solid(scheme_color(made_by));
+        opts.color_by = ColorBy::Solid(scheme_color(made_by.as_ref()));
     }
     Scene::build(
         &lv.mesh,
@@ -34,6 +43,9 @@ pub fn level_scene(p: &Pipeline, k: usize, opts: &SceneOptions) -> Scene {
         &opts,
     )
 }
+
+/// What a scene was made from: (generation, level, display options).
+type SceneKey = (u64, usize, SceneOptions);
 
 /// A level of a given result: (generation, level).
 type LevelKey = (u64, usize);
@@ -68,6 +80,8 @@ pub struct ViewPipe {
     pub scene_dirty: bool,
     /// The display options scenes are built with (the worker prepares the next one).
     pub scene_opts: SceneOptions,
+    /// A scene being prepared on a thread, and the (generation, level, options) it is for.
+    scene_job: Option<(SceneKey, Receiver<Scene>)>,
     pub overlay_dirty: bool,
     edges: Option<(LevelKey, Arc<Vec<EdgeKey>>)>,
     origins: Option<(LevelKey, Arc<Origins>)>,
@@ -91,6 +105,7 @@ impl ViewPipe {
             version: 0,
             scene_dirty: true,
             scene_opts: SceneOptions::default(),
+            scene_job: None,
             overlay_dirty: true,
             edges: None,
             origins: None,
@@ -136,7 +151,7 @@ impl ViewPipe {
         let (want, opts) = (self.level, self.scene_opts.clone());
         let prepare = move |p: &Pipeline| {
             let k = want.min(p.levels().len() - 1);
-            let scene = level_scene(p, k, &opts);
+            let scene = level_scene(&p.levels()[k], made_by(p, k), &opts);
             Some((k, opts, scene))
         };
         self.job = Some(Job::spawn(p, prepare, move || w()));
@@ -179,15 +194,70 @@ impl ViewPipe {
                 && p.0 == self.shown()
                 && p.1 == self.scene_opts
             {
-                self.scene = Arc::new(p.2);
-                self.scene_dirty = false;
-                self.version += 1;
+                self.install_scene(p.2);
             }
         }
         if let Some(next) = self.wanted.take() {
             self.spawn(next, wake);
         }
         out
+    }
+
+    /// Brings the scene up to date with the shown level and the display options: small
+    /// levels at once, big ones on a thread (the old scene stays on screen meanwhile).
+    /// Returns whether the scene changed.
+    pub fn refresh_scene(&mut self, wake: &Waker) -> bool {
+        let key: SceneKey = (self.generation, self.shown(), self.scene_opts.clone());
+        let mut changed = false;
+        if let Some((k, rx)) = &self.scene_job {
+            match rx.try_recv() {
+                Ok(scene) => {
+                    if *k == key {
+                        self.install_scene(scene);
+                        changed = true;
+                    } else {
+                        self.scene_dirty = true;
+                    }
+                    self.scene_job = None;
+                }
+                Err(TryRecvError::Empty) => {}
+                Err(TryRecvError::Disconnected) => {
+                    self.scene_job = None;
+                    self.scene_dirty = true;
+                }
+            }
+        }
+        if !self.scene_dirty || self.scene_job.as_ref().is_some_and(|(k, _)| *k == key) {
+            return changed;
+        }
+        let lv = &self.pipeline.levels()[key.1];
+        let by = made_by(&self.pipeline, key.1);
+        if lv.mesh.num_corners() < ASYNC_SCENE_CORNERS {
+            let scene = level_scene(lv, by, &key.2);
+            self.install_scene(scene);
+            return true;
+        }
+        let (tx, rx) = std::sync::mpsc::channel();
+        let (lv, opts, w) = (lv.clone(), key.2.clone(), wake.clone());
+        std::thread::spawn(move || {
+            let _ = tx.send(level_scene(&lv, by, &opts));
+            w();
+        });
+        self.scene_job = Some((key, rx));
+        self.scene_dirty = false;
+        changed
+    }
+
+    /// Whether a scene is being prepared.
+    pub fn preparing(&self) -> bool {
+        self.scene_job.is_some()
+    }
+
+    fn install_scene(&mut self, scene: Scene) {
+        self.scene = Arc::new(scene);
+        self.scene_dirty = false;
+        self.overlay_dirty = true;
+        self.version += 1;
     }
 
     /// Cancels the running job and forgets the queued one.

@@ -3,7 +3,6 @@
 //! of each view's shown level.
 
 use super::pick::{self, Projector};
-use super::view_pipe::level_scene;
 use super::{MoveDrag, PrismApp, Tool, viewport};
 use glam::{DVec3, Vec3};
 use prism_geom::{EdgeKey, Scheme};
@@ -341,13 +340,7 @@ impl PrismApp {
     /// Rebuilds the scenes and overlays that changed.
     pub(super) fn rebuild_scenes(&mut self) {
         for i in 0..self.views.len() {
-            let v = &mut self.views[i];
-            if v.scene_dirty {
-                v.scene = Arc::new(level_scene(&v.pipeline, v.shown(), &v.scene_opts));
-                v.scene_dirty = false;
-                v.overlay_dirty = true;
-                v.version += 1;
-            }
+            self.views[i].refresh_scene(&self.waker);
             if self.views[i].overlay_dirty {
                 let overlay = self.build_overlay(i);
                 let v = &mut self.views[i];
