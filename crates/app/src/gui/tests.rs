@@ -14,6 +14,20 @@ fn app() -> PrismApp {
     a
 }
 
+/// The app started on a file, its levels computed.
+fn opened(path: &std::path::Path) -> PrismApp {
+    let mut a = PrismApp::headless(
+        Launch {
+            file: Some(path.to_path_buf()),
+            ..Launch::default()
+        },
+        None,
+    )
+    .unwrap();
+    a.wait_idle();
+    a
+}
+
 fn rect() -> egui::Rect {
     egui::Rect::from_min_size(egui::pos2(300.0, 30.0), egui::vec2(900.0, 700.0))
 }
@@ -126,15 +140,7 @@ fn the_new_user_walk_through() {
     // Save and reopen.
     let path = std::env::temp_dir().join(format!("prism-walk-{}.prism.json", std::process::id()));
     a.save_to(&path).unwrap();
-    let mut b = PrismApp::headless(
-        Launch {
-            file: Some(path.clone()),
-            ..Launch::default()
-        },
-        None,
-    )
-    .unwrap();
-    b.wait_idle();
+    let mut b = opened(&path);
     assert_eq!(b.doc.pipelines[0], a.doc.pipelines[0]);
     assert_eq!(b.doc.edge_attrs, a.doc.edge_attrs);
     assert!(b.views[0].pipeline.levels()[5].mesh == a.views[0].pipeline.levels()[5].mesh);
@@ -343,15 +349,7 @@ fn a_big_level_gets_its_scene_on_a_thread_and_the_old_one_stays_meanwhile() {
         pipeline: None,
     };
     prism_geom::io::save(&path, &doc).unwrap();
-    let mut a = PrismApp::headless(
-        Launch {
-            file: Some(path.clone()),
-            ..Launch::default()
-        },
-        None,
-    )
-    .unwrap();
-    a.wait_idle();
+    let mut a = opened(&path);
     // The first scene comes from a thread; the window keeps drawing the empty one.
     a.rebuild_scenes();
     assert!(a.views[0].preparing());
