@@ -877,19 +877,7 @@ impl PrismApp {
 /// A bundled sample as a document.
 fn sample(k: usize) -> Result<(DocState, Origin), String> {
     let (name, file, text) = SAMPLES_FILES[k];
-    let path = Path::new(file);
-    let doc = match io::FileKind::of(path).map_err(|e| e.to_string())? {
-        io::FileKind::Obj => {
-            let m = io::read_obj_str(path, text).map_err(|e| e.to_string())?;
-            io::Document {
-                mesh: m.mesh,
-                edge_attrs: m.edge_attrs,
-                tags: m.tags,
-                pipeline: None,
-            }
-        }
-        io::FileKind::Document => io::document_from_str(path, text).map_err(|e| e.to_string())?,
-    };
+    let (doc, _) = io::load_str(Path::new(file), text).map_err(|e| e.to_string())?;
     Ok((
         DocState::from_document(doc),
         Origin {

@@ -72,11 +72,23 @@ impl FileKind {
     }
 }
 
-/// Loads an OBJ or a `.prism.json` as a document (an OBJ gives no pipeline).
+/// Loads an OBJ or a `.prism.json` as a document (an OBJ gives no pipeline); also returns
+/// the OBJ line of every face, for messages.
 pub fn load(path: &Path) -> Result<(Document, Option<Vec<usize>>), IoError> {
+    FileKind::of(path)?;
+    let text = std::fs::read_to_string(path).map_err(|source| IoError::Read {
+        path: path.into(),
+        source,
+    })?;
+    load_str(path, &text)
+}
+
+/// As [`load`], for text already in memory (the app's bundled samples); the kind comes
+/// from `path`'s name, which messages quote.
+pub fn load_str(path: &Path, text: &str) -> Result<(Document, Option<Vec<usize>>), IoError> {
     match FileKind::of(path)? {
         FileKind::Obj => {
-            let m = read_obj(path)?;
+            let m = read_obj_str(path, text)?;
             Ok((
                 Document {
                     mesh: m.mesh,
@@ -87,7 +99,7 @@ pub fn load(path: &Path) -> Result<(Document, Option<Vec<usize>>), IoError> {
                 Some(m.face_lines),
             ))
         }
-        FileKind::Document => Ok((read_document(path)?, None)),
+        FileKind::Document => Ok((document_from_str(path, text)?, None)),
     }
 }
 
