@@ -505,47 +505,41 @@ impl PrismApp {
 
     /// Gives the selected control edges a crease sharpness (0 removes it).
     pub fn mark_crease(&mut self, sharpness: f64) {
-        let sel: Vec<EdgeKey> = self.sel_edges.iter().copied().collect();
-        if sel.is_empty() {
-            self.note =
-                Some("select edges first (Edges tool: click, shift-click or drag a box)".into());
-            return;
+        if let Some(n) = self.mark_selected(|a| a.crease = sharpness) {
+            self.note = Some(format!("{n} edge(s) creased with sharpness {sharpness}"));
         }
-        self.change(|d| {
-            for e in &sel {
-                let a = d.edge_attrs.entry(*e).or_default();
-                a.crease = sharpness;
-            }
-            d.edge_attrs
-                .retain(|_, a| a.crease != 0.0 || a.radius.is_some());
-        });
-        self.note = Some(format!(
-            "{} edge(s) creased with sharpness {sharpness}",
-            sel.len()
-        ));
     }
 
     /// Gives the selected control edges their own fillet radius (None: the step's).
     pub fn mark_radius(&mut self, radius: Option<f64>) {
-        let sel: Vec<EdgeKey> = self.sel_edges.iter().copied().collect();
-        if sel.is_empty() {
-            self.note =
-                Some("select edges first (Edges tool: click, shift-click or drag a box)".into());
-            return;
-        }
-        if let Some(r) = radius
+        if !self.sel_edges.is_empty()
+            && let Some(r) = radius
             && !(r.is_finite() && r > 0.0)
         {
             self.note = Some(format!("a radius must be positive, not {r}"));
             return;
         }
+        self.mark_selected(|a| a.radius = radius);
+    }
+
+    /// Applies `set` to the attributes of every selected control edge (one undo step) and
+    /// drops attributes left empty; returns how many edges, or None (with a note) when none
+    /// is selected.
+    fn mark_selected(&mut self, set: impl Fn(&mut prism_geom::EdgeAttr)) -> Option<usize> {
+        if self.sel_edges.is_empty() {
+            self.note =
+                Some("select edges first (Edges tool: click, shift-click or drag a box)".into());
+            return None;
+        }
+        let sel = self.sel_edges.clone();
         self.change(|d| {
             for e in &sel {
-                d.edge_attrs.entry(*e).or_default().radius = radius;
+                set(d.edge_attrs.entry(*e).or_default());
             }
             d.edge_attrs
                 .retain(|_, a| a.crease != 0.0 || a.radius.is_some());
         });
+        Some(sel.len())
     }
 
     /// Selects every control edge whose faces meet at more than `deg` degrees.
