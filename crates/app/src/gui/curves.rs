@@ -23,6 +23,22 @@ fn scheme_label(s: CurveScheme) -> &'static str {
     }
 }
 
+/// The smallest box around some points.
+fn bounds(p: &[DVec2]) -> (DVec2, DVec2) {
+    let lo = p.iter().copied().reduce(DVec2::min).unwrap_or_default();
+    let hi = p.iter().copied().reduce(DVec2::max).unwrap_or_default();
+    (lo, hi)
+}
+
+/// An open or closed line through screen points (nothing for fewer than two).
+fn polyline(p: Vec<Pos2>, closed: bool, stroke: Stroke) -> egui::Shape {
+    match (p.len() < 2, closed) {
+        (true, _) => egui::Shape::Noop,
+        (false, true) => egui::Shape::closed_line(p, stroke),
+        (false, false) => egui::Shape::line(p, stroke),
+    }
+}
+
 /// Which preset the preset row builds.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Preset {
@@ -111,6 +127,10 @@ impl CurvesTab {
         rect.center() + Vec2::new(d.x as f32, -d.y as f32)
     }
 
+    fn screen(&self, rect: egui::Rect, p: &[DVec2]) -> Vec<Pos2> {
+        p.iter().map(|q| self.to_screen(rect, *q)).collect()
+    }
+
     fn to_world(&self, rect: egui::Rect, s: Pos2) -> DVec2 {
         let d = s - rect.center();
         self.center + DVec2::new(d.x as f64, -d.y as f64) / self.zoom
@@ -121,8 +141,7 @@ impl CurvesTab {
         if pts.is_empty() {
             return;
         }
-        let lo = pts.iter().copied().reduce(DVec2::min).unwrap_or_default();
-        let hi = pts.iter().copied().reduce(DVec2::max).unwrap_or_default();
+        let (lo, hi) = bounds(pts);
         self.center = 0.5 * (lo + hi);
         let size = (hi - lo).max(DVec2::splat(1e-6));
         self.zoom = 0.8 * (rect.width() as f64 / size.x).min(rect.height() as f64 / size.y);
@@ -280,39 +299,19 @@ impl CurvesTab {
     ) {
         let painter = ui.painter_at(rect);
         painter.rect_filled(rect, 0.0, Color32::from_gray(22));
-        let pts: Vec<Pos2> = self
-            .control
-            .points
-            .iter()
-            .map(|p| self.to_screen(rect, *p))
-            .collect();
-        let line = |p: &[Pos2], closed: bool, stroke: Stroke| {
-            if p.len() < 2 {
-                return;
-            }
-            if closed {
-                painter.add(egui::Shape::closed_line(p.to_vec(), stroke));
-            } else {
-                painter.add(egui::Shape::line(p.to_vec(), stroke));
-            }
-        };
-        line(
-            &pts,
+        let pts = self.screen(rect, &self.control.points);
+        painter.add(polyline(
+            pts.clone(),
             self.control.closed,
             Stroke::new(1.0, Color32::from_gray(110)),
-        );
+        ));
         for (k, (s, r)) in results.iter().enumerate() {
             let Ok(r) = r else { continue };
             let main = *s == self.scheme;
             if !main && !self.others {
                 continue;
             }
-            let sp: Vec<Pos2> = r
-                .curve
-                .points
-                .iter()
-                .map(|p| self.to_screen(rect, *p))
-                .collect();
+            let sp = self.screen(rect, &r.curve.points);
             let c = SCHEME_COLORS[k];
             if main {
                 if self.comb {
@@ -326,9 +325,13 @@ impl CurvesTab {
                         }
                     }
                 }
-                line(&sp, r.curve.closed, Stroke::new(2.0, c));
+                painter.add(polyline(sp, r.curve.closed, Stroke::new(2.0, c)));
             } else {
-                line(&sp, r.curve.closed, Stroke::new(1.0, c.gamma_multiply(0.5)));
+                painter.add(polyline(
+                    sp,
+                    r.curve.closed,
+                    Stroke::new(1.0, c.gamma_multiply(0.5)),
+                ));
             }
         }
         for (i, p) in pts.iter().enumerate() {
@@ -358,8 +361,7 @@ impl CurvesTab {
             return;
         }
         let size = {
-            let lo = p.iter().copied().reduce(DVec2::min).unwrap_or_default();
-            let hi = p.iter().copied().reduce(DVec2::max).unwrap_or_default();
+            let (lo, hi) = bounds(p);
             (hi - lo).length()
         };
         let mut tips = Vec::with_capacity(n);
@@ -376,11 +378,7 @@ impl CurvesTab {
             painter.line_segment([s0, s1], Stroke::new(1.0, color));
             tips.push(s1);
         }
-        if r.curve.closed {
-            painter.add(egui::Shape::closed_line(tips, Stroke::new(1.0, color)));
-        } else {
-            painter.add(egui::Shape::line(tips, Stroke::new(1.0, color)));
-        }
+        painter.add(polyline(tips, r.curve.closed, Stroke::new(1.0, color)));
     }
 
     fn plot(
