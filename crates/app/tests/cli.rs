@@ -533,3 +533,46 @@ fn subdivide_exports_stl_and_glb() {
     assert!(!o.status.success());
     assert!(text(&o).1.contains("x.ply"));
 }
+
+#[test]
+fn schemes_lists_the_catalogue_and_unused_parameters_are_refused() {
+    let o = prism(&["schemes"]);
+    let (so, _) = text(&o);
+    assert!(o.status.success());
+    // One line per scheme, with its parameter, paper and formula page.
+    for (name, bit) in [
+        ("doo-sabin", "docs/algorithms/biquadratic.md"),
+        ("vector-sum", "0 < alpha < 0.5"),
+        ("combination", "seed 000 §3.2(3)"),
+        ("catmull-clark-circle", "docs/algorithms/curves.md"),
+    ] {
+        let line = so
+            .lines()
+            .find(|l| l.starts_with(&format!("{name} |")))
+            .unwrap_or_else(|| panic!("{name} missing:\n{so}"));
+        assert!(line.contains(bit), "{line}");
+    }
+    let out = tmp("unused.obj");
+    for (args, want) in [
+        (
+            vec!["--scheme", "doo-sabin", "--radius", "0.2"],
+            "--radius is not a parameter of doo-sabin",
+        ),
+        (
+            vec!["--scheme", "combination", "--width", "0.2"],
+            "it takes --radius",
+        ),
+        (
+            vec!["--pipeline", "combination:r=0.1:r=0.2"],
+            "given 'r' twice",
+        ),
+        (vec!["--scheme", "spline"], "catmull-clark-circle"),
+    ] {
+        let mut all = vec!["subdivide", "assets/cube.obj", "-o", out.to_str().unwrap()];
+        all.extend(args);
+        let o = prism(&all);
+        let (_, se) = text(&o);
+        assert_eq!(o.status.code(), Some(2), "{all:?}: {se}");
+        assert!(se.contains(want), "{all:?}: {se}");
+    }
+}

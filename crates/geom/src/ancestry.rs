@@ -2,7 +2,7 @@
 //! picked on any level can be marked on the control mesh (the document) and the marks shown
 //! on every level.
 //!
-//! - **Biquadratic step** (ALGORITHMS.md §1.2): the child's vertices are the parent's corners,
+//! - **Biquadratic step** (docs/algorithms/biquadratic.md): the child's vertices are the parent's corners,
 //!   and every child edge lies on exactly one EDGE-face, the face `(next c, c, next t, t)` of
 //!   the parent edge of half-edge `c` (twin `t`): its long sides `(c, next c)` run along the
 //!   edge inside one parent face, its short sides `(c, next t)` cross it at a vertex. So a

@@ -1,5 +1,5 @@
 //! The PRISM biquadratic step, written once for every corner rule (seed 000 §2, fig. 1;
-//! ALGORITHMS.md §1).
+//! docs/algorithms/biquadratic.md).
 //!
 //! In CGAL's words this is DQQ, dual quad quadrisection: one new point per face corner
 //! (inner-loop corners included), then
@@ -119,7 +119,7 @@ pub fn split(
     )
 }
 
-/// Flags of the vertex-neighbourhood faces after a combination step (ALGORITHMS.md §2.8):
+/// Flags of the vertex-neighbourhood faces after a combination step (docs/algorithms/cylindrical.md):
 /// on the first step of a run (`parent_flags` is `None`) the VERTEX-faces; afterwards the
 /// FACE-face of a flagged face, the EDGE-faces of its edges and the VERTEX-faces of its
 /// vertices.

@@ -1,4 +1,4 @@
-//! Aesthetic subdivision curves (seed 002, Ashida, Nakamura, Furuya, Saito; ALGORITHMS.md §5):
+//! Aesthetic subdivision curves (seed 002, Ashida, Nakamura, Furuya, Saito; docs/algorithms/curves.md):
 //! Catmull–Clark curve subdivision and the paper's two variants, one refinement loop for all.
 //!
 //! One level keeps every vertex, moved by the scheme's vertex rule, and inserts every edge
@@ -68,6 +68,58 @@ pub struct Polyline {
     pub points: Vec<DVec2>,
 }
 
+/// A curve as the user edits and saves it: the control polyline, the scheme that refines it
+/// and how many levels are shown (the Curves tab's part of a document, the `"curve"` block of
+/// a `.prism.json`).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct CurveSketch {
+    #[serde(flatten)]
+    pub control: Polyline,
+    pub scheme: CurveScheme,
+    pub levels: usize,
+}
+
+/// The most levels a sketch may ask for (a 6-point polygon becomes 1536 points at 8).
+pub const MAX_SKETCH_LEVELS: usize = 8;
+
+impl Default for CurveSketch {
+    /// Seed 002's fig. 6 polyline (θ₁ = 60°, θ₂ = 30°, l₁ = l₂ = 1) under method 1.
+    fn default() -> Self {
+        CurveSketch {
+            control: presets::fig6(60f64.to_radians(), 30f64.to_radians(), 1.0, 1.0),
+            scheme: CurveScheme::Circle,
+            levels: 4,
+        }
+    }
+}
+
+impl CurveSketch {
+    /// Checks what a file may hold: finite points and at most [`MAX_SKETCH_LEVELS`] levels
+    /// (fewer than 3 points is a sketch in progress, not an error).
+    pub fn validate(&self) -> Result<(), CurveError> {
+        if let Some((i, p)) = self
+            .control
+            .points
+            .iter()
+            .enumerate()
+            .find(|(_, p)| !p.is_finite())
+        {
+            return Err(CurveError::NonFinite {
+                index: i,
+                x: p.x,
+                y: p.y,
+            });
+        }
+        if self.levels > MAX_SKETCH_LEVELS {
+            return Err(CurveError::TooManyLevels {
+                levels: self.levels,
+                limit: MAX_SKETCH_LEVELS,
+            });
+        }
+        Ok(())
+    }
+}
+
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum CurveError {
     #[error("a curve needs at least 3 points, this one has {0}")]
@@ -85,6 +137,8 @@ pub enum CurveError {
         would: u128,
         limit: usize,
     },
+    #[error("{levels} levels asked for: a sketch shows at most {limit}")]
+    TooManyLevels { levels: usize, limit: usize },
 }
 
 /// At most this many points after refinement.

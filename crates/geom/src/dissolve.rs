@@ -1,4 +1,4 @@
-//! Dissolving flat edges before a cylindrical-family step (ALGORITHMS.md §2.5, policy).
+//! Dissolving flat edges before a cylindrical-family step (docs/algorithms/cylindrical.md, flat edges).
 //!
 //! A flat edge (bend angle below a tolerance) gets cut width 0, so its EDGE-face would have
 //! zero area, and at a T-junction eq. (4) divides by sin φ = 0. Coplanar splits do not change

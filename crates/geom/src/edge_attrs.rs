@@ -2,7 +2,7 @@
 //!
 //! Keyed by the edge's two vertex indices (smaller first), so they survive any reordering
 //! of faces and are what the files store. Through a biquadratic step every new edge lies on
-//! exactly one EDGE-face (ALGORITHMS.md §1.2: FACE- and VERTEX-faces only touch EDGE-faces),
+//! exactly one EDGE-face (docs/algorithms/biquadratic.md: FACE- and VERTEX-faces only touch EDGE-faces),
 //! so each new edge inherits the attributes of that EDGE-face's parent edge.
 
 use crate::mesh::PolyMesh;

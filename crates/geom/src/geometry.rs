@@ -1,5 +1,5 @@
 //! Basic measures of a polygon mesh: Newell face normals, corner frames, bend angles of
-//! edges, signed volume (ALGORITHMS.md §0.3, §1.5).
+//! edges, signed volume (docs/algorithms/conventions.md, biquadratic.md).
 //!
 //! Angles between vectors are always `atan2(|a × b|, a·b)`, never `acos` of a dot product,
 //! which loses half the digits near 0 and π.

@@ -9,10 +9,12 @@
 //! - [`scheme`] + [`pipeline`]: steps as values, levels kept per step;
 //! - [`analysis`]: counts, the fillet radius reached;
 //! - [`io`]: OBJ and the `.prism.json` document;
-//! - [`primitives`]: the test solids and the bundled samples.
+//! - [`primitives`]: the test solids and the bundled samples;
+//! - [`freeform`]: the free-form family (rational Bézier curves; Gregory patches, skinning and
+//!   envelopes next).
 //!
 //! The formulas, the papers' equation numbers and the resolved ambiguities are in
-//! `docs/ALGORITHMS.md` (shared) and in each module's doc.
+//! `docs/algorithms/` (one page per family, indexed in `docs/index.md`) and in each module's doc.
 
 pub mod analysis;
 pub mod ancestry;
@@ -21,6 +23,7 @@ pub mod curve;
 pub mod dissolve;
 pub mod edge_attrs;
 pub mod error;
+pub mod freeform;
 pub mod geometry;
 pub mod io;
 pub mod mesh;

@@ -2,7 +2,7 @@
 //!
 //! A face is one outer loop followed by any number of inner loops (holes). Outer loops run
 //! counter-clockwise seen from outside the solid, inner loops clockwise, so the face's
-//! material lies to the left of every directed edge (ALGORITHMS.md §0.3). Storage is
+//! material lies to the left of every directed edge (docs/algorithms/conventions.md). Storage is
 //! CSR-style, like OpenSubdiv's `Vtr::Level`: one array of corner vertex indices, one of loop
 //! offsets into it, one of face offsets into the loops; a million faces is a handful of
 //! allocations.

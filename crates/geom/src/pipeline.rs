@@ -5,7 +5,7 @@
 //! (seed 000 fig. 7 is such a pipeline: vector-sum α = 0.2, then Doo–Sabin twice). The
 //! vertex-neighbourhood flags of the combination rule flow from one combination step to the
 //! next; any other step in between ends the run, and the next combination step starts a new
-//! one (ALGORITHMS.md §2.8).
+//! one (docs/algorithms/cylindrical.md).
 
 use crate::biquadratic::Provenance;
 use crate::edge_attrs::EdgeAttrs;
@@ -89,21 +89,6 @@ impl Pipeline {
         &self.levels[0]
     }
 
-    /// Replaces step `k` (0-based); levels after it are dropped.
-    pub fn set_step(&mut self, k: usize, scheme: Scheme) {
-        self.steps[k] = scheme;
-        self.levels.truncate(k + 1);
-    }
-    /// Appends a step.
-    pub fn push_step(&mut self, scheme: Scheme) {
-        self.steps.push(scheme);
-    }
-    /// Removes the last step and its level.
-    pub fn pop_step(&mut self) -> Option<Scheme> {
-        let s = self.steps.pop();
-        self.levels.truncate(self.steps.len() + 1);
-        s
-    }
     /// A pipeline of `steps` on the same input that keeps (clones) the levels both share:
     /// those before the first step that differs. The app computes a changed pipeline from it
     /// on a worker thread while the old one stays on screen.
@@ -120,13 +105,6 @@ impl Pipeline {
             levels: self.levels[..keep].to_vec(),
             options: self.options,
         }
-    }
-
-    /// Replaces the input; every level is dropped.
-    pub fn set_input(&mut self, mesh: PolyMesh, edge_attrs: EdgeAttrs) {
-        self.levels.truncate(1);
-        self.levels[0].mesh = mesh;
-        self.levels[0].edge_attrs = edge_attrs;
     }
 
     /// Computes levels up to `upto` (at most the number of steps), calling `each` after every

@@ -2,7 +2,7 @@
 //!
 //! The bundled assets (`assets/*.obj`, `*.prism.json`) are written from these builders, and
 //! the benchmarks use the torus. Every solid is closed and oriented outwards
-//! (ALGORITHMS.md §0.3).
+//! (docs/algorithms/conventions.md).
 
 use crate::mesh::PolyMesh;
 use glam::{DVec2, DVec3};
@@ -65,12 +65,12 @@ pub fn extrude(outer: &[DVec2], holes: &[Vec<DVec2>], z0: f64, z1: f64) -> PolyM
     m
 }
 
-/// The cube of side 3 used throughout ALGORITHMS.md's measurements.
+/// The cube of side 3 used throughout the measurements of docs/algorithms/cylindrical.md.
 pub fn cube3() -> PolyMesh {
     cuboid(DVec3::ZERO, DVec3::splat(3.0))
 }
 
-/// The L-block of ALGORITHMS.md §13: the L (0,0),(2,0),(2,1),(1,1),(1,2),(0,2) extruded by 4
+/// The L-block of docs/algorithms/cylindrical.md: the L (0,0),(2,0),(2,1),(1,1),(1,2),(0,2) extruded by 4
 /// (one concave edge, two concave end faces).
 pub fn l_block() -> PolyMesh {
     let l = [(0., 0.), (2., 0.), (2., 1.), (1., 1.), (1., 2.), (0., 2.)].map(DVec2::from);
@@ -88,7 +88,7 @@ pub fn holed_block() -> PolyMesh {
 
 /// The tripod: three orthogonal 1×1 arms of length 3 joined at a corner (17 vertices,
 /// 27 edges, 12 faces: three concave L-shaped hexagons and nine rectangles; three convex and
-/// three concave edges meet at the saddle vertex (1,1,1)). ALGORITHMS.md §2.8.
+/// three concave edges meet at the saddle vertex (1,1,1)). docs/algorithms/cylindrical.md.
 pub fn tripod() -> PolyMesh {
     let p = [
         (0., 0., 0.),

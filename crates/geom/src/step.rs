@@ -1,5 +1,5 @@
 //! One biquadratic step with a corner rule, from a mesh to the next level, with everything a
-//! user needs to see: counts, flipped and degenerate faces, time (ALGORITHMS.md §1.5).
+//! user needs to see: counts, flipped and degenerate faces, time (docs/algorithms/biquadratic.md).
 //!
 //! Order of work: build and check the topology (closed solids only, §1.4); validate the
 //! rule's parameter; for the cylindrical family dissolve flat edges (§2.5) and compute the
@@ -218,7 +218,7 @@ pub struct ChildCheck {
     pub volume: f64,
 }
 
-/// Checks every new face against its parent element's normal (ALGORITHMS.md §1.5) and sums
+/// Checks every new face against its parent element's normal (docs/algorithms/biquadratic.md) and sums
 /// the child's signed volume.
 pub fn check_children(
     parent: &PolyMesh,

@@ -268,7 +268,7 @@ impl Topology {
     }
 
     /// The next half-edge around the vertex of half-edge `c`, turning so that the faces are
-    /// visited in the order of ALGORITHMS.md §1.2 (VERTEX-face order): from `c` (v→x) go to
+    /// visited in the order of docs/algorithms/biquadratic.md (VERTEX-face order): from `c` (v→x) go to
     /// the half-edge that leaves v along the edge preceding `c` in its loop. [`NONE`] at a
     /// boundary.
     #[inline]

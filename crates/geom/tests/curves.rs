@@ -1,4 +1,4 @@
-//! The three curve schemes against what seed 002 promises (ALGORITHMS.md §5).
+//! The three curve schemes against what seed 002 promises (docs/algorithms/curves.md).
 
 use glam::DVec2;
 use prism_geom::curve::{CurveScheme, Polyline, presets};

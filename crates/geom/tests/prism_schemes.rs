@@ -1,5 +1,5 @@
 //! Whole-behaviour tests of the PRISM schemes against the paper's promises and the measured
-//! tables of ALGORITHMS.md §2 and §13.
+//! tables of docs/algorithms/ (biquadratic.md, chamfers.md, cylindrical.md).
 
 use prism_geom::analysis::{counts, measure_fillet};
 use prism_geom::geometry::signed_volume;
@@ -69,7 +69,7 @@ fn invariants_hold_at_every_level_of_every_rule() {
 
 #[test]
 fn non_quads_stay_constant_from_level_one() {
-    // ALGORITHMS.md §1.2: 8 / 14 / 18 / 20 for cube / L-block / holed / tripod.
+    // docs/algorithms/biquadratic.md: 8 / 14 / 18 / 20 for cube / L-block / holed / tripod.
     for (mesh, expected) in [
         (primitives::cube3(), 8),
         (primitives::l_block(), 14),
@@ -174,7 +174,7 @@ fn chamfers_survive_three_levels_when_the_parameter_shrinks_4x() {
 
 #[test]
 fn constant_chamfer_flips_are_reported_as_measured() {
-    // ALGORITHMS.md §2.3, d or l = 0.1 constant: flipped faces at levels 1, 2, 3.
+    // docs/algorithms/chamfers.md, d or l = 0.1 constant: flipped faces at levels 1, 2, 3.
     let d = repeat("cut-width:d=0.1", 3);
     let l = repeat("angle-bisector:l=0.1", 3);
     assert_eq!(flips(&run(&primitives::cube3(), &d)), vec![0, 36, 180]);
@@ -199,7 +199,7 @@ fn constant_chamfer_flips_are_reported_as_measured() {
 
 #[test]
 fn vector_sum_flips_on_holed_faces_as_measured() {
-    // ALGORITHMS.md §2.4.
+    // docs/algorithms/chamfers.md.
     let hb = primitives::holed_block();
     assert_eq!(
         flips(&run(&hb, &repeat("vector-sum:alpha=0.1", 3))),

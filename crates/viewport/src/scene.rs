@@ -56,11 +56,7 @@ pub fn scheme_color(s: Option<&prism_geom::Scheme>) -> [f32; 3] {
         [0.60, 0.60, 0.60],
     ];
     let Some(s) = s else { return BASE_COLOR };
-    let names = prism_geom::scheme::BIQUADRATIC_NAMES
-        .iter()
-        .chain(prism_geom::scheme::PRIMAL_NAMES.iter());
-    let k = names.take_while(|n| **n != s.name()).count();
-    PALETTE[k % PALETTE.len()]
+    PALETTE[s.kind().index() % PALETTE.len()]
 }
 
 /// The curvature colour scale: viridis at five stops, interpolated (given like the other

@@ -29,15 +29,19 @@ pub struct LimitArgs {
 }
 
 pub fn run(a: LimitArgs) -> Result<(), CliError> {
-    let scheme = match a.scheme.as_str() {
-        "catmull-clark" => PrimalScheme::CatmullClark,
-        "loop" => PrimalScheme::Loop,
-        other => {
-            return Err(CliError::usage(format!(
-                "unknown scheme '{other}' for limit (known: catmull-clark, loop)"
-            )));
-        }
-    };
+    // Limit masks exist for the B-spline schemes: Catmull–Clark and Loop.
+    let with_limits = [PrimalScheme::CatmullClark, PrimalScheme::Loop];
+    let scheme = with_limits
+        .into_iter()
+        .find(|s| s.name() == a.scheme)
+        .ok_or_else(|| {
+            let known: Vec<&str> = with_limits.iter().map(|s| s.name()).collect();
+            CliError::usage(format!(
+                "unknown scheme '{}' for limit (known: {})",
+                a.scheme,
+                known.join(", ")
+            ))
+        })?;
     let (doc, face_lines) = io::load(&a.input).map_err(CliError::input)?;
     let input_error = |e: prism_geom::PrimalError| {
         let msg = match &e {

@@ -75,6 +75,9 @@ pub enum Command {
     /// Refine a 2D polyline with Catmull-Clark, the circle-preserving or the
     /// log-spiral-preserving rule; writes the points and their curvature.
     Curve(curve::CurveArgs),
+    /// List the subdivision schemes: name, family, parameter with its range and default,
+    /// paper, equation and the docs page with the formula.
+    Schemes,
 }
 
 /// An error for the user: one line, and the exit code (1 bad input, 2 bad usage).
@@ -106,6 +109,10 @@ pub fn run(cli: Cli) -> Result<(), CliError> {
         Some(Command::Bench(a)) => bench::run(a),
         Some(Command::Render(a)) => render::run(a),
         Some(Command::Curve(a)) => curve::run(a),
+        Some(Command::Schemes) => {
+            print!("{}", prism_geom::scheme::table());
+            Ok(())
+        }
         None => {
             let pipeline = match &cli.pipeline {
                 Some(p) => prism_geom::parse_pipeline(p).map_err(CliError::usage)?,

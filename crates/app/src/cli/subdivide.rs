@@ -7,7 +7,7 @@
 use super::{CliError, with_line};
 use clap::Args;
 use prism_geom::io::{self, Document};
-use prism_geom::scheme::{Scheme, parse_pipeline};
+use prism_geom::scheme::{Scheme, SchemeError, SchemeKind, parse_pipeline};
 use prism_geom::{CornerRule, Pipeline, ReflexMode, Topology};
 use std::path::PathBuf;
 
@@ -15,9 +15,9 @@ use std::path::PathBuf;
 /// `render`).
 #[derive(Debug, Args)]
 pub struct StepArgs {
-    /// Scheme repeated --levels times: doo-sabin, angle-bisector, cut-width, vector-sum,
-    /// cylindrical, minimum, combination (closed solids), catmull-clark, loop (open meshes
-    /// too, with the file's creases, corners and holes).
+    /// Scheme repeated --levels times (`prism schemes` lists them: the biquadratic ones
+    /// need closed solids, the primal ones take open meshes too, with the file's creases,
+    /// corners and holes).
     #[arg(long, conflicts_with = "pipeline")]
     pub scheme: Option<String>,
     /// Number of levels for --scheme.
@@ -62,16 +62,7 @@ pub fn steps_from(
     allow_none: bool,
 ) -> Result<Vec<Scheme>, CliError> {
     let steps: Vec<Scheme> = match (&a.scheme, &a.pipeline) {
-        (Some(name), None) => {
-            let reflex = if a.reflex_inward {
-                ReflexMode::Inward
-            } else {
-                ReflexMode::AsPrinted
-            };
-            let s = Scheme::from_name(name, a.alpha, a.radius, a.distance, a.width, reflex)
-                .map_err(CliError::usage)?;
-            vec![s; a.levels]
-        }
+        (Some(name), None) => vec![scheme_from_flags(name, a)?; a.levels],
         (None, Some(p)) => parse_pipeline(p).map_err(CliError::usage)?,
         _ => Vec::new(),
     };
@@ -85,6 +76,48 @@ pub fn steps_from(
             "give --scheme and --levels, or --pipeline (the input holds no pipeline)",
         )),
     }
+}
+
+/// The scheme `--scheme NAME` names, with its parameter from the flag the catalogue gives
+/// it; a parameter flag the scheme does not use is refused.
+fn scheme_from_flags(name: &str, a: &StepArgs) -> Result<Scheme, CliError> {
+    let kind = SchemeKind::from_name(name)
+        .ok_or_else(|| CliError::usage(SchemeError::Unknown(name.to_string())))?;
+    let entry = kind.entry();
+    let flags = [
+        ("alpha", a.alpha),
+        ("radius", a.radius),
+        ("distance", a.distance),
+        ("width", a.width),
+    ];
+    let wanted = entry.param.map(|p| p.flag);
+    if let Some((flag, _)) = flags
+        .iter()
+        .find(|(f, v)| v.is_some() && Some(*f) != wanted)
+    {
+        return Err(CliError::usage(format!(
+            "--{flag} is not a parameter of {name}{}",
+            match entry.param {
+                Some(p) => format!(" (it takes --{})", p.flag),
+                None => " (it takes none)".into(),
+            }
+        )));
+    }
+    if a.reflex_inward && !entry.reflex_option {
+        return Err(CliError::usage(format!(
+            "--reflex-inward is not an option of {name}"
+        )));
+    }
+    let param = flags
+        .iter()
+        .find(|(f, _)| Some(*f) == wanted)
+        .and_then(|(_, v)| *v);
+    let reflex = if a.reflex_inward {
+        ReflexMode::Inward
+    } else {
+        ReflexMode::AsPrinted
+    };
+    kind.scheme(param, reflex).map_err(CliError::usage)
 }
 
 pub fn run(a: SubdivideArgs) -> Result<(), CliError> {
@@ -191,6 +224,7 @@ pub fn run(a: SubdivideArgs) -> Result<(), CliError> {
         edge_attrs: last.edge_attrs.clone(),
         tags: last.tags.clone(),
         pipeline: None,
+        curve: None,
     };
     let warnings = io::save(&a.output, &out).map_err(CliError::input)?;
     for w in warnings {

@@ -1,44 +1,58 @@
-//! What the user edits — the control mesh with its edge marks and tags, and the pipeline of
-//! every view — and its history. Every change goes through [`History::record`] with the
-//! state before it, so Ctrl+Z undoes any document change (a vertex drag is one change).
+//! What the user edits — the control mesh with its edge marks and tags, the pipeline of
+//! every view, the curve sketch — with where it came from and its history.
+//!
+//! [`Document::apply`] is the only writer: every tab returns [`Edit`]s and the frame loop
+//! applies them here, where the state before is recorded for undo. History is **global**:
+//! Ctrl+Z undoes the last change of the document whichever tab made it (a crease in the
+//! Model tab, then a curve drag in the Curves tab: the first Ctrl+Z restores the curve, the
+//! second removes the crease). The document's name and save target are part of what undo
+//! restores. Views and caches compare [`Document::generation`], bumped by every change, to
+//! know when to recompute; nothing keeps a dirty flag.
 
-use prism_geom::io::{self, Document};
+use super::command::{CoalesceKey, CurveEdit, EdgeMark, Edit};
+use prism_geom::curve::{CurveSketch, MAX_SKETCH_LEVELS};
+use prism_geom::io::{self, Document as FileDocument};
 use prism_geom::{EdgeAttrs, PolyMesh, Scheme, SubdivTags};
 use std::path::{Path, PathBuf};
 
-/// The document: one input, one pipeline per view (view 0 is the main one and the one saved
-/// with the document; the others exist in the compare split).
+/// The state that is saved and undone: one input, one pipeline per view (view 0 is the main
+/// one and the one saved with the document; the others exist in the compare split), and the
+/// curve sketch.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct DocState {
     pub mesh: PolyMesh,
     pub edge_attrs: EdgeAttrs,
     pub tags: SubdivTags,
     pub pipelines: Vec<Vec<Scheme>>,
+    pub curve: CurveSketch,
 }
 
 impl DocState {
-    pub fn from_document(doc: Document) -> DocState {
+    pub fn from_document(doc: FileDocument) -> DocState {
         DocState {
             mesh: doc.mesh,
             edge_attrs: doc.edge_attrs,
             tags: doc.tags,
             pipelines: vec![doc.pipeline.unwrap_or_default()],
+            curve: doc.curve.unwrap_or_default(),
         }
     }
 
-    /// The document as saved: the main pipeline goes with it.
-    pub fn to_document(&self) -> Document {
-        Document {
+    /// The document as saved: the main pipeline and the curve sketch go with it (the
+    /// sketch only when it is not the default one).
+    pub fn to_document(&self) -> FileDocument {
+        FileDocument {
             mesh: self.mesh.clone(),
             edge_attrs: self.edge_attrs.clone(),
             tags: self.tags.clone(),
             pipeline: self.pipelines.first().filter(|p| !p.is_empty()).cloned(),
+            curve: (self.curve != CurveSketch::default()).then(|| self.curve.clone()),
         }
     }
 }
 
-/// Where the document came from and whether it has unsaved changes.
-#[derive(Debug, Clone, Default)]
+/// Where the document came from.
+#[derive(Debug, Clone, Default, PartialEq)]
 pub struct Origin {
     /// A file the document can be saved back to (`.prism.json` only: saving an OBJ would lose
     /// the pipeline, so an opened OBJ is saved with "Save as").
@@ -66,20 +80,26 @@ pub fn open(path: &Path) -> Result<(DocState, Origin), String> {
     ))
 }
 
+/// One snapshot of the history.
+type Snapshot = (DocState, Origin);
+
 /// Undo and redo stacks of whole document states (control meshes are small next to their
 /// refined levels; the stacks hold at most [`History::LIMIT`] states each).
 #[derive(Debug, Default)]
-pub struct History {
-    undo: Vec<DocState>,
-    redo: Vec<DocState>,
+struct History {
+    undo: Vec<Snapshot>,
+    redo: Vec<Snapshot>,
+    /// The key of the last recorded edit, while edits with that key keep coming.
+    open: Option<CoalesceKey>,
 }
 
 impl History {
-    pub const LIMIT: usize = 200;
+    const LIMIT: usize = 200;
 
-    /// Records `before`, the state a change is about to leave.
-    pub fn record(&mut self, before: DocState) {
-        if self.undo.last() == Some(&before) {
+    fn record(&mut self, before: Snapshot, key: Option<CoalesceKey>) {
+        let coalesced = key.is_some() && key == self.open;
+        self.open = key;
+        if coalesced {
             return;
         }
         self.undo.push(before);
@@ -88,68 +108,464 @@ impl History {
         }
         self.redo.clear();
     }
+}
 
-    /// The state before the last change; `current` goes to the redo stack.
-    pub fn undo(&mut self, current: DocState) -> Option<DocState> {
-        let s = self.undo.pop()?;
-        self.redo.push(current);
-        Some(s)
+/// The document with its origin, history and generation.
+#[derive(Debug, Default)]
+pub struct Document {
+    state: DocState,
+    origin: Origin,
+    history: History,
+    generation: u64,
+    /// Whether the last change was a live one (a drag).
+    live: bool,
+}
+
+impl Document {
+    pub fn new(state: DocState, origin: Origin) -> Document {
+        let mut d = Document {
+            state,
+            origin,
+            ..Document::default()
+        };
+        d.normalise();
+        d
     }
 
-    pub fn redo(&mut self, current: DocState) -> Option<DocState> {
-        let s = self.redo.pop()?;
-        self.undo.push(current);
-        Some(s)
+    pub fn state(&self) -> &DocState {
+        &self.state
     }
-
+    pub fn origin(&self) -> &Origin {
+        &self.origin
+    }
+    /// Bumped by every change (edits, undo, redo, a new origin).
+    pub fn generation(&self) -> u64 {
+        self.generation
+    }
+    /// Whether the last change was a drag, which views follow live.
+    pub fn live(&self) -> bool {
+        self.live
+    }
     pub fn can_undo(&self) -> bool {
-        !self.undo.is_empty()
+        !self.history.undo.is_empty()
     }
     pub fn can_redo(&self) -> bool {
-        !self.redo.is_empty()
+        !self.history.redo.is_empty()
+    }
+
+    /// Applies one edit. Returns whether it changed the document (then it is recorded for
+    /// undo), or why it was refused (the document is then as it was).
+    pub fn apply(&mut self, edit: Edit) -> Result<bool, String> {
+        let key = edit.coalesce_key();
+        let live = edit.is_live();
+        let mut next = self.state.clone();
+        let mut origin = self.origin.clone();
+        apply_to(&mut next, &mut origin, edit)?;
+        if next == self.state && origin == self.origin {
+            return Ok(false);
+        }
+        let before = (
+            std::mem::replace(&mut self.state, next),
+            std::mem::replace(&mut self.origin, origin),
+        );
+        self.history.record(before, key);
+        self.normalise();
+        self.live = live;
+        self.generation += 1;
+        Ok(true)
+    }
+
+    /// Goes back one change; returns whether there was one.
+    pub fn undo(&mut self) -> bool {
+        let Some(s) = self.history.undo.pop() else {
+            return false;
+        };
+        let now = self.swap(s);
+        self.history.redo.push(now);
+        true
+    }
+
+    pub fn redo(&mut self) -> bool {
+        let Some(s) = self.history.redo.pop() else {
+            return false;
+        };
+        let now = self.swap(s);
+        self.history.undo.push(now);
+        true
+    }
+
+    fn swap(&mut self, (state, origin): Snapshot) -> Snapshot {
+        self.history.open = None;
+        self.live = false;
+        self.generation += 1;
+        (
+            std::mem::replace(&mut self.state, state),
+            std::mem::replace(&mut self.origin, origin),
+        )
+    }
+
+    /// Records that the document now lives in `path` (after Save as): not an edit, so not
+    /// undone on its own, but part of every later snapshot.
+    pub fn saved_as(&mut self, path: &Path, native: bool) {
+        if native {
+            self.origin.path = Some(path.to_path_buf());
+        }
+        self.origin.name = path.display().to_string();
+        self.generation += 1;
+    }
+
+    /// A document always has at least one view.
+    fn normalise(&mut self) {
+        if self.state.pipelines.is_empty() {
+            self.state.pipelines.push(Vec::new());
+        }
+    }
+}
+
+/// The effect of one edit on a copy of the state.
+fn apply_to(d: &mut DocState, origin: &mut Origin, edit: Edit) -> Result<(), String> {
+    let views = d.pipelines.len();
+    let view_ok = |v: usize| {
+        if v < views {
+            Ok(())
+        } else {
+            Err(format!("there is no view {}", v + 1))
+        }
+    };
+    let step_ok = |p: &Vec<Scheme>, k: usize| {
+        if k < p.len() {
+            Ok(())
+        } else {
+            Err(format!("the pipeline has no step {}", k + 1))
+        }
+    };
+    match edit {
+        Edit::PushStep { view, scheme } => {
+            view_ok(view)?;
+            scheme.validate().map_err(|e| e.to_string())?;
+            d.pipelines[view].push(scheme);
+        }
+        Edit::PopStep { view } => {
+            view_ok(view)?;
+            d.pipelines[view].pop();
+        }
+        Edit::SetStep {
+            view,
+            index,
+            scheme,
+        } => {
+            view_ok(view)?;
+            step_ok(&d.pipelines[view], index)?;
+            scheme.validate().map_err(|e| e.to_string())?;
+            d.pipelines[view][index] = scheme;
+        }
+        Edit::SwapSteps { view, index } => {
+            view_ok(view)?;
+            step_ok(&d.pipelines[view], index + 1)?;
+            d.pipelines[view].swap(index, index + 1);
+        }
+        Edit::RemoveStep { view, index } => {
+            view_ok(view)?;
+            step_ok(&d.pipelines[view], index)?;
+            d.pipelines[view].remove(index);
+        }
+        Edit::TruncateSteps { view, len } => {
+            view_ok(view)?;
+            d.pipelines[view].truncate(len);
+        }
+        Edit::SetPipeline { view, steps } => {
+            view_ok(view)?;
+            if let Some(e) = steps.iter().find_map(|s| s.validate().err()) {
+                return Err(e.to_string());
+            }
+            d.pipelines[view] = steps;
+        }
+        Edit::SetViews(n) => {
+            if ![1, 2, 4].contains(&n) {
+                return Err(format!("{n} views: the split has 1, 2 or 4"));
+            }
+            let main = d.pipelines[0].clone();
+            d.pipelines.resize(n, main);
+        }
+        Edit::MarkEdges { edges, mark } => {
+            if let EdgeMark::Radius(Some(r)) = mark
+                && !(r.is_finite() && r > 0.0)
+            {
+                return Err(format!("a radius must be positive, not {r}"));
+            }
+            if let EdgeMark::Crease(s) = mark
+                && !(s.is_finite() && s >= 0.0)
+            {
+                return Err(format!("a crease sharpness must be 0 or more, not {s}"));
+            }
+            for e in edges {
+                let a = d.edge_attrs.entry(e).or_default();
+                match mark {
+                    EdgeMark::Crease(s) => a.crease = s,
+                    EdgeMark::Radius(r) => a.radius = r,
+                }
+            }
+            d.edge_attrs
+                .retain(|_, a| a.crease != 0.0 || a.radius.is_some());
+        }
+        Edit::MoveVertices { verts, by } => {
+            if !by.is_finite() {
+                return Err("coordinates must be numbers".into());
+            }
+            for v in verts {
+                let n = d.mesh.num_vertices();
+                let q = d
+                    .mesh
+                    .positions
+                    .get_mut(v as usize)
+                    .ok_or(format!("there is no control vertex {v} (the mesh has {n})"))?;
+                *q += by;
+            }
+        }
+        Edit::DragVertices { to, .. } => {
+            for (v, p) in to {
+                if !p.is_finite() {
+                    return Err("coordinates must be numbers".into());
+                }
+                let n = d.mesh.num_vertices();
+                *d.mesh
+                    .positions
+                    .get_mut(v as usize)
+                    .ok_or(format!("there is no control vertex {v} (the mesh has {n})"))? = p;
+            }
+        }
+        Edit::Curve(c) => apply_curve(&mut d.curve, c)?,
+        Edit::Replace(state) => {
+            *d = *state;
+            // The name and save target come with the new state (set by the caller after).
+            *origin = Origin::default();
+        }
+    }
+    Ok(())
+}
+
+fn apply_curve(c: &mut CurveSketch, edit: CurveEdit) -> Result<(), String> {
+    let n = c.control.points.len();
+    let finite = |p: glam::DVec2| {
+        if p.is_finite() {
+            Ok(())
+        } else {
+            Err("coordinates must be numbers".to_string())
+        }
+    };
+    let index_ok = |i: usize| {
+        if i < n {
+            Ok(())
+        } else {
+            Err(format!("the curve has no point {i}"))
+        }
+    };
+    match edit {
+        CurveEdit::Insert { index, at } => {
+            finite(at)?;
+            c.control.points.insert(index.min(n), at);
+        }
+        CurveEdit::Move { index, to, .. } => {
+            finite(to)?;
+            index_ok(index)?;
+            c.control.points[index] = to;
+        }
+        CurveEdit::Delete { index } => {
+            index_ok(index)?;
+            c.control.points.remove(index);
+        }
+        CurveEdit::SetClosed(b) => c.control.closed = b,
+        CurveEdit::SetScheme(s) => c.scheme = s,
+        CurveEdit::SetLevels(k) => {
+            if k > MAX_SKETCH_LEVELS {
+                return Err(format!("at most {MAX_SKETCH_LEVELS} levels"));
+            }
+            c.levels = k;
+        }
+        CurveEdit::SetControl(p) => {
+            if let Some(q) = p.points.iter().find(|q| !q.is_finite()) {
+                return Err(format!("coordinates must be numbers, not {q}"));
+            }
+            c.control = p;
+        }
+    }
+    Ok(())
+}
+
+impl Document {
+    /// Replaces the document with an opened one (undoable), with its name and save target.
+    pub fn replace(&mut self, state: DocState, origin: Origin) {
+        if self.apply(Edit::Replace(Box::new(state))).is_ok() {
+            self.origin = origin;
+        }
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use prism_geom::primitives;
+    use glam::{DVec2, DVec3};
+    use prism_geom::{CornerRule, EdgeKey, primitives};
 
-    fn state(steps: usize) -> DocState {
-        DocState {
-            mesh: primitives::cube3(),
-            pipelines: vec![vec![
-                Scheme::Biquadratic(prism_geom::CornerRule::DooSabin);
-                steps
-            ]],
-            ..Default::default()
-        }
+    fn doc() -> Document {
+        Document::new(
+            DocState {
+                mesh: primitives::cube3(),
+                ..Default::default()
+            },
+            Origin::default(),
+        )
     }
+    const DS: Scheme = Scheme::Biquadratic(CornerRule::DooSabin);
 
     #[test]
     fn undo_and_redo_walk_the_changes() {
-        let mut h = History::default();
-        h.record(state(0));
-        h.record(state(1));
-        let now = state(2);
-        let back = h.undo(now.clone()).unwrap();
-        assert_eq!(back, state(1));
-        let back2 = h.undo(back).unwrap();
-        assert_eq!(back2, state(0));
-        assert!(!h.can_undo());
-        let fwd = h.redo(back2).unwrap();
-        assert_eq!(fwd, state(1));
+        let mut d = doc();
+        let g0 = d.generation();
+        for _ in 0..2 {
+            d.apply(Edit::PushStep {
+                view: 0,
+                scheme: DS,
+            })
+            .unwrap();
+        }
+        assert!(d.generation() > g0);
+        assert!(d.undo());
+        assert_eq!(d.state().pipelines[0].len(), 1);
+        assert!(d.undo());
+        assert_eq!(d.state().pipelines[0].len(), 0);
+        assert!(!d.can_undo());
+        assert!(d.redo());
+        assert_eq!(d.state().pipelines[0].len(), 1);
         // A new change drops the redo stack.
-        h.record(fwd);
-        assert!(!h.can_redo());
+        d.apply(Edit::PopStep { view: 0 }).unwrap();
+        assert!(!d.can_redo());
+        // An edit that changes nothing is not a step.
+        assert_eq!(d.apply(Edit::PopStep { view: 0 }), Ok(false));
     }
 
     #[test]
-    fn saving_keeps_the_main_pipeline_only() {
-        let mut s = state(2);
-        s.pipelines.push(vec![]);
-        let d = s.to_document();
-        assert_eq!(d.pipeline.unwrap().len(), 2);
-        assert_eq!(DocState::from_document(s.to_document()).pipelines.len(), 1);
+    fn saving_keeps_the_main_pipeline_and_a_changed_curve() {
+        let mut d = doc();
+        d.apply(Edit::PushStep {
+            view: 0,
+            scheme: DS,
+        })
+        .unwrap();
+        d.apply(Edit::SetViews(2)).unwrap();
+        let f = d.state().to_document();
+        assert_eq!(f.pipeline.unwrap().len(), 1);
+        assert!(f.curve.is_none(), "the default sketch is not written");
+        d.apply(CurveEdit::SetLevels(2).into_edit()).unwrap();
+        let back = DocState::from_document(d.state().to_document());
+        assert_eq!(back.pipelines.len(), 1);
+        assert_eq!(back.curve.levels, 2);
+    }
+
+    #[test]
+    fn a_drag_is_one_undo_step_and_a_new_drag_another() {
+        let mut d = doc();
+        let p0 = d.state().mesh.positions[0];
+        for k in 1..=5 {
+            let to = vec![(0, p0 + DVec3::Z * k as f64)];
+            d.apply(Edit::DragVertices { drag: 1, to }).unwrap();
+            assert!(d.live());
+        }
+        let to = vec![(0, p0 + DVec3::X)];
+        d.apply(Edit::DragVertices { drag: 2, to }).unwrap();
+        d.undo();
+        assert_eq!(d.state().mesh.positions[0], p0 + DVec3::Z * 5.0);
+        d.undo();
+        assert_eq!(d.state().mesh.positions[0], p0);
+        assert!(!d.can_undo());
+    }
+
+    /// The seam the architecture issue found: a crease in the Model tab, then a curve drag
+    /// in the Curves tab; Ctrl+Z must restore the curve and keep the crease.
+    #[test]
+    fn history_is_global_across_tabs() {
+        let mut d = doc();
+        let e = EdgeKey::new(0, 1);
+        d.apply(Edit::MarkEdges {
+            edges: vec![e],
+            mark: EdgeMark::Crease(10.0),
+        })
+        .unwrap();
+        let p = d.state().curve.control.points[1];
+        for k in 0..3 {
+            let to = p + DVec2::splat(0.1 * (k + 1) as f64);
+            d.apply(
+                CurveEdit::Move {
+                    index: 1,
+                    to,
+                    drag: 7,
+                }
+                .into_edit(),
+            )
+            .unwrap();
+        }
+        d.undo();
+        assert_eq!(d.state().curve.control.points[1], p);
+        assert_eq!(d.state().edge_attrs[&e].crease, 10.0);
+        d.undo();
+        assert!(d.state().edge_attrs.is_empty());
+    }
+
+    #[test]
+    fn bad_edits_are_refused_and_change_nothing() {
+        let mut d = doc();
+        let g = d.generation();
+        let bad = [
+            Edit::MoveVertices {
+                verts: vec![0],
+                by: DVec3::new(f64::NAN, 0.0, 0.0),
+            },
+            Edit::MoveVertices {
+                verts: vec![99],
+                by: DVec3::X,
+            },
+            Edit::MarkEdges {
+                edges: vec![EdgeKey::new(0, 1)],
+                mark: EdgeMark::Radius(Some(-1.0)),
+            },
+            Edit::RemoveStep { view: 0, index: 0 },
+            Edit::SetViews(3),
+            Edit::PushStep {
+                view: 5,
+                scheme: DS,
+            },
+            CurveEdit::SetLevels(40).into_edit(),
+            CurveEdit::Delete { index: 100 }.into_edit(),
+        ];
+        for e in bad {
+            assert!(d.apply(e.clone()).is_err(), "{e:?}");
+        }
+        assert_eq!(d.generation(), g);
+        assert!(!d.can_undo());
+    }
+
+    #[test]
+    fn undo_restores_the_name_and_save_target() {
+        let mut d = doc();
+        d.replace(
+            DocState {
+                mesh: primitives::tripod(),
+                ..Default::default()
+            },
+            Origin {
+                path: Some("t.prism.json".into()),
+                name: "t.prism.json".into(),
+            },
+        );
+        assert_eq!(d.origin().name, "t.prism.json");
+        d.undo();
+        assert_eq!(d.origin(), &Origin::default());
+        assert_eq!(d.state().mesh, primitives::cube3());
+    }
+
+    impl CurveEdit {
+        fn into_edit(self) -> Edit {
+            Edit::Curve(self)
+        }
     }
 }

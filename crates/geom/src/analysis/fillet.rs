@@ -1,4 +1,4 @@
-//! The fillet radius actually reached along an edge (ALGORITHMS.md §2.8, §2.9).
+//! The fillet radius actually reached along an edge (docs/algorithms/cylindrical.md).
 //!
 //! The refined mesh is sliced with the plane through the midpoint of the original edge and
 //! normal to it. The section points of the fillet are those within the tangent length

@@ -8,11 +8,15 @@
 //!   "edges": [{ "a": 0, "b": 1, "radius": 0.3 }, { "a": 1, "b": 2, "crease": 10 }],
 //!   "subdivision": { "boundary": "edge-and-corner", "crease_method": "chaikin",
 //!                    "corners": { "4": 10 }, "holes": [2] },
-//!   "pipeline": "combination:r=0.2,combination:r=0.2" }
+//!   "pipeline": "combination:r=0.2,combination:r=0.2",
+//!   "curve": { "closed": false, "points": [[0, 0], [1, 0], ...], "scheme": "circle",
+//!              "levels": 4 } }
 //! ```
+//! The optional `"curve"` block is the Curves tab's sketch ([`CurveSketch`]).
 //! A face is a list of loops, the outer loop first; indices are 0-based.
 
 use super::{IoError, write_atomically};
+use crate::curve::CurveSketch;
 use crate::edge_attrs::{EdgeAttr, EdgeAttrs, EdgeKey};
 use crate::mesh::PolyMesh;
 use crate::scheme::{Scheme, format_pipeline, parse_pipeline};
@@ -32,6 +36,8 @@ pub struct Document {
     /// Corners, holes and options of the primal schemes.
     pub tags: SubdivTags,
     pub pipeline: Option<Vec<Scheme>>,
+    /// The curve sketch of the Curves tab, when the document has one.
+    pub curve: Option<CurveSketch>,
 }
 
 #[derive(Serialize, Deserialize)]
@@ -53,6 +59,8 @@ struct FileV1 {
     subdivision: SubdivTags,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pipeline: Option<String>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    curve: Option<CurveSketch>,
 }
 
 #[derive(Deserialize)]
@@ -99,11 +107,20 @@ pub fn document_from_str(path: &Path, text: &str) -> Result<Document, IoError> {
         })?),
         None => None,
     };
+    if let Some(c) = &f.curve {
+        c.validate().map_err(|e| IoError::Json {
+            path: path.into(),
+            line: 0,
+            column: 0,
+            message: format!("curve: {e}"),
+        })?;
+    }
     Ok(Document {
         mesh,
         edge_attrs,
         tags: f.subdivision,
         pipeline,
+        curve: f.curve,
     })
 }
 
@@ -136,6 +153,7 @@ pub fn document_to_string(doc: &Document) -> String {
             .collect(),
         subdivision: doc.tags.clone(),
         pipeline: doc.pipeline.as_deref().map(format_pipeline),
+        curve: doc.curve.clone(),
     };
     // Compact: one vertex or face per line would be nicer to diff, but serde_json's pretty
     // printer puts every number on its own line; plain is smaller and as exact.
@@ -172,10 +190,45 @@ mod tests {
                 ..SubdivTags::default()
             },
             pipeline: Some(parse_pipeline("combination:r=0.2,doo-sabin").unwrap()),
+            curve: Some(CurveSketch {
+                scheme: crate::curve::CurveScheme::LogSpiral,
+                levels: 3,
+                ..CurveSketch::default()
+            }),
         };
         let text = document_to_string(&doc);
         let back = document_from_str(Path::new("x.prism.json"), &text).unwrap();
         assert_eq!(back, doc);
+    }
+
+    /// Every double comes back bit for bit (serde_json's `float_roundtrip`; without it the
+    /// last digit of e.g. 1.8660254037844386 came back wrong).
+    #[test]
+    fn coordinates_round_trip_bit_for_bit() {
+        let mut mesh = primitives::cube3();
+        for (k, p) in mesh.positions.iter_mut().enumerate() {
+            *p += DVec3::new(0.1, 3f64.sqrt() / 2.0, 1e-17 * k as f64) * (k as f64 + 1.0) / 7.0;
+        }
+        let doc = Document {
+            mesh,
+            curve: Some(CurveSketch::default()),
+            ..Document::default()
+        };
+        let back = document_from_str(Path::new("x.prism.json"), &document_to_string(&doc)).unwrap();
+        assert_eq!(back, doc);
+    }
+
+    #[test]
+    fn a_curve_block_with_bad_numbers_is_refused_naming_the_point() {
+        let p = Path::new("x.prism.json");
+        let text = r#"{"version": 1, "vertices": [], "faces": [],
+            "curve": {"closed": true, "points": [[0, 0], [1, 0], [0, 1]], "scheme": "circle", "levels": 99}}"#;
+        let e = document_from_str(p, text).unwrap_err().to_string();
+        assert!(e.contains("curve") && e.contains("99 levels"), "{e}");
+        let text = r#"{"version": 1, "vertices": [], "faces": [],
+            "curve": {"closed": true, "points": [[0, 0], [1, 0]], "scheme": "spline", "levels": 2}}"#;
+        let e = document_from_str(p, text).unwrap_err().to_string();
+        assert!(e.contains("spline"), "{e}");
     }
 
     #[test]

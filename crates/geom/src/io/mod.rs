@@ -95,6 +95,7 @@ pub fn load_str(path: &Path, text: &str) -> Result<(Document, Option<Vec<usize>>
                     edge_attrs: m.edge_attrs,
                     tags: m.tags,
                     pipeline: None,
+                    curve: None,
                 },
                 Some(m.face_lines),
             ))

@@ -20,23 +20,6 @@
 use crate::tags::TriangleSubdivision;
 use glam::DVec3;
 
-/// Catmull–Clark smooth edge point between vertices `a`, `b` with face points `f0`, `f1`
-/// of faces with `n0`, `n1` corners.
-#[inline]
-#[allow(clippy::too_many_arguments)]
-pub fn catmark_edge(
-    tri: TriangleSubdivision,
-    a: DVec3,
-    b: DVec3,
-    f0: DVec3,
-    f1: DVec3,
-    n0: usize,
-    n1: usize,
-) -> (f64, f64, DVec3) {
-    let (vw, fw) = catmark_edge_weights(tri, n0, n1);
-    (vw, fw, vw * (a + b) + fw * (f0 + f1))
-}
-
 /// Vertex and face weights of a Catmull–Clark smooth edge.
 #[inline]
 pub fn catmark_edge_weights(tri: TriangleSubdivision, n0: usize, n1: usize) -> (f64, f64) {

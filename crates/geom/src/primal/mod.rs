@@ -57,12 +57,18 @@ pub enum PrimalScheme {
 }
 
 impl PrimalScheme {
-    pub fn name(self) -> &'static str {
+    /// Its kind in the scheme catalogue.
+    pub fn kind(self) -> crate::scheme::SchemeKind {
+        use crate::scheme::SchemeKind;
         match self {
-            PrimalScheme::CatmullClark => "catmull-clark",
-            PrimalScheme::Loop => "loop",
-            PrimalScheme::CatmullClarkCircle => "catmull-clark-circle",
+            PrimalScheme::CatmullClark => SchemeKind::CatmullClark,
+            PrimalScheme::Loop => SchemeKind::Loop,
+            PrimalScheme::CatmullClarkCircle => SchemeKind::CatmullClarkCircle,
         }
+    }
+
+    pub fn name(self) -> &'static str {
+        self.kind().name()
     }
 
     /// The split pattern and smooth masks: Catmull–Clark for both of its variants.

@@ -1,4 +1,4 @@
-//! The three chamfer rules of seed 000 §3.1 (ALGORITHMS.md §2.2–2.4).
+//! The three chamfer rules of seed 000 §3.1 (docs/algorithms/chamfers.md).
 //!
 //! - angle bisector, distance l: `V' = V + l·unit(m₁ + m₂)` (|m₁ + m₂| = 2 sin(φ/2), so the
 //!   bisector exists for every φ in (0, 2π), reflex corners included);

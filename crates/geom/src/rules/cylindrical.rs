@@ -1,4 +1,4 @@
-//! The cylindrical family of seed 000 §3.2 (ALGORITHMS.md §2.5–2.7).
+//! The cylindrical family of seed 000 §3.2 (docs/algorithms/cylindrical.md).
 //!
 //! **Cut width** (eq. 3): to round an edge of bend angle ψ (θ = π − ψ between the faces) to
 //! radius r, each face is cut parallel to the edge at width `x = 2r(1 − sin(θ/2))/sin θ`.

@@ -1,7 +1,7 @@
 //! Doo–Sabin corner points (seed 000 eq. (1); Doo & Sabin 1978).
 //!
 //! `V_i' = Σ_j W_ij V_j` with `W_ii = (n+5)/(4n)`, `W_ij = (3 + 2cos(2π(i−j)/n))/(4n)`,
-//! evaluated in O(n) through the closed form (ALGORITHMS.md §2.1)
+//! evaluated in O(n) through the closed form (docs/algorithms/biquadratic.md)
 //! `V_i' = ¼V_i + ¾c + (1/2n)(cos(2πi/n)A + sin(2πi/n)B)`, with `c` the vertex centroid,
 //! `A = Σ_j cos(2πj/n)V_j`, `B = Σ_j sin(2πj/n)V_j`. Quads use the exact weights
 //! 9/16, 3/16, 1/16, 3/16 (no rounding of cos(π/2)). The weights are applied as printed to

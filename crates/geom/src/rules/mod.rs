@@ -1,4 +1,4 @@
-//! PRISM corner rules: where the new point of each face corner goes (ALGORITHMS.md §2).
+//! PRISM corner rules: where the new point of each face corner goes (docs/algorithms/: biquadratic.md, chamfers.md, cylindrical.md).
 //!
 //! PRISM's biquadratic step is CGAL's DQQ (dual quad quadrisection) with a *corner mask*:
 //! every rule here maps one face corner to one new point, and [`crate::biquadratic`] builds the
@@ -29,7 +29,7 @@ use crate::topology::Topology;
 use glam::DVec3;
 use thiserror::Error;
 
-/// What the vector-sum rule does at a reflex corner (ALGORITHMS.md §2.4).
+/// What the vector-sum rule does at a reflex corner (docs/algorithms/chamfers.md).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, serde::Serialize, serde::Deserialize)]
 pub enum ReflexMode {
     /// Eq. (2) as printed: the displacement points out of the face at reflex corners.
@@ -61,38 +61,10 @@ pub struct ParamError {
 }
 
 impl CornerRule {
-    /// Checks the parameter: lengths finite and > 0, 0 < α < ½ (α = ½ collapses a square).
+    /// Checks the parameter against the scheme catalogue's range (lengths finite and > 0,
+    /// 0 < α < ½: α = ½ collapses a square).
     pub fn validate(&self) -> Result<(), ParamError> {
-        let positive = |name, value: f64| {
-            if value.is_finite() && value > 0.0 {
-                Ok(())
-            } else {
-                Err(ParamError {
-                    name,
-                    value,
-                    expected: "a finite length > 0",
-                })
-            }
-        };
-        match *self {
-            CornerRule::DooSabin => Ok(()),
-            CornerRule::AngleBisector { l } => positive("l", l),
-            CornerRule::CutWidth { d } => positive("d", d),
-            CornerRule::VectorSum { alpha, .. } => {
-                if alpha.is_finite() && alpha > 0.0 && alpha < 0.5 {
-                    Ok(())
-                } else {
-                    Err(ParamError {
-                        name: "alpha",
-                        value: alpha,
-                        expected: "0 < alpha < 0.5 (0.25 or less recommended)",
-                    })
-                }
-            }
-            CornerRule::Cylindrical { r }
-            | CornerRule::Minimum { r }
-            | CornerRule::Combination { r } => positive("r", r),
-        }
+        crate::scheme::Scheme::Biquadratic(*self).validate()
     }
 
     /// Whether the rule needs per-edge cut widths (and so the flat-edge dissolve first).
@@ -161,7 +133,7 @@ pub struct RuleReport {
     pub collapsed_corners: usize,
 }
 
-/// A corner's frame (ALGORITHMS.md §0.3).
+/// A corner's frame (docs/algorithms/conventions.md).
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct CornerFrame {
     pub v: DVec3,

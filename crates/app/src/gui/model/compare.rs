@@ -6,25 +6,22 @@
 //! exactly one is selected, otherwise the first control edge that has a fillet. The target
 //! is the radius of the view's last cylindrical-family step (or the edge's own radius).
 
-use super::PrismApp;
+use super::ModelTab;
+use crate::gui::document::DocState;
 use prism_geom::analysis::measure_fillet;
-use prism_geom::{CornerRule, EdgeKey, Scheme};
+use prism_geom::{EdgeKey, Scheme};
 
-/// The target radius of a pipeline: its last step with an r.
+/// The target radius of a pipeline: its last step with an r (the rule says which).
 fn target_radius(steps: &[Scheme]) -> Option<f64> {
     steps.iter().rev().find_map(|s| match s {
-        Scheme::Biquadratic(
-            CornerRule::Cylindrical { r }
-            | CornerRule::Minimum { r }
-            | CornerRule::Combination { r },
-        ) => Some(*r),
-        _ => None,
+        Scheme::Biquadratic(rule) => rule.radius(),
+        Scheme::Primal(_) => None,
     })
 }
 
-impl PrismApp {
+impl ModelTab {
     /// The fillet measure of view `i`'s shown level, as table text.
-    pub fn fillet_text(&mut self, i: usize) -> String {
+    pub fn fillet_text(&mut self, i: usize, doc: &DocState) -> String {
         let edge = (self.sel_edges.len() == 1)
             .then(|| self.sel_edges.iter().next().copied())
             .flatten();
@@ -38,7 +35,7 @@ impl PrismApp {
         let text = match target_radius(v.steps()) {
             None => "—".to_string(),
             Some(r) => {
-                let control = &self.doc.mesh;
+                let control = &doc.mesh;
                 let refined = &v.pipeline.levels()[v.shown()].mesh;
                 let candidates: Vec<EdgeKey> = match edge {
                     Some(e) => vec![e],
@@ -46,12 +43,7 @@ impl PrismApp {
                 };
                 // Each try slices the refined mesh: a few edges, not all of a big model.
                 let found = candidates.iter().take(16).find_map(|e| {
-                    let r = self
-                        .doc
-                        .edge_attrs
-                        .get(e)
-                        .and_then(|a| a.radius)
-                        .unwrap_or(r);
+                    let r = doc.edge_attrs.get(e).and_then(|a| a.radius).unwrap_or(r);
                     measure_fillet(control, e.0, e.1, refined, r)
                         .ok()
                         .map(|m| (*e, r, m))
@@ -72,10 +64,10 @@ impl PrismApp {
         text
     }
 
-    pub(super) fn compare_table(&mut self, ui: &mut egui::Ui) {
+    pub(super) fn compare_table(&mut self, ui: &mut egui::Ui, doc: &DocState) {
         let rows: Vec<[String; 7]> = (0..self.views.len())
             .map(|i| {
-                let fillet = self.fillet_text(i);
+                let fillet = self.fillet_text(i, doc);
                 let v = &self.views[i];
                 let k = v.shown();
                 let lv = &v.pipeline.levels()[k];
@@ -117,7 +109,6 @@ impl PrismApp {
                             if c == 0 {
                                 if ui.selectable_label(i == self.active, cell).clicked() {
                                     self.active = i;
-                                    self.mark_overlays();
                                 }
                             } else if c == 4 && cell != "0" {
                                 ui.colored_label(egui::Color32::from_rgb(240, 110, 90), cell);

@@ -1,22 +1,15 @@
-//! The 3D views: the grid of one, two or four views, the mouse in them (orbit, pan, zoom;
-//! pick, box-select and move with the Vertices and Edges tools), and the scene and overlay
-//! of each view's shown level.
+//! The 3D views: the grid of one, two or four views and the mouse in them (orbit, pan, zoom;
+//! pick, box-select and move with the Vertices and Edges tools). A vertex drag queues one
+//! [`Edit::DragVertices`] a frame, all with the drag's number, so the whole drag is one undo
+//! step.
 
 use super::pick::{self, Projector};
-use super::{MoveDrag, PrismApp, Tool, viewport};
+use super::{ModelTab, Tool, VertexDrag};
+use crate::gui::command::{Command, Edit};
+use crate::gui::document::DocState;
+use crate::gui::viewport;
 use glam::{DVec3, Vec3};
-use prism_geom::{EdgeKey, Scheme};
-use prism_viewport::Scene;
 use std::collections::BTreeSet;
-use std::sync::Arc;
-
-const CONTROL: [f32; 3] = [0.55, 0.62, 0.80];
-const SELECTED: [f32; 3] = [1.0, 0.86, 0.20];
-const CREASE: [f32; 3] = [0.95, 0.30, 0.25];
-const RADIUS: [f32; 3] = [0.25, 0.85, 0.90];
-const CAGE: [f32; 3] = [0.95, 0.75, 0.25];
-const CORNER: [f32; 3] = [0.45, 0.95, 0.45];
-const LIMIT: [f32; 3] = [0.95, 0.45, 0.95];
 
 /// Rectangles of `n` views in `area` (side by side for two, 2×2 for four).
 pub fn grid(area: egui::Rect, n: usize) -> Vec<egui::Rect> {
@@ -50,7 +43,7 @@ pub fn grid(area: egui::Rect, n: usize) -> Vec<egui::Rect> {
     }
 }
 
-impl PrismApp {
+impl ModelTab {
     /// The projector of view rectangle `rect` for view `i`.
     pub fn projector(&self, i: usize, rect: egui::Rect) -> Projector {
         Projector {
@@ -60,7 +53,7 @@ impl PrismApp {
         }
     }
 
-    pub(super) fn views_ui(&mut self, ui: &mut egui::Ui) {
+    pub(super) fn views_ui(&mut self, ui: &mut egui::Ui, doc: &DocState) {
         let area = ui.available_rect_before_wrap();
         let n = self.views.len();
         let cells = grid(area, n);
@@ -69,7 +62,7 @@ impl PrismApp {
             .map(|c| c.width() / (c.height() - if n > 1 { 20.0 } else { 0.0 }).max(1.0))
             .fold(f32::MAX, f32::min);
         if !self.framed && !self.views[0].scene.vertices.is_empty() {
-            self.frame();
+            self.frame(doc);
         }
         for (i, cell) in cells.into_iter().enumerate() {
             let header = if n > 1 {
@@ -92,7 +85,7 @@ impl PrismApp {
                 let text = format!(
                     "View {}: {}",
                     i + 1,
-                    prism_geom::scheme::format_pipeline(&self.doc.pipelines[i])
+                    prism_geom::scheme::format_pipeline(&doc.pipelines[i])
                 );
                 ui.painter().text(
                     header.left_center() + egui::vec2(6.0, 0.0),
@@ -102,7 +95,7 @@ impl PrismApp {
                     egui::Color32::from_gray(220),
                 );
             }
-            self.view_input(ui, i, rect);
+            self.view_input(ui, i, rect, doc);
             let bg = prism_viewport::renderer::BACKGROUND;
             let srgb = |x: f64| (255.0 * x.powf(1.0 / 2.2)) as u8;
             ui.painter().rect_filled(
@@ -152,15 +145,14 @@ impl PrismApp {
         ui.allocate_rect(area, egui::Sense::hover());
     }
 
-    fn view_input(&mut self, ui: &mut egui::Ui, i: usize, rect: egui::Rect) {
+    fn view_input(&mut self, ui: &mut egui::Ui, i: usize, rect: egui::Rect, doc: &DocState) {
         let resp = ui.interact(
             rect,
             ui.scope_id().with(("view", i)),
             egui::Sense::click_and_drag(),
         );
-        if (resp.clicked() || resp.drag_started() || resp.secondary_clicked()) && self.active != i {
+        if resp.clicked() || resp.drag_started() || resp.secondary_clicked() {
             self.active = i;
-            self.mark_overlays();
         }
         let shift = ui.input(|inp| inp.modifiers.shift);
         let (orbit_button, pan_buttons) = match self.tool {
@@ -195,26 +187,27 @@ impl PrismApp {
         };
         let proj = self.projector(i, rect);
         if resp.clicked() {
-            self.click_pick(i, &proj, pos, shift);
+            self.click_pick(i, &proj, pos, shift, doc);
         }
         if resp.drag_started_by(egui::PointerButton::Primary) {
             let press = ui.input(|inp| inp.pointer.press_origin()).unwrap_or(pos);
             let on_selected = self.tool == Tool::Vertices
-                && pick::pick_vertex(&proj, None, &self.doc.mesh.positions, press, 8.0)
-                    .is_some_and(|v| {
+                && pick::pick_vertex(&proj, None, &doc.mesh.positions, press, 8.0).is_some_and(
+                    |v| {
                         if !self.sel_verts.contains(&v) && !shift {
                             self.sel_verts = BTreeSet::from([v]);
-                            self.mark_overlays();
                         }
                         self.sel_verts.contains(&v)
-                    });
+                    },
+                );
             if on_selected {
-                self.history.record(self.doc.clone());
-                self.moving = Some(MoveDrag {
+                self.drags += 1;
+                self.drag = Some(VertexDrag {
+                    id: self.drags,
                     start: self
                         .sel_verts
                         .iter()
-                        .map(|&v| (v, self.doc.mesh.positions[v as usize]))
+                        .map(|&v| (v, doc.mesh.positions[v as usize]))
                         .collect(),
                 });
             } else {
@@ -222,20 +215,18 @@ impl PrismApp {
             }
         }
         if resp.dragged_by(egui::PointerButton::Primary)
-            && let Some(mv) = &self.moving
+            && let Some(mv) = &self.drag
         {
             let press = ui.input(|inp| inp.pointer.press_origin()).unwrap_or(pos);
             let d = self.drag_vector(pos - press, rect);
-            for &(v, p) in &mv.start {
-                self.doc.mesh.positions[v as usize] = p + d;
-            }
-            self.sync(true);
-            self.mark_overlays();
+            let to = mv.start.iter().map(|&(v, p)| (v, p + d)).collect();
+            let drag = mv.id;
+            self.push(Edit::DragVertices { drag, to });
         }
         if resp.drag_stopped() {
-            self.moving = None;
+            self.drag = None;
             if let Some(start) = self.box_start.take() {
-                self.box_pick(i, &proj, egui::Rect::from_two_pos(start, pos), shift);
+                self.box_pick(i, &proj, egui::Rect::from_two_pos(start, pos), shift, doc);
             }
         }
     }
@@ -266,10 +257,17 @@ impl PrismApp {
     }
 
     /// A click with the Vertices or Edges tool.
-    pub fn click_pick(&mut self, i: usize, proj: &Projector, pos: egui::Pos2, add: bool) {
+    pub fn click_pick(
+        &mut self,
+        i: usize,
+        proj: &Projector,
+        pos: egui::Pos2,
+        add: bool,
+        doc: &DocState,
+    ) {
         match self.tool {
             Tool::Vertices => {
-                let hit = pick::pick_vertex(proj, None, &self.doc.mesh.positions, pos, 8.0);
+                let hit = pick::pick_vertex(proj, None, &doc.mesh.positions, pos, 8.0);
                 toggle(&mut self.sel_verts, hit, add);
             }
             Tool::Edges => {
@@ -285,14 +283,14 @@ impl PrismApp {
                         Ok(map) => {
                             let o = map.get(&e).copied();
                             if o.is_none() {
-                                self.note = Some(
+                                self.pending.push(Command::Say(
                                     "that edge lies inside a face of the control mesh: it follows no control edge".into(),
-                                );
+                                ));
                             }
                             o
                         }
                         Err(msg) => {
-                            self.note = Some(msg.clone());
+                            self.pending.push(Command::Say(msg.clone()));
                             None
                         }
                     },
@@ -303,18 +301,24 @@ impl PrismApp {
             }
             Tool::Orbit => {}
         }
-        self.mark_overlays();
     }
 
     /// A dragged box with the Vertices or Edges tool.
-    pub fn box_pick(&mut self, i: usize, proj: &Projector, rect: egui::Rect, add: bool) {
+    pub fn box_pick(
+        &mut self,
+        i: usize,
+        proj: &Projector,
+        rect: egui::Rect,
+        add: bool,
+        doc: &DocState,
+    ) {
         match self.tool {
             Tool::Vertices => {
                 if !add {
                     self.sel_verts.clear();
                 }
                 self.sel_verts
-                    .extend(pick::box_vertices(proj, &self.doc.mesh.positions, rect));
+                    .extend(pick::box_vertices(proj, &doc.mesh.positions, rect));
             }
             Tool::Edges => {
                 let v = &mut self.views[i];
@@ -329,131 +333,11 @@ impl PrismApp {
                     Ok(map) => self
                         .sel_edges
                         .extend(inside.iter().filter_map(|e| map.get(e).copied())),
-                    Err(msg) => self.note = Some(msg.clone()),
+                    Err(msg) => self.pending.push(Command::Say(msg.clone())),
                 }
             }
             Tool::Orbit => {}
         }
-        self.mark_overlays();
-    }
-
-    /// Rebuilds the scenes and overlays that changed.
-    pub(super) fn rebuild_scenes(&mut self) {
-        for i in 0..self.views.len() {
-            self.views[i].refresh_scene(&self.waker);
-            if self.views[i].overlay_dirty {
-                let overlay = self.build_overlay(i);
-                let v = &mut self.views[i];
-                v.overlay = Arc::new(overlay);
-                v.overlay_dirty = false;
-                v.version += 1;
-            }
-        }
-    }
-
-    /// Lines and points over view `i`'s level: cages, marked and selected edges, corner
-    /// points with their displacement vectors, limit points with normals.
-    fn build_overlay(&mut self, i: usize) -> Scene {
-        let (origin, bbox, radius) = {
-            let s = &self.views[i].scene;
-            (s.origin, s.bbox, s.radius() as f64)
-        };
-        let mut o = Scene {
-            origin,
-            bbox,
-            ..Scene::default()
-        };
-        let k = self.views[i].shown();
-        let size = 0.008 * radius;
-        let doc = &self.doc;
-        if self.display.cage && k > 0 {
-            o.add_cage(&self.views[i].pipeline.levels()[k - 1].mesh, CAGE);
-        }
-        if self.tool == Tool::Vertices && i == self.active {
-            o.add_cage(&doc.mesh, CONTROL);
-            o.add_points(&doc.mesh.positions, size, CONTROL);
-            let sel: Vec<DVec3> = self
-                .sel_verts
-                .iter()
-                .filter_map(|&v| doc.mesh.positions.get(v as usize).copied())
-                .collect();
-            o.add_points(&sel, 2.0 * size, SELECTED);
-        }
-        // Marked and selected control edges, drawn where they are on this level.
-        let creased: BTreeSet<EdgeKey> = doc
-            .edge_attrs
-            .iter()
-            .filter(|(_, a)| a.crease > 0.0)
-            .map(|(e, _)| *e)
-            .collect();
-        let radiused: BTreeSet<EdgeKey> = doc
-            .edge_attrs
-            .iter()
-            .filter(|(_, a)| a.radius.is_some())
-            .map(|(e, _)| *e)
-            .collect();
-        let want = !creased.is_empty() || !radiused.is_empty() || !self.sel_edges.is_empty();
-        if want {
-            let origins = self.views[i].origins();
-            if let Ok(map) = origins.as_ref() {
-                let mesh = &self.views[i].pipeline.levels()[k].mesh;
-                let segs = |set: &BTreeSet<EdgeKey>| -> Vec<(DVec3, DVec3)> {
-                    map.iter()
-                        .filter(|(_, c)| set.contains(c))
-                        .map(|(e, _)| (mesh.positions[e.0 as usize], mesh.positions[e.1 as usize]))
-                        .collect()
-                };
-                o.add_segments(&segs(&creased), CREASE);
-                o.add_segments(&segs(&radiused), RADIUS);
-                o.add_segments(&segs(&self.sel_edges), SELECTED);
-            }
-        }
-        let v = &self.views[i];
-        let levels = v.pipeline.levels();
-        if self.display.corners && k > 0 && matches!(v.steps()[k - 1], Scheme::Biquadratic(_)) {
-            let lv = &levels[k];
-            let parent = &levels[k - 1].mesh;
-            if lv.report.as_ref().is_some_and(|r| r.dissolved_edges == 0)
-                && lv.mesh.num_vertices() == parent.num_corners()
-            {
-                // Vertex c of a biquadratic level is the corner point of parent corner c.
-                let vecs: Vec<(DVec3, DVec3)> = (0..parent.num_corners())
-                    .map(|c| {
-                        (
-                            parent.positions[parent.corner_verts[c] as usize],
-                            lv.mesh.positions[c],
-                        )
-                    })
-                    .collect();
-                o.add_segments(&vecs, [0.30, 0.65, 0.30]);
-                o.add_points(&lv.mesh.positions, size, CORNER);
-            }
-        }
-        if self.display.limit {
-            let scheme = if k > 0 {
-                Some(v.steps()[k - 1])
-            } else {
-                v.steps().first().copied()
-            };
-            if let Some(Scheme::Primal(s)) = scheme {
-                let lv = &levels[k];
-                match prism_geom::limit_points(&lv.mesh, &lv.edge_attrs, &lv.tags, s) {
-                    Ok(lp) => {
-                        o.add_points(&lp.positions, size, LIMIT);
-                        let len = 0.05 * radius;
-                        let normals: Vec<(DVec3, DVec3)> = lp
-                            .positions
-                            .iter()
-                            .zip(&lp.normals)
-                            .map(|(p, n)| (*p, *p + len * *n))
-                            .collect();
-                        o.add_segments(&normals, LIMIT);
-                    }
-                    Err(e) => self.note = Some(format!("limit points: {e}")),
-                }
-            }
-        }
-        o
     }
 }
 

@@ -1,77 +1,27 @@
-//! The menu bar, the side panel (pipeline, tools, vertices, edges, display, compare) and
-//! the status bar.
+//! The Model tab's side panel (pipeline, tools, vertices, edges, display, compare) and its
+//! status bar. Panels read the document and queue commands; they write only the tab's own
+//! state (selection, tool, display, the level shown).
 
 use super::scheme_editor::scheme_editor;
-use super::{Coloring, PrismApp, SAMPLES_FILES, Tab, Tool};
+use super::{Coloring, ModelTab, Tool};
+use crate::gui::command::{Command, EdgeMark, Edit};
+use crate::gui::document::{DocState, Document};
 use glam::DVec3;
-use prism_geom::Scheme;
 
-/// A change to one pipeline, decided inside the step rows and applied after them.
-type StepEdit = Box<dyn FnOnce(&mut Vec<Scheme>)>;
-
-impl PrismApp {
-    pub(super) fn menu_bar(&mut self, ui: &mut egui::Ui) {
-        egui::MenuBar::new().ui(ui, |ui| {
-            ui.menu_button("File", |ui| {
-                if ui.button("Open… (Ctrl+O)").clicked() {
-                    self.open_dialog();
-                }
-                ui.menu_button("Samples", |ui| {
-                    for (k, (name, _, _)) in SAMPLES_FILES.iter().enumerate() {
-                        if ui.button(*name).clicked() {
-                            self.open_sample(k);
-                        }
-                    }
-                });
-                ui.separator();
-                if ui.button("Save (Ctrl+S)").clicked() {
-                    self.save_dialog(false);
-                }
-                if ui.button("Save as…").clicked() {
-                    self.save_dialog(true);
-                }
-                ui.menu_button("Export the shown level", |ui| {
-                    for ext in ["obj", "stl", "glb"] {
-                        if ui.button(format!("{}…", ext.to_uppercase())).clicked() {
-                            self.export_dialog(ext);
-                        }
-                    }
-                });
-            });
-            ui.menu_button("Edit", |ui| {
-                if ui
-                    .add_enabled(self.history.can_undo(), egui::Button::new("Undo (Ctrl+Z)"))
-                    .clicked()
-                {
-                    self.undo();
-                }
-                if ui
-                    .add_enabled(
-                        self.history.can_redo(),
-                        egui::Button::new("Redo (Ctrl+Shift+Z)"),
-                    )
-                    .clicked()
-                {
-                    self.redo();
-                }
-            });
-            ui.separator();
-            ui.selectable_value(&mut self.tab, Tab::Model, "Model");
-            ui.selectable_value(&mut self.tab, Tab::Curves, "Curves");
-        });
-    }
-
-    pub(super) fn side_panel(&mut self, ui: &mut egui::Ui) {
-        ui.label(egui::RichText::new(&self.origin.name).strong());
+impl ModelTab {
+    pub(super) fn side_panel(&mut self, ui: &mut egui::Ui, doc: &Document) {
+        ui.label(egui::RichText::new(&doc.origin().name).strong());
         ui.separator();
-        self.pipeline_section(ui);
+        let d = doc.state();
+        self.pipeline_section(ui, d);
         ui.separator();
-        self.tool_section(ui);
+        self.tool_section(ui, d);
         ui.separator();
-        self.display_section(ui);
+        self.display_section(ui, d);
         ui.separator();
         ui.heading("Compare");
-        let mut n = self.doc.pipelines.len();
+        let views = d.pipelines.len();
+        let mut n = views;
         ui.horizontal(|ui| {
             for k in [1, 2, 4] {
                 ui.radio_value(
@@ -81,30 +31,35 @@ impl PrismApp {
                 );
             }
         });
-        if n != self.doc.pipelines.len() {
-            self.set_compare(n);
+        if n != views {
+            self.push(Edit::SetViews(n));
         }
         if n > 1 {
             ui.label("Click a view to edit its pipeline here; cameras are linked.");
         }
     }
 
-    fn pipeline_section(&mut self, ui: &mut egui::Ui) {
+    fn pipeline_section(&mut self, ui: &mut egui::Ui, doc: &DocState) {
         let a = self.active;
-        if self.doc.pipelines.len() > 1 {
+        let view = a;
+        if doc.pipelines.len() > 1 {
             ui.heading(format!("Pipeline of view {}", a + 1));
         } else {
             ui.heading("Pipeline");
         }
-        let steps = self.doc.pipelines[a].clone();
-        let mut edit: Option<StepEdit> = None;
+        let steps = &doc.pipelines[a];
+        let mut edit: Option<Edit> = None;
         let n = steps.len();
         for (k, s) in steps.iter().enumerate() {
             ui.horizontal(|ui| {
                 ui.label(format!("{}.", k + 1));
                 let name = format!("scheme of step {}", k + 1);
-                if let Some(new) = scheme_editor(ui, ("step", a, k), &name, s) {
-                    edit = Some(Box::new(move |p| p[k] = new));
+                if let Some(scheme) = scheme_editor(ui, ("step", a, k), &name, s) {
+                    edit = Some(Edit::SetStep {
+                        view,
+                        index: k,
+                        scheme,
+                    });
                 }
                 if ui
                     .add_enabled(
@@ -114,7 +69,7 @@ impl PrismApp {
                     .on_hover_text("move up")
                     .clicked()
                 {
-                    edit = Some(Box::new(move |p| p.swap(k - 1, k)));
+                    edit = Some(Edit::SwapSteps { view, index: k - 1 });
                 }
                 if ui
                     .add_enabled(
@@ -124,18 +79,17 @@ impl PrismApp {
                     .on_hover_text("move down")
                     .clicked()
                 {
-                    edit = Some(Box::new(move |p| p.swap(k, k + 1)));
+                    edit = Some(Edit::SwapSteps { view, index: k });
                 }
                 if ui.small_button("×").on_hover_text("remove").clicked() {
-                    edit = Some(Box::new(move |p| {
-                        p.remove(k);
-                    }));
+                    edit = Some(Edit::RemoveStep { view, index: k });
                 }
             });
         }
-        if let Some(f) = edit {
-            self.change(|d| f(&mut d.pipelines[a]));
+        if let Some(e) = edit {
+            self.push(e);
         }
+        self.pipeline_text(ui, view, steps);
         ui.label("Next step:");
         if let Some(n) = scheme_editor(ui, "next", "scheme of the next step", &self.next) {
             self.next = n;
@@ -157,7 +111,6 @@ impl PrismApp {
                 .changed()
             {
                 v.level = lv;
-                v.scene_dirty = true;
             }
         }
         if let Some(job) = &v.job {
@@ -171,7 +124,7 @@ impl PrismApp {
                         .desired_width(170.0),
                 );
                 if ui.button("Cancel").clicked() {
-                    v.cancel();
+                    self.pending.push(Command::Cancel { view: a });
                 }
             });
         }
@@ -185,27 +138,58 @@ impl PrismApp {
         });
     }
 
-    fn tool_section(&mut self, ui: &mut egui::Ui) {
+    /// The pipeline as text (`combination:r=0.2,doo-sabin`, the CLI's form): typed and
+    /// applied with Enter, or copied out.
+    fn pipeline_text(&mut self, ui: &mut egui::Ui, view: usize, steps: &[prism_geom::Scheme]) {
+        ui.horizontal(|ui| {
+            ui.label("as text:");
+            let shown = prism_geom::scheme::format_pipeline(steps);
+            let mut text = match &self.pipeline_edit {
+                Some((v, t)) if *v == view => t.clone(),
+                _ => shown.clone(),
+            };
+            let resp = ui.add(
+                egui::TextEdit::singleline(&mut text)
+                    .desired_width(ui.available_width())
+                    .hint_text("e.g. combination:r=0.2,doo-sabin"),
+            );
+            if resp.changed() {
+                self.pipeline_edit = Some((view, text.clone()));
+            }
+            if resp.lost_focus() {
+                if ui.input(|i| i.key_pressed(egui::Key::Enter)) && text != shown {
+                    let parsed = if text.trim().is_empty() {
+                        Ok(Vec::new())
+                    } else {
+                        prism_geom::parse_pipeline(&text)
+                    };
+                    match parsed {
+                        Ok(steps) => self.push(Edit::SetPipeline { view, steps }),
+                        Err(e) => self.push(Command::Say(format!("pipeline: {e}"))),
+                    }
+                }
+                self.pipeline_edit = None;
+            }
+        });
+    }
+
+    fn tool_section(&mut self, ui: &mut egui::Ui, doc: &DocState) {
         ui.heading("Tool");
-        let before = self.tool;
         ui.horizontal(|ui| {
             ui.selectable_value(&mut self.tool, Tool::Orbit, "Orbit");
             ui.selectable_value(&mut self.tool, Tool::Vertices, "Vertices");
             ui.selectable_value(&mut self.tool, Tool::Edges, "Edges");
         });
-        if before != self.tool {
-            self.mark_overlays();
-        }
         match self.tool {
             Tool::Orbit => {
                 ui.label("Drag to turn, right-drag to pan, scroll to zoom.");
             }
-            Tool::Vertices => self.vertex_section(ui),
-            Tool::Edges => self.edge_section(ui),
+            Tool::Vertices => self.vertex_section(ui, doc),
+            Tool::Edges => self.edge_section(ui, doc),
         }
     }
 
-    fn vertex_section(&mut self, ui: &mut egui::Ui) {
+    fn vertex_section(&mut self, ui: &mut egui::Ui, doc: &DocState) {
         ui.label("Click, shift-click or drag a box to select control vertices; drag a selected one to move it (X, Y, Z hold it to an axis). Right-drag turns the view.");
         ui.horizontal(|ui| {
             ui.label("axis:");
@@ -230,7 +214,7 @@ impl PrismApp {
         // Typed coordinates: the vertex, or the centre of several (moving it moves them all).
         let pts: Vec<DVec3> = sel
             .iter()
-            .map(|&v| self.doc.mesh.positions[v as usize])
+            .map(|&v| doc.mesh.positions[v as usize])
             .collect();
         let centre = pts.iter().copied().sum::<DVec3>() / pts.len() as f64;
         let mut c = centre;
@@ -249,12 +233,12 @@ impl PrismApp {
         }
     }
 
-    fn edge_section(&mut self, ui: &mut egui::Ui) {
+    fn edge_section(&mut self, ui: &mut egui::Ui, doc: &DocState) {
         ui.label("Click an edge on any level (shift-click adds, drag a box); marks go on the control edge it comes from. Right-drag turns the view.");
         ui.horizontal(|ui| {
             if ui.button("Select edges sharper than").clicked() {
                 let add = ui.input(|i| i.modifiers.shift);
-                self.select_sharper_than(self.sharper_deg, add);
+                self.select_sharper_than(doc, self.sharper_deg, add);
             }
             ui.add(
                 egui::DragValue::new(&mut self.sharper_deg)
@@ -265,7 +249,7 @@ impl PrismApp {
         ui.label(format!("{} control edge(s) selected", self.sel_edges.len()));
         ui.horizontal(|ui| {
             if ui.button("Crease").clicked() {
-                self.mark_crease(self.crease_value);
+                self.mark(EdgeMark::Crease(self.crease_value));
             }
             ui.add(
                 egui::Slider::new(&mut self.crease_value, 0.0..=10.0)
@@ -274,7 +258,7 @@ impl PrismApp {
         });
         ui.horizontal(|ui| {
             if ui.button("Own radius").clicked() {
-                self.mark_radius(Some(self.radius_value));
+                self.mark(EdgeMark::Radius(Some(self.radius_value)));
             }
             ui.add(
                 egui::DragValue::new(&mut self.radius_value)
@@ -282,21 +266,20 @@ impl PrismApp {
                     .range(1e-4..=1e6),
             );
             if ui.button("Step's radius").clicked() {
-                self.mark_radius(None);
+                self.mark(EdgeMark::Radius(None));
             }
         });
         if ui.button("Clear crease").clicked() {
-            self.mark_crease(0.0);
+            self.mark(EdgeMark::Crease(0.0));
         }
-        let marked = self.doc.edge_attrs.len();
+        let marked = doc.edge_attrs.len();
         ui.label(format!(
             "{marked} control edge(s) marked (red: crease, cyan: own radius, yellow: selected)"
         ));
     }
 
-    fn display_section(&mut self, ui: &mut egui::Ui) {
+    fn display_section(&mut self, ui: &mut egui::Ui, doc: &DocState) {
         ui.heading("Display");
-        let before = self.display.clone();
         let d = &mut self.display;
         ui.checkbox(&mut d.smooth, "smooth shading (F)");
         ui.checkbox(&mut d.wireframe, "wireframe (W)");
@@ -348,22 +331,12 @@ impl PrismApp {
                 }
             });
         }
-        if *d != before {
-            let shading = d.smooth != before.smooth
-                || d.wireframe != before.wireframe
-                || d.color != before.color;
-            if shading {
-                self.display_changed();
-            } else {
-                self.mark_overlays();
-            }
-        }
         if ui.button("Frame the model").clicked() {
-            self.frame();
+            self.frame(doc);
         }
     }
 
-    pub(super) fn status(&mut self, ui: &mut egui::Ui) {
+    pub(super) fn status(&mut self, ui: &mut egui::Ui, note: Option<&str>) {
         let v = &self.views[self.active];
         let k = v.shown();
         let lv = &v.pipeline.levels()[k];
@@ -390,7 +363,7 @@ impl PrismApp {
             if let Some(e) = &v.error {
                 ui.colored_label(egui::Color32::from_rgb(240, 110, 90), e);
             }
-            if let Some(n) = &self.note {
+            if let Some(n) = note {
                 ui.separator();
                 ui.label(n);
             }

@@ -1,12 +1,14 @@
 //! One view's pipeline: the last computed result on screen, the job computing the next one,
 //! the scene of the level shown and the overlay drawn over it (cages, marked and selected
-//! edges, points, normals), and caches that depend on the level (edge lists, edge origins).
+//! edges, points, normals), and caches that depend on the level (edge lists, edge origins,
+//! limit points). Every cache is keyed on what it was made from — the result's generation,
+//! the level, the display options — so nothing has to remember to mark it stale.
 
 use super::worker::{Finished, Job, over_budget};
 use prism_geom::ancestry::edge_origins;
 use prism_geom::biquadratic::FaceKind;
 use prism_geom::error::OverBudget;
-use prism_geom::{EdgeKey, Level, Pipeline, Scheme};
+use prism_geom::{EdgeKey, Level, LimitPoints, Pipeline, Scheme};
 use prism_viewport::scene::scheme_color;
 use prism_viewport::{ColorBy, Scene, SceneOptions};
 use std::collections::HashMap;
@@ -51,6 +53,13 @@ type SceneKey = (u64, usize, SceneOptions);
 type LevelKey = (u64, usize);
 /// The control edge of every edge of a level, or why there is none.
 pub type Origins = Result<HashMap<EdgeKey, EdgeKey>, String>;
+/// Limit points and normals of a level, or why there are none.
+pub type Limits = Result<LimitPoints, String>;
+
+enum LimitSlot {
+    Computing(Receiver<Limits>),
+    Ready(Arc<Limits>),
+}
 
 /// What a finished job left to say.
 pub enum Outcome {
@@ -74,17 +83,21 @@ pub struct ViewPipe {
     /// Budget for the next job when the user allowed more than the default.
     pub budget_override: Option<u64>,
     pub scene: Arc<Scene>,
+    /// What the scene on screen was made from.
+    scene_key: Option<SceneKey>,
     pub overlay: Arc<Scene>,
+    /// What the overlay on screen was made from (a hash of its inputs).
+    pub overlay_key: Option<u64>,
     /// Bumped whenever the scene or overlay changes (the GPU upload compares it).
     pub version: u64,
-    pub scene_dirty: bool,
     /// The display options scenes are built with (the worker prepares the next one).
     pub scene_opts: SceneOptions,
     /// A scene being prepared on a thread, and the (generation, level, options) it is for.
     scene_job: Option<(SceneKey, Receiver<Scene>)>,
-    pub overlay_dirty: bool,
     edges: Option<(LevelKey, Arc<Vec<EdgeKey>>)>,
     origins: Option<(LevelKey, Arc<Origins>)>,
+    /// Limit points of a level: computed on a thread, then kept.
+    limits: Option<(LevelKey, LimitSlot)>,
     /// Cached compare-table fillet measure: key (generation, edge), text.
     pub fillet: Option<((u64, Option<EdgeKey>), String)>,
 }
@@ -101,14 +114,15 @@ impl ViewPipe {
             error: None,
             budget_override: None,
             scene: Arc::new(Scene::default()),
+            scene_key: None,
             overlay: Arc::new(Scene::default()),
+            overlay_key: None,
             version: 0,
-            scene_dirty: true,
             scene_opts: SceneOptions::default(),
             scene_job: None,
-            overlay_dirty: true,
             edges: None,
             origins: None,
+            limits: None,
             fillet: None,
         }
     }
@@ -194,7 +208,8 @@ impl ViewPipe {
                 && p.0 == self.shown()
                 && p.1 == self.scene_opts
             {
-                self.install_scene(p.2);
+                let (k, opts, scene) = *p;
+                self.install_scene(scene, (self.generation, k, opts));
             }
         }
         if let Some(next) = self.wanted.take() {
@@ -203,38 +218,35 @@ impl ViewPipe {
         out
     }
 
-    /// Brings the scene up to date with the shown level and the display options: small
-    /// levels at once, big ones on a thread (the old scene stays on screen meanwhile).
+    /// Brings the scene up to date with the shown level and the display options `opts`:
+    /// small levels at once, big ones on a thread (the old scene stays on screen meanwhile).
     /// Returns whether the scene changed.
-    pub fn refresh_scene(&mut self, wake: &Waker) -> bool {
-        let key: SceneKey = (self.generation, self.shown(), self.scene_opts.clone());
+    pub fn refresh_scene(&mut self, opts: &SceneOptions, wake: &Waker) -> bool {
+        self.scene_opts = opts.clone();
+        let key: SceneKey = (self.generation, self.shown(), opts.clone());
         let mut changed = false;
         if let Some((k, rx)) = &self.scene_job {
             match rx.try_recv() {
                 Ok(scene) => {
-                    if *k == key {
-                        self.install_scene(scene);
-                        changed = true;
-                    } else {
-                        self.scene_dirty = true;
-                    }
+                    let k = k.clone();
                     self.scene_job = None;
+                    self.install_scene(scene, k);
+                    changed = true;
                 }
                 Err(TryRecvError::Empty) => {}
-                Err(TryRecvError::Disconnected) => {
-                    self.scene_job = None;
-                    self.scene_dirty = true;
-                }
+                Err(TryRecvError::Disconnected) => self.scene_job = None,
             }
         }
-        if !self.scene_dirty || self.scene_job.as_ref().is_some_and(|(k, _)| *k == key) {
+        if self.scene_key.as_ref() == Some(&key)
+            || self.scene_job.as_ref().is_some_and(|(k, _)| *k == key)
+        {
             return changed;
         }
         let lv = &self.pipeline.levels()[key.1];
         let by = made_by(&self.pipeline, key.1);
         if lv.mesh.num_corners() < ASYNC_SCENE_CORNERS {
             let scene = level_scene(lv, by, &key.2);
-            self.install_scene(scene);
+            self.install_scene(scene, key);
             return true;
         }
         let (tx, rx) = std::sync::mpsc::channel();
@@ -244,7 +256,6 @@ impl ViewPipe {
             w();
         });
         self.scene_job = Some((key, rx));
-        self.scene_dirty = false;
         changed
     }
 
@@ -253,11 +264,16 @@ impl ViewPipe {
         self.scene_job.is_some()
     }
 
-    fn install_scene(&mut self, scene: Scene) {
+    fn install_scene(&mut self, scene: Scene, key: SceneKey) {
         self.scene = Arc::new(scene);
-        self.scene_dirty = false;
-        self.overlay_dirty = true;
+        self.scene_key = Some(key);
         self.version += 1;
+    }
+
+    /// The number of scenes installed so far, for overlay keys (the overlay uses the
+    /// scene's origin and size).
+    pub fn scene_serial(&self) -> u64 {
+        self.version
     }
 
     /// Cancels the running job and forgets the queued one.
@@ -271,8 +287,6 @@ impl ViewPipe {
     fn replace(&mut self, p: Pipeline) {
         self.pipeline = p;
         self.generation += 1;
-        self.scene_dirty = true;
-        self.overlay_dirty = true;
         self.budget_override = None;
     }
 
@@ -303,5 +317,46 @@ impl ViewPipe {
         );
         self.origins = Some((key, o.clone()));
         o
+    }
+
+    /// Limit points and normals of the shown level under `scheme`, computed on a thread
+    /// the first time they are asked for (None until they are there; `wake` repaints then).
+    pub fn limit_points(
+        &mut self,
+        scheme: prism_geom::PrimalScheme,
+        wake: &Waker,
+    ) -> Option<Arc<Limits>> {
+        let key = (self.generation, self.shown());
+        if let Some((k, slot)) = &mut self.limits
+            && *k == key
+        {
+            match slot {
+                LimitSlot::Ready(l) => return Some(l.clone()),
+                LimitSlot::Computing(rx) => match rx.try_recv() {
+                    Ok(l) => {
+                        let l = Arc::new(l);
+                        *slot = LimitSlot::Ready(l.clone());
+                        return Some(l);
+                    }
+                    Err(TryRecvError::Empty) => return None,
+                    Err(TryRecvError::Disconnected) => {
+                        let l = Arc::new(Err("the limit computation stopped".to_string()));
+                        *slot = LimitSlot::Ready(l.clone());
+                        return Some(l);
+                    }
+                },
+            }
+        }
+        let lv = self.pipeline.levels()[key.1].clone();
+        let (tx, rx) = std::sync::mpsc::channel();
+        let w = wake.clone();
+        std::thread::spawn(move || {
+            let l = prism_geom::limit_points(&lv.mesh, &lv.edge_attrs, &lv.tags, scheme)
+                .map_err(|e| e.to_string());
+            let _ = tx.send(l);
+            w();
+        });
+        self.limits = Some((key, LimitSlot::Computing(rx)));
+        None
     }
 }

@@ -4,10 +4,17 @@
 //! faintly for comparison, and curvature against arc length for all three (egui_plot).
 //! Presets: square, regular hexagon, samples of a logarithmic spiral, and the paper's
 //! fig. 6 polyline (θ₁, θ₂, l₁, l₂, l₃ = 1).
+//!
+//! The sketch (control points, closed, scheme, levels) is part of the document: undoable
+//! with the rest and saved in `.prism.json`. The tab keeps only how it looks at it (pan,
+//! zoom, comb, evolute) and returns every change of the sketch as a [`CurveEdit`].
 
+mod canvas;
+
+use crate::gui::command::{Command, CurveEdit};
 use egui::{Color32, Pos2, Stroke, Vec2};
 use glam::DVec2;
-use prism_geom::curve::{CurveScheme, Polyline, presets};
+use prism_geom::curve::{CurveScheme, CurveSketch, Polyline, presets};
 
 const SCHEME_COLORS: [Color32; 3] = [
     Color32::from_rgb(120, 170, 255),
@@ -49,9 +56,6 @@ pub enum Preset {
 }
 
 pub struct CurvesTab {
-    pub control: Polyline,
-    pub scheme: CurveScheme,
-    pub levels: usize,
     pub comb: bool,
     pub comb_scale: f64,
     pub evolute: bool,
@@ -62,16 +66,17 @@ pub struct CurvesTab {
     center: DVec2,
     zoom: f64,
     fit_next: bool,
-    dragging: Option<usize>,
+    /// The point being dragged and the drag's number (its moves are one undo step).
+    dragging: Option<(usize, u64)>,
+    drags: u64,
     pub error: Option<String>,
+    /// Edits decided this frame.
+    out: Vec<Command>,
 }
 
 impl Default for CurvesTab {
     fn default() -> Self {
-        let mut t = CurvesTab {
-            control: Polyline::default(),
-            scheme: CurveScheme::Circle,
-            levels: 4,
+        CurvesTab {
             comb: true,
             comb_scale: 0.3,
             evolute: false,
@@ -81,10 +86,10 @@ impl Default for CurvesTab {
             zoom: 100.0,
             fit_next: true,
             dragging: None,
+            drags: 0,
             error: None,
-        };
-        t.preset(Preset::Fig6);
-        t
+            out: Vec::new(),
+        }
     }
 }
 
@@ -96,8 +101,9 @@ pub struct Refined {
 }
 
 impl CurvesTab {
-    pub fn preset(&mut self, p: Preset) {
-        self.control = match p {
+    /// The control polyline of a preset (fig. 6 with the tab's θ₁, θ₂, l₁, l₂).
+    pub fn preset(&self, p: Preset) -> Polyline {
+        match p {
             Preset::Square => presets::regular_polygon(4, 1.0),
             Preset::Hexagon => presets::regular_polygon(6, 1.0),
             Preset::LogSpiral => presets::log_spiral(8, 0.15, std::f64::consts::FRAC_PI_3),
@@ -105,15 +111,20 @@ impl CurvesTab {
                 let [t1, t2, l1, l2] = self.fig6;
                 presets::fig6(t1.to_radians(), t2.to_radians(), l1, l2)
             }
-        };
+        }
+    }
+
+    /// Replaces the sketch's polyline by a preset and fits the canvas to it.
+    fn use_preset(&mut self, p: Preset) {
+        self.out.push(CurveEdit::SetControl(self.preset(p)).into());
         self.fit_next = true;
     }
 
-    /// The curve of `scheme` after the chosen number of levels.
-    pub fn refined(&self, scheme: CurveScheme) -> Result<Refined, String> {
-        let curve = self
+    /// The curve of `scheme` after the sketch's number of levels.
+    pub fn refined(sketch: &CurveSketch, scheme: CurveScheme) -> Result<Refined, String> {
+        let curve = sketch
             .control
-            .refine_levels(scheme, self.levels)
+            .refine_levels(scheme, sketch.levels)
             .map_err(|e| e.to_string())?;
         Ok(Refined {
             curvature: curve.curvature(),
@@ -136,8 +147,7 @@ impl CurvesTab {
         self.center + DVec2::new(d.x as f64, -d.y as f64) / self.zoom
     }
 
-    fn fit(&mut self, rect: egui::Rect) {
-        let pts = &self.control.points;
+    fn fit(&mut self, rect: egui::Rect, pts: &[DVec2]) {
         if pts.is_empty() {
             return;
         }
@@ -147,17 +157,33 @@ impl CurvesTab {
         self.zoom = 0.8 * (rect.width() as f64 / size.x).min(rect.height() as f64 / size.y);
     }
 
-    pub fn ui(&mut self, ui: &mut egui::Ui) {
+    /// The tab over the document's sketch; returns the edits the user made.
+    pub fn ui(&mut self, ui: &mut egui::Ui, sketch: &CurveSketch) -> Vec<Command> {
         ui.horizontal_wrapped(|ui| {
+            let mut scheme = sketch.scheme;
             egui::ComboBox::from_label("scheme")
-                .selected_text(scheme_label(self.scheme))
+                .selected_text(scheme_label(scheme))
                 .show_ui(ui, |ui| {
                     for s in CurveScheme::ALL {
-                        ui.selectable_value(&mut self.scheme, s, scheme_label(s));
+                        ui.selectable_value(&mut scheme, s, scheme_label(s));
                     }
                 });
-            ui.add(egui::Slider::new(&mut self.levels, 0..=8).text("levels"));
-            ui.checkbox(&mut self.control.closed, "closed");
+            if scheme != sketch.scheme {
+                self.out.push(CurveEdit::SetScheme(scheme).into());
+            }
+            let mut levels = sketch.levels;
+            ui.add(
+                egui::Slider::new(&mut levels, 0..=prism_geom::curve::MAX_SKETCH_LEVELS)
+                    .text("levels"),
+            );
+            if levels != sketch.levels {
+                self.out.push(CurveEdit::SetLevels(levels).into());
+            }
+            let mut closed = sketch.control.closed;
+            ui.checkbox(&mut closed, "closed");
+            if closed != sketch.control.closed {
+                self.out.push(CurveEdit::SetClosed(closed).into());
+            }
             ui.checkbox(&mut self.comb, "curvature comb");
             ui.add(
                 egui::DragValue::new(&mut self.comb_scale)
@@ -174,13 +200,13 @@ impl CurvesTab {
         ui.horizontal_wrapped(|ui| {
             ui.label("Presets:");
             if ui.button("square").clicked() {
-                self.preset(Preset::Square);
+                self.use_preset(Preset::Square);
             }
             if ui.button("hexagon").clicked() {
-                self.preset(Preset::Hexagon);
+                self.use_preset(Preset::Hexagon);
             }
             if ui.button("log spiral").clicked() {
-                self.preset(Preset::LogSpiral);
+                self.use_preset(Preset::LogSpiral);
             }
             let mut changed = false;
             for (k, name) in ["θ₁°", "θ₂°", "l₁", "l₂"].iter().enumerate() {
@@ -194,17 +220,17 @@ impl CurvesTab {
                     .changed();
             }
             if ui.button("fig. 6").clicked() || changed {
-                self.preset(Preset::Fig6);
+                self.use_preset(Preset::Fig6);
             }
         });
         ui.label("Click to add a point, click near a segment to insert one, drag to move, right-click to delete.");
         let results: Vec<(CurveScheme, Result<Refined, String>)> = CurveScheme::ALL
             .into_iter()
-            .map(|s| (s, self.refined(s)))
+            .map(|s| (s, CurvesTab::refined(sketch, s)))
             .collect();
         self.error = results
             .iter()
-            .find(|(s, _)| *s == self.scheme)
+            .find(|(s, _)| *s == sketch.scheme)
             .and_then(|(_, r)| r.as_ref().err().cloned());
         let plot_h = (ui.available_height() * 0.32).max(120.0);
         let canvas_h = (ui.available_height() - plot_h - 8.0).max(100.0);
@@ -213,16 +239,23 @@ impl CurvesTab {
             egui::Sense::click_and_drag(),
         );
         if self.fit_next {
-            self.fit(rect);
+            self.fit(rect, &sketch.control.points);
             self.fit_next = false;
         }
-        self.canvas_input(rect, &resp, ui);
-        self.paint_canvas(ui, rect, &results);
-        self.plot(ui, plot_h, &results);
+        self.canvas_input(rect, &resp, ui, &sketch.control);
+        self.paint_canvas(ui, rect, sketch, &results);
+        self.plot(ui, plot_h, sketch.scheme, &results);
+        std::mem::take(&mut self.out)
     }
 
-    fn nearest_point(&self, rect: egui::Rect, at: Pos2, radius: f32) -> Option<usize> {
-        self.control
+    fn nearest_point(
+        &self,
+        rect: egui::Rect,
+        control: &Polyline,
+        at: Pos2,
+        radius: f32,
+    ) -> Option<usize> {
+        control
             .points
             .iter()
             .enumerate()
@@ -233,10 +266,10 @@ impl CurvesTab {
     }
 
     /// Where a click inserts: after point i of the segment near `at`, or at the end.
-    fn insert_index(&self, rect: egui::Rect, at: Pos2) -> usize {
-        let pts = &self.control.points;
+    fn insert_index(&self, rect: egui::Rect, control: &Polyline, at: Pos2) -> usize {
+        let pts = &control.points;
         let n = pts.len();
-        let segs = if self.control.closed {
+        let segs = if control.closed {
             n
         } else {
             n.saturating_sub(1)
@@ -254,7 +287,13 @@ impl CurvesTab {
             .map_or(n, |(i, _)| i + 1)
     }
 
-    fn canvas_input(&mut self, rect: egui::Rect, resp: &egui::Response, ui: &egui::Ui) {
+    fn canvas_input(
+        &mut self,
+        rect: egui::Rect,
+        resp: &egui::Response,
+        ui: &egui::Ui,
+        control: &Polyline,
+    ) {
         if resp.hovered() {
             let scroll = ui.input(|i| i.smooth_scroll_delta.y);
             if scroll != 0.0 {
@@ -266,11 +305,17 @@ impl CurvesTab {
         };
         if resp.drag_started_by(egui::PointerButton::Primary) {
             let press = ui.input(|i| i.pointer.press_origin()).unwrap_or(pos);
-            self.dragging = self.nearest_point(rect, press, 10.0);
+            self.drags += 1;
+            self.dragging = self
+                .nearest_point(rect, control, press, 10.0)
+                .map(|i| (i, self.drags));
         }
         if resp.dragged_by(egui::PointerButton::Primary) {
             match self.dragging {
-                Some(i) => self.control.points[i] = self.to_world(rect, pos),
+                Some((index, drag)) => {
+                    let to = self.to_world(rect, pos);
+                    self.out.push(CurveEdit::Move { index, to, drag }.into());
+                }
                 None => {
                     let d = resp.drag_delta();
                     self.center -= DVec2::new(d.x as f64, -d.y as f64) / self.zoom;
@@ -280,137 +325,16 @@ impl CurvesTab {
         if resp.drag_stopped() {
             self.dragging = None;
         }
-        if resp.clicked() && self.nearest_point(rect, pos, 10.0).is_none() {
-            let i = self.insert_index(rect, pos);
-            self.control.points.insert(i, self.to_world(rect, pos));
+        if resp.clicked() && self.nearest_point(rect, control, pos, 10.0).is_none() {
+            let index = self.insert_index(rect, control, pos);
+            let at = self.to_world(rect, pos);
+            self.out.push(CurveEdit::Insert { index, at }.into());
         }
         if resp.secondary_clicked()
-            && let Some(i) = self.nearest_point(rect, pos, 10.0)
+            && let Some(index) = self.nearest_point(rect, control, pos, 10.0)
         {
-            self.control.points.remove(i);
+            self.out.push(CurveEdit::Delete { index }.into());
         }
-    }
-
-    fn paint_canvas(
-        &self,
-        ui: &egui::Ui,
-        rect: egui::Rect,
-        results: &[(CurveScheme, Result<Refined, String>)],
-    ) {
-        let painter = ui.painter_at(rect);
-        painter.rect_filled(rect, 0.0, Color32::from_gray(22));
-        let pts = self.screen(rect, &self.control.points);
-        painter.add(polyline(
-            pts.clone(),
-            self.control.closed,
-            Stroke::new(1.0, Color32::from_gray(110)),
-        ));
-        for (k, (s, r)) in results.iter().enumerate() {
-            let Ok(r) = r else { continue };
-            let main = *s == self.scheme;
-            if !main && !self.others {
-                continue;
-            }
-            let sp = self.screen(rect, &r.curve.points);
-            let c = SCHEME_COLORS[k];
-            if main {
-                if self.comb {
-                    self.paint_comb(&painter, rect, r, c.gamma_multiply(0.6));
-                }
-                if self.evolute {
-                    for e in r.curve.evolute().into_iter().flatten() {
-                        let q = self.to_screen(rect, e);
-                        if rect.contains(q) {
-                            painter.circle_filled(q, 1.5, Color32::from_rgb(255, 120, 90));
-                        }
-                    }
-                }
-                painter.add(polyline(sp, r.curve.closed, Stroke::new(2.0, c)));
-            } else {
-                painter.add(polyline(
-                    sp,
-                    r.curve.closed,
-                    Stroke::new(1.0, c.gamma_multiply(0.5)),
-                ));
-            }
-        }
-        for (i, p) in pts.iter().enumerate() {
-            let c = if Some(i) == self.dragging {
-                Color32::YELLOW
-            } else {
-                Color32::WHITE
-            };
-            painter.circle_stroke(*p, 5.0, Stroke::new(1.5, c));
-        }
-        if let Some(e) = &self.error {
-            painter.text(
-                rect.left_top() + Vec2::new(8.0, 8.0),
-                egui::Align2::LEFT_TOP,
-                e,
-                egui::FontId::proportional(14.0),
-                Color32::from_rgb(240, 110, 90),
-            );
-        }
-    }
-
-    /// Teeth along the outward normal, of length `scale·|k|` relative to the control size.
-    fn paint_comb(&self, painter: &egui::Painter, rect: egui::Rect, r: &Refined, color: Color32) {
-        let p = &r.curve.points;
-        let n = p.len();
-        if n < 3 {
-            return;
-        }
-        let size = {
-            let (lo, hi) = bounds(p);
-            (hi - lo).length()
-        };
-        let mut tips = Vec::with_capacity(n);
-        for i in 0..n {
-            let (a, b) = if r.curve.closed {
-                (p[(i + n - 1) % n], p[(i + 1) % n])
-            } else {
-                (p[i.saturating_sub(1)], p[(i + 1).min(n - 1)])
-            };
-            let t = (b - a).normalize_or_zero();
-            let left = DVec2::new(-t.y, t.x);
-            let tip = p[i] - self.comb_scale * size * r.curvature[i] * left;
-            let (s0, s1) = (self.to_screen(rect, p[i]), self.to_screen(rect, tip));
-            painter.line_segment([s0, s1], Stroke::new(1.0, color));
-            tips.push(s1);
-        }
-        painter.add(polyline(tips, r.curve.closed, Stroke::new(1.0, color)));
-    }
-
-    fn plot(
-        &self,
-        ui: &mut egui::Ui,
-        height: f32,
-        results: &[(CurveScheme, Result<Refined, String>)],
-    ) {
-        egui_plot::Plot::new("curvature-plot")
-            .height(height)
-            .legend(egui_plot::Legend::default())
-            .x_axis_label("arc length")
-            .y_axis_label("curvature")
-            .show(ui, |p| {
-                for (k, (s, r)) in results.iter().enumerate() {
-                    let Ok(r) = r else { continue };
-                    let pts: Vec<[f64; 2]> = r
-                        .arc
-                        .iter()
-                        .zip(&r.curvature)
-                        .enumerate()
-                        .filter(|(i, _)| r.curve.closed || (*i > 0 && *i + 1 < r.arc.len()))
-                        .map(|(_, (a, c))| [*a, *c])
-                        .collect();
-                    let width = if *s == self.scheme { 2.0 } else { 1.2 };
-                    p.line(
-                        egui_plot::Line::new(scheme_label(*s), pts)
-                            .color(SCHEME_COLORS[k])
-                            .width(width),
-                    );
-                }
-            });
     }
 }
 
@@ -418,18 +342,25 @@ impl CurvesTab {
 mod tests {
     use super::*;
 
+    fn sketch(control: Polyline) -> CurveSketch {
+        CurveSketch {
+            control,
+            ..CurveSketch::default()
+        }
+    }
+
     #[test]
     fn presets_refine_with_every_scheme() {
-        let mut t = CurvesTab::default();
+        let t = CurvesTab::default();
         for p in [
             Preset::Square,
             Preset::Hexagon,
             Preset::LogSpiral,
             Preset::Fig6,
         ] {
-            t.preset(p);
+            let k = sketch(t.preset(p));
             for s in CurveScheme::ALL {
-                let r = t.refined(s).unwrap();
+                let r = CurvesTab::refined(&k, s).unwrap();
                 assert_eq!(r.curvature.len(), r.curve.points.len());
                 assert!(r.arc.windows(2).all(|w| w[1] >= w[0]));
             }
@@ -438,9 +369,9 @@ mod tests {
 
     #[test]
     fn the_hexagon_under_method_1_has_constant_curvature() {
-        let mut t = CurvesTab::default();
-        t.preset(Preset::Hexagon);
-        let r = t.refined(CurveScheme::Circle).unwrap();
+        let t = CurvesTab::default();
+        let r =
+            CurvesTab::refined(&sketch(t.preset(Preset::Hexagon)), CurveScheme::Circle).unwrap();
         let k0 = r.curvature[0];
         assert!(r.curvature.iter().all(|k| (k - k0).abs() < 1e-9 * k0.abs()));
     }
@@ -448,21 +379,21 @@ mod tests {
     #[test]
     fn clicks_insert_near_a_segment_and_append_elsewhere() {
         let mut t = CurvesTab::default();
-        t.preset(Preset::Square);
+        let square = t.preset(Preset::Square);
         let rect = egui::Rect::from_min_size(Pos2::ZERO, Vec2::new(400.0, 400.0));
-        t.fit(rect);
+        t.fit(rect, &square.points);
         // Midpoint of the segment from point 0 to point 1.
-        let mid = 0.5 * (t.control.points[0] + t.control.points[1]);
-        assert_eq!(t.insert_index(rect, t.to_screen(rect, mid)), 1);
-        assert_eq!(t.insert_index(rect, rect.center()), 4);
+        let mid = 0.5 * (square.points[0] + square.points[1]);
+        assert_eq!(t.insert_index(rect, &square, t.to_screen(rect, mid)), 1);
+        assert_eq!(t.insert_index(rect, &square, rect.center()), 4);
         let back = t.to_world(rect, t.to_screen(rect, mid));
         assert!((back - mid).length() < 1e-5);
     }
 
     #[test]
     fn too_few_points_is_an_error_not_a_panic() {
-        let mut t = CurvesTab::default();
-        t.control.points.truncate(2);
-        assert!(t.refined(CurveScheme::Circle).is_err());
+        let mut k = CurveSketch::default();
+        k.control.points.truncate(2);
+        assert!(CurvesTab::refined(&k, CurveScheme::Circle).is_err());
     }
 }

@@ -1,0 +1,132 @@
+//! Files from the app: the bundled samples, the Open / Save / Export dialogs (rfd), saving
+//! and exporting to a path, and `--screenshot` (the window's own picture, written once the
+//! levels are computed).
+
+use super::document::{DocState, Origin};
+use super::{PrismApp, SAMPLES_FILES};
+use prism_geom::io;
+use std::path::Path;
+
+/// A bundled sample as a document.
+pub fn sample(k: usize) -> Result<(DocState, Origin), String> {
+    let (name, file, text) = *SAMPLES_FILES
+        .get(k)
+        .ok_or(format!("there is no sample {k}"))?;
+    let (doc, _) = io::load_str(Path::new(file), text).map_err(|e| e.to_string())?;
+    Ok((
+        DocState::from_document(doc),
+        Origin {
+            path: None,
+            name: format!("{} (bundled sample)", name.to_lowercase()),
+        },
+    ))
+}
+
+impl PrismApp {
+    /// Saves the document (`.prism.json` keeps the pipeline and the curve sketch, OBJ the
+    /// mesh and its tags).
+    pub fn save_to(&mut self, path: &Path) -> Result<(), String> {
+        let warnings =
+            io::save(path, &self.doc.state().to_document()).map_err(|e| e.to_string())?;
+        let native = io::FileKind::of(path).ok() == Some(io::FileKind::Document);
+        if native {
+            self.last_file = Some(path.to_path_buf());
+        }
+        self.doc.saved_as(path, native);
+        self.say(if warnings.is_empty() {
+            format!("saved {}", path.display())
+        } else {
+            format!("saved {} ({})", path.display(), warnings.join("; "))
+        });
+        Ok(())
+    }
+
+    /// Exports the level shown in the active view (OBJ with its creases, STL, glTF).
+    pub fn export_to(&mut self, path: &Path) -> Result<(), String> {
+        let (k, lv) = self.model.shown_level();
+        let holes = &lv.tags.holes;
+        if io::ExportFormat::of(path).is_some() {
+            io::export(path, &lv.mesh, &|f| holes.contains(&(f as u32)))
+                .map_err(|e| e.to_string())?;
+        } else {
+            io::write_obj(path, &lv.mesh, &lv.edge_attrs, &lv.tags).map_err(|e| e.to_string())?;
+        }
+        self.say(format!("exported level {k} to {}", path.display()));
+        Ok(())
+    }
+
+    pub(super) fn open_dialog(&mut self) {
+        if let Some(p) = rfd::FileDialog::new()
+            .add_filter("Prism documents and OBJ", &["json", "obj"])
+            .pick_file()
+        {
+            self.open_path(&p);
+        }
+    }
+
+    /// Saves to the document's own file, or asks where (`as_new`: always asks).
+    pub(super) fn save_dialog(&mut self, as_new: bool) {
+        let path = match (&self.doc.origin().path, as_new) {
+            (Some(p), false) => Some(p.clone()),
+            _ => rfd::FileDialog::new()
+                .add_filter("Prism document", &["prism.json"])
+                .add_filter("OBJ", &["obj"])
+                .set_file_name("model.prism.json")
+                .save_file(),
+        };
+        if let Some(p) = path
+            && let Err(e) = self.save_to(&p)
+        {
+            self.say(format!("could not save: {e}"));
+        }
+    }
+
+    pub(super) fn export_dialog(&mut self, ext: &str) {
+        if let Some(p) = rfd::FileDialog::new()
+            .add_filter(ext, &[ext])
+            .set_file_name(format!("level.{ext}"))
+            .save_file()
+            && let Err(e) = self.export_to(&p)
+        {
+            self.say(format!("could not export: {e}"));
+        }
+    }
+
+    /// `--screenshot`: once nothing is computing, waits a few frames, asks egui for the
+    /// window's picture, writes it and closes the window.
+    pub(super) fn screenshot(&mut self, ctx: &egui::Context) {
+        let busy = self.busy();
+        let Some((path, frames, slot)) = &mut self.screenshot else {
+            return;
+        };
+        ctx.request_repaint();
+        if busy {
+            return;
+        }
+        *frames += 1;
+        if *frames == 8 {
+            let slot = slot.clone();
+            ctx.send_viewport_cmd(egui::ViewportCommand::Screenshot(
+                egui::ScreenshotCallback::new(move |img| {
+                    *slot.lock().expect("screenshot slot") = Some(img);
+                }),
+            ));
+        }
+        let taken = slot.lock().expect("screenshot slot").take();
+        if let Some(img) = taken {
+            let [w, h] = img.size;
+            let rgba: Vec<u8> = img.pixels.iter().flat_map(|c| c.to_array()).collect();
+            let mut png = Vec::new();
+            let ok = image::RgbaImage::from_raw(w as u32, h as u32, rgba)
+                .map(|i| i.write_to(&mut std::io::Cursor::new(&mut png), image::ImageFormat::Png));
+            match ok {
+                Some(Ok(())) => match io::write_atomically(path, &png) {
+                    Ok(()) => println!("wrote {} ({w}x{h})", path.display()),
+                    Err(e) => eprintln!("error: {e}"),
+                },
+                _ => eprintln!("error: encoding the screenshot failed"),
+            }
+            ctx.send_viewport_cmd(egui::ViewportCommand::Close);
+        }
+    }
+}

@@ -1,0 +1,488 @@
+//! The Model tab: the pipeline panel (steps, each a scheme with its parameter, Step >> (S),
+//! << Back (B), reorder, level slider, progress and Cancel), tools (orbit, select and move
+//! vertices, pick edges), vertex coordinates, edge marks (crease, own radius, "sharper than
+//! X°"), display options, the compare split, and the 3D views (one, or two or four with
+//! linked cameras and a table under them).
+//!
+//! The tab owns its view state (cameras, selections, display options, each view's computed
+//! levels) and reads the document; what would change the document it returns as
+//! [`Command`]s from [`ModelTab::ui`] (or queues with [`ModelTab::push`] from its helpers).
+//! Each view follows the document by its generation ([`ModelTab::sync`]): a changed pipeline
+//! is recomputed on a worker thread from the first step that changed.
+
+mod compare;
+mod overlay;
+mod panels;
+pub mod pick;
+mod scheme_editor;
+pub mod view_pipe;
+mod views;
+pub mod worker;
+
+pub use scheme_editor::default_next;
+
+use super::command::{Command, EdgeMark, Edit};
+use super::document::{DocState, Document};
+use glam::Vec3;
+use prism_geom::{EdgeKey, Pipeline, Scheme};
+use prism_viewport::{Camera, ColorBy, SceneOptions, Shading, View};
+use std::collections::BTreeSet;
+use view_pipe::{Outcome, ViewPipe, Waker};
+
+/// The tool the primary mouse button uses in the views.
+#[derive(
+    Debug,
+    Clone,
+    Copy,
+    PartialEq,
+    Eq,
+    Hash,
+    Default,
+    clap::ValueEnum,
+    serde::Serialize,
+    serde::Deserialize,
+)]
+pub enum Tool {
+    /// Drag turns the model.
+    #[default]
+    Orbit,
+    /// Click, shift-click or box-select control vertices; drag a selected one to move it.
+    Vertices,
+    /// Click, shift-click or box-select edges on any level.
+    Edges,
+}
+
+/// How faces are coloured.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize)]
+pub enum Coloring {
+    Uniform,
+    /// FACE / EDGE / VERTEX faces of the last biquadratic step.
+    Kind,
+    /// Mean curvature colour map.
+    Curvature,
+    /// One colour per scheme (the step that made the level).
+    Scheme,
+}
+
+/// What is drawn besides the faces.
+#[derive(Debug, Clone, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize)]
+pub struct Display {
+    pub smooth: bool,
+    pub wireframe: bool,
+    /// Face colours.
+    pub color: Coloring,
+    pub cage: bool,
+    pub corners: bool,
+    pub limit: bool,
+}
+
+impl Default for Display {
+    fn default() -> Self {
+        Display {
+            smooth: false,
+            wireframe: true,
+            color: Coloring::Uniform,
+            cage: false,
+            corners: false,
+            limit: false,
+        }
+    }
+}
+
+impl Display {
+    pub fn scene_options(&self) -> SceneOptions {
+        SceneOptions {
+            shading: if self.smooth {
+                Shading::Smooth
+            } else {
+                Shading::Flat
+            },
+            color_by: match self.color {
+                Coloring::Uniform => ColorBy::Uniform,
+                Coloring::Kind => ColorBy::Kind,
+                Coloring::Curvature => ColorBy::Curvature,
+                // Resolved per level by `view_pipe::level_scene`.
+                Coloring::Scheme => ColorBy::Solid(prism_viewport::scene::BASE_COLOR),
+            },
+            wireframe: self.wireframe,
+            ..SceneOptions::default()
+        }
+    }
+}
+
+/// A vertex drag in progress: its number (edits of one drag coalesce) and where the
+/// dragged vertices started.
+struct VertexDrag {
+    id: u64,
+    start: Vec<(u32, glam::DVec3)>,
+}
+
+/// The Model tab's state.
+pub struct ModelTab {
+    pub views: Vec<ViewPipe>,
+    /// The view the pipeline panel edits.
+    pub active: usize,
+    /// One camera for every view (linked).
+    pub camera: Camera,
+    framed: bool,
+    /// Width / height of the narrowest view, for framing.
+    view_aspect: f32,
+    pub display: Display,
+    pub tool: Tool,
+    pub sel_verts: BTreeSet<u32>,
+    /// Selected control edges.
+    pub sel_edges: BTreeSet<EdgeKey>,
+    /// Axis a vertex drag is held to (0 x, 1 y, 2 z).
+    pub axis: Option<usize>,
+    /// The scheme Step >> appends.
+    pub next: Scheme,
+    pub budget_mib: u64,
+    /// A step stopped at the budget: (view, estimate) waiting for the user's answer.
+    pub question: Option<(usize, prism_geom::error::OverBudget)>,
+    drag: Option<VertexDrag>,
+    drags: u64,
+    box_start: Option<egui::Pos2>,
+    /// The pipeline being typed as text, and for which view.
+    pipeline_edit: Option<(usize, String)>,
+    /// Inputs of the edge panel.
+    pub crease_value: f64,
+    pub radius_value: f64,
+    pub sharper_deg: f64,
+    /// The document generation the views were last brought in line with.
+    synced: Option<u64>,
+    /// Commands decided outside `ui` (helpers the tests call too), taken by the next `ui`
+    /// or [`ModelTab::take_commands`].
+    pending: Vec<Command>,
+    pub waker: Waker,
+    pub has_gpu: bool,
+}
+
+impl ModelTab {
+    pub fn new(display: Display, tool: Tool, next: Scheme, budget_mib: u64) -> ModelTab {
+        ModelTab {
+            views: Vec::new(),
+            active: 0,
+            camera: Camera::default(),
+            framed: false,
+            view_aspect: 1.5,
+            display,
+            tool,
+            sel_verts: BTreeSet::new(),
+            sel_edges: BTreeSet::new(),
+            axis: None,
+            next,
+            budget_mib: budget_mib.max(64),
+            question: None,
+            drag: None,
+            drags: 0,
+            box_start: None,
+            pipeline_edit: None,
+            crease_value: 10.0,
+            radius_value: 0.1,
+            sharper_deg: 60.0,
+            synced: None,
+            pending: Vec::new(),
+            waker: std::sync::Arc::new(|| {}),
+            has_gpu: false,
+        }
+    }
+
+    /// Queues a command for the frame loop.
+    pub fn push(&mut self, c: impl Into<Command>) {
+        self.pending.push(c.into());
+    }
+
+    /// The commands queued so far.
+    pub fn take_commands(&mut self) -> Vec<Command> {
+        std::mem::take(&mut self.pending)
+    }
+
+    /// Brings every view's pipeline in line with the document when its generation moved:
+    /// views added or removed, changed steps recomputed from the first that changed, a
+    /// changed input from scratch. A drag (`doc.live()`) lets a running job finish first.
+    pub fn sync(&mut self, doc: &Document) {
+        if self.synced == Some(doc.generation()) {
+            return;
+        }
+        let first = self.synced.is_none();
+        self.synced = Some(doc.generation());
+        let d = doc.state();
+        let live = doc.live();
+        let n = d.pipelines.len();
+        let nv = d.mesh.num_vertices() as u32;
+        self.sel_verts.retain(|&v| v < nv);
+        if self.views.len() != n && !first {
+            self.framed = false;
+        }
+        self.views.truncate(n);
+        self.active = self.active.min(n - 1);
+        let budget = self.budget_mib << 20;
+        for (i, steps) in d.pipelines.iter().enumerate() {
+            let fresh = || {
+                Pipeline::with_tags(
+                    d.mesh.clone(),
+                    d.edge_attrs.clone(),
+                    d.tags.clone(),
+                    steps.clone(),
+                )
+            };
+            if i >= self.views.len() {
+                // The input alone on screen until the job brings the levels.
+                let next = fresh();
+                let mut v = ViewPipe::new(next.rebased(Vec::new()));
+                v.level = steps.len();
+                v.scene_opts = self.display.scene_options();
+                v.submit(next, budget, live, &self.waker);
+                self.views.push(v);
+                continue;
+            }
+            let v = &mut self.views[i];
+            let input = v.pipeline.input();
+            let same_input =
+                input.mesh == d.mesh && input.edge_attrs == d.edge_attrs && input.tags == d.tags;
+            if same_input && v.pipeline.steps() == steps.as_slice() && !v.busy() {
+                continue;
+            }
+            let next = if same_input {
+                v.pipeline.rebased(steps.clone())
+            } else {
+                fresh()
+            };
+            let grew = steps.len() > v.pipeline.steps().len();
+            if grew || v.level > steps.len() {
+                v.level = steps.len();
+            }
+            v.submit(next, budget, live, &self.waker);
+        }
+    }
+
+    /// Takes finished jobs; returns whether anything changed.
+    pub fn poll_jobs(&mut self) -> bool {
+        let mut any = false;
+        for (i, v) in self.views.iter_mut().enumerate() {
+            match v.poll(&self.waker) {
+                Outcome::Nothing => {}
+                Outcome::Updated => any = true,
+                Outcome::AskBudget(o) => {
+                    any = true;
+                    self.question = Some((i, o));
+                }
+            }
+        }
+        any
+    }
+
+    /// Blocks until every view's levels are computed.
+    #[cfg(test)]
+    pub fn wait_idle(&mut self) {
+        while self.views.iter().any(|v| v.busy()) {
+            self.poll_jobs();
+            std::thread::sleep(std::time::Duration::from_millis(2));
+        }
+    }
+
+    pub fn busy(&self) -> bool {
+        self.views.iter().any(|v| v.busy() || v.preparing())
+    }
+
+    /// Step >>: appends the next step to the active view's pipeline.
+    pub fn step(&mut self) {
+        let (view, scheme) = (self.active, self.next);
+        self.push(Edit::PushStep { view, scheme });
+    }
+
+    /// << Back: removes the last step of the active view's pipeline.
+    pub fn back(&mut self) {
+        let view = self.active;
+        self.push(Edit::PopStep { view });
+    }
+
+    /// Marks the selected control edges (one undo step); says what to do when none is
+    /// selected.
+    pub fn mark(&mut self, mark: EdgeMark) {
+        if self.sel_edges.is_empty() {
+            self.push(Command::Say(
+                "select edges first (Edges tool: click, shift-click or drag a box)".into(),
+            ));
+            return;
+        }
+        let edges: Vec<EdgeKey> = self.sel_edges.iter().copied().collect();
+        let n = edges.len();
+        self.push(Edit::MarkEdges { edges, mark });
+        if let EdgeMark::Crease(s) = mark {
+            self.push(Command::Say(format!(
+                "{n} edge(s) creased with sharpness {s}"
+            )));
+        }
+    }
+
+    /// Moves control vertices by `d` (typed coordinates; one undo step).
+    pub fn move_vertices(&mut self, verts: &[u32], by: glam::DVec3) {
+        self.push(Edit::MoveVertices {
+            verts: verts.to_vec(),
+            by,
+        });
+    }
+
+    /// Selects every control edge whose faces meet at more than `deg` degrees.
+    pub fn select_sharper_than(&mut self, doc: &DocState, deg: f64, add: bool) {
+        let m = &doc.mesh;
+        let Ok(topo) = prism_geom::Topology::build(m) else {
+            self.push(Command::Say(
+                "the control mesh is not a manifold: no bend angles".into(),
+            ));
+            return;
+        };
+        let normals: Vec<_> = prism_geom::geometry::face_normals_raw(m)
+            .into_iter()
+            .map(prism_geom::geometry::unit_or_zero)
+            .collect();
+        let bends = prism_geom::geometry::signed_bend_angles(m, &topo, &normals);
+        if !add {
+            self.sel_edges.clear();
+        }
+        let mut n = 0;
+        for (e, b) in bends.iter().enumerate() {
+            if b.abs().to_degrees() > deg {
+                let (a, c) = topo.edge_verts(m, e);
+                self.sel_edges.insert(EdgeKey::new(a, c));
+                n += 1;
+            }
+        }
+        self.push(Command::Say(format!("{n} edge(s) sharper than {deg}°")));
+    }
+
+    /// Stops every view's computation (before a new document replaces the old).
+    pub fn cancel_all(&mut self) {
+        for v in &mut self.views {
+            v.cancel();
+        }
+    }
+
+    /// A new document: selections and the split start afresh, the camera frames it.
+    pub fn reset_for_new_document(&mut self) {
+        self.cancel_all();
+        self.sel_verts.clear();
+        self.sel_edges.clear();
+        self.active = 0;
+        self.framed = false;
+    }
+
+    /// Frames the model of the active view.
+    pub fn frame(&mut self, doc: &DocState) {
+        let v = &self.views[self.active];
+        let r = if v.scene.vertices.is_empty() {
+            let (lo, hi) = doc.mesh.bbox();
+            (0.5 * (hi - lo).length()).max(1e-9) as f32
+        } else {
+            v.scene.radius()
+        };
+        // A narrow view (the compare split) has the smaller horizontal field: fit that too.
+        let half_y = 0.5 * Camera::default().fov_y;
+        let half_x = (half_y.tan() * self.view_aspect.clamp(0.1, 10.0)).atan();
+        let r = r * half_y.sin() / half_x.min(half_y).sin();
+        self.camera = Camera::looking(View::Iso, Vec3::ZERO, r);
+        self.framed = true;
+    }
+
+    /// The keys of the Model tab (S, B, F, W, X/Y/Z, Esc), when no text field has them.
+    pub fn keys(&mut self, ctx: &egui::Context) {
+        use egui::Key;
+        let plain = |k: Key| ctx.input(|i| i.modifiers.is_none() && i.key_pressed(k));
+        if plain(Key::S) {
+            self.step();
+        }
+        if plain(Key::B) {
+            self.back();
+        }
+        if plain(Key::F) {
+            self.display.smooth = !self.display.smooth;
+        }
+        if plain(Key::W) {
+            self.display.wireframe = !self.display.wireframe;
+        }
+        for (k, a) in [(Key::X, 0), (Key::Y, 1), (Key::Z, 2)] {
+            if plain(k) {
+                self.axis = if self.axis == Some(a) { None } else { Some(a) };
+            }
+        }
+        if plain(Key::Escape) {
+            self.sel_verts.clear();
+            self.sel_edges.clear();
+        }
+    }
+
+    /// The tab: side panel, compare table, views and the memory question. Returns what the
+    /// frame loop is to do.
+    pub fn ui(&mut self, ui: &mut egui::Ui, doc: &Document, note: Option<&str>) -> Vec<Command> {
+        let ctx = ui.ctx().clone();
+        let d = doc.state();
+        egui::Panel::left("panels")
+            .resizable(true)
+            .default_size(300.0)
+            .show(ui, |ui| {
+                egui::ScrollArea::vertical().show(ui, |ui| self.side_panel(ui, doc));
+            });
+        egui::Panel::bottom("status").show(ui, |ui| self.status(ui, note));
+        let n = d.pipelines.len();
+        if n > 1 {
+            egui::Panel::bottom(("compare", n))
+                .resizable(true)
+                .default_size(34.0 + 22.0 * n as f32)
+                .show(ui, |ui| self.compare_table(ui, d));
+        }
+        self.rebuild_scenes(d, doc.generation());
+        egui::CentralPanel::default()
+            .frame(egui::Frame::NONE)
+            .show(ui, |ui| self.views_ui(ui, d));
+        self.budget_question(&ctx);
+        self.take_commands()
+    }
+
+    fn budget_question(&mut self, ctx: &egui::Context) {
+        let Some((view, o)) = self.question.clone() else {
+            return;
+        };
+        egui::Modal::new(egui::Id::unique("prism-budget-question")).show(ctx, |ui| {
+            ui.heading("This step needs a lot of memory");
+            ui.label(format!(
+                "View {}: the next level would have {} faces and need about {} MiB; the budget is {} MiB.",
+                view + 1,
+                o.faces,
+                o.needed_mib,
+                o.budget_mib
+            ));
+            ui.horizontal(|ui| {
+                if ui.button("Compute anyway").clicked() {
+                    self.push(Command::ComputeAnyway);
+                }
+                if ui.button("Remove the step").clicked() {
+                    self.push(Command::RemoveOverBudgetStep);
+                }
+            });
+        });
+    }
+
+    /// The answer "compute anyway" to the budget question.
+    pub fn compute_anyway(&mut self, doc: &DocState) {
+        if let Some((view, o)) = self.question.take() {
+            let v = &mut self.views[view];
+            v.budget_override = Some((o.needed_mib + o.needed_mib / 4 + 16) << 20);
+            let next = v.pipeline.rebased(doc.pipelines[view].clone());
+            v.submit(next, self.budget_mib << 20, false, &self.waker);
+        }
+    }
+
+    /// The answer "remove the step": the pipeline keeps the levels that were computed.
+    pub fn remove_over_budget_step(&mut self) -> Option<Edit> {
+        let (view, _) = self.question.take()?;
+        let len = self.views[view].pipeline.levels().len() - 1;
+        Some(Edit::TruncateSteps { view, len })
+    }
+
+    /// The level shown in the active view.
+    pub fn shown_level(&self) -> (usize, &prism_geom::Level) {
+        let v = &self.views[self.active];
+        (v.shown(), &v.pipeline.levels()[v.shown()])
+    }
+}
