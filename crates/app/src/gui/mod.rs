@@ -16,6 +16,7 @@
 pub mod command;
 mod curves;
 pub mod document;
+mod edits;
 mod files;
 pub mod model;
 mod viewport;
