@@ -3,7 +3,7 @@
 //! [`super::document::Document::apply`], the only writer (and the only place history is
 //! recorded); the other commands act on files, jobs and the views.
 //!
-//! Adding an edit (e.g. for the Skin or Envelope tab): a variant here, its case in `apply`,
+//! Adding an edit (e.g. for the Skin or Envelope tab): a variant here, its case in `edits::apply_to`,
 //! and a test in `document.rs` that it undoes.
 
 use super::document::DocState;
