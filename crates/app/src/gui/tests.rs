@@ -169,6 +169,25 @@ fn the_new_user_walk_through() {
     }
 }
 
+/// Frames with nothing changed rebuild nothing: the scene and overlay (and so the GPU
+/// upload, keyed on `version`) stay as they are.
+#[test]
+fn idle_frames_rebuild_neither_scene_nor_overlay() {
+    let mut a = app();
+    a.model.tool = Tool::Vertices;
+    rebuild(&mut a);
+    let v = a.model.views[0].version;
+    for _ in 0..3 {
+        rebuild(&mut a);
+    }
+    assert_eq!(a.model.views[0].version, v);
+    // A selection change rebuilds the overlay once.
+    a.model.sel_verts.insert(0);
+    rebuild(&mut a);
+    rebuild(&mut a);
+    assert_eq!(a.model.views[0].version, v + 1);
+}
+
 #[test]
 fn moving_a_control_vertex_recomputes_every_level_and_undoes_in_one_step() {
     let mut a = app();

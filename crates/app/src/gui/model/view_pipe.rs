@@ -90,6 +90,8 @@ pub struct ViewPipe {
     pub overlay_key: Option<u64>,
     /// Bumped whenever the scene or overlay changes (the GPU upload compares it).
     pub version: u64,
+    /// Bumped whenever a scene is installed (overlays depend on its origin and size).
+    scene_serial: u64,
     /// The display options scenes are built with (the worker prepares the next one).
     pub scene_opts: SceneOptions,
     /// A scene being prepared on a thread, and the (generation, level, options) it is for.
@@ -118,6 +120,7 @@ impl ViewPipe {
             overlay: Arc::new(Scene::default()),
             overlay_key: None,
             version: 0,
+            scene_serial: 0,
             scene_opts: SceneOptions::default(),
             scene_job: None,
             edges: None,
@@ -267,13 +270,14 @@ impl ViewPipe {
     fn install_scene(&mut self, scene: Scene, key: SceneKey) {
         self.scene = Arc::new(scene);
         self.scene_key = Some(key);
+        self.scene_serial += 1;
         self.version += 1;
     }
 
     /// The number of scenes installed so far, for overlay keys (the overlay uses the
     /// scene's origin and size).
     pub fn scene_serial(&self) -> u64 {
-        self.version
+        self.scene_serial
     }
 
     /// Cancels the running job and forgets the queued one.
