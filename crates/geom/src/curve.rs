@@ -97,19 +97,7 @@ impl CurveSketch {
     /// Checks what a file may hold: finite points and at most [`MAX_SKETCH_LEVELS`] levels
     /// (fewer than 3 points is a sketch in progress, not an error).
     pub fn validate(&self) -> Result<(), CurveError> {
-        if let Some((i, p)) = self
-            .control
-            .points
-            .iter()
-            .enumerate()
-            .find(|(_, p)| !p.is_finite())
-        {
-            return Err(CurveError::NonFinite {
-                index: i,
-                x: p.x,
-                y: p.y,
-            });
-        }
+        self.control.check_finite()?;
         if self.levels > MAX_SKETCH_LEVELS {
             return Err(CurveError::TooManyLevels {
                 levels: self.levels,
@@ -188,21 +176,25 @@ impl Polyline {
         Polyline { closed, points }
     }
 
+    /// The first point that is not finite, as an error.
+    pub fn check_finite(&self) -> Result<(), CurveError> {
+        match self.points.iter().enumerate().find(|(_, p)| !p.is_finite()) {
+            Some((index, p)) => Err(CurveError::NonFinite {
+                index,
+                x: p.x,
+                y: p.y,
+            }),
+            None => Ok(()),
+        }
+    }
+
     /// Checks the input: at least 3 points, finite, no two consecutive ones equal.
     pub fn validate(&self) -> Result<(), CurveError> {
         let n = self.points.len();
         if n < 3 {
             return Err(CurveError::TooFewPoints(n));
         }
-        for (i, p) in self.points.iter().enumerate() {
-            if !p.is_finite() {
-                return Err(CurveError::NonFinite {
-                    index: i,
-                    x: p.x,
-                    y: p.y,
-                });
-            }
-        }
+        self.check_finite()?;
         let pairs = if self.closed { n } else { n - 1 };
         for i in 0..pairs {
             let j = (i + 1) % n;

@@ -6,7 +6,7 @@
 //! Adding an edit (e.g. for the Skin or Envelope tab): a variant here, its case in `edits::apply_to`,
 //! and a test in `document.rs` that it undoes.
 
-use super::document::DocState;
+use super::document::{DocState, Origin};
 use glam::{DVec2, DVec3};
 use prism_geom::curve::{CurveScheme, Polyline};
 use prism_geom::{EdgeKey, Scheme};
@@ -72,8 +72,12 @@ pub enum Edit {
     },
     /// An edit of the Curves tab's sketch.
     Curve(CurveEdit),
-    /// A whole new document (File ▸ Open, a sample, drag-and-drop); undoable.
-    Replace(Box<DocState>),
+    /// A whole new document with its name and save target (File ▸ Open, a sample,
+    /// drag-and-drop); undoable.
+    Replace {
+        state: Box<DocState>,
+        origin: Origin,
+    },
 }
 
 /// What [`Edit::MarkEdges`] puts on the edges.

@@ -226,15 +226,6 @@ impl Document {
     }
 }
 
-impl Document {
-    /// Replaces the document with an opened one (undoable), with its name and save target.
-    pub fn replace(&mut self, state: DocState, origin: Origin) {
-        if self.apply(Edit::Replace(Box::new(state))).is_ok() {
-            self.origin = origin;
-        }
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -382,16 +373,17 @@ mod tests {
     #[test]
     fn undo_restores_the_name_and_save_target() {
         let mut d = doc();
-        d.replace(
-            DocState {
+        d.apply(Edit::Replace {
+            state: Box::new(DocState {
                 mesh: primitives::tripod(),
                 ..Default::default()
-            },
-            Origin {
+            }),
+            origin: Origin {
                 path: Some("t.prism.json".into()),
                 name: "t.prism.json".into(),
             },
-        );
+        })
+        .unwrap();
         assert_eq!(d.origin().name, "t.prism.json");
         d.undo();
         assert_eq!(d.origin(), &Origin::default());

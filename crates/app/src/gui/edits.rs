@@ -98,13 +98,7 @@ pub(super) fn apply_to(d: &mut DocState, origin: &mut Origin, edit: Edit) -> Res
                 return Err("coordinates must be numbers".into());
             }
             for v in verts {
-                let n = d.mesh.num_vertices();
-                let q = d
-                    .mesh
-                    .positions
-                    .get_mut(v as usize)
-                    .ok_or(format!("there is no control vertex {v} (the mesh has {n})"))?;
-                *q += by;
+                *control_vertex(&mut d.mesh, v)? += by;
             }
         }
         Edit::DragVertices { to, .. } => {
@@ -112,21 +106,24 @@ pub(super) fn apply_to(d: &mut DocState, origin: &mut Origin, edit: Edit) -> Res
                 if !p.is_finite() {
                     return Err("coordinates must be numbers".into());
                 }
-                let n = d.mesh.num_vertices();
-                *d.mesh
-                    .positions
-                    .get_mut(v as usize)
-                    .ok_or(format!("there is no control vertex {v} (the mesh has {n})"))? = p;
+                *control_vertex(&mut d.mesh, v)? = p;
             }
         }
         Edit::Curve(c) => apply_curve(&mut d.curve, c)?,
-        Edit::Replace(state) => {
+        Edit::Replace { state, origin: o } => {
             *d = *state;
-            // The name and save target come with the new state (set by the caller after).
-            *origin = Origin::default();
+            *origin = o;
         }
     }
     Ok(())
+}
+
+/// The position of control vertex `v`, or why there is none.
+fn control_vertex(mesh: &mut prism_geom::PolyMesh, v: u32) -> Result<&mut glam::DVec3, String> {
+    let n = mesh.num_vertices();
+    mesh.positions
+        .get_mut(v as usize)
+        .ok_or(format!("there is no control vertex {v} (the mesh has {n})"))
 }
 
 fn apply_curve(c: &mut CurveSketch, edit: CurveEdit) -> Result<(), String> {
@@ -168,9 +165,7 @@ fn apply_curve(c: &mut CurveSketch, edit: CurveEdit) -> Result<(), String> {
             c.levels = k;
         }
         CurveEdit::SetControl(p) => {
-            if let Some(q) = p.points.iter().find(|q| !q.is_finite()) {
-                return Err(format!("coordinates must be numbers, not {q}"));
-            }
+            p.check_finite().map_err(|e| e.to_string())?;
             c.control = p;
         }
     }

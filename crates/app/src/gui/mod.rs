@@ -306,8 +306,8 @@ impl PrismApp {
             self.last_file = Some(p.clone());
         }
         let name = origin.name.clone();
-        self.doc.replace(state, origin);
-        self.model.sync(&self.doc);
+        let state = Box::new(state);
+        self.run(command::Edit::Replace { state, origin });
         self.say(format!("opened {name}"));
     }
 
@@ -437,7 +437,6 @@ impl PrismApp {
                 commands.extend(out);
             }
         }
-        commands.extend(self.model.take_commands());
         for c in commands {
             self.run(c);
         }
