@@ -11,6 +11,11 @@ fn prism(args: &[&str]) -> Output {
         .expect("runs")
 }
 
+/// `prism` with a command line split at spaces (no argument here has one).
+fn run(line: &str) -> Output {
+    prism(&line.split(' ').collect::<Vec<_>>())
+}
+
 fn tmp(name: &str) -> PathBuf {
     let d = std::env::temp_dir().join(format!("prism-cli-{}", std::process::id()));
     std::fs::create_dir_all(&d).unwrap();
@@ -27,18 +32,10 @@ fn text(o: &Output) -> (String, String) {
 #[test]
 fn rounding_the_tripod_reports_no_flipped_faces() {
     let out = tmp("tripod-round.obj");
-    let o = prism(&[
-        "subdivide",
-        "assets/tripod.obj",
-        "-o",
-        out.to_str().unwrap(),
-        "--scheme",
-        "combination",
-        "--radius",
-        "0.2",
-        "--levels",
-        "5",
-    ]);
+    let o = run(&format!(
+        "subdivide assets/tripod.obj -o {} --scheme combination --radius 0.2 --levels 5",
+        out.display()
+    ));
     let (so, se) = text(&o);
     assert!(o.status.success(), "{so}{se}");
     let lines: Vec<&str> = so.lines().filter(|l| l.starts_with("level ")).collect();
@@ -58,18 +55,10 @@ fn rounding_the_tripod_reports_no_flipped_faces() {
 #[test]
 fn the_simple_cylindrical_breakdown_is_reported() {
     let out = tmp("cube-cyl.obj");
-    let o = prism(&[
-        "subdivide",
-        "assets/cube.obj",
-        "-o",
-        out.to_str().unwrap(),
-        "--scheme",
-        "cylindrical",
-        "--radius",
-        "0.45",
-        "--levels",
-        "5",
-    ]);
+    let o = run(&format!(
+        "subdivide assets/cube.obj -o {} --scheme cylindrical --radius 0.45 --levels 5",
+        out.display()
+    ));
     let (so, se) = text(&o);
     assert!(o.status.success(), "{so}{se}");
     assert!(
@@ -85,14 +74,10 @@ fn the_simple_cylindrical_breakdown_is_reported() {
 #[test]
 fn pipelines_and_documents() {
     let out = tmp("fig7.prism.json");
-    let o = prism(&[
-        "subdivide",
-        "assets/holed-block.prism.json",
-        "-o",
-        out.to_str().unwrap(),
-        "--pipeline",
-        "cut-width:d=0.1,cut-width:d=0.025,cut-width:d=0.00625",
-    ]);
+    let o = run(&format!(
+        "subdivide assets/holed-block.prism.json -o {} --pipeline cut-width:d=0.1,cut-width:d=0.025,cut-width:d=0.00625",
+        out.display()
+    ));
     let (so, se) = text(&o);
     assert!(o.status.success(), "{so}{se}");
     assert_eq!(so.matches(" 0 flipped").count(), 3, "{so}");
@@ -100,18 +85,10 @@ fn pipelines_and_documents() {
     assert!(doc.starts_with("{\"version\":1"));
     // Holed faces to OBJ: triangulated with a warning.
     let obj = tmp("holed.obj");
-    let o = prism(&[
-        "subdivide",
-        "assets/holed-block.prism.json",
-        "-o",
-        obj.to_str().unwrap(),
-        "--scheme",
-        "combination",
-        "--radius",
-        "0.15",
-        "--levels",
-        "1",
-    ]);
+    let o = run(&format!(
+        "subdivide assets/holed-block.prism.json -o {} --scheme combination --radius 0.15 --levels 1",
+        obj.display()
+    ));
     let (_, se) = text(&o);
     assert!(o.status.success());
     assert!(se.contains("triangulated"), "{se}");
@@ -204,14 +181,11 @@ fn bad_input_exits_1_and_names_the_element() {
             std::fs::write(&p, body).unwrap();
         }
         let out = tmp("out.obj");
-        let o = prism(&[
-            "subdivide",
-            p.to_str().unwrap(),
-            "-o",
-            out.to_str().unwrap(),
-            "--scheme",
-            "doo-sabin",
-        ]);
+        let o = run(&format!(
+            "subdivide {} -o {} --scheme doo-sabin",
+            p.display(),
+            out.display()
+        ));
         let (_, se) = text(&o);
         assert_eq!(o.status.code(), Some(1), "{name}: {se}");
         assert!(se.contains(expect), "{name}: {se}");
@@ -227,14 +201,10 @@ fn a_failed_save_keeps_the_previous_file() {
     let blocker = tmp("blocker");
     std::fs::write(&blocker, "keep").unwrap();
     let target = blocker.join("x.obj");
-    let o = prism(&[
-        "subdivide",
-        "assets/cube.obj",
-        "-o",
-        target.to_str().unwrap(),
-        "--scheme",
-        "doo-sabin",
-    ]);
+    let o = run(&format!(
+        "subdivide assets/cube.obj -o {} --scheme doo-sabin",
+        target.display()
+    ));
     assert_eq!(o.status.code(), Some(1));
     assert_eq!(std::fs::read_to_string(&blocker).unwrap(), "keep");
 }
@@ -331,14 +301,10 @@ fn limit_equals_opensubdiv_and_refined_output_refines_on() {
     );
 
     // Loop refuses a mesh with a hexagon, naming the face.
-    let o = prism(&[
-        "limit",
-        "assets/tripod.obj",
-        "-o",
-        out.to_str().unwrap(),
-        "--scheme",
-        "loop",
-    ]);
+    let o = run(&format!(
+        "limit assets/tripod.obj -o {} --scheme loop",
+        out.display()
+    ));
     assert_eq!(o.status.code(), Some(1));
     assert!(
         text(&o).1.contains("face 0 has 6 corners"),
@@ -349,16 +315,9 @@ fn limit_equals_opensubdiv_and_refined_output_refines_on() {
 
 #[test]
 fn bench_prints_the_median_and_peak_memory() {
-    let o = prism(&[
-        "bench",
-        "crates/geom/tests/data/opensubdiv/catmark_car.obj",
-        "--scheme",
-        "catmull-clark",
-        "--levels",
-        "2",
-        "--runs",
-        "3",
-    ]);
+    let o = run(
+        "bench crates/geom/tests/data/opensubdiv/catmark_car.obj --scheme catmull-clark --levels 2 --runs 3",
+    );
     let (out, err) = text(&o);
     assert!(o.status.success(), "{err}");
     assert_eq!(
@@ -383,25 +342,10 @@ fn bench_prints_the_median_and_peak_memory() {
 #[test]
 fn render_writes_a_picture() {
     let out = tmp("tripod.png");
-    let o = prism(&[
-        "render",
-        "assets/tripod.obj",
-        "-o",
-        out.to_str().unwrap(),
-        "--scheme",
-        "combination",
-        "--radius",
-        "0.2",
-        "--levels",
-        "2",
-        "--shading",
-        "smooth",
-        "--wireframe",
-        "--size",
-        "200x150",
-        "--view",
-        "top",
-    ]);
+    let o = run(&format!(
+        "render assets/tripod.obj -o {} --scheme combination --radius 0.2 --levels 2 --shading smooth --wireframe --size 200x150 --view top",
+        out.display()
+    ));
     let (stdout, err) = text(&o);
     assert!(o.status.success(), "{err}");
     assert!(stdout.contains("rendered"), "{stdout}");
@@ -411,14 +355,10 @@ fn render_writes_a_picture() {
     let w = u32::from_be_bytes(png[16..20].try_into().unwrap());
     let h = u32::from_be_bytes(png[20..24].try_into().unwrap());
     assert_eq!((w, h), (200, 150));
-    let o = prism(&[
-        "render",
-        "assets/tripod.obj",
-        "-o",
-        out.to_str().unwrap(),
-        "--size",
-        "big",
-    ]);
+    let o = run(&format!(
+        "render assets/tripod.obj -o {} --size big",
+        out.display()
+    ));
     assert_eq!(o.status.code(), Some(2));
 }
 
@@ -431,16 +371,11 @@ fn curve_refines_and_round_trips_its_json() {
     )
     .unwrap();
     let out = tmp("square-out.json");
-    let o = prism(&[
-        "curve",
-        input.to_str().unwrap(),
-        "-o",
-        out.to_str().unwrap(),
-        "--scheme",
-        "circle",
-        "--levels",
-        "3",
-    ]);
+    let o = run(&format!(
+        "curve {} -o {} --scheme circle --levels 3",
+        input.display(),
+        out.display()
+    ));
     assert!(o.status.success(), "{:?}", text(&o));
     let v: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(&out).unwrap()).unwrap();
@@ -456,16 +391,11 @@ fn curve_refines_and_round_trips_its_json() {
     );
     // The output reads back as input.
     let again = tmp("square-again.json");
-    let o = prism(&[
-        "curve",
-        out.to_str().unwrap(),
-        "-o",
-        again.to_str().unwrap(),
-        "--scheme",
-        "log-spiral",
-        "--levels",
-        "1",
-    ]);
+    let o = run(&format!(
+        "curve {} -o {} --scheme log-spiral --levels 1",
+        out.display(),
+        again.display()
+    ));
     assert!(o.status.success(), "{:?}", text(&o));
     // Bad input: too few points, repeated points, bad JSON, unknown scheme.
     for (body, needle) in [
@@ -480,25 +410,19 @@ fn curve_refines_and_round_trips_its_json() {
         (r#"{"closed": false, "points": [[0,0],[1,1],"#, "line 1"),
     ] {
         std::fs::write(&input, body).unwrap();
-        let o = prism(&[
-            "curve",
-            input.to_str().unwrap(),
-            "-o",
-            out.to_str().unwrap(),
-            "--scheme",
-            "circle",
-        ]);
+        let o = run(&format!(
+            "curve {} -o {} --scheme circle",
+            input.display(),
+            out.display()
+        ));
         assert_eq!(o.status.code(), Some(1));
         assert!(text(&o).1.contains(needle), "{:?}", text(&o));
     }
-    let o = prism(&[
-        "curve",
-        input.to_str().unwrap(),
-        "-o",
-        out.to_str().unwrap(),
-        "--scheme",
-        "spline",
-    ]);
+    let o = run(&format!(
+        "curve {} -o {} --scheme spline",
+        input.display(),
+        out.display()
+    ));
     assert_eq!(o.status.code(), Some(2));
 }
 
@@ -506,14 +430,10 @@ fn curve_refines_and_round_trips_its_json() {
 fn subdivide_exports_stl_and_glb() {
     for (name, magic) in [("cube.stl", None), ("cube.glb", Some(b"glTF"))] {
         let out = tmp(name);
-        let o = prism(&[
-            "subdivide",
-            "assets/cube.obj",
-            "-o",
-            out.to_str().unwrap(),
-            "--pipeline",
-            "catmull-clark,catmull-clark",
-        ]);
+        let o = run(&format!(
+            "subdivide assets/cube.obj -o {} --pipeline catmull-clark,catmull-clark",
+            out.display()
+        ));
         assert!(o.status.success(), "{:?}", text(&o));
         let bytes = std::fs::read(&out).unwrap();
         match magic {
@@ -522,14 +442,7 @@ fn subdivide_exports_stl_and_glb() {
             Some(m) => assert_eq!(&bytes[..4], m),
         }
     }
-    let o = prism(&[
-        "subdivide",
-        "assets/cube.obj",
-        "-o",
-        "x.ply",
-        "--pipeline",
-        "doo-sabin",
-    ]);
+    let o = run("subdivide assets/cube.obj -o x.ply --pipeline doo-sabin");
     assert!(!o.status.success());
     assert!(text(&o).1.contains("x.ply"));
 }

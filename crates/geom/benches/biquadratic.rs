@@ -10,7 +10,7 @@
 //! thresholds every level's fresh tens of megabytes are returned to the kernel and faulted
 //! in again, which costs more than the subdivision itself.
 
-use prism_geom::biquadratic;
+use prism_geom::refine::dual_quad;
 use prism_geom::rules::{CornerRule, RuleInput, corner_points};
 use prism_geom::{EdgeAttrs, StepOptions, Topology, biquadratic_step, primitives};
 
@@ -65,7 +65,7 @@ fn points_and_split(m: &prism_geom::PolyMesh, t: &Topology) -> prism_geom::PolyM
         vertex_neighbourhood: &[],
     };
     let (pts, _) = corner_points(&CornerRule::DooSabin, &input).unwrap();
-    biquadratic::split(m, t, pts).0
+    dual_quad::split(m, t, pts).0
 }
 
 #[divan::bench(sample_count = 20)]

@@ -147,7 +147,14 @@ fn csqrt(z: DVec2) -> DVec2 {
 
 /// Method 1's weight ω at a vertex with incoming edge `d1` and outgoing edge `d2`.
 pub fn circle_weight(d1: DVec2, d2: DVec2) -> f64 {
-    let c = (d1.dot(d2) / (d1.length() * d2.length())).clamp(-1.0, 1.0);
+    circle_weight_of_cos(d1.dot(d2) / (d1.length() * d2.length()))
+}
+
+/// Method 1's weight `ω = 1/(4 cos²(θ₀/4))` from `cos θ₀` of the turning angle θ₀, in the
+/// stable form `1/(2 + 2·√((1 + cos θ₀)/2))` (`cos(θ₀/4)² = (1 + cos(θ₀/2))/2`). Written once
+/// for the curves and for the crease curves of [`crate::PrimalScheme::CatmullClarkCircle`].
+pub fn circle_weight_of_cos(cos_theta: f64) -> f64 {
+    let c = cos_theta.clamp(-1.0, 1.0);
     1.0 / (2.0 + 2.0 * ((1.0 + c) * 0.5).sqrt())
 }
 

@@ -1,12 +1,11 @@
 //! Per-edge attributes: crease sharpness and an own fillet radius.
 //!
 //! Keyed by the edge's two vertex indices (smaller first), so they survive any reordering
-//! of faces and are what the files store. Through a biquadratic step every new edge lies on
-//! exactly one EDGE-face (docs/algorithms/biquadratic.md: FACE- and VERTEX-faces only touch EDGE-faces),
-//! so each new edge inherits the attributes of that EDGE-face's parent edge.
+//! of faces and are what the files store. A step hands them down with
+//! [`crate::refine::propagate`]: through a biquadratic step every new edge lies on exactly
+//! one EDGE-face and inherits its parent edge's attributes; through a primal step each half
+//! of an edge inherits them with the crease decayed.
 
-use crate::mesh::PolyMesh;
-use crate::topology::Topology;
 use std::collections::BTreeMap;
 
 /// An undirected edge by its vertices, smaller index first.
@@ -36,42 +35,3 @@ fn is_zero(x: &f64) -> bool {
 
 /// Attributes of the edges that have any.
 pub type EdgeAttrs = BTreeMap<EdgeKey, EdgeAttr>;
-
-/// Attributes of the edges of a biquadratic child, given those of the parent.
-pub fn propagate_biquadratic(parent: &PolyMesh, topo: &Topology, attrs: &EdgeAttrs) -> EdgeAttrs {
-    let mut out = EdgeAttrs::new();
-    if attrs.is_empty() {
-        return out;
-    }
-    for &c in &topo.edge_corner {
-        let c = c as usize;
-        let t = topo.twin[c] as usize;
-        let key = EdgeKey::new(
-            parent.corner_verts[c],
-            parent.corner_verts[topo.next[c] as usize],
-        );
-        if let Some(a) = attrs.get(&key) {
-            // EDGE-face (next(c), c, next(t), t): new vertex ids are parent corner ids.
-            let q = [topo.next[c], c as u32, topo.next[t], t as u32];
-            for i in 0..4 {
-                out.insert(EdgeKey::new(q[i], q[(i + 1) % 4]), *a);
-            }
-        }
-    }
-    out
-}
-
-/// Per-edge radius for the edges of `topo`: the edge's own radius or `default`.
-pub fn edge_radii(mesh: &PolyMesh, topo: &Topology, attrs: &EdgeAttrs, default: f64) -> Vec<f64> {
-    topo.edge_corner
-        .iter()
-        .map(|&c| {
-            let c = c as usize;
-            let key = EdgeKey::new(
-                mesh.corner_verts[c],
-                mesh.corner_verts[topo.next[c] as usize],
-            );
-            attrs.get(&key).and_then(|a| a.radius).unwrap_or(default)
-        })
-        .collect()
-}

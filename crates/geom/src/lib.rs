@@ -2,9 +2,12 @@
 //!
 //! - [`mesh`]: polygon meshes whose faces may be concave and have holes, stored flat;
 //! - [`topology`]: half-edges, twins, rings, and every check of bad input;
-//! - [`rules`] + [`biquadratic`] + [`step`]: PRISM's biquadratic subdivision (seed 000) —
-//!   one split (CGAL's DQQ) with pluggable corner rules: Doo–Sabin, three chamfers, the
-//!   cylindrical family (simple, minimum, combination);
+//! - [`refine`]: the three splits (dual quad, quad, triangle), each written once, with the
+//!   child numbering and the provenance of every child element as data;
+//! - [`rules`] + [`step`]: PRISM's biquadratic subdivision (seed 000) — the dual quad split
+//!   (CGAL's DQQ) with pluggable corner rules: Doo–Sabin, three chamfers, the cylindrical
+//!   family (simple, minimum, combination);
+//! - [`rules::primal`] + [`primal`]: Catmull–Clark and Loop with creases, corners and holes;
 //! - [`dissolve`]: merging coplanar faces before the cylindrical rules;
 //! - [`scheme`] + [`pipeline`]: steps as values, levels kept per step;
 //! - [`analysis`]: counts, the fillet radius reached;
@@ -18,7 +21,6 @@
 
 pub mod analysis;
 pub mod ancestry;
-pub mod biquadratic;
 pub mod curve;
 pub mod dissolve;
 pub mod edge_attrs;
@@ -30,6 +32,7 @@ pub mod mesh;
 pub mod pipeline;
 pub mod primal;
 pub mod primitives;
+pub mod refine;
 pub mod rules;
 pub mod scheme;
 pub mod step;

@@ -2,17 +2,16 @@
 //!
 //! Level 0 is the input; level k is the result of step k−1. Changing step k drops the
 //! levels after k only, so the next [`Pipeline::compute`] recomputes from level k
-//! (seed 000 fig. 7 is such a pipeline: vector-sum α = 0.2, then Doo–Sabin twice). The
-//! vertex-neighbourhood flags of the combination rule flow from one combination step to the
-//! next; any other step in between ends the run, and the next combination step starts a new
-//! one (docs/algorithms/cylindrical.md).
+//! (seed 000 fig. 7 is such a pipeline: vector-sum α = 0.2, then Doo–Sabin twice). A level
+//! made by a combination step carries the run's [`CombinationState`] to the next step
+//! (docs/algorithms/cylindrical.md).
 
-use crate::biquadratic::Provenance;
 use crate::edge_attrs::EdgeAttrs;
 use crate::geometry::signed_volume;
 use crate::mesh::PolyMesh;
 use crate::primal::refine_primal;
-use crate::rules::CornerRule;
+use crate::refine::Provenance;
+use crate::rules::CombinationState;
 use crate::scheme::Scheme;
 use crate::step::{StepError, StepOptions, StepReport, biquadratic_step};
 use crate::tags::SubdivTags;
@@ -26,10 +25,10 @@ pub struct Level {
     /// Corners, holes and options for the primal schemes. A biquadratic step keeps the
     /// options and drops corners and holes (its vertices and faces are new).
     pub tags: SubdivTags,
-    /// Where the faces came from (none for the input and after a primal step).
+    /// Where its vertices, faces and edges came from (none for the input).
     pub provenance: Option<Provenance>,
-    /// Vertex-neighbourhood flags, after a combination step.
-    pub vertex_neighbourhood: Option<Vec<bool>>,
+    /// The combination run's state, after a combination step.
+    pub combination: Option<CombinationState>,
     /// The step's report (none for the input).
     pub report: Option<StepReport>,
 }
@@ -71,7 +70,7 @@ impl Pipeline {
                 edge_attrs,
                 tags,
                 provenance: None,
-                vertex_neighbourhood: None,
+                combination: None,
                 report: None,
             }],
             options: StepOptions::default(),
@@ -126,20 +125,14 @@ impl Pipeline {
             };
             let level = match scheme {
                 Scheme::Biquadratic(rule) => {
-                    let continuing = k > 0
-                        && matches!(rule, CornerRule::Combination { .. })
-                        && matches!(
-                            self.steps[k - 1],
-                            Scheme::Biquadratic(CornerRule::Combination { .. })
-                        );
-                    let vn = if continuing {
-                        prev.vertex_neighbourhood.as_deref()
-                    } else {
-                        None
-                    };
-                    let out =
-                        biquadratic_step(&prev.mesh, &prev.edge_attrs, &rule, vn, &self.options)
-                            .map_err(err)?;
+                    let out = biquadratic_step(
+                        &prev.mesh,
+                        &prev.edge_attrs,
+                        &rule,
+                        prev.combination.as_ref(),
+                        &self.options,
+                    )
+                    .map_err(err)?;
                     Level {
                         mesh: out.mesh,
                         edge_attrs: out.edge_attrs,
@@ -149,7 +142,7 @@ impl Pipeline {
                             ..prev.tags.clone()
                         },
                         provenance: Some(out.provenance),
-                        vertex_neighbourhood: out.vertex_neighbourhood,
+                        combination: out.combination,
                         report: Some(out.report),
                     }
                 }
@@ -175,8 +168,8 @@ impl Pipeline {
                         mesh: out.mesh,
                         edge_attrs: out.edge_attrs,
                         tags: out.tags,
-                        provenance: None,
-                        vertex_neighbourhood: None,
+                        provenance: Some(out.provenance),
+                        combination: None,
                         report: Some(report),
                     }
                 }

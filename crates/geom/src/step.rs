@@ -1,26 +1,26 @@
 //! One biquadratic step with a corner rule, from a mesh to the next level, with everything a
 //! user needs to see: counts, flipped and degenerate faces, time (docs/algorithms/biquadratic.md).
 //!
-//! Order of work: build and check the topology (closed solids only, §1.4); validate the
-//! rule's parameter; for the cylindrical family dissolve flat edges (§2.5) and compute the
-//! per-edge cut widths from the bend angles of the *current* mesh; place the corner points;
-//! split (§1.2); carry edge attributes and vertex-neighbourhood flags; report.
+//! The generic driver: validate the rule's parameter; let the rule prepare the level
+//! ([`CornerRule::prepare`]: closed topology and normals for every rule, flat-edge merge and
+//! cut widths for the cylindrical family, the combination run's state); refuse a step that
+//! would not fit; place the corner points; split ([`dual_quad`]); hand down edge attributes
+//! ([`refine::propagate`]) and the combination state; check and report.
 //!
 //! A new face is **flipped** when its Newell normal points against its parent element's
 //! normal (`n_f`, `n_L + n_R`, or Σ n_f around the vertex) and **degenerate** when its area is
 //! below 1e-14·D² (D the bounding-box diagonal). Neither is hidden: both are listed.
 
-use crate::biquadratic::{self, FaceKind, Provenance};
-use crate::dissolve::{DissolveError, dissolve_flat_edges};
-use crate::edge_attrs::{self, EdgeAttrs};
+use crate::dissolve::DissolveError;
+use crate::edge_attrs::EdgeAttrs;
 use crate::error::{MeshError, OverBudget};
-use crate::geometry::{
-    face_normal_and_volume6, face_normals_raw, loop_newell, signed_bend_angles, unit_or_zero,
-};
+use crate::geometry::{face_normal_and_volume6, loop_newell};
 use crate::mesh::PolyMesh;
-use crate::rules::{self, CornerRule, ParamError, RuleError, RuleInput};
+use crate::refine::{self, FaceKind, Numbering, Provenance, dual_quad};
+use crate::rules::{self, CombinationState, CornerRule, ParamError, PrepareError, RuleError};
 use crate::topology::Topology;
 use glam::DVec3;
+use std::borrow::Cow;
 use std::time::Instant;
 use thiserror::Error;
 
@@ -62,6 +62,16 @@ pub enum StepError {
     TooLarge(#[from] OverBudget),
 }
 
+impl From<PrepareError> for StepError {
+    fn from(e: PrepareError) -> Self {
+        match e {
+            PrepareError::Mesh(e) => StepError::Mesh(e),
+            PrepareError::Dissolve(e) => StepError::Dissolve(e),
+            PrepareError::Rule(e) => StepError::Rule(e),
+        }
+    }
+}
+
 /// What a step did, for the summary line, the status bar and the tests.
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct StepReport {
@@ -90,121 +100,66 @@ pub struct StepOutput {
     pub mesh: PolyMesh,
     pub provenance: Provenance,
     pub edge_attrs: EdgeAttrs,
-    /// Vertex-neighbourhood flags of the new faces (combination rule only).
-    pub vertex_neighbourhood: Option<Vec<bool>>,
+    /// The combination run's state after this step (combination rule only).
+    pub combination: Option<CombinationState>,
     /// The parent after the flat-edge dissolve, when that changed it (provenance refers
     /// to it).
     pub dissolved_parent: Option<PolyMesh>,
     pub report: StepReport,
 }
 
-/// One biquadratic step of `mesh` with `rule`. `vn` are the vertex-neighbourhood flags of
-/// `mesh` when the previous step was a combination step too (else `None`: first step of a
-/// combination run).
+/// One biquadratic step of `mesh` with `rule`. `state` is the combination state of `mesh`
+/// when the step before was a combination step (only a combination rule reads it).
 pub fn biquadratic_step(
     mesh: &PolyMesh,
     attrs: &EdgeAttrs,
     rule: &CornerRule,
-    vn: Option<&[bool]>,
+    state: Option<&CombinationState>,
     options: &StepOptions,
 ) -> Result<StepOutput, StepError> {
     let start = Instant::now();
     rule.validate()?;
-    let mut topo = Topology::build(mesh)?;
-    topo.require_closed(mesh)?;
-    let mut raw = face_normals_raw(mesh);
-    let mut normals: Vec<DVec3> = raw.iter().map(|&n| unit_or_zero(n)).collect();
-
-    let mut dissolved: Option<crate::dissolve::Dissolved> = None;
-    let mut bends = Vec::new();
-    if rule.is_cylindrical_family() {
-        bends = signed_bend_angles(mesh, &topo, &normals);
-        let flags = vn.unwrap_or(&[]);
-        if let Some(d) = dissolve_flat_edges(
-            mesh,
-            &topo,
-            &bends,
-            &raw,
-            flags,
-            attrs,
-            options.flat_tolerance,
-        )? {
-            topo = Topology::build(&d.mesh)?;
-            topo.require_closed(&d.mesh)?;
-            raw = face_normals_raw(&d.mesh);
-            normals = raw.iter().map(|&n| unit_or_zero(n)).collect();
-            bends = signed_bend_angles(&d.mesh, &topo, &normals);
-            dissolved = Some(d);
-        }
-    }
-    let (cur, cur_attrs, cur_vn): (&PolyMesh, &EdgeAttrs, Option<&[bool]>) = match &dissolved {
-        Some(d) => (&d.mesh, &d.edge_attrs, vn.map(|_| d.face_flags.as_slice())),
-        None => (mesh, attrs, vn),
-    };
-
+    let prep = rule.prepare(mesh, attrs, state, options.flat_tolerance)?;
+    let (cur, topo) = (prep.mesh.as_ref(), &prep.topo);
     OverBudget::check(
-        biquadratic::estimated_bytes(cur, topo.num_edges()),
+        dual_quad::estimated_bytes(cur, topo.num_edges()),
         options.memory_budget,
         (cur.num_faces() + topo.num_edges() + cur.num_vertices()) as u64,
     )?;
-
-    let mut widths = Vec::new();
-    if let Some(r) = rule.radius() {
-        let radii = edge_attrs::edge_radii(cur, &topo, cur_attrs, r);
-        widths = Vec::with_capacity(bends.len());
-        for (e, (&psi, &re)) in bends.iter().zip(&radii).enumerate() {
-            let x = rules::cut_width(re, psi);
-            if !x.is_finite() {
-                let (a, b) = topo.edge_verts(cur, e);
-                return Err(RuleError::KnifeEdge {
-                    a,
-                    b,
-                    bend_deg: psi.to_degrees(),
-                }
-                .into());
-            }
-            widths.push(x);
-        }
-    }
-    let first_vn;
-    let vn_in: &[bool] = match (rule, cur_vn) {
-        (CornerRule::Combination { .. }, Some(f)) => f,
-        _ => {
-            first_vn = Vec::new();
-            &first_vn
-        }
-    };
-    let input = RuleInput {
-        mesh: cur,
-        topo: &topo,
-        normals: &normals,
-        cut_widths: &widths,
-        vertex_neighbourhood: vn_in,
-    };
-    let (points, rule_report) = rules::corner_points(rule, &input)?;
-    let (out, prov) = biquadratic::split(cur, &topo, points);
-    let new_attrs = edge_attrs::propagate_biquadratic(cur, &topo, cur_attrs);
-    let new_vn = matches!(rule, CornerRule::Combination { .. })
-        .then(|| biquadratic::vertex_neighbourhood_flags(cur, &topo, &prov, cur_vn));
-    let checked = check_children(cur, &topo, &normals, &out, &prov);
+    let (points, rule_report) = rules::corner_points(rule, &prep.input())?;
+    let (out, prov) = dual_quad::split(cur, topo, points);
+    let new_attrs = refine::propagate(
+        cur,
+        topo,
+        &prep.edge_attrs,
+        Numbering::DualQuad,
+        |_, a, _| Some(*a),
+    );
+    let combination = matches!(rule, CornerRule::Combination { .. })
+        .then(|| CombinationState::next(cur, topo, &prov, prep.combination.as_deref()));
+    let checked = check_children(cur, topo, &prep.normals, &out, &prov);
     let report = StepReport {
         vertices: out.num_vertices(),
         edges: 4 * topo.num_edges(),
         faces: out.num_faces(),
         flipped: checked.flipped,
         degenerate: checked.degenerate,
-        dissolved_edges: dissolved.as_ref().map_or(0, |d| d.dissolved_edges),
+        dissolved_edges: prep.dissolved_edges,
         guarded_corners: rule_report.guarded_corners,
         collapsed_corners: rule_report.collapsed_corners,
         volume: checked.volume,
         millis: start.elapsed().as_secs_f64() * 1e3,
     };
+    let dissolved_parent = match prep.mesh {
+        Cow::Owned(m) => Some(m),
+        Cow::Borrowed(_) => None,
+    };
     Ok(StepOutput {
         mesh: out,
         provenance: prov,
         edge_attrs: new_attrs,
-        vertex_neighbourhood: new_vn,
-        dissolved_parent: dissolved.map(|d| d.mesh),
+        combination,
+        dissolved_parent,
         report,
     })
 }

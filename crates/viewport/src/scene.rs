@@ -8,8 +8,8 @@
 //! at more than the crease angle — so that creases stay crisp.
 
 use glam::{DVec3, Vec3};
-use prism_geom::biquadratic::FaceKind;
 use prism_geom::geometry::{face_normals_raw, unit_or_zero};
+use prism_geom::refine::FaceKind;
 use prism_geom::topology::{NONE, Topology};
 use prism_geom::triangulate::face_triangles;
 use prism_geom::{EdgeAttrs, EdgeKey, PolyMesh};

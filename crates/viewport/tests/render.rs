@@ -79,7 +79,7 @@ fn tripod_scene(pipeline: &str, opts: &SceneOptions, cage: bool) -> Scene {
     p.compute().unwrap();
     let levels = p.levels();
     let last = levels.last().unwrap();
-    let kinds = last.provenance.as_ref().map(|p| p.face_kind.as_slice());
+    let kinds = last.provenance.as_ref().and_then(|p| p.face_kinds());
     let mut scene = Scene::build(&last.mesh, &last.edge_attrs, kinds, &|_| false, opts);
     if cage {
         scene.add_cage(&levels[levels.len() - 2].mesh, [0.95, 0.75, 0.25]);

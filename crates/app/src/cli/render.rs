@@ -6,8 +6,8 @@
 use super::CliError;
 use crate::cli::subdivide::steps_from;
 use clap::{Args, ValueEnum};
-use prism_geom::biquadratic::FaceKind;
 use prism_geom::io;
+use prism_geom::refine::FaceKind;
 use prism_geom::{Pipeline, Topology};
 use prism_viewport::{Camera, ColorBy, Offscreen, Scene, SceneOptions, Shading, View};
 use std::path::PathBuf;
@@ -91,7 +91,7 @@ pub fn run(a: RenderArgs) -> Result<(), CliError> {
         wireframe: a.wireframe,
         ..SceneOptions::default()
     };
-    let kinds: Option<&[FaceKind]> = last.provenance.as_ref().map(|p| p.face_kind.as_slice());
+    let kinds: Option<&[FaceKind]> = last.provenance.as_ref().and_then(|p| p.face_kinds());
     if matches!(a.color_by, ColorArg::Kind) && kinds.is_none() {
         eprintln!("note: --color-by kind needs a biquadratic last step; drawing one colour");
     }

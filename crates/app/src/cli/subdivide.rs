@@ -166,7 +166,7 @@ pub fn run(a: SubdivideArgs) -> Result<(), CliError> {
         let r = level.report.as_ref().expect("computed levels have a report");
         // Biquadratic steps check every new face against its parent; primal steps
         // (smooth schemes) report their holes instead.
-        let check = if level.provenance.is_some() {
+        let check = if matches!(steps[k - 1], Scheme::Biquadratic(_)) {
             format!("{} flipped", r.flipped.len())
         } else {
             format!("{} hole faces", level.tags.holes.len())

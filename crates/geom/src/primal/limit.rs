@@ -23,10 +23,11 @@
 //! a tangent that vanishes to rounding (|t| ≤ 1e-10 of its longest edge: coincident
 //! neighbours, e.g. two faces back to back) or with parallel tangents gets a zero normal.
 
-use super::crease::{Rule, crease_ends, vertex_rule};
-use super::{PrimalError, PrimalScheme, RingOrder, sharpness};
+use super::sharpness::sharpness;
+use super::{PrimalError, PrimalScheme, RingOrder};
 use crate::edge_attrs::EdgeAttrs;
 use crate::mesh::PolyMesh;
+use crate::rules::primal::crease::{Rule, crease_ends, vertex_rule};
 use crate::tags::SubdivTags;
 use crate::topology::Topology;
 use glam::DVec3;
@@ -179,10 +180,8 @@ fn loop_smooth(v: DVec3, e: &[DVec3]) -> (DVec3, DVec3, DVec3) {
     let (vw, ew) = if n == 6 {
         (0.5, 1.0 / 12.0)
     } else {
-        let c = (2.0 * PI / nf).cos();
-        let beta = 0.25 * c + 0.375;
-        let beta = (0.625 - beta * beta) / nf;
-        let ew = 1.0 / (nf + 3.0 / (8.0 * beta));
+        // Loop's limit position: `ω = 1/(n + 3/(8β))` per neighbour.
+        let ew = 1.0 / (nf + 3.0 / (8.0 * crate::rules::primal::r#loop::beta(n)));
         (1.0 - ew * nf, ew)
     };
     let pos = vw * v + ew * e.iter().sum::<DVec3>();

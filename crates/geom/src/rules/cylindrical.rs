@@ -1,4 +1,5 @@
-//! The cylindrical family of seed 000 §3.2 (docs/algorithms/cylindrical.md).
+//! The cylindrical family of seed 000 §3.2 (docs/algorithms/cylindrical.md): its
+//! preparation of a level ([`prepare`]: flat-edge merge, cut widths) and its corner points.
 //!
 //! **Cut width** (eq. 3): to round an edge of bend angle ψ (θ = π − ψ between the faces) to
 //! radius r, each face is cut parallel to the edge at width `x = 2r(1 − sin(θ/2))/sin θ`.
@@ -18,8 +19,15 @@
 //! at reflex corners the magnitude is capped and the sign kept. It never flips in the
 //! paper's tests but does not converge to r (it stalls near 0.2 % of r, §2.7).
 
-use super::{RuleError, RuleInput, RuleReport, corner_frame};
+use super::prepare::{PrepareError, Prepared};
+use super::{CornerRule, RuleError, RuleInput, RuleReport, corner_frame};
+use crate::dissolve::dissolve_flat_edges;
+use crate::edge_attrs::{EdgeAttrs, EdgeKey};
+use crate::geometry::{face_normals_raw, signed_bend_angles, unit_or_zero};
+use crate::mesh::PolyMesh;
+use crate::topology::Topology;
 use glam::DVec3;
+use std::borrow::Cow;
 
 /// Straight-corner threshold on 1 − c (c = m₁·m₂ = −cos φ) for the δ term (§2.6).
 const STRAIGHT_CORNER: f64 = 1e-12;
@@ -43,6 +51,66 @@ pub fn cut_width(r: f64, psi: f64) -> f64 {
 /// before a cylindrical-family step.
 pub fn dissolve_needed(psi: f64, tol: f64) -> bool {
     psi.abs() < tol
+}
+
+/// The family's preparation of a level (§2.5, eq. 3): the faces of flat edges
+/// (|ψ| < `tol`) are merged first, carrying the combination run's `flags` along; then every
+/// edge gets its cut width from its bend angle and its radius ([`CornerRule::edge_radius`]).
+/// A knife edge (ψ = π) is refused, naming it.
+pub(super) fn prepare<'a>(
+    rule: &CornerRule,
+    mesh: &'a PolyMesh,
+    attrs: &'a EdgeAttrs,
+    flags: Option<&[bool]>,
+    tol: f64,
+) -> Result<Prepared<'a>, PrepareError> {
+    let level = |m: &PolyMesh| -> Result<_, PrepareError> {
+        let topo = Topology::build(m)?;
+        topo.require_closed(m)?;
+        let raw = face_normals_raw(m);
+        let normals: Vec<DVec3> = raw.iter().map(|&n| unit_or_zero(n)).collect();
+        let bends = signed_bend_angles(m, &topo, &normals);
+        Ok((topo, raw, normals, bends))
+    };
+    let (mut topo, raw, mut normals, mut bends) = level(mesh)?;
+    let mut p_mesh = Cow::Borrowed(mesh);
+    let mut p_attrs = Cow::Borrowed(attrs);
+    let mut p_flags = flags.map(<[bool]>::to_vec);
+    let mut dissolved_edges = 0;
+    let d = dissolve_flat_edges(mesh, &topo, &bends, &raw, flags.unwrap_or(&[]), attrs, tol)?;
+    if let Some(d) = d {
+        (topo, _, normals, bends) = level(&d.mesh)?;
+        dissolved_edges = d.dissolved_edges;
+        p_flags = flags.map(|_| d.face_flags);
+        p_mesh = Cow::Owned(d.mesh);
+        p_attrs = Cow::Owned(d.edge_attrs);
+    }
+    let mut cut_widths = Vec::with_capacity(bends.len());
+    for (e, &psi) in bends.iter().enumerate() {
+        let (a, b) = topo.edge_verts(&p_mesh, e);
+        let r = rule
+            .edge_radius(p_attrs.get(&EdgeKey::new(a, b)))
+            .expect("the cylindrical family has a radius");
+        let x = cut_width(r, psi);
+        if !x.is_finite() {
+            return Err(RuleError::KnifeEdge {
+                a,
+                b,
+                bend_deg: psi.to_degrees(),
+            }
+            .into());
+        }
+        cut_widths.push(x);
+    }
+    Ok(Prepared {
+        mesh: p_mesh,
+        edge_attrs: p_attrs,
+        topo,
+        normals,
+        cut_widths,
+        combination: p_flags,
+        dissolved_edges,
+    })
 }
 
 fn widths(input: &RuleInput, c: usize) -> (f64, f64) {

@@ -1,8 +1,10 @@
 //! PRISM corner rules: where the new point of each face corner goes (docs/algorithms/: biquadratic.md, chamfers.md, cylindrical.md).
 //!
 //! PRISM's biquadratic step is CGAL's DQQ (dual quad quadrisection) with a *corner mask*:
-//! every rule here maps one face corner to one new point, and [`crate::biquadratic`] builds the
-//! FACE-, EDGE- and VERTEX-faces from those points, the same for every rule.
+//! every rule here maps one face corner to one new point, and [`crate::refine::dual_quad`]
+//! builds the FACE-, EDGE- and VERTEX-faces from those points, the same for every rule. A
+//! rule first prepares the level ([`CornerRule::prepare`]: the cylindrical family merges flat
+//! faces and computes cut widths; the combination rule continues its [`CombinationState`]).
 //!
 //! | rule | formula | paper |
 //! | --- | --- | --- |
@@ -19,10 +21,15 @@
 //! the two edges, `c = m₁·m₂ = −cos φ`, `sin φ = n·(u₁ × u₂)` (negative at reflex corners).
 
 mod chamfer;
+pub mod combination;
 mod cylindrical;
 mod doo_sabin;
+mod prepare;
+pub mod primal;
 
+pub use combination::CombinationState;
 pub use cylindrical::{cut_width, dissolve_needed};
+pub use prepare::{PrepareError, Prepared};
 
 use crate::mesh::PolyMesh;
 use crate::topology::Topology;

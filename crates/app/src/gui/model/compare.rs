@@ -9,12 +9,12 @@
 use super::ModelTab;
 use crate::gui::document::DocState;
 use prism_geom::analysis::measure_fillet;
-use prism_geom::{EdgeKey, Scheme};
+use prism_geom::{CornerRule, EdgeKey, Scheme};
 
-/// The target radius of a pipeline: its last step with an r (the rule says which).
-fn target_radius(steps: &[Scheme]) -> Option<f64> {
+/// The rule of a pipeline's last step with a radius: it says which radius an edge gets.
+fn rounding_rule(steps: &[Scheme]) -> Option<CornerRule> {
     steps.iter().rev().find_map(|s| match s {
-        Scheme::Biquadratic(rule) => rule.radius(),
+        Scheme::Biquadratic(rule) => rule.radius().map(|_| *rule),
         Scheme::Primal(_) => None,
     })
 }
@@ -32,9 +32,9 @@ impl ModelTab {
             return t.clone();
         }
         let v = &self.views[i];
-        let text = match target_radius(v.steps()) {
+        let text = match rounding_rule(v.steps()) {
             None => "—".to_string(),
-            Some(r) => {
+            Some(rule) => {
                 let control = &doc.mesh;
                 let refined = &v.pipeline.levels()[v.shown()].mesh;
                 let candidates: Vec<EdgeKey> = match edge {
@@ -43,7 +43,7 @@ impl ModelTab {
                 };
                 // Each try slices the refined mesh: a few edges, not all of a big model.
                 let found = candidates.iter().take(16).find_map(|e| {
-                    let r = doc.edge_attrs.get(e).and_then(|a| a.radius).unwrap_or(r);
+                    let r = rule.edge_radius(doc.edge_attrs.get(e))?;
                     measure_fillet(control, e.0, e.1, refined, r)
                         .ok()
                         .map(|m| (*e, r, m))

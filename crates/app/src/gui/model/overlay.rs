@@ -131,16 +131,14 @@ impl ModelTab {
         if self.display.corners && k > 0 && matches!(v.steps()[k - 1], Scheme::Biquadratic(_)) {
             let lv = &levels[k];
             let parent = &levels[k - 1].mesh;
-            if lv.report.as_ref().is_some_and(|r| r.dissolved_edges == 0)
-                && lv.mesh.num_vertices() == parent.num_corners()
-            {
-                // Vertex c of a biquadratic level is the corner point of parent corner c.
-                let vecs: Vec<(DVec3, DVec3)> = (0..parent.num_corners())
-                    .map(|c| {
-                        (
-                            parent.positions[parent.corner_verts[c] as usize],
-                            lv.mesh.positions[c],
-                        )
+            let undissolved = lv.report.as_ref().is_some_and(|r| r.dissolved_edges == 0);
+            if let (true, Some(prov)) = (undissolved, lv.provenance.as_ref()) {
+                // Each new corner point, from the parent vertex it was cut from.
+                let n = prov.numbering;
+                let vecs: Vec<(DVec3, DVec3)> = (0..lv.mesh.num_vertices() as u32)
+                    .filter_map(|i| {
+                        let pv = n.parent_vertex(parent, i)?;
+                        Some((parent.positions[pv as usize], lv.mesh.positions[i as usize]))
                     })
                     .collect();
                 o.add_segments(&vecs, [0.30, 0.65, 0.30]);

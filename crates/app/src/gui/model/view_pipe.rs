@@ -6,8 +6,8 @@
 
 use super::worker::{Finished, Job, over_budget};
 use prism_geom::ancestry::edge_origins;
-use prism_geom::biquadratic::FaceKind;
 use prism_geom::error::OverBudget;
+use prism_geom::refine::FaceKind;
 use prism_geom::{EdgeKey, Level, LimitPoints, Pipeline, Scheme};
 use prism_viewport::scene::scheme_color;
 use prism_viewport::{ColorBy, Scene, SceneOptions};
@@ -31,7 +31,7 @@ fn made_by(p: &Pipeline, k: usize) -> Option<Scheme> {
 /// The scene of a level: its faces (holes left out), coloured by kind, curvature or, for a
 /// solid colour, by the scheme of the step that made it (`made_by`).
 pub fn level_scene(lv: &Level, made_by: Option<Scheme>, opts: &SceneOptions) -> Scene {
-    let kinds: Option<&[FaceKind]> = lv.provenance.as_ref().map(|p| p.face_kind.as_slice());
+    let kinds: Option<&[FaceKind]> = lv.provenance.as_ref().and_then(|p| p.face_kinds());
     let holes = &lv.tags.holes;
     let mut opts = opts.clone();
     if let ColorBy::Solid(_) = opts.color_by {
@@ -315,10 +315,7 @@ impl ViewPipe {
         {
             return o.clone();
         }
-        let o = Arc::new(
-            edge_origins(self.pipeline.levels(), self.pipeline.steps(), key.1)
-                .map_err(|e| e.to_string()),
-        );
+        let o = Arc::new(edge_origins(self.pipeline.levels(), key.1).map_err(|e| e.to_string()));
         self.origins = Some((key, o.clone()));
         o
     }

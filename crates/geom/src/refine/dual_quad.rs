@@ -1,5 +1,5 @@
-//! The PRISM biquadratic step, written once for every corner rule (seed 000 §2, fig. 1;
-//! docs/algorithms/biquadratic.md).
+//! The dual quad split of PRISM's biquadratic step, written once for every corner rule
+//! (seed 000 §2, fig. 1; docs/algorithms/biquadratic.md).
 //!
 //! In CGAL's words this is DQQ, dual quad quadrisection: one new point per face corner
 //! (inner-loop corners included), then
@@ -10,8 +10,7 @@
 //! - the **VERTEX-face** of vertex v: the corners at v in ring order (from corner c go to
 //!   the twin of c's previous half-edge).
 //!
-//! New vertex i is the point of parent corner i, so vertex provenance is the identity on
-//! corner indices. Faces are written FACE-faces first (parent face order), then EDGE-faces
+//! New vertex i is the point of parent corner i ([`Numbering::DualQuad`]). Faces are written FACE-faces first (parent face order), then EDGE-faces
 //! (edge order), then VERTEX-faces (vertex order). Counts on a closed input:
 //! `V' = 2E, E' = 4E, F' = F + E + V`, and V − E + F is kept.
 //!
@@ -19,6 +18,8 @@
 //! is estimated first ([`estimated_bytes`]) so that a caller can refuse a step that would not
 //! fit.
 
+use super::{Numbering, Provenance};
+use crate::edge_attrs::EdgeKey;
 use crate::mesh::PolyMesh;
 use crate::topology::{NONE, Topology};
 use glam::DVec3;
@@ -31,13 +32,14 @@ pub enum FaceKind {
     Vertex,
 }
 
-/// Where each new face came from.
-#[derive(Debug, Clone, Default, PartialEq)]
-pub struct Provenance {
-    /// Kind of each new face.
-    pub face_kind: Vec<FaceKind>,
-    /// The parent face, edge or vertex (by kind) of each new face.
-    pub face_parent: Vec<u32>,
+/// The four sides of the EDGE-face of edge `e` (half-edges c and t): `(next c, c, next t, t)`
+/// as child vertices. Its long sides run along the edge inside one parent face, its short
+/// sides cross it at a vertex; every child edge is a side of exactly one EDGE-face.
+pub fn edge_face_sides(topo: &Topology, e: u32) -> [EdgeKey; 4] {
+    let c = topo.edge_corner[e as usize] as usize;
+    let t = topo.twin[c] as usize;
+    let q = [topo.next[c], c as u32, topo.next[t], t as u32];
+    [0, 1, 2, 3].map(|i| EdgeKey::new(q[i], q[(i + 1) % 4]))
 }
 
 /// Bytes the refined mesh of a closed mesh with `corners` corners and `edges` edges will take
@@ -48,7 +50,7 @@ pub fn estimated_bytes(mesh: &PolyMesh, edges: usize) -> u64 {
     let v = mesh.num_vertices() as u64;
     let faces = mesh.num_faces() as u64 + e + v;
     let loops = mesh.num_loops() as u64 + e + v;
-    c * 24 + (2 * c + 4 * e) * 4 + loops * 4 + faces * (4 + 4 + 1)
+    c * 24 + (2 * c + 4 * e) * 4 + loops * 4 + faces * (4 + 4 + 1) + 4 * e * 16
 }
 
 /// Builds the refined mesh from one new point per parent corner.
@@ -110,49 +112,8 @@ pub fn split(
         kind.push(FaceKind::Vertex);
         parent.push(v as u32);
     }
-    (
-        out,
-        Provenance {
-            face_kind: kind,
-            face_parent: parent,
-        },
-    )
-}
-
-/// Flags of the vertex-neighbourhood faces after a combination step (docs/algorithms/cylindrical.md):
-/// on the first step of a run (`parent_flags` is `None`) the VERTEX-faces; afterwards the
-/// FACE-face of a flagged face, the EDGE-faces of its edges and the VERTEX-faces of its
-/// vertices.
-pub fn vertex_neighbourhood_flags(
-    mesh: &PolyMesh,
-    topo: &Topology,
-    prov: &Provenance,
-    parent_flags: Option<&[bool]>,
-) -> Vec<bool> {
-    let Some(pf) = parent_flags else {
-        return prov
-            .face_kind
-            .iter()
-            .map(|&k| k == FaceKind::Vertex)
-            .collect();
-    };
-    let mut edge_flag = vec![false; topo.num_edges()];
-    let mut vert_flag = vec![false; mesh.num_vertices()];
-    for c in 0..mesh.num_corners() {
-        if pf[topo.corner_face[c] as usize] {
-            edge_flag[topo.corner_edge[c] as usize] = true;
-            vert_flag[mesh.corner_verts[c] as usize] = true;
-        }
-    }
-    prov.face_kind
-        .iter()
-        .zip(&prov.face_parent)
-        .map(|(&k, &p)| match k {
-            FaceKind::Face => pf[p as usize],
-            FaceKind::Edge => edge_flag[p as usize],
-            FaceKind::Vertex => vert_flag[p as usize],
-        })
-        .collect()
+    let prov = Provenance::new(mesh, topo, Numbering::DualQuad, kind, parent);
+    (out, prov)
 }
 
 #[cfg(test)]

@@ -1,6 +1,6 @@
-//! Crease sharpness: rules, decay and transitional weights (seed 001 §2, eq. 3–4; DeRose,
-//! Kass & Truong 1998), in the arithmetic OpenSubdiv uses (`Sdc::Crease`) so that results
-//! agree to the last digits.
+//! Crease sharpness: rules, decay, the crease mask and transitional weights (seed 001 §2,
+//! eq. 3–4; DeRose, Kass & Truong 1998), in the arithmetic OpenSubdiv uses (`Sdc::Crease`)
+//! so that results agree to the last digits.
 //!
 //! Sharpness is `f32`, as in OpenSubdiv: 0 is smooth, ≥ 10 infinitely sharp, in between
 //! semi-sharp. Per level a semi-sharp value decays to `s − 1` (uniform) or, with Chaikin, to
@@ -11,6 +11,7 @@
 //! both are blended with the fraction of this module's `fractional_weight`.
 
 use crate::tags::CreaseMethod;
+use glam::DVec3;
 
 /// Sharpness of an infinitely sharp edge or vertex.
 pub const INFINITE: f32 = 10.0;
@@ -154,6 +155,26 @@ pub fn crease_ends(sharpness: &[f32]) -> [usize; 2] {
         }
     }
     ends
+}
+
+/// The crease mask at v between its crease neighbours a and b: `(1 − ω) v + ω/2 (a + b)`,
+/// with the cubic B-spline's `ω = ¼` or, for `circle`, seed 002's circle-preserving weight
+/// of the crease's turning angle at v ([`crate::curve::circle_weight_of_cos`]; ¼ on a
+/// straight crease and where an edge has no length).
+#[inline]
+pub fn crease_point(v: DVec3, a: DVec3, b: DVec3, circle: bool) -> DVec3 {
+    let w = if circle {
+        let (d1, d2) = (v - a, b - v);
+        let den = d1.length() * d2.length();
+        if den == 0.0 {
+            0.25
+        } else {
+            crate::curve::circle_weight_of_cos(d1.dot(d2) / den)
+        }
+    } else {
+        0.25
+    };
+    (1.0 - w) * v + 0.5 * w * (a + b)
 }
 
 #[cfg(test)]

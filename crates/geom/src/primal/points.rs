@@ -1,0 +1,216 @@
+//! The child's points of one primal level: face points, edge points and vertex points, each
+//! by the rule its sharpness selects (smooth, dart, crease, corner, or the blend of the
+//! parent's and the child's rule where a semi-sharp feature runs out), written to the
+//! indices of the split's [`PrimalNumbering`]. The masks are in [`crate::rules::primal`].
+
+// Vertices, edges and corners are indices into parallel arrays here.
+#![allow(clippy::needless_range_loop)]
+
+use super::PrimalScheme;
+use super::sharpness::{ChildSharpness, Sharpness, child_sharpness_around};
+use crate::mesh::PolyMesh;
+use crate::refine::PrimalNumbering;
+use crate::rules::primal::crease::{self, Rule, is_sharp, vertex_rule};
+use crate::rules::primal::{catmark, r#loop};
+use crate::tags::SubdivTags;
+use crate::topology::{NONE, Topology};
+use glam::DVec3;
+use rayon::prelude::*;
+
+/// Meshes with at least this many faces are refined on rayon's thread pool (when it has
+/// more than one thread).
+pub const PARALLEL_FACES: usize = 50_000;
+
+/// `out[i] = f(i)` for every i, in chunks on rayon's pool when `parallel`. `f` is called
+/// from one loop only, so that it is inlined into it.
+#[inline(always)]
+fn fill<T: Send>(out: &mut [T], parallel: bool, f: impl Fn(usize) -> T + Sync + Send) {
+    let chunk = if parallel {
+        (out.len() / (8 * rayon::current_num_threads())).max(4096)
+    } else {
+        out.len().max(1)
+    };
+    let run = |(k, q): (usize, &mut [T])| {
+        for (i, o) in q.iter_mut().enumerate() {
+            *o = f(k * chunk + i);
+        }
+    };
+    if parallel {
+        out.par_chunks_mut(chunk).enumerate().for_each(run);
+    } else {
+        out.chunks_mut(chunk).enumerate().for_each(run);
+    }
+}
+
+/// What the point rules read of one level.
+pub(crate) struct Level<'a> {
+    pub mesh: &'a PolyMesh,
+    pub topo: &'a Topology,
+    pub tags: &'a SubdivTags,
+    pub sh: &'a Sharpness,
+    pub child: &'a ChildSharpness<'a>,
+    /// The corner each vertex's ring starts at.
+    pub ring_start: &'a (dyn Fn(usize) -> u32 + Sync),
+}
+
+/// Every child point of `lv` under `scheme`, at the indices of `n`.
+pub(crate) fn child_points(lv: &Level, scheme: PrimalScheme, n: PrimalNumbering) -> Vec<DVec3> {
+    let (mesh, topo, sh) = (lv.mesh, lv.topo, lv.sh);
+    let nv = mesh.num_vertices();
+    let nf = mesh.num_faces();
+    let p = &mesh.positions;
+    let cv = &mesh.corner_verts;
+    let cc = scheme.family() == PrimalScheme::CatmullClark;
+    let mut out = vec![DVec3::ZERO; n.len()];
+    let parallel = nf >= PARALLEL_FACES && rayon::current_num_threads() > 1;
+    let first_edge_point = n.edge_point(0) as usize;
+    let first_face_point = first_edge_point + n.edges as usize;
+
+    // Face points.
+    fill(&mut out[first_face_point..], parallel, |f| {
+        let r = mesh.face_corners(f);
+        let k = r.len();
+        catmark::face_point(cv[r].iter().map(|&v| p[v as usize]).sum(), k)
+    });
+    let face_size = |f: u32| mesh.face_corners(f as usize).len();
+
+    // Edge points.
+    let (head, face_pts) = out.split_at_mut(first_face_point);
+    let face_pts: &[DVec3] = face_pts;
+    fill(&mut head[first_edge_point..], parallel, |e| {
+        let c = topo.edge_corner[e] as usize;
+        let t = topo.twin[c];
+        let (a, b) = (cv[c] as usize, cv[topo.next[c] as usize] as usize);
+        let s = sh.edge[e];
+        let crease_pt = 0.5 * (p[a] + p[b]);
+        if t == NONE {
+            return crease_pt;
+        }
+        let t = t as usize;
+        let (f0, f1) = (topo.corner_face[c], topo.corner_face[t]);
+        // Smooth mask as vertex weight, face weight and the two face terms.
+        let (vw, fw, fsum) = if cc {
+            let (vw, fw) = catmark::edge_weights(lv.tags.triangles, face_size(f0), face_size(f1));
+            (vw, fw, face_pts[f0 as usize] + face_pts[f1 as usize])
+        } else {
+            let o0 = cv[topo.prev[c] as usize] as usize;
+            let o1 = cv[topo.prev[t] as usize] as usize;
+            let (vw, fw) = r#loop::EDGE_WEIGHTS;
+            (vw, fw, p[o0] + p[o1])
+        };
+        if !is_sharp(s) {
+            return vw * (p[a] + p[b]) + fw * fsum;
+        }
+        // The child vertex's rule decides (as OpenSubdiv's refiner passes it): a crease
+        // when both child edges stay sharp, else the blend with the parent's sharpness as
+        // the weight.
+        if is_sharp(lv.child.edge(e, a)) && is_sharp(lv.child.edge(e, b)) {
+            crease_pt
+        } else {
+            let pw = s as f64;
+            let cw = 1.0 - pw;
+            (pw * 0.5 + cw * vw) * (p[a] + p[b]) + cw * fw * fsum
+        }
+    });
+
+    // Vertex points. A smooth vertex (always interior: boundary vertices are creases or
+    // corners) needs the sums of its neighbours and of its face points. On one thread they
+    // are accumulated in one streaming pass over the corners; on several, each vertex
+    // gathers them around its ring.
+    let scattered = (!parallel).then(|| {
+        let mut esum = vec![DVec3::ZERO; nv];
+        let mut fsum = vec![DVec3::ZERO; if cc { nv } else { 0 }];
+        let mut count = vec![0u32; nv];
+        for c in 0..mesh.num_corners() {
+            let v = cv[c] as usize;
+            esum[v] += p[cv[topo.next[c] as usize] as usize];
+            if cc {
+                fsum[v] += face_pts[topo.corner_face[c] as usize];
+            }
+            count[v] += 1;
+        }
+        (esum, fsum, count)
+    });
+    let smooth_point = |v: usize| -> DVec3 {
+        let (esum, fsum, k) = match &scattered {
+            Some((e, f, k)) => (e[v], if cc { f[v] } else { DVec3::ZERO }, k[v] as usize),
+            None => {
+                let start = topo.vert_corner[v];
+                let (mut esum, mut fsum, mut k) = (DVec3::ZERO, DVec3::ZERO, 0usize);
+                let mut c = start;
+                loop {
+                    esum += p[cv[topo.next[c as usize] as usize] as usize];
+                    if cc {
+                        fsum += face_pts[topo.corner_face[c as usize] as usize];
+                    }
+                    k += 1;
+                    c = topo.ring_next(c);
+                    if c == start || c == NONE {
+                        break;
+                    }
+                }
+                (esum, fsum, k)
+            }
+        };
+        if cc {
+            catmark::vertex_point(p[v], esum, fsum, k)
+        } else {
+            let (vw, ew) = r#loop::vertex_weights(k);
+            vw * p[v] + ew * esum
+        }
+    };
+    fill(&mut head[..nv], parallel, |v| {
+        if topo.vert_corner[v] == NONE {
+            return p[v];
+        }
+        let p_rule = vertex_rule(sh.vert[v], sh.sharp_edges[v] as usize);
+        if matches!(p_rule, Rule::Smooth | Rule::Dart) {
+            return smooth_point(v);
+        }
+        sharp_vertex_point(lv, v, p_rule, scheme.circle_creases(), &smooth_point)
+    });
+    out
+}
+
+/// The point of a crease or corner vertex, blended with its child's rule where a
+/// semi-sharp feature runs out.
+fn sharp_vertex_point(
+    lv: &Level,
+    v: usize,
+    p_rule: Rule,
+    circle: bool,
+    smooth_point: &dyn Fn(usize) -> DVec3,
+) -> DVec3 {
+    let (mesh, sh) = (lv.mesh, lv.sh);
+    let method = lv.tags.crease_method;
+    let p = &mesh.positions;
+    let (mut ring_e, mut ring_c) = (Vec::new(), Vec::new());
+    lv.topo
+        .vertex_ring_from(mesh, (lv.ring_start)(v), &mut ring_e, &mut ring_c);
+    let ps: Vec<f32> = ring_e.iter().map(|&(e, _)| sh.edge[e as usize]).collect();
+    let rule_point = |rule: Rule, sharp: &[f32]| -> DVec3 {
+        match rule {
+            Rule::Smooth | Rule::Dart => smooth_point(v),
+            Rule::Crease => {
+                let [i, j] = crease::crease_ends(sharp);
+                let (a, b) = (p[ring_e[i].1 as usize], p[ring_e[j].1 as usize]);
+                crease::crease_point(p[v], a, b, circle)
+            }
+            Rule::Corner => p[v],
+        }
+    };
+    let parent_pt = rule_point(p_rule, &ps);
+    if !sh.semi[v] {
+        return parent_pt;
+    }
+    let mut cs = Vec::new();
+    child_sharpness_around(method, &ps, &mut cs);
+    let c_vert = crease::decrement(sh.vert[v]);
+    let c_rule = vertex_rule(c_vert, cs.iter().filter(|&&s| is_sharp(s)).count());
+    if c_rule == p_rule {
+        return parent_pt;
+    }
+    let child_pt = rule_point(c_rule, &cs);
+    let pw = crease::fractional_weight(method, sh.vert[v], c_vert, &ps, &cs) as f64;
+    pw * parent_pt + (1.0 - pw) * child_pt
+}

@@ -1,0 +1,263 @@
+//! One split per topology, and where every child element comes from, as data.
+//!
+//! A refinement step is a rule placing points (the biquadratic corner rules in
+//! [`crate::rules`], the primal masks in [`crate::rules::primal`]) and a *split* building the
+//! child's faces from them. Prism has three splits, each written once:
+//!
+//! - [`dual_quad`]: one child vertex per parent corner; FACE-, EDGE- and VERTEX-faces
+//!   (PRISM's biquadratic step, seed 000 §2; CGAL's DQQ);
+//! - [`quad`]: vertex, edge and face points; one quad per parent corner (Catmull–Clark);
+//! - [`tri`]: vertex and edge points; four triangles per parent triangle (Loop).
+//!
+//! The child numbering is [`Numbering`]: every user of a child index (the point rules, the
+//! splits, the written-down child topology, attribute propagation, ancestry, the viewport's
+//! corner overlay, the memory estimate) asks it instead of spelling out `V + e`. What a level
+//! records about its parent is [`Provenance`]: the numbering, the parent of every face and
+//! the parent edge of every child edge lying on one.
+
+pub mod dual_quad;
+pub mod quad;
+pub mod tri;
+
+pub use dual_quad::FaceKind;
+
+use crate::edge_attrs::{EdgeAttr, EdgeAttrs, EdgeKey};
+use crate::mesh::PolyMesh;
+use crate::topology::{NONE, Topology};
+
+/// The parent element a child vertex stands for.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Parent {
+    /// The vertex point of a parent vertex (primal splits).
+    Vertex(u32),
+    /// The edge point of a parent edge (primal splits).
+    Edge(u32),
+    /// The face point of a parent face (quad split).
+    Face(u32),
+    /// The new point of a parent face corner (dual quad split).
+    Corner(u32),
+}
+
+/// Child numbering of the primal splits: vertex points keep their parent's index
+/// (`0..V`), then one edge point per parent edge (`V + e`), then, for the quad split, one
+/// face point per parent face (`V + E + f`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct PrimalNumbering {
+    pub vertices: u32,
+    pub edges: u32,
+    /// Parent faces with a face point (0 for the triangle split).
+    pub face_points: u32,
+}
+
+impl PrimalNumbering {
+    #[inline]
+    pub fn vertex(self, v: u32) -> u32 {
+        v
+    }
+    #[inline]
+    pub fn edge_point(self, e: u32) -> u32 {
+        self.vertices + e
+    }
+    #[inline]
+    pub fn face_point(self, f: u32) -> u32 {
+        debug_assert!(f < self.face_points);
+        self.vertices + self.edges + f
+    }
+    /// Number of child vertices.
+    pub fn len(self) -> usize {
+        (self.vertices + self.edges + self.face_points) as usize
+    }
+    pub fn is_empty(self) -> bool {
+        self.len() == 0
+    }
+}
+
+/// How a child's vertices are numbered from its parent's elements: the parent → child maps of
+/// one split.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Numbering {
+    /// Child vertex c is the new point of parent corner c.
+    DualQuad,
+    /// Vertex, edge and face points ([`PrimalNumbering`]).
+    Primal(PrimalNumbering),
+}
+
+impl Numbering {
+    /// The parent element of child vertex `i`.
+    pub fn vertex_parent(self, i: u32) -> Parent {
+        match self {
+            Numbering::DualQuad => Parent::Corner(i),
+            Numbering::Primal(n) => {
+                if i < n.vertices {
+                    Parent::Vertex(i)
+                } else if i < n.vertices + n.edges {
+                    Parent::Edge(i - n.vertices)
+                } else {
+                    Parent::Face(i - n.vertices - n.edges)
+                }
+            }
+        }
+    }
+
+    /// The parent vertex a child vertex stands for or was cut from (a corner's vertex), if
+    /// any: what the corner overlay draws an arrow from.
+    pub fn parent_vertex(self, parent: &PolyMesh, i: u32) -> Option<u32> {
+        match self.vertex_parent(i) {
+            Parent::Vertex(v) => Some(v),
+            Parent::Corner(c) => parent.corner_verts.get(c as usize).copied(),
+            Parent::Edge(_) | Parent::Face(_) => None,
+        }
+    }
+
+    /// Calls `f(child edge, end)` for every child edge lying on parent edge `e`; `end` is the
+    /// parent vertex a primal half touches (`None` for the four sides of an EDGE-face, which
+    /// run along the whole edge or cross it).
+    pub fn edge_children(
+        self,
+        parent: &PolyMesh,
+        topo: &Topology,
+        e: u32,
+        mut f: impl FnMut(EdgeKey, Option<u32>),
+    ) {
+        match self {
+            Numbering::DualQuad => {
+                for key in dual_quad::edge_face_sides(topo, e) {
+                    f(key, None);
+                }
+            }
+            Numbering::Primal(n) => {
+                let (a, b) = topo.edge_verts(parent, e as usize);
+                let mid = n.edge_point(e);
+                f(EdgeKey::new(n.vertex(a), mid), Some(a));
+                f(EdgeKey::new(n.vertex(b), mid), Some(b));
+            }
+        }
+    }
+}
+
+/// Where a level's elements come from.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Provenance {
+    pub numbering: Numbering,
+    /// Kind of each child face of a dual quad split (empty for the primal splits, whose
+    /// faces all lie in one parent face each).
+    pub face_kind: Vec<FaceKind>,
+    /// The parent face, edge or vertex (by kind) of each child face.
+    pub face_parent: Vec<u32>,
+    /// Every child edge lying on a parent edge, with that parent edge, both by their
+    /// vertices; edges inside a parent face (to face points, Loop's middle triangles) have
+    /// none.
+    pub edge_parent: Vec<(EdgeKey, EdgeKey)>,
+}
+
+impl Provenance {
+    /// The FACE/EDGE/VERTEX kind of every face, for a dual quad split.
+    pub fn face_kinds(&self) -> Option<&[FaceKind]> {
+        (!self.face_kind.is_empty()).then_some(self.face_kind.as_slice())
+    }
+
+    /// The provenance of a split with numbering `numbering` of `parent`, whose faces came
+    /// from `face_kind`/`face_parent`.
+    pub fn new(
+        parent: &PolyMesh,
+        topo: &Topology,
+        numbering: Numbering,
+        face_kind: Vec<FaceKind>,
+        face_parent: Vec<u32>,
+    ) -> Provenance {
+        let per_edge = match numbering {
+            Numbering::DualQuad => 4,
+            Numbering::Primal(_) => 2,
+        };
+        let mut edge_parent = Vec::with_capacity(per_edge * topo.num_edges());
+        for e in 0..topo.num_edges() as u32 {
+            let (a, b) = topo.edge_verts(parent, e as usize);
+            let pk = EdgeKey::new(a, b);
+            numbering.edge_children(parent, topo, e, |k, _| edge_parent.push((k, pk)));
+        }
+        Provenance {
+            numbering,
+            face_kind,
+            face_parent,
+            edge_parent,
+        }
+    }
+}
+
+/// Hands edge attributes down one split: every child edge lying on an attributed parent edge
+/// gets `child(attribute, end)` when that is `Some` (`end` as in
+/// [`Numbering::edge_children`]). The one propagation for both families: the biquadratic
+/// step copies, the primal step decays the crease towards the end the half touches.
+pub fn propagate(
+    parent: &PolyMesh,
+    topo: &Topology,
+    attrs: &EdgeAttrs,
+    numbering: Numbering,
+    mut child: impl FnMut(u32, &EdgeAttr, Option<u32>) -> Option<EdgeAttr>,
+) -> EdgeAttrs {
+    let mut out = EdgeAttrs::new();
+    for (k, a) in attrs {
+        let Some(e) = topo.find_edge(parent, k.0, k.1) else {
+            continue;
+        };
+        numbering.edge_children(parent, topo, e, |key, end| {
+            if let Some(c) = child(e, a, end) {
+                out.insert(key, c);
+            }
+        });
+    }
+    out
+}
+
+/// The half-edge topology from the twins, faces, cycles and ring starts a split wrote down:
+/// edges numbered in the order of their smaller half-edge, as [`Topology::build`] numbers
+/// them.
+pub(crate) fn topology_from_twins(
+    twin: Vec<u32>,
+    corner_face: Vec<u32>,
+    next: Vec<u32>,
+    prev: Vec<u32>,
+    vert_corner: Vec<u32>,
+) -> Topology {
+    let n = twin.len();
+    let mut corner_edge = vec![NONE; n];
+    let mut edge_corner = Vec::with_capacity(n / 2 + 1);
+    for c in 0..n {
+        let t = twin[c];
+        if t == NONE || (c as u32) < t {
+            let e = edge_corner.len() as u32;
+            edge_corner.push(c as u32);
+            corner_edge[c] = e;
+            if t != NONE {
+                corner_edge[t as usize] = e;
+            }
+        }
+    }
+    Topology {
+        corner_face,
+        next,
+        prev,
+        twin,
+        corner_edge,
+        edge_corner,
+        vert_corner,
+        warnings: Vec::new(),
+    }
+}
+
+/// Sizes of a child, to estimate its memory before building it and to report it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct ChildCounts {
+    pub vertices: u64,
+    pub edges: u64,
+    pub faces: u64,
+    pub corners: u64,
+}
+
+impl ChildCounts {
+    /// Bytes of the child's positions, corners and face offsets, and of its
+    /// [`Provenance`] (a face's kind and parent, a parent edge per child edge at most).
+    pub fn bytes(&self) -> u64 {
+        self.vertices * 24 + self.corners * 4 + self.faces * (8 + 5) + self.edges * 16
+    }
+}
