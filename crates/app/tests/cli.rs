@@ -13,7 +13,42 @@ fn prism(args: &[&str]) -> Output {
 
 /// `prism` with a command line split at spaces (no argument here has one).
 fn run(line: &str) -> Output {
-    prism(&line.split(' ').collect::<Vec<_>>())
+    run_with(line, &[])
+}
+
+/// `run` with each `{}` of `line` replaced by the next of `paths`.
+fn run_with(line: &str, paths: &[&Path]) -> Output {
+    let mut args: Vec<String> = Vec::new();
+    let mut next = paths.iter();
+    for a in line.split(' ') {
+        args.push(match a {
+            "{}" => next.next().expect("a path per {}").display().to_string(),
+            _ => a.to_string(),
+        });
+    }
+    let args: Vec<&str> = args.iter().map(String::as_str).collect();
+    prism(&args)
+}
+
+/// A run that must succeed writing to the temporary file `name` (the `{}` of `line`): the
+/// file, stdout and stderr.
+fn succeeds_to(name: &str, line: &str) -> (PathBuf, String, String) {
+    let out = tmp(name);
+    let (so, se) = succeeds(run_with(line, &[&out]));
+    (out, so, se)
+}
+
+/// A written mesh has no NaN or infinite coordinate.
+fn assert_finite(path: &Path) {
+    let written = std::fs::read_to_string(path).unwrap();
+    assert!(!written.contains("NaN") && !written.contains("inf"));
+}
+
+/// Stdout and stderr of a run that must succeed.
+fn succeeds(o: Output) -> (String, String) {
+    let (so, se) = text(&o);
+    assert!(o.status.success(), "{so}{se}");
+    (so, se)
 }
 
 fn tmp(name: &str) -> PathBuf {
@@ -31,13 +66,10 @@ fn text(o: &Output) -> (String, String) {
 
 #[test]
 fn rounding_the_tripod_reports_no_flipped_faces() {
-    let out = tmp("tripod-round.obj");
-    let o = run(&format!(
+    let (out, so, _) = succeeds_to(
+        "tripod-round.obj",
         "subdivide assets/tripod.obj -o {} --scheme combination --radius 0.2 --levels 5",
-        out.display()
-    ));
-    let (so, se) = text(&o);
-    assert!(o.status.success(), "{so}{se}");
+    );
     let lines: Vec<&str> = so.lines().filter(|l| l.starts_with("level ")).collect();
     assert_eq!(lines.len(), 6, "{so}");
     for l in &lines[1..] {
@@ -54,41 +86,34 @@ fn rounding_the_tripod_reports_no_flipped_faces() {
 
 #[test]
 fn the_simple_cylindrical_breakdown_is_reported() {
-    let out = tmp("cube-cyl.obj");
-    let o = run(&format!(
+    let (out, so, se) = succeeds_to(
+        "cube-cyl.obj",
         "subdivide assets/cube.obj -o {} --scheme cylindrical --radius 0.45 --levels 5",
-        out.display()
-    ));
-    let (so, se) = text(&o);
-    assert!(o.status.success(), "{so}{se}");
+    );
     assert!(
         so.lines()
             .any(|l| l.starts_with("level 4") && !l.contains(" 0 flipped")),
         "{so}"
     );
     assert!(se.contains("inside out"), "{se}");
-    let written = std::fs::read_to_string(&out).unwrap();
-    assert!(!written.contains("NaN") && !written.contains("inf"));
+    assert_finite(&out);
 }
 
 #[test]
 fn pipelines_and_documents() {
-    let out = tmp("fig7.prism.json");
-    let o = run(&format!(
+    let (out, so, _) = succeeds_to(
+        "fig7.prism.json",
         "subdivide assets/holed-block.prism.json -o {} --pipeline cut-width:d=0.1,cut-width:d=0.025,cut-width:d=0.00625",
-        out.display()
-    ));
-    let (so, se) = text(&o);
-    assert!(o.status.success(), "{so}{se}");
+    );
     assert_eq!(so.matches(" 0 flipped").count(), 3, "{so}");
     let doc = std::fs::read_to_string(&out).unwrap();
     assert!(doc.starts_with("{\"version\":1"));
     // Holed faces to OBJ: triangulated with a warning.
     let obj = tmp("holed.obj");
-    let o = run(&format!(
+    let o = run_with(
         "subdivide assets/holed-block.prism.json -o {} --scheme combination --radius 0.15 --levels 1",
-        obj.display()
-    ));
+        &[&obj],
+    );
     let (_, se) = text(&o);
     assert!(o.status.success());
     assert!(se.contains("triangulated"), "{se}");
@@ -97,53 +122,16 @@ fn pipelines_and_documents() {
 #[test]
 fn bad_usage_exits_2() {
     for args in [
-        vec![
-            "subdivide",
-            "assets/cube.obj",
-            "-o",
-            "x.obj",
-            "--scheme",
-            "loopy",
-        ],
-        vec![
-            "subdivide",
-            "assets/cube.obj",
-            "-o",
-            "x.obj",
-            "--scheme",
-            "combination",
-        ],
-        vec![
-            "subdivide",
-            "assets/cube.obj",
-            "-o",
-            "x.obj",
-            "--scheme",
-            "vector-sum",
-            "--alpha",
-            "0.7",
-        ],
-        vec![
-            "subdivide",
-            "assets/cube.obj",
-            "-o",
-            "x.obj",
-            "--pipeline",
-            "doo-sabin,cut-width:d=oops",
-        ],
-        vec![
-            "subdivide",
-            "assets/cube.obj",
-            "-o",
-            "x.txt",
-            "--scheme",
-            "doo-sabin",
-        ],
-        vec!["subdivide", "assets/cube.obj", "--bogus"],
+        "subdivide assets/cube.obj -o x.obj --scheme loopy",
+        "subdivide assets/cube.obj -o x.obj --scheme combination",
+        "subdivide assets/cube.obj -o x.obj --scheme vector-sum --alpha 0.7",
+        "subdivide assets/cube.obj -o x.obj --pipeline doo-sabin,cut-width:d=oops",
+        "subdivide assets/cube.obj -o x.txt --scheme doo-sabin",
+        "subdivide assets/cube.obj --bogus",
     ] {
-        let o = prism(&args);
+        let o = run(args);
         let (_, se) = text(&o);
-        assert_eq!(o.status.code(), Some(2), "{args:?}: {se}");
+        assert_eq!(o.status.code(), Some(2), "{args}: {se}");
         assert!(!se.contains("panicked"), "{se}");
     }
 }
@@ -181,11 +169,7 @@ fn bad_input_exits_1_and_names_the_element() {
             std::fs::write(&p, body).unwrap();
         }
         let out = tmp("out.obj");
-        let o = run(&format!(
-            "subdivide {} -o {} --scheme doo-sabin",
-            p.display(),
-            out.display()
-        ));
+        let o = run_with("subdivide {} -o {} --scheme doo-sabin", &[&p, &out]);
         let (_, se) = text(&o);
         assert_eq!(o.status.code(), Some(1), "{name}: {se}");
         assert!(se.contains(expect), "{name}: {se}");
@@ -201,10 +185,10 @@ fn a_failed_save_keeps_the_previous_file() {
     let blocker = tmp("blocker");
     std::fs::write(&blocker, "keep").unwrap();
     let target = blocker.join("x.obj");
-    let o = run(&format!(
+    let o = run_with(
         "subdivide assets/cube.obj -o {} --scheme doo-sabin",
-        target.display()
-    ));
+        &[&target],
+    );
     assert_eq!(o.status.code(), Some(1));
     assert_eq!(std::fs::read_to_string(&blocker).unwrap(), "keep");
 }
@@ -301,10 +285,7 @@ fn limit_equals_opensubdiv_and_refined_output_refines_on() {
     );
 
     // Loop refuses a mesh with a hexagon, naming the face.
-    let o = run(&format!(
-        "limit assets/tripod.obj -o {} --scheme loop",
-        out.display()
-    ));
+    let o = run_with("limit assets/tripod.obj -o {} --scheme loop", &[&out]);
     assert_eq!(o.status.code(), Some(1));
     assert!(
         text(&o).1.contains("face 0 has 6 corners"),
@@ -342,10 +323,10 @@ fn bench_prints_the_median_and_peak_memory() {
 #[test]
 fn render_writes_a_picture() {
     let out = tmp("tripod.png");
-    let o = run(&format!(
+    let o = run_with(
         "render assets/tripod.obj -o {} --scheme combination --radius 0.2 --levels 2 --shading smooth --wireframe --size 200x150 --view top",
-        out.display()
-    ));
+        &[&out],
+    );
     let (stdout, err) = text(&o);
     assert!(o.status.success(), "{err}");
     assert!(stdout.contains("rendered"), "{stdout}");
@@ -355,10 +336,7 @@ fn render_writes_a_picture() {
     let w = u32::from_be_bytes(png[16..20].try_into().unwrap());
     let h = u32::from_be_bytes(png[20..24].try_into().unwrap());
     assert_eq!((w, h), (200, 150));
-    let o = run(&format!(
-        "render assets/tripod.obj -o {} --size big",
-        out.display()
-    ));
+    let o = run_with("render assets/tripod.obj -o {} --size big", &[&out]);
     assert_eq!(o.status.code(), Some(2));
 }
 
@@ -371,11 +349,7 @@ fn curve_refines_and_round_trips_its_json() {
     )
     .unwrap();
     let out = tmp("square-out.json");
-    let o = run(&format!(
-        "curve {} -o {} --scheme circle --levels 3",
-        input.display(),
-        out.display()
-    ));
+    let o = run_with("curve {} -o {} --scheme circle --levels 3", &[&input, &out]);
     assert!(o.status.success(), "{:?}", text(&o));
     let v: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(&out).unwrap()).unwrap();
@@ -391,11 +365,10 @@ fn curve_refines_and_round_trips_its_json() {
     );
     // The output reads back as input.
     let again = tmp("square-again.json");
-    let o = run(&format!(
+    let o = run_with(
         "curve {} -o {} --scheme log-spiral --levels 1",
-        out.display(),
-        again.display()
-    ));
+        &[&out, &again],
+    );
     assert!(o.status.success(), "{:?}", text(&o));
     // Bad input: too few points, repeated points, bad JSON, unknown scheme.
     for (body, needle) in [
@@ -410,19 +383,11 @@ fn curve_refines_and_round_trips_its_json() {
         (r#"{"closed": false, "points": [[0,0],[1,1],"#, "line 1"),
     ] {
         std::fs::write(&input, body).unwrap();
-        let o = run(&format!(
-            "curve {} -o {} --scheme circle",
-            input.display(),
-            out.display()
-        ));
+        let o = run_with("curve {} -o {} --scheme circle", &[&input, &out]);
         assert_eq!(o.status.code(), Some(1));
         assert!(text(&o).1.contains(needle), "{:?}", text(&o));
     }
-    let o = run(&format!(
-        "curve {} -o {} --scheme spline",
-        input.display(),
-        out.display()
-    ));
+    let o = run_with("curve {} -o {} --scheme spline", &[&input, &out]);
     assert_eq!(o.status.code(), Some(2));
 }
 
@@ -430,10 +395,10 @@ fn curve_refines_and_round_trips_its_json() {
 fn subdivide_exports_stl_and_glb() {
     for (name, magic) in [("cube.stl", None), ("cube.glb", Some(b"glTF"))] {
         let out = tmp(name);
-        let o = run(&format!(
+        let o = run_with(
             "subdivide assets/cube.obj -o {} --pipeline catmull-clark,catmull-clark",
-            out.display()
-        ));
+            &[&out],
+        );
         assert!(o.status.success(), "{:?}", text(&o));
         let bytes = std::fs::read(&out).unwrap();
         match magic {

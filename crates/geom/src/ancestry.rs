@@ -159,6 +159,37 @@ mod tests {
         }
     }
 
+    /// The primal step hands a crease to the two halves of its edge and ancestry traces
+    /// exactly those halves back, through two levels: the same edge maps.
+    #[test]
+    fn primal_ancestry_agrees_with_crease_propagation() {
+        let m = primitives::cube3();
+        let topo = Topology::build(&m).unwrap();
+        let (a, b) = topo.edge_verts(&m, 5);
+        let key = EdgeKey::new(a, b);
+        let mut attrs = EdgeAttrs::new();
+        attrs.insert(
+            key,
+            EdgeAttr {
+                crease: 10.0,
+                radius: None,
+            },
+        );
+        let steps = vec![Scheme::Primal(PrimalScheme::CatmullClark); 2];
+        let mut p = Pipeline::new(m, attrs, steps);
+        p.compute().unwrap();
+        let origins = edge_origins(p.levels(), 2).unwrap();
+        let marked: Vec<EdgeKey> = p.levels()[2].edge_attrs.keys().copied().collect();
+        let mut traced: Vec<EdgeKey> = origins
+            .iter()
+            .filter(|(_, o)| **o == key)
+            .map(|(c, _)| *c)
+            .collect();
+        traced.sort();
+        assert_eq!(marked.len(), 4);
+        assert_eq!(marked, traced);
+    }
+
     #[test]
     fn level_zero_maps_to_itself() {
         let m = primitives::cube3();

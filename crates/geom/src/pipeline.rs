@@ -168,7 +168,7 @@ impl Pipeline {
                         mesh: out.mesh,
                         edge_attrs: out.edge_attrs,
                         tags: out.tags,
-                        provenance: Some(out.provenance),
+                        provenance: out.provenance,
                         combination: None,
                         report: Some(report),
                     }

@@ -1,7 +1,7 @@
 //! The primal schemes, Catmull–Clark and Loop, with creases, corners, boundaries and holes,
 //! written once: one driver classifies every vertex and edge (smooth, dart, crease, corner,
 //! and the blend where a semi-sharp feature runs out) and splits the faces, and only the
-//! smooth masks ([`masks`]) and the split pattern differ per scheme.
+//! smooth masks ([`crate::rules::primal`]) and the split ([`crate::refine`]) differ per scheme.
 //!
 //! Seeds: Loop with discontinuities, seed 001 §2 (crease masks eq. 3–4, limit eq. 5–7);
 //! Catmull–Clark, the reference scheme of seeds 000 and 002. Semi-sharp creases follow
@@ -9,7 +9,7 @@
 //! OpenSubdiv's (tests/opensubdiv.rs): new vertex = blend of the parent's and the child's
 //! rule masks with the fractional weight of [`crease::fractional_weight`].
 //!
-//! One level is: sharpness ([`sharpness`], boundary rules applied) → points ([`points`], the
+//! One level is: sharpness (`sharpness.rs`, boundary rules applied) → points (`points.rs`, the
 //! masks of [`crate::rules::primal`]) → split ([`crate::refine::quad`] or
 //! [`crate::refine::tri`], whose numbering every index here comes from) → attributes (one
 //! [`crate::refine::propagate`] for creases and radii; corners decay; holes stay holes: they
@@ -111,8 +111,9 @@ pub struct PrimalOutput {
     pub mesh: PolyMesh,
     pub edge_attrs: EdgeAttrs,
     pub tags: SubdivTags,
-    /// Where its vertices, faces and edges come from.
-    pub provenance: Provenance,
+    /// Where its vertices, faces and edges come from (not recorded by
+    /// [`refine_primal_levels`], whose levels are not kept).
+    pub provenance: Option<Provenance>,
     pub report: PrimalReport,
 }
 
@@ -152,11 +153,15 @@ pub fn refine_primal(
     scheme: PrimalScheme,
     memory_budget: u64,
 ) -> Result<PrimalOutput, PrimalError> {
-    refine(mesh, attrs, tags, scheme, memory_budget, None, None, false).map(|(o, _, _)| o)
+    let with = With {
+        provenance: true,
+        ..With::default()
+    };
+    refine(mesh, attrs, tags, scheme, memory_budget, with).map(|(o, _, _)| o)
 }
 
 /// `levels` levels at once, only the last one kept. From the second level on the topology
-/// is not searched for but written down from the split (`child_topology`), which saves a
+/// is not searched for but written down from the split (`refine::quad::topology`), which saves a
 /// third of a level's time.
 pub fn refine_primal_levels(
     mesh: &PolyMesh,
@@ -167,16 +172,12 @@ pub fn refine_primal_levels(
     memory_budget: u64,
 ) -> Result<PrimalOutput, PrimalError> {
     assert!(levels >= 1, "at least one level");
-    let (mut out, _, mut topo) = refine(
-        mesh,
-        attrs,
-        tags,
-        scheme,
-        memory_budget,
-        None,
-        None,
-        levels > 1,
-    )?;
+    let with = |known_topology, k: usize| With {
+        known_topology,
+        child_topology: k < levels,
+        ..With::default()
+    };
+    let (mut out, _, mut topo) = refine(mesh, attrs, tags, scheme, memory_budget, with(None, 1))?;
     for k in 2..=levels {
         let (o, _, t) = refine(
             &out.mesh,
@@ -184,9 +185,7 @@ pub fn refine_primal_levels(
             &out.tags,
             scheme,
             memory_budget,
-            None,
-            topo.take(),
-            k < levels,
+            with(topo.take(), k),
         )?;
         out = o;
         topo = t;
@@ -204,32 +203,38 @@ pub fn refine_primal_ordered(
     memory_budget: u64,
     parent: Option<&RingOrder>,
 ) -> Result<(PrimalOutput, RingOrder), PrimalError> {
-    refine(
-        mesh,
-        attrs,
-        tags,
-        scheme,
-        memory_budget,
-        Some(parent),
-        None,
-        false,
-    )
-    .map(|(o, r, _)| (o, r.expect("tracked")))
+    let with = With {
+        order: Some(parent),
+        provenance: true,
+        ..With::default()
+    };
+    refine(mesh, attrs, tags, scheme, memory_budget, with).map(|(o, r, _)| (o, r.expect("tracked")))
 }
 
-#[allow(clippy::too_many_arguments)]
+/// What a caller of [`refine`] wants besides the child.
+#[derive(Default)]
+struct With<'a> {
+    /// Pass on OpenSubdiv's ring order (`Some(None)`: the parent is an input).
+    order: Option<Option<&'a RingOrder>>,
+    /// The parent's topology when the split already wrote it down.
+    known_topology: Option<Topology>,
+    /// Write down the child's topology too.
+    child_topology: bool,
+    /// Record the child's [`Provenance`].
+    provenance: bool,
+}
+
 fn refine(
     mesh: &PolyMesh,
     attrs: &EdgeAttrs,
     tags: &SubdivTags,
     scheme: PrimalScheme,
     memory_budget: u64,
-    order: Option<Option<&RingOrder>>,
-    known_topology: Option<Topology>,
-    derive_child_topology: bool,
+    with: With,
 ) -> Result<(PrimalOutput, Option<RingOrder>, Option<Topology>), PrimalError> {
     let start = Instant::now();
-    let topo = match known_topology {
+    let order = with.order;
+    let topo = match with.known_topology {
         Some(t) => t,
         None => {
             let t = Topology::build(mesh)?;
@@ -314,20 +319,22 @@ fn refine(
         millis: start.elapsed().as_secs_f64() * 1e3,
     };
     let child_order = order.map(|o| o.child(mesh, &topo, scheme));
-    let child_topo = derive_child_topology.then(|| {
+    let child_topo = with.child_topology.then(|| {
         if quad {
             refine::quad::topology(mesh, &topo)
         } else {
             refine::tri::topology(mesh, &topo)
         }
     });
-    let provenance = Provenance::new(
-        mesh,
-        &topo,
-        Numbering::Primal(numbering),
-        Vec::new(),
-        face_parent,
-    );
+    let provenance = with.provenance.then(|| {
+        Provenance::new(
+            mesh,
+            &topo,
+            Numbering::Primal(numbering),
+            Vec::new(),
+            face_parent,
+        )
+    });
     Ok((
         PrimalOutput {
             mesh: child,
@@ -362,14 +369,11 @@ mod tests {
         ];
         for (m, scheme) in cases {
             let topo = Topology::build(&m).unwrap();
-            let out = refine_primal(
-                &m,
-                &EdgeAttrs::new(),
-                &SubdivTags::default(),
-                scheme,
-                u64::MAX,
-            )
-            .unwrap();
+            let plain = |levels| {
+                let (attrs, tags) = (EdgeAttrs::new(), SubdivTags::default());
+                refine_primal_levels(&m, &attrs, &tags, scheme, levels, u64::MAX).unwrap()
+            };
+            let out = plain(1);
             let built = Topology::build(&out.mesh).unwrap();
             let derived = if scheme == PrimalScheme::Loop {
                 refine::tri::topology(&m, &topo)
@@ -383,15 +387,7 @@ mod tests {
             assert_eq!(derived.edge_corner, built.edge_corner);
             assert_eq!(derived.vert_corner, built.vert_corner, "{scheme:?}");
             // And several levels at once equal level after level.
-            let two = refine_primal_levels(
-                &m,
-                &EdgeAttrs::new(),
-                &SubdivTags::default(),
-                scheme,
-                3,
-                u64::MAX,
-            )
-            .unwrap();
+            let two = plain(3);
             let mut step = out;
             for _ in 0..2 {
                 step = refine_primal(&step.mesh, &step.edge_attrs, &step.tags, scheme, u64::MAX)

@@ -261,3 +261,71 @@ impl ChildCounts {
         self.vertices * 24 + self.corners * 4 + self.faces * (8 + 5) + self.edges * 16
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::primitives;
+
+    /// Every split's provenance: the parent of each child vertex by the numbering, and the
+    /// recorded edge map covers exactly the child edges lying on parent edges.
+    #[test]
+    fn numbering_and_edge_maps_of_the_three_splits() {
+        let m = primitives::cube3();
+        let topo = Topology::build(&m).unwrap();
+        let (nv, ne, nf) = (m.num_vertices(), topo.num_edges(), m.num_faces());
+
+        // Dual quad: child vertex c is corner c; every child edge is on an EDGE-face.
+        let pts = (0..m.num_corners())
+            .map(|c| m.positions[m.corner_verts[c] as usize])
+            .collect();
+        let (child, prov) = dual_quad::split(&m, &topo, pts);
+        let ct = Topology::build(&child).unwrap();
+        assert_eq!(prov.edge_parent.len(), ct.num_edges());
+        for i in 0..child.num_vertices() as u32 {
+            assert_eq!(prov.numbering.vertex_parent(i), Parent::Corner(i));
+            assert_eq!(
+                prov.numbering.parent_vertex(&m, i),
+                Some(m.corner_verts[i as usize])
+            );
+        }
+
+        // Quad and triangle splits: V vertex points, E edge points, F face points (quad).
+        let tri_mesh = primitives::fan_triangulated(&m);
+        let tri_topo = Topology::build(&tri_mesh).unwrap();
+        for (mesh, t, n, faces) in [
+            (
+                &m,
+                &topo,
+                quad::numbering(&m, &topo),
+                quad::faces(&m, &topo, quad::numbering(&m, &topo)),
+            ),
+            (
+                &tri_mesh,
+                &tri_topo,
+                tri::numbering(&tri_mesh, &tri_topo),
+                tri::faces(&tri_mesh, &tri_topo, tri::numbering(&tri_mesh, &tri_topo)),
+            ),
+        ] {
+            let num = Numbering::Primal(n);
+            let (v, e) = (mesh.num_vertices() as u32, t.num_edges() as u32);
+            assert_eq!(num.vertex_parent(3), Parent::Vertex(3));
+            assert_eq!(num.vertex_parent(v + 2), Parent::Edge(2));
+            assert_eq!(num.parent_vertex(mesh, v + 2), None);
+            if n.face_points > 0 {
+                assert_eq!(num.vertex_parent(v + e + 1), Parent::Face(1));
+            }
+            let (mut child, face_parent) = faces;
+            child.positions = vec![glam::DVec3::ZERO; n.len()];
+            let ct = Topology::build(&child).unwrap();
+            let prov = Provenance::new(mesh, t, num, Vec::new(), face_parent);
+            // Two halves per parent edge, each an edge of the child touching its end.
+            assert_eq!(prov.edge_parent.len(), 2 * t.num_edges());
+            for (c, p) in &prov.edge_parent {
+                assert!(ct.find_edge(&child, c.0, c.1).is_some());
+                assert!(c.0 == p.0 || c.0 == p.1, "{c:?} on {p:?}");
+            }
+        }
+        assert_eq!(quad::counts(&m, ne).vertices as usize, nv + ne + nf);
+    }
+}

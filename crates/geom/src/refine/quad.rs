@@ -3,7 +3,7 @@
 //! corners `4c + k`. Closed-input counts: `V' = V + E + F`, `E' = 2E + C`, `F' = C`.
 //!
 //! The child's half-edge topology is written down from this pattern instead of searched for
-//! ([`topology`]): every twin is known by construction. It equals [`Topology::build`] of the
+//! (`topology`): every twin is known by construction. It equals [`Topology::build`] of the
 //! child (same edge numbering, same ring starts), which a test checks, and costs one pass
 //! over the child's corners instead of a bucket sort and a search.
 

@@ -5,7 +5,7 @@
 //! `F' = 4F`.
 //!
 //! As for the quad split, the child's topology is written down from the pattern
-//! ([`topology`]) and equals [`Topology::build`] of the child.
+//! (`topology`) and equals [`Topology::build`] of the child.
 
 // Vertices, edges and corners are indices into parallel arrays here.
 #![allow(clippy::needless_range_loop)]

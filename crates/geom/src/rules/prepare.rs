@@ -107,3 +107,69 @@ impl CornerRule {
         Some(attr.and_then(|a| a.radius).unwrap_or(r))
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::edge_attrs::{EdgeAttr, EdgeKey};
+    use crate::primitives;
+    use crate::rules::cut_width;
+    use std::f64::consts::FRAC_PI_2;
+
+    /// The cylindrical family's preparation: one width per edge from its bend angle and its
+    /// radius (the edge's own overriding the rule's r); the other rules get none.
+    #[test]
+    fn cut_widths_follow_the_edge_radius() {
+        let m = primitives::cube3();
+        let topo = Topology::build(&m).unwrap();
+        let (a, b) = topo.edge_verts(&m, 0);
+        let mut attrs = EdgeAttrs::new();
+        let own = EdgeAttr {
+            crease: 0.0,
+            radius: Some(0.05),
+        };
+        attrs.insert(EdgeKey::new(a, b), own);
+        let rule = CornerRule::Cylindrical { r: 0.2 };
+        let p = rule.prepare(&m, &attrs, None, 1e-6).unwrap();
+        assert_eq!(p.dissolved_edges, 0);
+        assert_eq!(p.cut_widths.len(), 12);
+        for (e, &x) in p.cut_widths.iter().enumerate() {
+            let r = if e == 0 { 0.05 } else { 0.2 };
+            assert!((x - cut_width(r, FRAC_PI_2)).abs() < 1e-15, "edge {e}: {x}");
+        }
+        assert_eq!(rule.edge_radius(Some(&own)), Some(0.05));
+        assert_eq!(rule.edge_radius(None), Some(0.2));
+        assert_eq!(CornerRule::DooSabin.edge_radius(Some(&own)), None);
+        let q = CornerRule::DooSabin
+            .prepare(&m, &attrs, None, 1e-6)
+            .unwrap();
+        assert!(q.cut_widths.is_empty() && matches!(q.mesh, Cow::Borrowed(_)));
+    }
+
+    /// Only the combination rule reads the run's state; flat edges are merged first and
+    /// the state follows the merged faces.
+    #[test]
+    fn the_combination_state_is_read_by_the_combination_rule_only() {
+        // A triangulated cube: each face's diagonal is flat and merged away.
+        let m = primitives::fan_triangulated(&primitives::cube3());
+        let state = CombinationState {
+            flags: vec![true; m.num_faces()],
+        };
+        let attrs = EdgeAttrs::new();
+        let comb = CornerRule::Combination { r: 0.1 };
+        let p = comb.prepare(&m, &attrs, Some(&state), 1e-6).unwrap();
+        let flags = p.combination.as_ref().expect("continues the run");
+        assert_eq!(flags.len(), p.mesh.num_faces());
+        assert!(flags.iter().all(|&f| f));
+        assert_eq!(p.dissolved_edges, 6);
+        assert_eq!((p.mesh.num_faces(), p.topo.num_edges()), (6, 12));
+        assert_eq!(p.cut_widths.len(), 12);
+        let cyl = CornerRule::Cylindrical { r: 0.1 };
+        assert!(
+            cyl.prepare(&m, &attrs, Some(&state), 1e-6)
+                .unwrap()
+                .combination
+                .is_none()
+        );
+    }
+}
