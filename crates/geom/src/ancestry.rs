@@ -80,6 +80,17 @@ mod tests {
     use crate::topology::Topology;
     use crate::{PrimalScheme, ReflexMode};
 
+    /// The edges traced back to control edge `key`, sorted.
+    fn descendants(origins: &HashMap<EdgeKey, EdgeKey>, key: EdgeKey) -> Vec<EdgeKey> {
+        let mut t: Vec<EdgeKey> = origins
+            .iter()
+            .filter(|(_, o)| **o == key)
+            .map(|(c, _)| *c)
+            .collect();
+        t.sort();
+        t
+    }
+
     /// Marks one control edge with a radius and checks that exactly the child edges the
     /// step handed the attribute to trace back to it.
     #[test]
@@ -90,13 +101,7 @@ mod tests {
             let (a, b) = topo.edge_verts(&m, e);
             let key = EdgeKey::new(a, b);
             let mut attrs = EdgeAttrs::new();
-            attrs.insert(
-                key,
-                EdgeAttr {
-                    crease: 0.0,
-                    radius: Some(0.1),
-                },
-            );
+            attrs.insert(key, EdgeAttr::rounded(0.1));
             let steps = vec![
                 Scheme::Biquadratic(CornerRule::VectorSum {
                     alpha: 0.2,
@@ -109,16 +114,7 @@ mod tests {
             let origins = edge_origins(p.levels(), 2).unwrap();
             let lv = &p.levels()[2];
             let marked: Vec<EdgeKey> = lv.edge_attrs.keys().copied().collect();
-            let traced: Vec<EdgeKey> = {
-                let mut t: Vec<EdgeKey> = origins
-                    .iter()
-                    .filter(|(_, o)| **o == key)
-                    .map(|(c, _)| *c)
-                    .collect();
-                t.sort();
-                t
-            };
-            assert_eq!(marked, traced, "edge {e}");
+            assert_eq!(marked, descendants(&origins, key), "edge {e}");
             // Every edge of a biquadratic level descends from some control edge.
             let child_topo = Topology::build(&lv.mesh).unwrap();
             assert_eq!(origins.len(), child_topo.num_edges());
@@ -168,26 +164,14 @@ mod tests {
         let (a, b) = topo.edge_verts(&m, 5);
         let key = EdgeKey::new(a, b);
         let mut attrs = EdgeAttrs::new();
-        attrs.insert(
-            key,
-            EdgeAttr {
-                crease: 10.0,
-                radius: None,
-            },
-        );
+        attrs.insert(key, EdgeAttr::creased(10.0));
         let steps = vec![Scheme::Primal(PrimalScheme::CatmullClark); 2];
         let mut p = Pipeline::new(m, attrs, steps);
         p.compute().unwrap();
         let origins = edge_origins(p.levels(), 2).unwrap();
         let marked: Vec<EdgeKey> = p.levels()[2].edge_attrs.keys().copied().collect();
-        let mut traced: Vec<EdgeKey> = origins
-            .iter()
-            .filter(|(_, o)| **o == key)
-            .map(|(c, _)| *c)
-            .collect();
-        traced.sort();
         assert_eq!(marked.len(), 4);
-        assert_eq!(marked, traced);
+        assert_eq!(marked, descendants(&origins, key));
     }
 
     #[test]

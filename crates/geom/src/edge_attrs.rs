@@ -29,6 +29,24 @@ pub struct EdgeAttr {
     pub radius: Option<f64>,
 }
 
+impl EdgeAttr {
+    /// A crease of sharpness `s` (no own radius).
+    pub fn creased(s: f64) -> Self {
+        EdgeAttr {
+            crease: s,
+            radius: None,
+        }
+    }
+
+    /// An own fillet radius `r` (no crease).
+    pub fn rounded(r: f64) -> Self {
+        EdgeAttr {
+            crease: 0.0,
+            radius: Some(r),
+        }
+    }
+}
+
 fn is_zero(x: &f64) -> bool {
     *x == 0.0
 }

@@ -17,7 +17,7 @@ use crate::error::{MeshError, OverBudget};
 use crate::geometry::{face_normal_and_volume6, loop_newell};
 use crate::mesh::PolyMesh;
 use crate::refine::{self, FaceKind, Numbering, Provenance, dual_quad};
-use crate::rules::{self, CombinationState, CornerRule, ParamError, PrepareError, RuleError};
+use crate::rules::{self, CombinationState, CornerRule, ParamError, RuleError};
 use crate::topology::Topology;
 use glam::DVec3;
 use std::borrow::Cow;
@@ -60,16 +60,6 @@ pub enum StepError {
     Primal(#[from] crate::primal::PrimalError),
     #[error(transparent)]
     TooLarge(#[from] OverBudget),
-}
-
-impl From<PrepareError> for StepError {
-    fn from(e: PrepareError) -> Self {
-        match e {
-            PrepareError::Mesh(e) => StepError::Mesh(e),
-            PrepareError::Dissolve(e) => StepError::Dissolve(e),
-            PrepareError::Rule(e) => StepError::Rule(e),
-        }
-    }
 }
 
 /// What a step did, for the summary line, the status bar and the tests.

@@ -11,13 +11,7 @@ fn cube_with_creased_rim() -> (PolyMesh, EdgeAttrs) {
     let mut attrs = EdgeAttrs::new();
     for (a, b) in [(4, 5), (5, 6), (6, 7), (7, 4)] {
         assert_eq!(m.positions[a].z, 3.0);
-        attrs.insert(
-            EdgeKey::new(a as u32, b as u32),
-            EdgeAttr {
-                crease: 10.0,
-                radius: None,
-            },
-        );
+        attrs.insert(EdgeKey::new(a as u32, b as u32), EdgeAttr::creased(10.0));
     }
     (m, attrs)
 }
@@ -83,13 +77,7 @@ fn straight_creases_and_smooth_surfaces_are_plain_catmull_clark() {
             (0..t.num_edges())
                 .map(|e| {
                     let (a, b) = t.edge_verts(&m, e);
-                    (
-                        EdgeKey::new(a, b),
-                        EdgeAttr {
-                            crease: 10.0,
-                            radius: None,
-                        },
-                    )
+                    (EdgeKey::new(a, b), EdgeAttr::creased(10.0))
                 })
                 .collect()
         })

@@ -66,13 +66,7 @@ fn catmull_clark_masks_by_hand_on_a_cube() {
     // A crease of sharpness 10 on one edge: its edge point is the midpoint.
     let mut attrs = EdgeAttrs::new();
     let (a, b) = (m.corner_verts[0], m.corner_verts[1]);
-    attrs.insert(
-        EdgeKey::new(a, b),
-        EdgeAttr {
-            crease: 10.0,
-            radius: None,
-        },
-    );
+    attrs.insert(EdgeKey::new(a, b), EdgeAttr::creased(10.0));
     let out = refine(&m, &attrs, PrimalScheme::CatmullClark);
     let mid = 0.5 * (m.positions[a as usize] + m.positions[b as usize]);
     assert!(
@@ -151,10 +145,7 @@ fn repeated_subdivision_converges_to_the_limit_points() {
         if crease {
             // A closed loop of creases around the octahedron's equator: no darts.
             for (a, b) in [(0, 2), (2, 1), (1, 3), (3, 0)] {
-                let attr = EdgeAttr {
-                    crease: 10.0,
-                    radius: None,
-                };
+                let attr = EdgeAttr::creased(10.0);
                 attrs.insert(EdgeKey::new(a, b), attr);
             }
         }

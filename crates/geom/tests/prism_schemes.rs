@@ -230,13 +230,7 @@ fn an_edge_with_its_own_radius_gets_that_radius() {
     use prism_geom::{EdgeAttr, EdgeKey};
     let cube = primitives::cube3();
     let mut attrs = EdgeAttrs::new();
-    attrs.insert(
-        EdgeKey::new(0, 1),
-        EdgeAttr {
-            crease: 0.0,
-            radius: Some(0.25),
-        },
-    );
+    attrs.insert(EdgeKey::new(0, 1), EdgeAttr::rounded(0.25));
     let mut p = Pipeline::new(
         cube.clone(),
         attrs,

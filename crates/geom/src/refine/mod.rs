@@ -23,7 +23,7 @@ pub use dual_quad::FaceKind;
 
 use crate::edge_attrs::{EdgeAttr, EdgeAttrs, EdgeKey};
 use crate::mesh::PolyMesh;
-use crate::topology::{NONE, Topology};
+use crate::topology::Topology;
 
 /// The parent element a child vertex stands for.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -207,42 +207,6 @@ pub fn propagate(
         });
     }
     out
-}
-
-/// The half-edge topology from the twins, faces, cycles and ring starts a split wrote down:
-/// edges numbered in the order of their smaller half-edge, as [`Topology::build`] numbers
-/// them.
-pub(crate) fn topology_from_twins(
-    twin: Vec<u32>,
-    corner_face: Vec<u32>,
-    next: Vec<u32>,
-    prev: Vec<u32>,
-    vert_corner: Vec<u32>,
-) -> Topology {
-    let n = twin.len();
-    let mut corner_edge = vec![NONE; n];
-    let mut edge_corner = Vec::with_capacity(n / 2 + 1);
-    for c in 0..n {
-        let t = twin[c];
-        if t == NONE || (c as u32) < t {
-            let e = edge_corner.len() as u32;
-            edge_corner.push(c as u32);
-            corner_edge[c] = e;
-            if t != NONE {
-                corner_edge[t as usize] = e;
-            }
-        }
-    }
-    Topology {
-        corner_face,
-        next,
-        prev,
-        twin,
-        corner_edge,
-        edge_corner,
-        vert_corner,
-        warnings: Vec::new(),
-    }
 }
 
 /// Sizes of a child, to estimate its memory before building it and to report it.

@@ -10,7 +10,7 @@
 // Vertices, edges and corners are indices into parallel arrays here.
 #![allow(clippy::needless_range_loop)]
 
-use super::{ChildCounts, PrimalNumbering, topology_from_twins};
+use super::{ChildCounts, PrimalNumbering};
 use crate::mesh::PolyMesh;
 use crate::primal::RingOrder;
 use crate::topology::{NONE, Topology};
@@ -96,7 +96,7 @@ pub(crate) fn topology(mesh: &PolyMesh, topo: &Topology) -> Topology {
         });
     }
     vert_corner.extend((0..mesh.num_faces()).map(|f| 4 * mesh.face_corners(f).start as u32 + 2));
-    topology_from_twins(twin, corner_face, next, prev, vert_corner)
+    Topology::from_twins(twin, corner_face, next, prev, vert_corner)
 }
 
 /// OpenSubdiv's ring order of the child (`Vtr::QuadRefinement`), given the parent's.

@@ -10,7 +10,7 @@
 // Vertices, edges and corners are indices into parallel arrays here.
 #![allow(clippy::needless_range_loop)]
 
-use super::{ChildCounts, PrimalNumbering, topology_from_twins};
+use super::{ChildCounts, PrimalNumbering};
 use crate::mesh::PolyMesh;
 use crate::primal::RingOrder;
 use crate::topology::{NONE, Topology};
@@ -123,7 +123,7 @@ pub(crate) fn topology(mesh: &PolyMesh, topo: &Topology) -> Topology {
             mine.into_iter().chain(theirs).min().expect("six corners")
         });
     }
-    topology_from_twins(twin, corner_face, next, prev, vert_corner)
+    Topology::from_twins(twin, corner_face, next, prev, vert_corner)
 }
 
 /// OpenSubdiv's ring order of the child (`Vtr::TriRefinement`), given the parent's.

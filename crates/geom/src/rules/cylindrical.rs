@@ -19,12 +19,13 @@
 //! at reflex corners the magnitude is capped and the sign kept. It never flips in the
 //! paper's tests but does not converge to r (it stalls near 0.2 % of r, §2.7).
 
-use super::prepare::{PrepareError, Prepared};
+use super::prepare::Prepared;
 use super::{CornerRule, RuleError, RuleInput, RuleReport, corner_frame};
 use crate::dissolve::dissolve_flat_edges;
 use crate::edge_attrs::{EdgeAttrs, EdgeKey};
 use crate::geometry::{face_normals_raw, signed_bend_angles, unit_or_zero};
 use crate::mesh::PolyMesh;
+use crate::step::StepError;
 use crate::topology::Topology;
 use glam::DVec3;
 use std::borrow::Cow;
@@ -63,8 +64,8 @@ pub(super) fn prepare<'a>(
     attrs: &'a EdgeAttrs,
     flags: Option<&[bool]>,
     tol: f64,
-) -> Result<Prepared<'a>, PrepareError> {
-    let level = |m: &PolyMesh| -> Result<_, PrepareError> {
+) -> Result<Prepared<'a>, StepError> {
+    let level = |m: &PolyMesh| -> Result<_, StepError> {
         let topo = Topology::build(m)?;
         topo.require_closed(m)?;
         let raw = face_normals_raw(m);
@@ -210,35 +211,23 @@ mod tests {
         corner_points(&rule, &input).unwrap().0
     }
 
+    fn assert_at(p: DVec3, want: DVec3) {
+        assert!((p - want).length() < 1e-15, "{p} is not {want}");
+    }
+
     #[test]
     fn simple_type_meets_the_offset_lines() {
         // Edge 0 (bottom, y=0) width 0.1, edge 3 (left, x=0) width 0.3.
         let p = square([0.1, 0.2, 0.05, 0.3], CornerRule::Cylindrical { r: 1.0 });
-        assert!(
-            (p[0] - DVec3::new(0.3, 0.1, 0.0)).length() < 1e-15,
-            "{}",
-            p[0]
-        );
-        assert!(
-            (p[1] - DVec3::new(0.8, 0.1, 0.0)).length() < 1e-15,
-            "{}",
-            p[1]
-        );
-        assert!(
-            (p[2] - DVec3::new(0.8, 0.95, 0.0)).length() < 1e-15,
-            "{}",
-            p[2]
-        );
+        assert_at(p[0], DVec3::new(0.3, 0.1, 0.0));
+        assert_at(p[1], DVec3::new(0.8, 0.1, 0.0));
+        assert_at(p[2], DVec3::new(0.8, 0.95, 0.0));
     }
 
     #[test]
     fn minimum_type_caps_at_a_quarter_edge() {
         let p = square([0.1, 0.2, 0.05, 0.3], CornerRule::Minimum { r: 1.0 });
         // Corner 0: shift along u1 (x) is x2 = 0.3 → capped at 0.25; along u2 (y) 0.1.
-        assert!(
-            (p[0] - DVec3::new(0.25, 0.1, 0.0)).length() < 1e-15,
-            "{}",
-            p[0]
-        );
+        assert_at(p[0], DVec3::new(0.25, 0.1, 0.0));
     }
 }

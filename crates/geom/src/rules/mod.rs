@@ -29,7 +29,7 @@ pub mod primal;
 
 pub use combination::CombinationState;
 pub use cylindrical::{cut_width, dissolve_needed};
-pub use prepare::{PrepareError, Prepared};
+pub use prepare::Prepared;
 
 use crate::mesh::PolyMesh;
 use crate::topology::Topology;

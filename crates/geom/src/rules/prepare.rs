@@ -5,27 +5,15 @@
 //! [`CombinationState`]. The step ([`crate::step`]) stays generic: prepare, place, split.
 
 use super::cylindrical;
-use super::{CornerRule, RuleError, RuleInput, combination::CombinationState};
-use crate::dissolve::DissolveError;
+use super::{CornerRule, RuleInput, combination::CombinationState};
 use crate::edge_attrs::EdgeAttrs;
 use crate::error::MeshError;
 use crate::geometry::{face_normals_raw, unit_or_zero};
 use crate::mesh::PolyMesh;
+use crate::step::StepError;
 use crate::topology::Topology;
 use glam::DVec3;
 use std::borrow::Cow;
-use thiserror::Error;
-
-/// Why a rule could not prepare a level.
-#[derive(Debug, Clone, PartialEq, Error)]
-pub enum PrepareError {
-    #[error(transparent)]
-    Mesh(#[from] MeshError),
-    #[error(transparent)]
-    Dissolve(#[from] DissolveError),
-    #[error(transparent)]
-    Rule(#[from] RuleError),
-}
 
 /// A level made ready for a rule.
 #[derive(Debug, Clone)]
@@ -89,7 +77,7 @@ impl CornerRule {
         attrs: &'a EdgeAttrs,
         state: Option<&CombinationState>,
         flat_tolerance: f64,
-    ) -> Result<Prepared<'a>, PrepareError> {
+    ) -> Result<Prepared<'a>, StepError> {
         let state = match self {
             CornerRule::Combination { .. } => state.map(|s| s.flags.as_slice()),
             _ => None,
@@ -124,10 +112,7 @@ mod tests {
         let topo = Topology::build(&m).unwrap();
         let (a, b) = topo.edge_verts(&m, 0);
         let mut attrs = EdgeAttrs::new();
-        let own = EdgeAttr {
-            crease: 0.0,
-            radius: Some(0.05),
-        };
+        let own = EdgeAttr::rounded(0.05);
         attrs.insert(EdgeKey::new(a, b), own);
         let rule = CornerRule::Cylindrical { r: 0.2 };
         let p = rule.prepare(&m, &attrs, None, 1e-6).unwrap();

@@ -271,50 +271,42 @@ mod tests {
 
     #[test]
     fn bad_text_is_refused_with_a_reason() {
+        let refused = |text: &str| text.parse::<Scheme>().unwrap_err();
+        assert!(matches!(refused("foo"), SchemeError::Unknown(_)));
         assert!(matches!(
-            "foo".parse::<Scheme>(),
-            Err(SchemeError::Unknown(_))
+            refused("combination"),
+            SchemeError::Missing { .. }
         ));
         assert!(matches!(
-            "combination".parse::<Scheme>(),
-            Err(SchemeError::Missing { .. })
+            refused("vector-sum:alpha=0.5"),
+            SchemeError::Param(_)
+        ));
+        assert!(matches!(refused("cut-width:d=-1"), SchemeError::Param(_)));
+        assert!(matches!(refused("cut-width:d=nan"), SchemeError::Param(_)));
+        assert!(matches!(
+            refused("doo-sabin:r=1"),
+            SchemeError::UnexpectedParam { .. }
         ));
         assert!(matches!(
-            "vector-sum:alpha=0.5".parse::<Scheme>(),
-            Err(SchemeError::Param(_))
-        ));
-        assert!(matches!(
-            "cut-width:d=-1".parse::<Scheme>(),
-            Err(SchemeError::Param(_))
-        ));
-        assert!(matches!(
-            "cut-width:d=nan".parse::<Scheme>(),
-            Err(SchemeError::Param(_))
-        ));
-        assert!(matches!(
-            "doo-sabin:r=1".parse::<Scheme>(),
-            Err(SchemeError::UnexpectedParam { .. })
-        ));
-        assert!(matches!(
-            "cut-width:d=x".parse::<Scheme>(),
-            Err(SchemeError::BadNumber(_))
+            refused("cut-width:d=x"),
+            SchemeError::BadNumber(_)
         ));
         assert!(matches!(parse_pipeline(" , "), Err(SchemeError::Empty)));
         assert!(matches!(
-            "loop:r=1".parse::<Scheme>(),
-            Err(SchemeError::UnexpectedParam { .. })
+            refused("loop:r=1"),
+            SchemeError::UnexpectedParam { .. }
         ));
         assert!(matches!(
-            "combination:r=0.1:r=0.2".parse::<Scheme>(),
-            Err(SchemeError::Repeated { .. })
+            refused("combination:r=0.1:r=0.2"),
+            SchemeError::Repeated { .. }
         ));
         assert!(matches!(
-            "combination:r=0.1:radius=0.2".parse::<Scheme>(),
-            Err(SchemeError::Repeated { .. })
+            refused("combination:r=0.1:radius=0.2"),
+            SchemeError::Repeated { .. }
         ));
         assert!(matches!(
-            "cut-width:reflex=inward".parse::<Scheme>(),
-            Err(SchemeError::UnexpectedParam { .. })
+            refused("cut-width:reflex=inward"),
+            SchemeError::UnexpectedParam { .. }
         ));
         // The unknown-scheme message lists every scheme of the catalogue.
         let msg = "spline".parse::<Scheme>().unwrap_err().to_string();

@@ -167,10 +167,8 @@ impl Topology {
         // One pass pairs every half-edge with its twin and numbers the edges: edge e's first
         // half-edge is the smaller corner index of the pair, so edges come in corner order.
         let mut twin = vec![NONE; nc];
-        let mut corner_edge = vec![NONE; nc];
-        let mut edge_corner = Vec::with_capacity(nc / 2 + 1);
         for c in 0..nc {
-            if corner_edge[c] != NONE {
+            if twin[c] != NONE {
                 continue;
             }
             let a = cv[c];
@@ -185,7 +183,7 @@ impl Topology {
             }
             // A third use of the edge: a second b→a half-edge, or a b→a half-edge that an
             // earlier a→b half-edge already took.
-            if count > 1 || (found != NONE && corner_edge[found as usize] != NONE) {
+            if count > 1 || (found != NONE && twin[found as usize] != NONE) {
                 let mut faces: Vec<u32> = outgoing(b)
                     .iter()
                     .filter(|&&(_, dst)| dst == a)
@@ -200,13 +198,9 @@ impl Topology {
                     faces,
                 });
             }
-            let e = edge_corner.len() as u32;
-            edge_corner.push(c as u32);
-            corner_edge[c] = e;
             if found != NONE {
                 twin[c] = found;
                 twin[found as usize] = c as u32;
-                corner_edge[found as usize] = e;
             } else {
                 // Without a twin, another a→b half-edge means two faces run the edge the
                 // same way: inconsistent orientation.
@@ -251,7 +245,36 @@ impl Topology {
             });
         }
 
-        Ok(Topology {
+        let mut topo = Topology::from_twins(twin, corner_face, next, prev, vert_corner);
+        topo.warnings = warnings;
+        Ok(topo)
+    }
+
+    /// The half-edge topology from twins, faces, cycles and ring starts (found by
+    /// [`Topology::build`] or written down by a split): edges numbered in the order of their
+    /// smaller half-edge.
+    pub(crate) fn from_twins(
+        twin: Vec<u32>,
+        corner_face: Vec<u32>,
+        next: Vec<u32>,
+        prev: Vec<u32>,
+        vert_corner: Vec<u32>,
+    ) -> Topology {
+        let n = twin.len();
+        let mut corner_edge = vec![NONE; n];
+        let mut edge_corner = Vec::with_capacity(n / 2 + 1);
+        for c in 0..n {
+            let t = twin[c];
+            if t == NONE || (c as u32) < t {
+                let e = edge_corner.len() as u32;
+                edge_corner.push(c as u32);
+                corner_edge[c] = e;
+                if t != NONE {
+                    corner_edge[t as usize] = e;
+                }
+            }
+        }
+        Topology {
             corner_face,
             next,
             prev,
@@ -259,8 +282,8 @@ impl Topology {
             corner_edge,
             edge_corner,
             vert_corner,
-            warnings,
-        })
+            warnings: Vec::new(),
+        }
     }
 
     pub fn num_edges(&self) -> usize {
@@ -394,116 +417,4 @@ impl Topology {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use glam::DVec3;
-
-    fn cube() -> PolyMesh {
-        crate::primitives::cuboid(DVec3::ZERO, DVec3::ONE)
-    }
-
-    #[test]
-    fn cube_topology() {
-        let m = cube();
-        let t = Topology::build(&m).unwrap();
-        assert_eq!(t.num_edges(), 12);
-        t.require_closed(&m).unwrap();
-        for c in 0..m.num_corners() {
-            assert_eq!(t.twin[t.twin[c] as usize] as usize, c);
-        }
-    }
-
-    #[test]
-    fn errors_name_the_element() {
-        let mut m = cube();
-        m.positions[3].y = f64::NAN;
-        assert!(matches!(
-            Topology::build(&m),
-            Err(MeshError::NonFinite { vertex: 3, .. })
-        ));
-
-        let mut m = cube();
-        m.corner_verts[5] = 99;
-        assert!(matches!(
-            Topology::build(&m),
-            Err(MeshError::IndexOutOfRange { index: 99, .. })
-        ));
-
-        // Flip one face: inconsistent orientation.
-        let mut m = cube();
-        m.corner_verts[0..4].reverse();
-        assert!(matches!(
-            Topology::build(&m),
-            Err(MeshError::InconsistentOrientation { .. })
-        ));
-
-        // Remove one face: open.
-        let mut m = cube();
-        m.corner_verts.truncate(20);
-        m.loop_starts.truncate(6);
-        m.face_starts.truncate(6);
-        let t = Topology::build(&m).unwrap();
-        assert!(matches!(
-            t.require_closed(&m),
-            Err(MeshError::BoundaryEdge { .. })
-        ));
-
-        // Repeated vertex, degenerate loop.
-        let m = PolyMesh::from_polygons(
-            vec![DVec3::ZERO, DVec3::X, DVec3::Y, DVec3::Z],
-            &[vec![0, 1, 2, 1]],
-        );
-        assert!(matches!(
-            Topology::build(&m),
-            Err(MeshError::RepeatedVertex { face: 0, vertex: 1 })
-        ));
-        let m = PolyMesh::from_polygons(vec![DVec3::ZERO, DVec3::X], &[vec![0, 1]]);
-        assert!(matches!(
-            Topology::build(&m),
-            Err(MeshError::DegenerateLoop { face: 0, .. })
-        ));
-    }
-
-    #[test]
-    fn non_manifold_edge_and_unused_vertex() {
-        // Three triangles on one edge 0-1.
-        let p = vec![
-            DVec3::ZERO,
-            DVec3::X,
-            DVec3::Y,
-            DVec3::Z,
-            -DVec3::Y,
-            DVec3::ONE,
-        ];
-        let m = PolyMesh::from_polygons(p, &[vec![0, 1, 2], vec![1, 0, 3], vec![1, 0, 4]]);
-        match Topology::build(&m) {
-            Err(MeshError::NonManifoldEdge { a: 0, b: 1, faces }) => assert_eq!(faces.len(), 3),
-            other => panic!("{other:?}"),
-        }
-        let mut m = cube();
-        m.positions.push(DVec3::splat(5.0));
-        let t = Topology::build(&m).unwrap();
-        assert_eq!(
-            t.warnings,
-            vec![MeshWarning::UnusedVertices { count: 1, first: 8 }]
-        );
-    }
-
-    #[test]
-    fn pinched_vertex_is_refused() {
-        // Two tetrahedra sharing one vertex (0).
-        let mut p = vec![DVec3::ZERO, DVec3::X, DVec3::Y, DVec3::Z];
-        p.extend([-DVec3::X, -DVec3::Y, -DVec3::Z]);
-        let tet = |a: u32, b: u32, c: u32, d: u32| {
-            vec![vec![a, c, b], vec![a, b, d], vec![a, d, c], vec![b, c, d]]
-        };
-        let mut faces = tet(0, 1, 2, 3);
-        faces.extend(tet(0, 4, 6, 5));
-        let m = PolyMesh::from_polygons(p, &faces);
-        let t = Topology::build(&m).unwrap();
-        assert!(matches!(
-            t.require_closed(&m),
-            Err(MeshError::NonManifoldVertex { vertex: 0, .. })
-        ));
-    }
-}
+mod tests;

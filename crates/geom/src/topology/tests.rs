@@ -1,0 +1,113 @@
+//! Tests of the topology builder and its checks.
+
+use super::*;
+use glam::DVec3;
+
+fn cube() -> PolyMesh {
+    crate::primitives::cuboid(DVec3::ZERO, DVec3::ONE)
+}
+
+#[test]
+fn cube_topology() {
+    let m = cube();
+    let t = Topology::build(&m).unwrap();
+    assert_eq!(t.num_edges(), 12);
+    t.require_closed(&m).unwrap();
+    for c in 0..m.num_corners() {
+        assert_eq!(t.twin[t.twin[c] as usize] as usize, c);
+    }
+}
+
+#[test]
+fn errors_name_the_element() {
+    let mut m = cube();
+    m.positions[3].y = f64::NAN;
+    assert!(matches!(
+        Topology::build(&m),
+        Err(MeshError::NonFinite { vertex: 3, .. })
+    ));
+
+    let mut m = cube();
+    m.corner_verts[5] = 99;
+    assert!(matches!(
+        Topology::build(&m),
+        Err(MeshError::IndexOutOfRange { index: 99, .. })
+    ));
+
+    // Flip one face: inconsistent orientation.
+    let mut m = cube();
+    m.corner_verts[0..4].reverse();
+    assert!(matches!(
+        Topology::build(&m),
+        Err(MeshError::InconsistentOrientation { .. })
+    ));
+
+    // Remove one face: open.
+    let mut m = cube();
+    m.corner_verts.truncate(20);
+    m.loop_starts.truncate(6);
+    m.face_starts.truncate(6);
+    let t = Topology::build(&m).unwrap();
+    assert!(matches!(
+        t.require_closed(&m),
+        Err(MeshError::BoundaryEdge { .. })
+    ));
+
+    // Repeated vertex, degenerate loop.
+    let m = PolyMesh::from_polygons(
+        vec![DVec3::ZERO, DVec3::X, DVec3::Y, DVec3::Z],
+        &[vec![0, 1, 2, 1]],
+    );
+    assert!(matches!(
+        Topology::build(&m),
+        Err(MeshError::RepeatedVertex { face: 0, vertex: 1 })
+    ));
+    let m = PolyMesh::from_polygons(vec![DVec3::ZERO, DVec3::X], &[vec![0, 1]]);
+    assert!(matches!(
+        Topology::build(&m),
+        Err(MeshError::DegenerateLoop { face: 0, .. })
+    ));
+}
+
+#[test]
+fn non_manifold_edge_and_unused_vertex() {
+    // Three triangles on one edge 0-1.
+    let p = vec![
+        DVec3::ZERO,
+        DVec3::X,
+        DVec3::Y,
+        DVec3::Z,
+        -DVec3::Y,
+        DVec3::ONE,
+    ];
+    let m = PolyMesh::from_polygons(p, &[vec![0, 1, 2], vec![1, 0, 3], vec![1, 0, 4]]);
+    match Topology::build(&m) {
+        Err(MeshError::NonManifoldEdge { a: 0, b: 1, faces }) => assert_eq!(faces.len(), 3),
+        other => panic!("{other:?}"),
+    }
+    let mut m = cube();
+    m.positions.push(DVec3::splat(5.0));
+    let t = Topology::build(&m).unwrap();
+    assert_eq!(
+        t.warnings,
+        vec![MeshWarning::UnusedVertices { count: 1, first: 8 }]
+    );
+}
+
+#[test]
+fn pinched_vertex_is_refused() {
+    // Two tetrahedra sharing one vertex (0).
+    let mut p = vec![DVec3::ZERO, DVec3::X, DVec3::Y, DVec3::Z];
+    p.extend([-DVec3::X, -DVec3::Y, -DVec3::Z]);
+    let tet = |a: u32, b: u32, c: u32, d: u32| {
+        vec![vec![a, c, b], vec![a, b, d], vec![a, d, c], vec![b, c, d]]
+    };
+    let mut faces = tet(0, 1, 2, 3);
+    faces.extend(tet(0, 4, 6, 5));
+    let m = PolyMesh::from_polygons(p, &faces);
+    let t = Topology::build(&m).unwrap();
+    assert!(matches!(
+        t.require_closed(&m),
+        Err(MeshError::NonManifoldVertex { vertex: 0, .. })
+    ));
+}
