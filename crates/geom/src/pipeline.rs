@@ -13,7 +13,7 @@ use crate::primal::refine_primal;
 use crate::refine::Provenance;
 use crate::rules::CombinationState;
 use crate::scheme::Scheme;
-use crate::step::{StepError, StepOptions, StepReport, biquadratic_step};
+use crate::step::{StepError, StepOptions, StepReport, biquadratic_step_carrying};
 use crate::tags::SubdivTags;
 use thiserror::Error;
 
@@ -114,6 +114,8 @@ impl Pipeline {
         mut each: impl FnMut(usize, &Level),
     ) -> Result<&Level, PipelineError> {
         let upto = upto.min(self.steps.len());
+        // The topology a biquadratic split wrote down, for the biquadratic step after it.
+        let mut carried = None;
         while self.levels.len() <= upto {
             let k = self.levels.len() - 1;
             let scheme = self.steps[k];
@@ -125,14 +127,19 @@ impl Pipeline {
             };
             let level = match scheme {
                 Scheme::Biquadratic(rule) => {
-                    let out = biquadratic_step(
+                    let next_is_biquadratic =
+                        k + 1 < upto && matches!(self.steps[k + 1], Scheme::Biquadratic(_));
+                    let (out, topo) = biquadratic_step_carrying(
                         &prev.mesh,
                         &prev.edge_attrs,
                         &rule,
                         prev.combination.as_ref(),
                         &self.options,
+                        carried.take(),
+                        next_is_biquadratic,
                     )
                     .map_err(err)?;
+                    carried = topo;
                     Level {
                         mesh: out.mesh,
                         edge_attrs: out.edge_attrs,

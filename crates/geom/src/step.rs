@@ -107,9 +107,25 @@ pub fn biquadratic_step(
     state: Option<&CombinationState>,
     options: &StepOptions,
 ) -> Result<StepOutput, StepError> {
+    biquadratic_step_carrying(mesh, attrs, rule, state, options, None, false).map(|(o, _)| o)
+}
+
+/// [`biquadratic_step`] that takes `mesh`'s topology when the split before wrote it down
+/// (`known`) and, when `child_topology`, writes the child's down for the next step
+/// ([`dual_quad::topology`], from the level the points were placed on: the merged one when
+/// flat edges were merged, whose split the child is).
+pub fn biquadratic_step_carrying(
+    mesh: &PolyMesh,
+    attrs: &EdgeAttrs,
+    rule: &CornerRule,
+    state: Option<&CombinationState>,
+    options: &StepOptions,
+    known: Option<Topology>,
+    child_topology: bool,
+) -> Result<(StepOutput, Option<Topology>), StepError> {
     let start = Instant::now();
     rule.validate()?;
-    let prep = rule.prepare(mesh, attrs, state, options.flat_tolerance)?;
+    let prep = rule.prepare(mesh, attrs, state, options.flat_tolerance, known)?;
     let (cur, topo) = (prep.mesh.as_ref(), &prep.topo);
     OverBudget::check(
         dual_quad::estimated_bytes(cur, topo.num_edges()),
@@ -140,18 +156,20 @@ pub fn biquadratic_step(
         volume: checked.volume,
         millis: start.elapsed().as_secs_f64() * 1e3,
     };
+    let child_topo = child_topology.then(|| dual_quad::topology(cur, topo));
     let dissolved_parent = match prep.mesh {
         Cow::Owned(m) => Some(m),
         Cow::Borrowed(_) => None,
     };
-    Ok(StepOutput {
+    let output = StepOutput {
         mesh: out,
         provenance: prov,
         edge_attrs: new_attrs,
         combination,
         dissolved_parent,
         report,
-    })
+    };
+    Ok((output, child_topo))
 }
 
 /// Flipped and degenerate new faces, and the signed volume of the child: one pass over the

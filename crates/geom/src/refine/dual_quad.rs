@@ -116,6 +116,82 @@ pub fn split(
     (out, prov)
 }
 
+/// Topology of the child of the closed mesh `mesh` (with topology `topo`), written down from
+/// the split instead of searched for; it equals [`Topology::build`] of the child (tested).
+///
+/// Child corners: FACE-face corner c is parent corner c; EDGE-face e has corners
+/// `C + 4e + k` for its sides `(next c₀ → c₀, c₀ → next t, next t → t, t → next c₀)`;
+/// VERTEX-face corners follow in vertex order, ring order within. Twins: FACE side c ↔ EDGE
+/// side 0 (c = c₀) or 2 (c = t) of edge(c); EDGE side 1 ↔ the VERTEX side at `next t`, side 3
+/// ↔ the VERTEX side at `next c₀` (the ring steps from corner x to `twin(prev x)`).
+pub fn topology(mesh: &PolyMesh, topo: &Topology) -> Topology {
+    let nc = mesh.num_corners();
+    let ne = topo.num_edges();
+    let edge_base = |e: u32| nc as u32 + 4 * e;
+    // VERTEX-face position of every parent corner, faces and cycles as the split writes them.
+    let mut vpos = vec![NONE; nc];
+    let mut corner_face: Vec<u32> = Vec::with_capacity(nc + 4 * ne + nc);
+    corner_face.extend_from_slice(&topo.corner_face[..nc]);
+    let mut next: Vec<u32> = topo.next.clone();
+    let mut prev: Vec<u32> = topo.prev.clone();
+    let nf = mesh.num_faces() as u32;
+    for e in 0..ne as u32 {
+        let b = edge_base(e);
+        corner_face.extend([nf + e; 4]);
+        next.extend([b + 1, b + 2, b + 3, b]);
+        prev.extend([b + 3, b, b + 1, b + 2]);
+    }
+    let mut k = nc as u32 + 4 * ne as u32;
+    let mut face = nf + ne as u32;
+    for &start in &topo.vert_corner {
+        if start == NONE {
+            continue;
+        }
+        let first = k;
+        let mut c = start;
+        loop {
+            vpos[c as usize] = k;
+            corner_face.push(face);
+            next.push(k + 1);
+            prev.push(if k == first { NONE } else { k - 1 });
+            k += 1;
+            c = topo.ring_next(c);
+            if c == start {
+                break;
+            }
+        }
+        let last = k - 1;
+        next[last as usize] = first;
+        prev[first as usize] = last;
+        face += 1;
+    }
+    let n = k as usize;
+    let mut twin = vec![NONE; n];
+    for c in 0..nc as u32 {
+        let e = topo.corner_edge[c as usize];
+        let side = if topo.edge_corner[e as usize] == c {
+            0
+        } else {
+            2
+        };
+        twin[c as usize] = edge_base(e) + side;
+        twin[(edge_base(e) + side) as usize] = c;
+    }
+    for (e, &c0) in topo.edge_corner.iter().enumerate() {
+        let b = edge_base(e as u32) as usize;
+        let t = topo.twin[c0 as usize];
+        let at_next_t = vpos[topo.next[t as usize] as usize];
+        let at_next_c0 = vpos[topo.next[c0 as usize] as usize];
+        twin[b + 1] = at_next_t;
+        twin[at_next_t as usize] = b as u32 + 1;
+        twin[b + 3] = at_next_c0;
+        twin[at_next_c0 as usize] = b as u32 + 3;
+    }
+    // Child vertex c's lowest corner is FACE-face corner c.
+    let vert_corner = (0..nc as u32).collect();
+    Topology::from_twins(twin, corner_face, next, prev, vert_corner)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -141,6 +217,16 @@ mod tests {
             let rt = Topology::build(&r).unwrap();
             rt.require_closed(&r).unwrap();
             assert_eq!(rt.num_edges(), 4 * e);
+            // Written down, the child's topology equals the searched one.
+            let wt = topology(&m, &t);
+            assert_eq!(wt.twin, rt.twin);
+            assert_eq!((&wt.next, &wt.prev), (&rt.next, &rt.prev));
+            assert_eq!(wt.corner_face, rt.corner_face);
+            assert_eq!(
+                (&wt.corner_edge, &wt.edge_corner),
+                (&rt.corner_edge, &rt.edge_corner)
+            );
+            assert_eq!(wt.vert_corner, rt.vert_corner);
         }
     }
 }

@@ -64,23 +64,23 @@ pub(super) fn prepare<'a>(
     attrs: &'a EdgeAttrs,
     flags: Option<&[bool]>,
     tol: f64,
+    known: Option<Topology>,
 ) -> Result<Prepared<'a>, StepError> {
-    let level = |m: &PolyMesh| -> Result<_, StepError> {
-        let topo = Topology::build(m)?;
-        topo.require_closed(m)?;
+    let level = |m: &PolyMesh, known| -> Result<_, StepError> {
+        let topo = super::prepare::checked_topology(m, known)?;
         let raw = face_normals_raw(m);
         let normals: Vec<DVec3> = raw.iter().map(|&n| unit_or_zero(n)).collect();
         let bends = signed_bend_angles(m, &topo, &normals);
         Ok((topo, raw, normals, bends))
     };
-    let (mut topo, raw, mut normals, mut bends) = level(mesh)?;
+    let (mut topo, raw, mut normals, mut bends) = level(mesh, known)?;
     let mut p_mesh = Cow::Borrowed(mesh);
     let mut p_attrs = Cow::Borrowed(attrs);
     let mut p_flags = flags.map(<[bool]>::to_vec);
     let mut dissolved_edges = 0;
     let d = dissolve_flat_edges(mesh, &topo, &bends, &raw, flags.unwrap_or(&[]), attrs, tol)?;
     if let Some(d) = d {
-        (topo, _, normals, bends) = level(&d.mesh)?;
+        (topo, _, normals, bends) = level(&d.mesh, None)?;
         dissolved_edges = d.dissolved_edges;
         p_flags = flags.map(|_| d.face_flags);
         p_mesh = Cow::Owned(d.mesh);

@@ -47,10 +47,27 @@ impl<'a> Prepared<'a> {
     }
 }
 
-/// The level with its checked topology and normals, as every rule needs it.
-fn plain<'a>(mesh: &'a PolyMesh, edge_attrs: &'a EdgeAttrs) -> Result<Prepared<'a>, MeshError> {
+/// The topology of `mesh`: `known` when the split that made it wrote it down, else built
+/// and checked closed.
+pub(super) fn checked_topology(
+    mesh: &PolyMesh,
+    known: Option<Topology>,
+) -> Result<Topology, MeshError> {
+    if let Some(t) = known {
+        return Ok(t);
+    }
     let topo = Topology::build(mesh)?;
     topo.require_closed(mesh)?;
+    Ok(topo)
+}
+
+/// The level with its checked topology and normals, as every rule needs it.
+fn plain<'a>(
+    mesh: &'a PolyMesh,
+    edge_attrs: &'a EdgeAttrs,
+    known: Option<Topology>,
+) -> Result<Prepared<'a>, MeshError> {
+    let topo = checked_topology(mesh, known)?;
     let normals = face_normals_raw(mesh)
         .into_iter()
         .map(unit_or_zero)
@@ -70,21 +87,23 @@ impl CornerRule {
     /// Prepares `mesh` (checked closed) for this rule. `state` is the combination state of
     /// `mesh` when the step before was a combination step; only the combination rule reads
     /// it. `flat_tolerance` is the bend angle (radians) below which the cylindrical family
-    /// merges an edge's faces.
+    /// merges an edge's faces. `known` is `mesh`'s topology when the split that made it wrote
+    /// it down ([`crate::refine::dual_quad::topology`]); else it is built and checked.
     pub fn prepare<'a>(
         &self,
         mesh: &'a PolyMesh,
         attrs: &'a EdgeAttrs,
         state: Option<&CombinationState>,
         flat_tolerance: f64,
+        known: Option<Topology>,
     ) -> Result<Prepared<'a>, StepError> {
         let state = match self {
             CornerRule::Combination { .. } => state.map(|s| s.flags.as_slice()),
             _ => None,
         };
         match self.radius() {
-            Some(_) => cylindrical::prepare(self, mesh, attrs, state, flat_tolerance),
-            None => Ok(plain(mesh, attrs)?),
+            Some(_) => cylindrical::prepare(self, mesh, attrs, state, flat_tolerance, known),
+            None => Ok(plain(mesh, attrs, known)?),
         }
     }
 
@@ -115,7 +134,7 @@ mod tests {
         let own = EdgeAttr::rounded(0.05);
         attrs.insert(EdgeKey::new(a, b), own);
         let rule = CornerRule::Cylindrical { r: 0.2 };
-        let p = rule.prepare(&m, &attrs, None, 1e-6).unwrap();
+        let p = rule.prepare(&m, &attrs, None, 1e-6, None).unwrap();
         assert_eq!(p.dissolved_edges, 0);
         assert_eq!(p.cut_widths.len(), 12);
         for (e, &x) in p.cut_widths.iter().enumerate() {
@@ -126,7 +145,7 @@ mod tests {
         assert_eq!(rule.edge_radius(None), Some(0.2));
         assert_eq!(CornerRule::DooSabin.edge_radius(Some(&own)), None);
         let q = CornerRule::DooSabin
-            .prepare(&m, &attrs, None, 1e-6)
+            .prepare(&m, &attrs, None, 1e-6, None)
             .unwrap();
         assert!(q.cut_widths.is_empty() && matches!(q.mesh, Cow::Borrowed(_)));
     }
@@ -142,7 +161,7 @@ mod tests {
         };
         let attrs = EdgeAttrs::new();
         let comb = CornerRule::Combination { r: 0.1 };
-        let p = comb.prepare(&m, &attrs, Some(&state), 1e-6).unwrap();
+        let p = comb.prepare(&m, &attrs, Some(&state), 1e-6, None).unwrap();
         let flags = p.combination.as_ref().expect("continues the run");
         assert_eq!(flags.len(), p.mesh.num_faces());
         assert!(flags.iter().all(|&f| f));
@@ -151,7 +170,7 @@ mod tests {
         assert_eq!(p.cut_widths.len(), 12);
         let cyl = CornerRule::Cylindrical { r: 0.1 };
         assert!(
-            cyl.prepare(&m, &attrs, Some(&state), 1e-6)
+            cyl.prepare(&m, &attrs, Some(&state), 1e-6, None)
                 .unwrap()
                 .combination
                 .is_none()
