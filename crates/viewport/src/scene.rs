@@ -152,7 +152,7 @@ fn smooth_corner_normals(
         .collect();
     let (mut ring_e, mut ring_c) = (Vec::new(), Vec::new());
     for v in 0..mesh.num_vertices() {
-        topo.vertex_ring(mesh, v as u32, &mut ring_e, &mut ring_c);
+        topo.vertex_ring_from(mesh, topo.vert_corner[v], &mut ring_e, &mut ring_c);
         let n = ring_c.len();
         if n == 0 {
             continue;

@@ -61,7 +61,7 @@ pub(crate) fn sharpness(
             if c == NONE || topo.twin[c as usize] != NONE {
                 continue;
             }
-            topo.vertex_ring(mesh, v as u32, &mut ring_e, &mut ring_f);
+            topo.vertex_ring_from(mesh, topo.vert_corner[v], &mut ring_e, &mut ring_f);
             match tags.boundary {
                 BoundaryInterpolation::None => {
                     let open = ring_e.iter().any(|&(e, _)| {

@@ -345,23 +345,13 @@ impl Topology {
         Ok(())
     }
 
-    /// The edges around vertex `v` in ring order, each as (edge, other vertex), and the
-    /// corners of `v` in the faces between them: the face of corner i lies between edges i
-    /// and i + 1. At a boundary vertex the
-    /// ring starts at the boundary edge with the fan on its left and ends at the other
-    /// boundary edge (one edge more than faces), as OpenSubdiv orders it.
-    pub fn vertex_ring(
-        &self,
-        mesh: &PolyMesh,
-        v: u32,
-        edges: &mut Vec<(u32, u32)>,
-        corners: &mut Vec<u32>,
-    ) {
-        self.vertex_ring_from(mesh, self.vert_corner[v as usize], edges, corners);
-    }
-
-    /// As [`Topology::vertex_ring`], starting at corner `start` of the vertex (an interior
-    /// vertex's ring may start at any of its corners; [`NONE`] gives an empty ring).
+    /// The edges around a vertex in ring order from its corner `start` (an interior
+    /// vertex's ring may start at any of its corners; `vert_corner[v]` is the usual one,
+    /// [`NONE`] gives an empty ring), each as (edge, other vertex), and the corners of the
+    /// vertex in the faces between them: the face of corner i lies between edges i and
+    /// i + 1. At a boundary vertex the ring from `vert_corner[v]` starts at the boundary
+    /// edge with the fan on its left and ends at the other boundary edge (one edge more than
+    /// faces), as OpenSubdiv orders it.
     pub fn vertex_ring_from(
         &self,
         mesh: &PolyMesh,
@@ -402,7 +392,7 @@ impl Topology {
         }
         let mut edges = Vec::new();
         let mut faces = Vec::new();
-        self.vertex_ring(mesh, a, &mut edges, &mut faces);
+        self.vertex_ring_from(mesh, self.vert_corner[a as usize], &mut edges, &mut faces);
         edges.iter().find(|&&(_, o)| o == b).map(|&(e, _)| e)
     }
 
