@@ -14,13 +14,7 @@ fn main() {
 #[divan::bench(sample_count = 10)]
 fn frame_1m_triangles_1024x768(b: divan::Bencher) {
     let mesh = primitives::fan_triangulated(&primitives::torus(708, 708, 3.0, 1.0));
-    let scene = Scene::build(
-        &mesh,
-        &EdgeAttrs::new(),
-        None,
-        &|_| false,
-        &SceneOptions::default(),
-    );
+    let scene = Scene::plain(&mesh);
     assert_eq!(scene.triangles(), 1_002_528);
     let gpu = Offscreen::interactive().expect("a wgpu adapter");
     eprintln!(

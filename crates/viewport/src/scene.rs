@@ -191,6 +191,17 @@ impl Scene {
     /// Prepares `mesh` for drawing. `kinds` colours faces by kind when given; `attrs`
     /// marks crease edges, which stay sharp in smooth shading; `hidden` faces (holes) are
     /// not drawn.
+    /// A mesh as it is: no marked edges, one colour, nothing hidden, default options.
+    pub fn plain(mesh: &PolyMesh) -> Scene {
+        Scene::build(
+            mesh,
+            &EdgeAttrs::new(),
+            None,
+            &|_| false,
+            &SceneOptions::default(),
+        )
+    }
+
     pub fn build(
         mesh: &PolyMesh,
         attrs: &EdgeAttrs,
@@ -435,13 +446,7 @@ mod tests {
     fn smooth_normals_split_at_sharp_edges() {
         // A cube: every edge is 90°, so smooth shading with a 40° crease angle is flat.
         let m = primitives::cube3();
-        let flat = Scene::build(
-            &m,
-            &EdgeAttrs::new(),
-            None,
-            &|_| false,
-            &SceneOptions::default(),
-        );
+        let flat = Scene::plain(&m);
         let opts = SceneOptions {
             shading: Shading::Smooth,
             ..SceneOptions::default()

@@ -199,19 +199,12 @@ pub fn box_edges(proj: &Projector, mesh: &PolyMesh, edges: &[EdgeKey], rect: Rec
 #[cfg(test)]
 mod tests {
     use super::*;
-    use prism_geom::EdgeAttrs;
     use prism_geom::primitives;
-    use prism_viewport::{Camera, SceneOptions, View};
+    use prism_viewport::{Camera, View};
 
     fn setup() -> (PolyMesh, Scene, Projector) {
         let m = primitives::cube3();
-        let scene = Scene::build(
-            &m,
-            &EdgeAttrs::new(),
-            None,
-            &|_| false,
-            &SceneOptions::default(),
-        );
+        let scene = Scene::plain(&m);
         let cam = Camera::looking(View::Iso, Vec3::ZERO, scene.radius());
         let rect = Rect::from_min_size(Pos2::new(10.0, 20.0), egui::vec2(400.0, 300.0));
         let proj = Projector {
