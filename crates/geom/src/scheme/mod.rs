@@ -271,42 +271,31 @@ mod tests {
 
     #[test]
     fn bad_text_is_refused_with_a_reason() {
+        use SchemeError as E;
         let refused = |text: &str| text.parse::<Scheme>().unwrap_err();
-        assert!(matches!(refused("foo"), SchemeError::Unknown(_)));
-        assert!(matches!(
-            refused("combination"),
-            SchemeError::Missing { .. }
-        ));
-        assert!(matches!(
-            refused("vector-sum:alpha=0.5"),
-            SchemeError::Param(_)
-        ));
-        assert!(matches!(refused("cut-width:d=-1"), SchemeError::Param(_)));
-        assert!(matches!(refused("cut-width:d=nan"), SchemeError::Param(_)));
+        assert!(matches!(refused("foo"), E::Unknown(_)));
+        assert!(matches!(refused("combination"), E::Missing { .. }));
+        assert!(matches!(refused("vector-sum:alpha=0.5"), E::Param(_)));
+        assert!(matches!(refused("cut-width:d=-1"), E::Param(_)));
+        assert!(matches!(refused("cut-width:d=nan"), E::Param(_)));
         assert!(matches!(
             refused("doo-sabin:r=1"),
-            SchemeError::UnexpectedParam { .. }
+            E::UnexpectedParam { .. }
         ));
-        assert!(matches!(
-            refused("cut-width:d=x"),
-            SchemeError::BadNumber(_)
-        ));
-        assert!(matches!(parse_pipeline(" , "), Err(SchemeError::Empty)));
-        assert!(matches!(
-            refused("loop:r=1"),
-            SchemeError::UnexpectedParam { .. }
-        ));
+        assert!(matches!(refused("cut-width:d=x"), E::BadNumber(_)));
+        assert!(matches!(parse_pipeline(" , "), Err(E::Empty)));
+        assert!(matches!(refused("loop:r=1"), E::UnexpectedParam { .. }));
         assert!(matches!(
             refused("combination:r=0.1:r=0.2"),
-            SchemeError::Repeated { .. }
+            E::Repeated { .. }
         ));
         assert!(matches!(
             refused("combination:r=0.1:radius=0.2"),
-            SchemeError::Repeated { .. }
+            E::Repeated { .. }
         ));
         assert!(matches!(
             refused("cut-width:reflex=inward"),
-            SchemeError::UnexpectedParam { .. }
+            E::UnexpectedParam { .. }
         ));
         // The unknown-scheme message lists every scheme of the catalogue.
         let msg = "spline".parse::<Scheme>().unwrap_err().to_string();
