@@ -27,7 +27,7 @@ pub use ring_order::RingOrder;
 use crate::edge_attrs::{EdgeAttr, EdgeAttrs};
 use crate::error::{MeshError, OverBudget};
 use crate::mesh::PolyMesh;
-use crate::refine::{self, ChildCounts, Numbering, Provenance};
+use crate::refine::{self, Numbering, PrimalSplit, Provenance};
 use crate::rules::primal::crease;
 use crate::tags::SubdivTags;
 use crate::topology::Topology;
@@ -69,6 +69,14 @@ impl PrimalScheme {
         match self {
             PrimalScheme::CatmullClarkCircle => PrimalScheme::CatmullClark,
             s => s,
+        }
+    }
+
+    /// The split that builds its child's faces.
+    pub fn split(self) -> PrimalSplit {
+        match self.family() {
+            PrimalScheme::Loop => PrimalSplit::Tri,
+            _ => PrimalSplit::Quad,
         }
     }
 
@@ -134,15 +142,6 @@ pub(crate) fn check_faces(mesh: &PolyMesh, scheme: PrimalScheme) -> Result<(), P
         }
     }
     Ok(())
-}
-
-/// Sizes of the child of a mesh with `edges` edges, from the scheme's split; their
-/// [`ChildCounts::bytes`] is what a step that would not fit is refused on.
-pub fn child_counts(mesh: &PolyMesh, edges: usize, scheme: PrimalScheme) -> ChildCounts {
-    match scheme.family() {
-        PrimalScheme::Loop => refine::tri::counts(mesh, edges),
-        _ => refine::quad::counts(mesh, edges),
-    }
 }
 
 /// One level of Catmull–Clark or Loop.
@@ -243,7 +242,9 @@ fn refine(
         }
     };
     check_faces(mesh, scheme)?;
-    let counts = child_counts(mesh, topo.num_edges(), scheme);
+    let split = scheme.split();
+    // The child's sizes: a step that would not fit is refused before any work.
+    let counts = split.counts(mesh, topo.num_edges());
     OverBudget::check(counts.bytes(), memory_budget, counts.faces)?;
     let natural;
     let order: Option<&RingOrder> = match order {
@@ -259,12 +260,7 @@ fn refine(
     // Sharpness, then points.
     let sh = sharpness::sharpness(mesh, &topo, attrs, tags);
     let child_sharpness = ChildSharpness::new(mesh, &topo, &sh, tags.crease_method, &ring_start);
-    let quad = scheme.family() == PrimalScheme::CatmullClark;
-    let numbering = if quad {
-        refine::quad::numbering(mesh, &topo)
-    } else {
-        refine::tri::numbering(mesh, &topo)
-    };
+    let numbering = split.numbering(mesh, &topo);
     let level = points::Level {
         mesh,
         topo: &topo,
@@ -276,11 +272,7 @@ fn refine(
     let positions = points::child_points(&level, scheme, numbering);
 
     // Split.
-    let (mut child, face_parent) = if quad {
-        refine::quad::faces(mesh, &topo, numbering)
-    } else {
-        refine::tri::faces(mesh, &topo, numbering)
-    };
+    let (mut child, face_parent) = split.faces(mesh, &topo, numbering);
     child.positions = positions;
 
     // Creases, corners and holes one level down.
@@ -319,13 +311,7 @@ fn refine(
         millis: start.elapsed().as_secs_f64() * 1e3,
     };
     let child_order = order.map(|o| o.child(mesh, &topo, scheme));
-    let child_topo = with.child_topology.then(|| {
-        if quad {
-            refine::quad::topology(mesh, &topo)
-        } else {
-            refine::tri::topology(mesh, &topo)
-        }
-    });
+    let child_topo = with.child_topology.then(|| split.topology(mesh, &topo));
     let provenance = with.provenance.then(|| {
         Provenance::new(
             mesh,
@@ -375,11 +361,7 @@ mod tests {
             };
             let out = plain(1);
             let built = Topology::build(&out.mesh).unwrap();
-            let derived = if scheme == PrimalScheme::Loop {
-                refine::tri::topology(&m, &topo)
-            } else {
-                refine::quad::topology(&m, &topo)
-            };
+            let derived = scheme.split().topology(&m, &topo);
             assert_eq!(derived.twin, built.twin, "{scheme:?}");
             assert_eq!(derived.next, built.next);
             assert_eq!(derived.corner_face, built.corner_face);

@@ -7,7 +7,6 @@
 
 use super::PrimalScheme;
 use crate::mesh::PolyMesh;
-use crate::refine;
 use crate::topology::{NONE, Topology};
 
 /// Ring starts and first half-edges of one level, in OpenSubdiv's order.
@@ -48,9 +47,6 @@ impl RingOrder {
         topo: &Topology,
         scheme: PrimalScheme,
     ) -> RingOrder {
-        match scheme.family() {
-            PrimalScheme::Loop => refine::tri::ring_order(self, mesh, topo),
-            _ => refine::quad::ring_order(self, mesh, topo),
-        }
+        scheme.split().ring_order(self, mesh, topo)
     }
 }

@@ -72,6 +72,68 @@ impl PrimalNumbering {
     }
 }
 
+/// The two primal splits, each with its own file: what the primal driver calls instead of
+/// choosing between [`quad`] and [`tri`] at every use.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum PrimalSplit {
+    /// Catmull–Clark's ([`quad`]).
+    Quad,
+    /// Loop's ([`tri`]).
+    Tri,
+}
+
+impl PrimalSplit {
+    /// The child numbering of `mesh`.
+    pub fn numbering(self, mesh: &PolyMesh, topo: &Topology) -> PrimalNumbering {
+        match self {
+            PrimalSplit::Quad => quad::numbering(mesh, topo),
+            PrimalSplit::Tri => tri::numbering(mesh, topo),
+        }
+    }
+
+    /// Sizes of the child of `mesh` with `edges` edges.
+    pub fn counts(self, mesh: &PolyMesh, edges: usize) -> ChildCounts {
+        match self {
+            PrimalSplit::Quad => quad::counts(mesh, edges),
+            PrimalSplit::Tri => tri::counts(mesh, edges),
+        }
+    }
+
+    /// The child's faces (no positions yet), and the parent face of each.
+    pub fn faces(
+        self,
+        mesh: &PolyMesh,
+        topo: &Topology,
+        n: PrimalNumbering,
+    ) -> (PolyMesh, Vec<u32>) {
+        match self {
+            PrimalSplit::Quad => quad::faces(mesh, topo, n),
+            PrimalSplit::Tri => tri::faces(mesh, topo, n),
+        }
+    }
+
+    /// The child's topology, written down.
+    pub(crate) fn topology(self, mesh: &PolyMesh, topo: &Topology) -> Topology {
+        match self {
+            PrimalSplit::Quad => quad::topology(mesh, topo),
+            PrimalSplit::Tri => tri::topology(mesh, topo),
+        }
+    }
+
+    /// OpenSubdiv's ring order of the child, given the parent's.
+    pub(crate) fn ring_order(
+        self,
+        order: &crate::primal::RingOrder,
+        mesh: &PolyMesh,
+        topo: &Topology,
+    ) -> crate::primal::RingOrder {
+        match self {
+            PrimalSplit::Quad => quad::ring_order(order, mesh, topo),
+            PrimalSplit::Tri => tri::ring_order(order, mesh, topo),
+        }
+    }
+}
+
 /// How a child's vertices are numbered from its parent's elements: the parent → child maps of
 /// one split.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
