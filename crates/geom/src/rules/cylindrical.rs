@@ -23,7 +23,7 @@ use super::prepare::Prepared;
 use super::{CornerRule, RuleError, RuleInput, RuleReport, corner_frame};
 use crate::dissolve::dissolve_flat_edges;
 use crate::edge_attrs::{EdgeAttrs, EdgeKey};
-use crate::geometry::{face_normals_raw, signed_bend_angles, unit_or_zero};
+use crate::geometry::signed_bend_angles;
 use crate::mesh::PolyMesh;
 use crate::step::StepError;
 use crate::topology::Topology;
@@ -67,9 +67,7 @@ pub(super) fn prepare<'a>(
     known: Option<Topology>,
 ) -> Result<Prepared<'a>, StepError> {
     let level = |m: &PolyMesh, known| -> Result<_, StepError> {
-        let topo = super::prepare::checked_topology(m, known)?;
-        let raw = face_normals_raw(m);
-        let normals: Vec<DVec3> = raw.iter().map(|&n| unit_or_zero(n)).collect();
+        let (topo, raw, normals) = super::prepare::checked_level(m, known)?;
         let bends = signed_bend_angles(m, &topo, &normals);
         Ok((topo, raw, normals, bends))
     };

@@ -47,18 +47,23 @@ impl<'a> Prepared<'a> {
     }
 }
 
-/// The topology of `mesh`: `known` when the split that made it wrote it down, else built
-/// and checked closed.
-pub(super) fn checked_topology(
+/// What every rule reads of `mesh`: its topology (`known` when the split that made it wrote
+/// it down, else built and checked closed), its raw Newell normals and their unit vectors.
+pub(super) fn checked_level(
     mesh: &PolyMesh,
     known: Option<Topology>,
-) -> Result<Topology, MeshError> {
-    if let Some(t) = known {
-        return Ok(t);
-    }
-    let topo = Topology::build(mesh)?;
-    topo.require_closed(mesh)?;
-    Ok(topo)
+) -> Result<(Topology, Vec<DVec3>, Vec<DVec3>), MeshError> {
+    let topo = match known {
+        Some(t) => t,
+        None => {
+            let t = Topology::build(mesh)?;
+            t.require_closed(mesh)?;
+            t
+        }
+    };
+    let raw = face_normals_raw(mesh);
+    let normals = raw.iter().map(|&n| unit_or_zero(n)).collect();
+    Ok((topo, raw, normals))
 }
 
 /// The level with its checked topology and normals, as every rule needs it.
@@ -67,11 +72,7 @@ fn plain<'a>(
     edge_attrs: &'a EdgeAttrs,
     known: Option<Topology>,
 ) -> Result<Prepared<'a>, MeshError> {
-    let topo = checked_topology(mesh, known)?;
-    let normals = face_normals_raw(mesh)
-        .into_iter()
-        .map(unit_or_zero)
-        .collect();
+    let (topo, _, normals) = checked_level(mesh, known)?;
     Ok(Prepared {
         mesh: Cow::Borrowed(mesh),
         edge_attrs: Cow::Borrowed(edge_attrs),
@@ -101,9 +102,10 @@ impl CornerRule {
             CornerRule::Combination { .. } => state.map(|s| s.flags.as_slice()),
             _ => None,
         };
-        match self.radius() {
-            Some(_) => cylindrical::prepare(self, mesh, attrs, state, flat_tolerance, known),
-            None => Ok(plain(mesh, attrs, known)?),
+        if self.is_cylindrical_family() {
+            cylindrical::prepare(self, mesh, attrs, state, flat_tolerance, known)
+        } else {
+            Ok(plain(mesh, attrs, known)?)
         }
     }
 
