@@ -1,6 +1,8 @@
 //! Catmull–Clark and Loop: masks by hand, invariants per level, convergence to the limit
 //! points, random meshes with random creases (no panic, no NaN).
 
+mod common;
+
 use prism_geom::analysis::counts;
 use prism_geom::{
     DVec3, EdgeAttr, EdgeAttrs, EdgeKey, PolyMesh, PrimalError, PrimalScheme, SubdivTags, Topology,
@@ -219,10 +221,7 @@ proptest! {
             2 => (tri(primitives::cube3()), PrimalScheme::Loop),
             _ => (octahedron(), PrimalScheme::Loop),
         };
-        for (i, p) in m.positions.iter_mut().enumerate() {
-            let j = 3 * (i % 17);
-            *p += DVec3::new(jitter[j], jitter[j + 1], jitter[j + 2]);
-        }
+        common::jitter(&mut m, &jitter);
         let mut attrs = EdgeAttrs::new();
         for (c, sharp) in creases {
             let c = c % m.num_corners();

@@ -1,9 +1,11 @@
 //! Property tests: random perturbations of closed solids through random rules never panic,
 //! never produce NaN, and keep the counts and closedness.
 
+mod common;
+
 use prism_geom::analysis::counts;
 use prism_geom::rules::CornerRule;
-use prism_geom::{DVec3, EdgeAttrs, Pipeline, ReflexMode, Scheme, Topology, primitives};
+use prism_geom::{EdgeAttrs, Pipeline, ReflexMode, Scheme, Topology, primitives};
 use proptest::prelude::*;
 
 fn rule(k: u8, p: f64) -> CornerRule {
@@ -35,10 +37,7 @@ proptest! {
             2 => primitives::tripod(),
             _ => primitives::torus(6, 5, 3.0, 1.0),
         };
-        for (i, p) in m.positions.iter_mut().enumerate() {
-            let j = 3 * (i % 17);
-            *p += DVec3::new(jitter[j], jitter[j + 1], jitter[j + 2]);
-        }
+        common::jitter(&mut m, &jitter);
         let steps = rules.iter().map(|&(k, p)| Scheme::Biquadratic(rule(k, p))).collect();
         let mut pl = Pipeline::new(m, EdgeAttrs::new(), steps);
         // A step may refuse (an error is a value, not a panic); what it computes is sound.

@@ -39,36 +39,28 @@ pub enum ColorBy {
     Solid([f32; 3]),
 }
 
-/// The colour of the faces a scheme made (Tableau-like palette, given like the other
-/// material colours), by the scheme's
-/// place in the list of names; the input level (no scheme) gets the material colour.
+/// The colour of the faces a scheme made (the Tableau 10 palette), by the scheme's place in
+/// the catalogue; the input level (no scheme) gets the material colour.
 pub fn scheme_color(s: Option<&prism_geom::Scheme>) -> [f32; 3] {
-    const PALETTE: [[f32; 3]; 10] = [
-        [0.12, 0.47, 0.71],
-        [1.00, 0.50, 0.05],
-        [0.17, 0.63, 0.17],
-        [0.84, 0.15, 0.16],
-        [0.58, 0.40, 0.74],
-        [0.55, 0.34, 0.29],
-        [0.89, 0.47, 0.76],
-        [0.09, 0.75, 0.81],
-        [0.74, 0.74, 0.13],
-        [0.60, 0.60, 0.60],
+    // Tableau 10, its grey lightened to stand apart from the material colour.
+    const PALETTE: [u32; 10] = [
+        0x1f77b4, 0xff7f0e, 0x2ca02c, 0xd62728, 0x9467bd, 0x8c564b, 0xe377c2, 0x17becf, 0xbcbd22,
+        0x999999,
     ];
     let Some(s) = s else { return BASE_COLOR };
-    PALETTE[s.kind().index() % PALETTE.len()]
+    rgb(PALETTE[s.kind().index() % PALETTE.len()])
 }
 
-/// The curvature colour scale: viridis at five stops, interpolated (given like the other
-/// material colours).
+/// `0xRRGGBB` as the 0..1 floats the other material colours are given in (published
+/// palettes are written in hex).
+fn rgb(hex: u32) -> [f32; 3] {
+    [16, 8, 0].map(|shift| ((hex >> shift) & 0xff) as f32 / 255.0)
+}
+
+/// The curvature colour scale: viridis at five stops, interpolated.
 pub fn curvature_color(t: f64) -> [f32; 3] {
-    const STOPS: [[f64; 3]; 5] = [
-        [0.267, 0.005, 0.329],
-        [0.229, 0.322, 0.546],
-        [0.128, 0.567, 0.551],
-        [0.369, 0.789, 0.383],
-        [0.993, 0.906, 0.144],
-    ];
+    // viridis at 0, ¼, ½, ¾ and 1.
+    const STOPS: [u32; 5] = [0x440154, 0x3b528b, 0x21918c, 0x5ec962, 0xfde725];
     let x = if t.is_finite() {
         t.clamp(0.0, 1.0)
     } else {
@@ -76,7 +68,8 @@ pub fn curvature_color(t: f64) -> [f32; 3] {
     } * 4.0;
     let i = (x.floor() as usize).min(3);
     let f = x - i as f64;
-    std::array::from_fn(|k| (STOPS[i][k] * (1.0 - f) + STOPS[i + 1][k] * f) as f32)
+    let (a, b) = (rgb(STOPS[i]), rgb(STOPS[i + 1]));
+    std::array::from_fn(|k| (a[k] as f64 * (1.0 - f) + b[k] as f64 * f) as f32)
 }
 
 /// The colours of the FACE-, EDGE- and VERTEX-faces (also the legend's).
