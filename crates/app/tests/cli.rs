@@ -73,7 +73,7 @@ fn rounding_the_tripod_reports_no_flipped_faces() {
     let lines: Vec<&str> = so.lines().filter(|l| l.starts_with("level ")).collect();
     assert_eq!(lines.len(), 6, "{so}");
     for l in &lines[1..] {
-        assert!(l.contains(" 0 flipped"), "{l}");
+        assert!(l.contains("flipped=0,"), "{l}");
     }
     assert!(lines[5].contains("13826 faces"), "{}", lines[5]);
     let written = std::fs::read_to_string(&out).unwrap();
@@ -84,18 +84,43 @@ fn rounding_the_tripod_reports_no_flipped_faces() {
     assert!(!written.contains("NaN") && !written.contains("inf"));
 }
 
+/// The simple type's folding (seed 000 fig. 10) runs and is counted; the step that turns
+/// the solid inside out fails (exit 1), as a failing step does, and nothing is written.
 #[test]
 fn the_simple_cylindrical_breakdown_is_reported() {
-    let (out, so, se) = succeeds_to(
-        "cube-cyl.obj",
+    let out = tmp("cube-cyl.obj");
+    let o = run_with(
         "subdivide assets/cube.obj -o {} --scheme cylindrical --radius 0.45 --levels 5",
+        &[&out],
     );
+    let (so, se) = text(&o);
     assert!(
         so.lines()
-            .any(|l| l.starts_with("level 4") && !l.contains(" 0 flipped")),
+            .any(|l| l.starts_with("level 4") && !l.contains("flipped=0,")),
         "{so}"
     );
     assert!(se.contains("inside out"), "{se}");
+    assert_eq!(o.status.code(), Some(1), "{se}");
+    assert!(!out.exists());
+}
+
+/// Rounds that overlap are refused by default, naming the edges and the radius that fits;
+/// `--clamp` lowers exactly those and says which.
+#[test]
+fn overlapping_rounds_are_refused_or_clamped() {
+    let out = tmp("room.obj");
+    let line =
+        "subdivide assets/computer-room.obj -o {} --scheme combination --radius 0.2 --levels 2";
+    let o = run_with(line, &[&out]);
+    let (_, se) = text(&o);
+    assert_eq!(o.status.code(), Some(1), "{se}");
+    assert!(
+        se.contains("16 edge(s) do not fit") && se.contains("fits up to 0.1500"),
+        "{se}"
+    );
+    let (so, se) = succeeds(run_with(&format!("{line} --clamp"), &[&out]));
+    assert!(se.contains("16 edge radius(es) clamped"), "{se}");
+    assert_eq!(so.matches("flipped=0,").count(), 2, "{so}");
     assert_finite(&out);
 }
 
@@ -105,7 +130,7 @@ fn pipelines_and_documents() {
         "fig7.prism.json",
         "subdivide assets/holed-block.prism.json -o {} --pipeline cut-width:d=0.1,cut-width:d=0.025,cut-width:d=0.00625",
     );
-    assert_eq!(so.matches(" 0 flipped").count(), 3, "{so}");
+    assert_eq!(so.matches("flipped=0,").count(), 3, "{so}");
     let doc = std::fs::read_to_string(&out).unwrap();
     assert!(doc.starts_with("{\"version\":1"));
     // Holed faces to OBJ: triangulated with a warning.

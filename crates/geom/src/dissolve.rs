@@ -35,6 +35,8 @@ pub struct Dissolved {
     pub edge_attrs: EdgeAttrs,
     pub dissolved_edges: usize,
     pub removed_vertices: usize,
+    /// The input's index of each vertex of `mesh` (kept vertices are renumbered in order).
+    pub old_vertex: Vec<u32>,
 }
 
 fn find(parent: &mut [u32], mut x: u32) -> u32 {
@@ -224,10 +226,12 @@ pub fn dissolve_flat_edges(
         used[v as usize] = 0;
     }
     let mut removed_vertices = 0;
-    for (slot, &pos) in used.iter_mut().zip(&out.positions) {
+    let mut old_vertex = Vec::new();
+    for (old, (slot, &pos)) in used.iter_mut().zip(&out.positions).enumerate() {
         if *slot == 0 {
             *slot = compact.positions.len() as u32;
             compact.positions.push(pos);
+            old_vertex.push(old as u32);
         } else {
             removed_vertices += 1;
         }
@@ -248,5 +252,6 @@ pub fn dissolve_flat_edges(
         edge_attrs,
         dissolved_edges,
         removed_vertices,
+        old_vertex,
     }))
 }

@@ -12,6 +12,7 @@ use crate::mesh::PolyMesh;
 use crate::primal::refine_primal;
 use crate::refine::Provenance;
 use crate::rules::CombinationState;
+use crate::rules::Overlap;
 use crate::scheme::Scheme;
 use crate::step::{StepError, StepOptions, StepReport, biquadratic_step_carrying};
 use crate::tags::SubdivTags;
@@ -129,12 +130,24 @@ impl Pipeline {
                 Scheme::Biquadratic(rule) => {
                     let next_is_biquadratic =
                         k + 1 < upto && matches!(self.steps[k + 1], Scheme::Biquadratic(_));
+                    // The radii are checked against the faces when a run of
+                    // cylindrical-family steps begins (docs/algorithms/cylindrical.md).
+                    let continues_run = k > 0
+                        && matches!(self.steps[k - 1], Scheme::Biquadratic(r) if r.is_cylindrical_family());
+                    let options = StepOptions {
+                        overlap: if continues_run {
+                            Overlap::Unchecked
+                        } else {
+                            self.options.overlap
+                        },
+                        ..self.options
+                    };
                     let (out, topo) = biquadratic_step_carrying(
                         &prev.mesh,
                         &prev.edge_attrs,
                         &rule,
                         prev.combination.as_ref(),
-                        &self.options,
+                        &options,
                         carried.take(),
                         next_is_biquadratic,
                     )

@@ -35,6 +35,8 @@ pub struct StepOptions {
     pub flat_tolerance: f64,
     /// A step whose result would need more bytes than this is refused before it starts.
     pub memory_budget: u64,
+    /// What a cylindrical-family step does with radii whose rounds do not fit their faces.
+    pub overlap: rules::Overlap,
 }
 
 impl Default for StepOptions {
@@ -42,6 +44,7 @@ impl Default for StepOptions {
         StepOptions {
             flat_tolerance: 1e-6,
             memory_budget: 8 << 30,
+            overlap: rules::Overlap::Refuse,
         }
     }
 }
@@ -76,6 +79,10 @@ pub struct StepReport {
     pub dissolved_edges: usize,
     /// Straight corners whose along-edge shift was capped (simple cylindrical type).
     pub guarded_corners: usize,
+    /// Edges whose radius was lowered to fit their faces (clamping; input numbering).
+    pub clamped: Vec<rules::EdgeFit>,
+    /// Edges whose cut width the combination rule lowered so its cut faces keep their edges.
+    pub capped_edges: usize,
     /// Corners with a zero-length edge that stayed at their vertex.
     pub collapsed_corners: usize,
     /// Signed volume of the result (negative: inside out).
@@ -125,7 +132,7 @@ pub fn biquadratic_step_carrying(
 ) -> Result<(StepOutput, Option<Topology>), StepError> {
     let start = Instant::now();
     rule.validate()?;
-    let prep = rule.prepare(mesh, attrs, state, options.flat_tolerance, known)?;
+    let prep = rule.prepare(mesh, attrs, state, options, known)?;
     let (cur, topo) = (prep.mesh.as_ref(), &prep.topo);
     OverBudget::check(
         dual_quad::estimated_bytes(cur, topo.num_edges()),
@@ -134,6 +141,7 @@ pub fn biquadratic_step_carrying(
     )?;
     let (points, rule_report) = rules::corner_points(rule, &prep.input())?;
     let (out, prov) = dual_quad::split(cur, topo, points);
+    let checked = check_children(cur, topo, &prep.normals, &out, &prov);
     let new_attrs = refine::propagate(
         cur,
         topo,
@@ -143,7 +151,6 @@ pub fn biquadratic_step_carrying(
     );
     let combination = matches!(rule, CornerRule::Combination { .. })
         .then(|| CombinationState::next(cur, topo, &prov, prep.combination.as_deref()));
-    let checked = check_children(cur, topo, &prep.normals, &out, &prov);
     let report = StepReport {
         vertices: out.num_vertices(),
         edges: 4 * topo.num_edges(),
@@ -152,6 +159,8 @@ pub fn biquadratic_step_carrying(
         degenerate: checked.degenerate,
         dissolved_edges: prep.dissolved_edges,
         guarded_corners: rule_report.guarded_corners,
+        clamped: prep.clamped.clone(),
+        capped_edges: prep.capped_edges,
         collapsed_corners: rule_report.collapsed_corners,
         volume: checked.volume,
         millis: start.elapsed().as_secs_f64() * 1e3,

@@ -8,7 +8,7 @@ use super::{CliError, with_line};
 use clap::Args;
 use prism_geom::io::{self, Document};
 use prism_geom::scheme::{Scheme, SchemeError, SchemeKind, parse_pipeline};
-use prism_geom::{CornerRule, Pipeline, ReflexMode, Topology};
+use prism_geom::{CornerRule, Pipeline, ReflexMode, StepReport, Topology};
 use std::path::PathBuf;
 
 /// The steps to run: one scheme repeated, or a pipeline (shared by `subdivide` and
@@ -41,6 +41,24 @@ pub struct StepArgs {
     /// Steps separated by commas, e.g. "vector-sum:alpha=0.2,doo-sabin,doo-sabin".
     #[arg(long)]
     pub pipeline: Option<String>,
+    /// Lower the radius of edges whose rounds do not fit their faces to what fits, and say
+    /// which (without it such a step is refused, naming them).
+    #[arg(long)]
+    pub clamp: bool,
+}
+
+impl StepArgs {
+    /// The step options these arguments ask for.
+    pub fn options(&self) -> prism_geom::StepOptions {
+        prism_geom::StepOptions {
+            overlap: if self.clamp {
+                prism_geom::rules::Overlap::Clamp
+            } else {
+                prism_geom::rules::Overlap::Refuse
+            },
+            ..Default::default()
+        }
+    }
 }
 
 #[derive(Debug, Args)]
@@ -120,6 +138,77 @@ fn scheme_from_flags(name: &str, a: &StepArgs) -> Result<Scheme, CliError> {
     kind.scheme(param, reflex).map_err(CliError::usage)
 }
 
+/// Prints one level's warnings in words, and returns the error that fails the step when
+/// the solid has turned inside out (README: a failing step exits 1). `volume` is the
+/// level before's signed volume, replaced by this one's.
+pub fn warn_level(k: usize, r: &StepReport, volume: &mut f64) -> Option<CliError> {
+    if !r.clamped.is_empty() {
+        eprintln!(
+            "note: level {k}: {} edge radius(es) clamped to fit their faces: {}",
+            r.clamped.len(),
+            prism_geom::rules::overlap::list(&r.clamped)
+        );
+    }
+    if r.capped_edges > 0 {
+        eprintln!(
+            "note: level {k}: {} edge(s) cut narrower so that the cut faces keep their edges",
+            r.capped_edges
+        );
+    }
+    if !r.flipped.is_empty() {
+        let first: Vec<String> = r.flipped.iter().take(5).map(|f| f.to_string()).collect();
+        eprintln!(
+            "warning: level {k}: {} face(s) flipped (normal against their parent's), e.g. face(s) {}",
+            r.flipped.len(),
+            first.join(", ")
+        );
+    }
+    if !r.degenerate.is_empty() {
+        eprintln!(
+            "warning: level {k}: {} face(s) of (almost) no area",
+            r.degenerate.len()
+        );
+    }
+    if r.dissolved_edges > 0 {
+        eprintln!(
+            "note: level {k}: {} flat edge(s) dissolved first (coplanar faces merged)",
+            r.dissolved_edges
+        );
+    }
+    if r.collapsed_corners > 0 {
+        eprintln!(
+            "warning: level {k}: {} corner(s) on collapsed edges kept at their vertex",
+            r.collapsed_corners
+        );
+    }
+    if r.guarded_corners > 0 {
+        eprintln!(
+            "note: level {k}: {} straight corner(s) with unequal cut widths capped",
+            r.guarded_corners
+        );
+    }
+    let before = std::mem::replace(volume, r.volume);
+    if before > 0.0
+        && r.volume > 0.0
+        && (r.volume / before > VOLUME_JUMP || before / r.volume > VOLUME_JUMP)
+    {
+        eprintln!(
+            "warning: level {k}: the volume jumped from {before:.4e} to {:.4e} (the surface folds through itself)",
+            r.volume
+        );
+    }
+    (before > 0.0 && r.volume < 0.0).then(|| {
+        CliError::input(format!(
+            "step {k}: the solid has turned inside out (signed volume {:.4e})",
+            r.volume
+        ))
+    })
+}
+
+/// A level whose volume differs from the level before's by more than this factor is
+/// named (a subdivision step changes the volume by a few per cent).
+const VOLUME_JUMP: f64 = 10.0;
+
 pub fn run(a: SubdivideArgs) -> Result<(), CliError> {
     let parsed = steps_from(&a.steps, None, true)?;
     if io::ExportFormat::of(&a.output).is_none() {
@@ -160,14 +249,20 @@ pub fn run(a: SubdivideArgs) -> Result<(), CliError> {
         "level 0: {} vertices, {} edges, {} faces (input)",
         c0.vertices, c0.edges, c0.faces
     );
+    let mut previous_volume = prism_geom::geometry::signed_volume(&doc.mesh);
     let mut pipeline = Pipeline::with_tags(doc.mesh, doc.edge_attrs, doc.tags, steps.clone());
+    pipeline.options = a.steps.options();
     let n = steps.len();
+    let mut failed = None;
     let result = pipeline.compute_with(n, |k, level| {
-        let r = level.report.as_ref().expect("computed levels have a report");
+        let r = level
+            .report
+            .as_ref()
+            .expect("computed levels have a report");
         // Biquadratic steps check every new face against its parent; primal steps
         // (smooth schemes) report their holes instead.
         let check = if matches!(steps[k - 1], Scheme::Biquadratic(_)) {
-            format!("{} flipped", r.flipped.len())
+            format!("flipped={}", r.flipped.len())
         } else {
             format!("{} hole faces", level.tags.holes.len())
         };
@@ -179,28 +274,8 @@ pub fn run(a: SubdivideArgs) -> Result<(), CliError> {
             r.millis,
             steps[k - 1]
         );
-        if !r.flipped.is_empty() {
-            let first: Vec<String> = r.flipped.iter().take(5).map(|f| f.to_string()).collect();
-            eprintln!(
-                "warning: level {k}: {} face(s) flipped (normal against their parent's), e.g. face(s) {}",
-                r.flipped.len(),
-                first.join(", ")
-            );
-        }
-        if !r.degenerate.is_empty() {
-            eprintln!("warning: level {k}: {} face(s) of (almost) no area", r.degenerate.len());
-        }
-        if r.volume < 0.0 {
-            eprintln!("warning: level {k}: the solid has turned inside out (signed volume {:.4e})", r.volume);
-        }
-        if r.dissolved_edges > 0 {
-            eprintln!("note: level {k}: {} flat edge(s) dissolved first (coplanar faces merged)", r.dissolved_edges);
-        }
-        if r.collapsed_corners > 0 {
-            eprintln!("warning: level {k}: {} corner(s) on collapsed edges kept at their vertex", r.collapsed_corners);
-        }
-        if r.guarded_corners > 0 {
-            eprintln!("note: level {k}: {} straight corner(s) with unequal cut widths capped", r.guarded_corners);
+        if failed.is_none() {
+            failed = warn_level(k, r, &mut previous_volume);
         }
     });
     if steps
@@ -212,6 +287,9 @@ pub fn run(a: SubdivideArgs) -> Result<(), CliError> {
         );
     }
     let last = result.map_err(CliError::input)?;
+    if let Some(e) = failed {
+        return Err(e);
+    }
     if io::ExportFormat::of(&a.output).is_some() {
         let holes = &last.tags.holes;
         io::export(&a.output, &last.mesh, &|f| holes.contains(&(f as u32)))

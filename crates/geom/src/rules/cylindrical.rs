@@ -19,19 +19,25 @@
 //! at reflex corners the magnitude is capped and the sign kept. It never flips in the
 //! paper's tests but does not converge to r (it stalls near 0.2 % of r, §2.7).
 
+use super::overlap::{EdgeFit, Overlap, fitting_scales};
 use super::prepare::Prepared;
 use super::{CornerRule, RuleError, RuleInput, RuleReport, corner_frame};
 use crate::dissolve::dissolve_flat_edges;
-use crate::edge_attrs::{EdgeAttrs, EdgeKey};
+use crate::edge_attrs::{EdgeAttr, EdgeAttrs, EdgeKey};
 use crate::geometry::signed_bend_angles;
 use crate::mesh::PolyMesh;
-use crate::step::StepError;
+use crate::step::{StepError, StepOptions};
 use crate::topology::Topology;
 use glam::DVec3;
 use std::borrow::Cow;
 
 /// Straight-corner threshold on 1 − c (c = m₁·m₂ = −cos φ) for the δ term (§2.6).
 const STRAIGHT_CORNER: f64 = 1e-12;
+
+/// The share of an edge a combination step's two new points on it may take together: each
+/// edge of a cut face keeps at least a tenth of its length, so no face of the child
+/// collapses.
+const STEP_ROOM: f64 = 0.9;
 
 /// Below this cos(ψ/2) an edge is a knife edge (faces folded onto each other): the cut
 /// width would exceed 1e12 r.
@@ -55,17 +61,23 @@ pub fn dissolve_needed(psi: f64, tol: f64) -> bool {
 }
 
 /// The family's preparation of a level (§2.5, eq. 3): the faces of flat edges
-/// (|ψ| < `tol`) are merged first, carrying the combination run's `flags` along; then every
-/// edge gets its cut width from its bend angle and its radius ([`CornerRule::edge_radius`]).
-/// A knife edge (ψ = π) is refused, naming it.
+/// (|ψ| < the flat tolerance) are merged first, carrying the combination run's `flags`
+/// along; then every edge gets its radius ([`CornerRule::edge_radius`]) and from it and its
+/// bend angle its cut width. A knife edge (ψ = π) is refused, naming it.
+///
+/// Overlap ([`super::overlap`]): unless `options.overlap` is `Unchecked`, the finished
+/// fillets' tangent lengths `r·tan(|ψ|/2)` must fit every face; the edges that do not are
+/// refused or clamped (their lowered radius written as their own). The combination rule
+/// then also fits this step's cut widths to its cut faces, counting the edges it lowers.
 pub(super) fn prepare<'a>(
     rule: &CornerRule,
     mesh: &'a PolyMesh,
     attrs: &'a EdgeAttrs,
     flags: Option<&[bool]>,
-    tol: f64,
+    options: &StepOptions,
     known: Option<Topology>,
 ) -> Result<Prepared<'a>, StepError> {
+    let tol = options.flat_tolerance;
     let level = |m: &PolyMesh, known| -> Result<_, StepError> {
         let (topo, raw, normals) = super::prepare::checked_level(m, known)?;
         let bends = signed_bend_angles(m, &topo, &normals);
@@ -76,6 +88,7 @@ pub(super) fn prepare<'a>(
     let mut p_attrs = Cow::Borrowed(attrs);
     let mut p_flags = flags.map(<[bool]>::to_vec);
     let mut dissolved_edges = 0;
+    let mut old_vertex = None;
     let d = dissolve_flat_edges(mesh, &topo, &bends, &raw, flags.unwrap_or(&[]), attrs, tol)?;
     if let Some(d) = d {
         (topo, _, normals, bends) = level(&d.mesh, None)?;
@@ -83,15 +96,15 @@ pub(super) fn prepare<'a>(
         p_flags = flags.map(|_| d.face_flags);
         p_mesh = Cow::Owned(d.mesh);
         p_attrs = Cow::Owned(d.edge_attrs);
+        old_vertex = Some(d.old_vertex);
     }
-    let mut cut_widths = Vec::with_capacity(bends.len());
+    let mut radii = Vec::with_capacity(bends.len());
     for (e, &psi) in bends.iter().enumerate() {
         let (a, b) = topo.edge_verts(&p_mesh, e);
         let r = rule
             .edge_radius(p_attrs.get(&EdgeKey::new(a, b)))
             .expect("the cylindrical family has a radius");
-        let x = cut_width(r, psi);
-        if !x.is_finite() {
+        if !cut_width(r, psi).is_finite() {
             return Err(RuleError::KnifeEdge {
                 a,
                 b,
@@ -99,7 +112,75 @@ pub(super) fn prepare<'a>(
             }
             .into());
         }
-        cut_widths.push(x);
+        radii.push(r);
+    }
+    let skip = p_flags.as_deref().unwrap_or(&[]);
+    let input = RuleInput {
+        mesh: &p_mesh,
+        topo: &topo,
+        normals: &normals,
+        cut_widths: &[],
+        vertex_neighbourhood: skip,
+    };
+    let mut clamped = Vec::new();
+    if options.overlap != Overlap::Unchecked {
+        let tangents: Vec<f64> = radii
+            .iter()
+            .zip(&bends)
+            .map(|(r, psi)| {
+                if psi.abs() < tol {
+                    0.0
+                } else {
+                    r * (psi.abs() / 2.0).tan()
+                }
+            })
+            .collect();
+        let scales = fitting_scales(&input, &tangents, skip, 1.0);
+        let name = |v: u32| old_vertex.as_ref().map_or(v, |o: &Vec<u32>| o[v as usize]);
+        let mut lowered = Vec::new();
+        for (e, &s) in scales.iter().enumerate() {
+            if s < 1.0 {
+                let (a, b) = topo.edge_verts(&p_mesh, e);
+                let fit = EdgeFit {
+                    a: name(a),
+                    b: name(b),
+                    radius: radii[e],
+                    fits: radii[e] * s,
+                };
+                lowered.push((EdgeKey::new(a, b), fit.fits));
+                radii[e] = fit.fits;
+                clamped.push(fit);
+            }
+        }
+        if !clamped.is_empty() && options.overlap == Overlap::Refuse {
+            return Err(RuleError::Overlap { edges: clamped }.into());
+        }
+        for (key, r) in lowered {
+            let attrs = p_attrs.to_mut();
+            let crease = attrs.get(&key).map_or(0.0, |a| a.crease);
+            attrs.insert(
+                key,
+                EdgeAttr {
+                    crease,
+                    radius: Some(r),
+                },
+            );
+        }
+    }
+    let mut cut_widths: Vec<f64> = radii
+        .iter()
+        .zip(&bends)
+        .map(|(&r, &psi)| cut_width(r, psi))
+        .collect();
+    let mut capped_edges = 0;
+    if matches!(rule, CornerRule::Combination { .. }) {
+        let scales = fitting_scales(&input, &cut_widths, skip, STEP_ROOM);
+        for (x, s) in cut_widths.iter_mut().zip(scales) {
+            if s < 1.0 {
+                *x *= s;
+                capped_edges += 1;
+            }
+        }
     }
     Ok(Prepared {
         mesh: p_mesh,
@@ -109,6 +190,8 @@ pub(super) fn prepare<'a>(
         cut_widths,
         combination: p_flags,
         dissolved_edges,
+        clamped,
+        capped_edges,
     })
 }
 

@@ -24,11 +24,13 @@ mod chamfer;
 pub mod combination;
 mod cylindrical;
 mod doo_sabin;
+pub mod overlap;
 mod prepare;
 pub mod primal;
 
 pub use combination::CombinationState;
 pub use cylindrical::{cut_width, dissolve_needed};
+pub use overlap::{EdgeFit, Overlap};
 pub use prepare::Prepared;
 
 use crate::mesh::PolyMesh;
@@ -116,6 +118,12 @@ pub enum RuleError {
     KnifeEdge { a: u32, b: u32, bend_deg: f64 },
     #[error("the new point of face {face} at vertex {vertex} is not finite")]
     NonFinite { face: u32, vertex: u32 },
+    #[error(
+        "the rounds of {} edge(s) do not fit their faces (neighbouring rounds would overlap): {}; lower the radius or clamp it",
+        .edges.len(),
+        overlap::list(.edges)
+    )]
+    Overlap { edges: Vec<EdgeFit> },
 }
 
 /// What a rule needs besides the mesh.

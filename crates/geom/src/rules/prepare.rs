@@ -10,7 +10,7 @@ use crate::edge_attrs::EdgeAttrs;
 use crate::error::MeshError;
 use crate::geometry::{face_normals_raw, unit_or_zero};
 use crate::mesh::PolyMesh;
-use crate::step::StepError;
+use crate::step::{StepError, StepOptions};
 use crate::topology::Topology;
 use glam::DVec3;
 use std::borrow::Cow;
@@ -32,6 +32,12 @@ pub struct Prepared<'a> {
     pub combination: Option<Vec<bool>>,
     /// Flat edges merged away.
     pub dissolved_edges: usize,
+    /// Edges whose radius was lowered to fit their faces ([`super::overlap`]), named in the
+    /// input's numbering.
+    pub clamped: Vec<super::EdgeFit>,
+    /// Edges whose cut width this step lowered so that its cut faces keep their edges (the
+    /// combination rule's guard).
+    pub capped_edges: usize,
 }
 
 impl<'a> Prepared<'a> {
@@ -81,21 +87,23 @@ fn plain<'a>(
         cut_widths: Vec::new(),
         combination: None,
         dissolved_edges: 0,
+        clamped: Vec::new(),
+        capped_edges: 0,
     })
 }
 
 impl CornerRule {
     /// Prepares `mesh` (checked closed) for this rule. `state` is the combination state of
     /// `mesh` when the step before was a combination step; only the combination rule reads
-    /// it. `flat_tolerance` is the bend angle (radians) below which the cylindrical family
-    /// merges an edge's faces. `known` is `mesh`'s topology when the split that made it wrote
+    /// it. `options` give the bend angle below which the cylindrical family merges an edge's
+    /// faces and what it does with radii that do not fit ([`super::Overlap`]). `known` is `mesh`'s topology when the split that made it wrote
     /// it down ([`crate::refine::dual_quad::topology`]); else it is built and checked.
     pub fn prepare<'a>(
         &self,
         mesh: &'a PolyMesh,
         attrs: &'a EdgeAttrs,
         state: Option<&CombinationState>,
-        flat_tolerance: f64,
+        options: &StepOptions,
         known: Option<Topology>,
     ) -> Result<Prepared<'a>, StepError> {
         let state = match self {
@@ -103,7 +111,7 @@ impl CornerRule {
             _ => None,
         };
         if self.is_cylindrical_family() {
-            cylindrical::prepare(self, mesh, attrs, state, flat_tolerance, known)
+            cylindrical::prepare(self, mesh, attrs, state, options, known)
         } else {
             Ok(plain(mesh, attrs, known)?)
         }
@@ -136,7 +144,9 @@ mod tests {
         let own = EdgeAttr::rounded(0.05);
         attrs.insert(EdgeKey::new(a, b), own);
         let rule = CornerRule::Cylindrical { r: 0.2 };
-        let p = rule.prepare(&m, &attrs, None, 1e-6, None).unwrap();
+        let p = rule
+            .prepare(&m, &attrs, None, &StepOptions::default(), None)
+            .unwrap();
         assert_eq!(p.dissolved_edges, 0);
         assert_eq!(p.cut_widths.len(), 12);
         for (e, &x) in p.cut_widths.iter().enumerate() {
@@ -147,7 +157,7 @@ mod tests {
         assert_eq!(rule.edge_radius(None), Some(0.2));
         assert_eq!(CornerRule::DooSabin.edge_radius(Some(&own)), None);
         let q = CornerRule::DooSabin
-            .prepare(&m, &attrs, None, 1e-6, None)
+            .prepare(&m, &attrs, None, &StepOptions::default(), None)
             .unwrap();
         assert!(q.cut_widths.is_empty() && matches!(q.mesh, Cow::Borrowed(_)));
     }
@@ -163,7 +173,9 @@ mod tests {
         };
         let attrs = EdgeAttrs::new();
         let comb = CornerRule::Combination { r: 0.1 };
-        let p = comb.prepare(&m, &attrs, Some(&state), 1e-6, None).unwrap();
+        let p = comb
+            .prepare(&m, &attrs, Some(&state), &StepOptions::default(), None)
+            .unwrap();
         let flags = p.combination.as_ref().expect("continues the run");
         assert_eq!(flags.len(), p.mesh.num_faces());
         assert!(flags.iter().all(|&f| f));
@@ -172,7 +184,7 @@ mod tests {
         assert_eq!(p.cut_widths.len(), 12);
         let cyl = CornerRule::Cylindrical { r: 0.1 };
         assert!(
-            cyl.prepare(&m, &attrs, Some(&state), 1e-6, None)
+            cyl.prepare(&m, &attrs, Some(&state), &StepOptions::default(), None)
                 .unwrap()
                 .combination
                 .is_none()

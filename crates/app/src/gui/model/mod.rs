@@ -137,6 +137,8 @@ pub struct ModelTab {
     /// The scheme Step >> appends.
     pub next: Scheme,
     pub budget_mib: u64,
+    /// Clamp radii whose rounds do not fit their faces (on by default; off: refuse them).
+    pub clamp: bool,
     /// A step stopped at the budget: (view, estimate) waiting for the user's answer.
     pub question: Option<(usize, prism_geom::error::OverBudget)>,
     drag: Option<VertexDrag>,
@@ -172,6 +174,7 @@ impl ModelTab {
             axis: None,
             next,
             budget_mib: budget_mib.max(64),
+            clamp: true,
             question: None,
             drag: None,
             drags: 0,
@@ -230,6 +233,7 @@ impl ModelTab {
                 // The input alone on screen until the job brings the levels.
                 let next = fresh();
                 let mut v = ViewPipe::new(next.rebased(Vec::new()));
+                v.overlap = self.overlap();
                 v.level = steps.len();
                 v.scene_opts = self.display.scene_options();
                 v.submit(next, budget, live, &self.waker);
@@ -240,10 +244,11 @@ impl ModelTab {
             let input = v.pipeline.input();
             let same_input =
                 input.mesh == d.mesh && input.edge_attrs == d.edge_attrs && input.tags == d.tags;
-            if same_input && v.pipeline.steps() == steps.as_slice() && !v.busy() {
+            let same_options = v.pipeline.options.overlap == v.overlap;
+            if same_input && same_options && v.pipeline.steps() == steps.as_slice() && !v.busy() {
                 continue;
             }
-            let next = if same_input {
+            let next = if same_input && same_options {
                 v.pipeline.rebased(steps.clone())
             } else {
                 fresh()
@@ -461,6 +466,25 @@ impl ModelTab {
                 }
             });
         });
+    }
+
+    /// What the views do with radii that do not fit ([`ModelTab::clamp`]).
+    pub fn overlap(&self) -> prism_geom::rules::Overlap {
+        if self.clamp {
+            prism_geom::rules::Overlap::Clamp
+        } else {
+            prism_geom::rules::Overlap::Refuse
+        }
+    }
+
+    /// Turns clamping on or off: every view computes its levels again.
+    pub fn set_clamp(&mut self, on: bool) {
+        self.clamp = on;
+        let overlap = self.overlap();
+        for v in &mut self.views {
+            v.overlap = overlap;
+        }
+        self.synced = None;
     }
 
     /// The answer "compute anyway" to the budget question.

@@ -128,6 +128,17 @@ impl ModelTab {
                 }
             });
         }
+        let mut clamp = self.clamp;
+        if ui
+            .checkbox(&mut clamp, "Clamp overlapping radii")
+            .on_hover_text(
+                "Lower the radius of edges whose rounds do not fit their faces to what fits \
+                 (listed in the status bar); off: such a step is refused, naming the edges",
+            )
+            .changed()
+        {
+            self.set_clamp(clamp);
+        }
         ui.horizontal(|ui| {
             ui.label("memory budget");
             ui.add(
@@ -353,6 +364,13 @@ impl ModelTab {
             text += &format!(", {:.2} ms", r.millis);
             if !r.flipped.is_empty() {
                 text += &format!(" — warning: {} flipped face(s)", r.flipped.len());
+            }
+            if !r.clamped.is_empty() {
+                text += &format!(
+                    " — {} radius(es) clamped: {}",
+                    r.clamped.len(),
+                    prism_geom::rules::overlap::list(&r.clamped)
+                );
             }
             if !r.degenerate.is_empty() {
                 text += &format!(" — warning: {} degenerate face(s)", r.degenerate.len());

@@ -8,6 +8,7 @@ use super::worker::{Finished, Job, over_budget};
 use prism_geom::ancestry::edge_origins;
 use prism_geom::error::OverBudget;
 use prism_geom::refine::FaceKind;
+use prism_geom::rules::Overlap;
 use prism_geom::{EdgeKey, Level, LimitPoints, Pipeline, Scheme};
 use prism_viewport::scene::scheme_color;
 use prism_viewport::{ColorBy, Scene, SceneOptions};
@@ -82,6 +83,10 @@ pub struct ViewPipe {
     pub error: Option<String>,
     /// Budget for the next job when the user allowed more than the default.
     pub budget_override: Option<u64>,
+    /// What the cylindrical-family steps do with radii that do not fit their faces: the
+    /// app clamps by default (as Blender's bevel does), the checkbox in the step panel
+    /// turns it off.
+    pub overlap: Overlap,
     pub scene: Arc<Scene>,
     /// What the scene on screen was made from.
     scene_key: Option<SceneKey>,
@@ -115,6 +120,7 @@ impl ViewPipe {
             wanted: None,
             error: None,
             budget_override: None,
+            overlap: Overlap::Clamp,
             scene: Arc::new(Scene::default()),
             scene_key: None,
             overlay: Arc::new(Scene::default()),
@@ -148,6 +154,7 @@ impl ViewPipe {
     /// cancel it. A pipeline with nothing to compute replaces the current one at once.
     pub fn submit(&mut self, mut next: Pipeline, budget: u64, live: bool, wake: &Waker) {
         next.options.memory_budget = self.budget_override.unwrap_or(budget);
+        next.options.overlap = self.overlap;
         if next.is_complete() && self.job.is_none() {
             self.replace(next);
             self.error = None;

@@ -1,0 +1,206 @@
+//! Rounds that do not fit their faces (docs/algorithms/cylindrical.md, "Overlap"), and the
+//! largest widths that do.
+//!
+//! Every face of a cylindrical-family step is cut by lines parallel to its edges, edge `E`'s
+//! line at its width `w_E` inside the face. The new corner point at vertex V (eq. 4 in
+//! Prism's split form, [`super::cylindrical`]) lies along the edge `E₁ = V→V₊` at
+//!
+//! `a₁ = (m₂·u₁)(w₂ − c·w₁)/(1 − c²)`
+//!
+//! from V, and along `E₂ = V→V₋` at `a₂ = (m₁·u₂)(w₁ − c·w₂)/(1 − c²)` (notation of
+//! [`super`]; `m₂·u₁ = m₁·u₂ = sin φ` on a planar face, so `a₁ = (w₂ + w₁cos φ)/sin φ`).
+//! An edge of length L keeps its direction in the new face only while the two points on it
+//! stay in order: `a₁(V) + a₂(V₊) ≤ L`. When that fails the rounds of the neighbouring
+//! edges overlap across the face (the straight skeleton's *edge event*): the new face folds.
+//!
+//! Both sides are linear in the widths, so the largest factor by which the widths of one
+//! constraint's edges may be scaled is exact: with P the sum of the positive terms and N
+//! of the negative ones, scaling the positive ones by `(L − N)/P` makes the sum L. Each
+//! edge takes the least factor of its constraints; one pass can break a constraint in which
+//! an edge counts negatively (an obtuse or reflex corner), so the passes repeat until none
+//! is broken.
+//!
+//! The pipeline uses this twice (docs/algorithms/cylindrical.md): before the first step of
+//! a cylindrical-family run with the *limit* widths — the tangent lengths `r·tan(|ψ|/2)` at
+//! which the finished fillet meets its faces — to refuse or clamp radii that do not fit the
+//! solid; and at every combination step with that step's cut widths, which keeps the deep
+//! levels from folding where fillets of different radii meet.
+
+use super::{RuleInput, corner_frame};
+
+/// What a step does with radii whose rounds do not fit their faces.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Overlap {
+    /// Refuse the step, naming the edges and the largest radius that fits each.
+    #[default]
+    Refuse,
+    /// Lower the radius of exactly those edges to what fits (as an own radius, so the
+    /// steps after keep it) and list them in the report.
+    Clamp,
+    /// Do not check: the radii were checked when the run of cylindrical-family steps began
+    /// (the pipeline sets this on the steps that continue a run).
+    Unchecked,
+}
+
+/// An edge whose round does not fit: its radius and the largest that fits.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct EdgeFit {
+    pub a: u32,
+    pub b: u32,
+    pub radius: f64,
+    pub fits: f64,
+}
+
+impl std::fmt::Display for EdgeFit {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(
+            f,
+            "edge {}-{} (r = {} fits up to {:.4})",
+            self.a, self.b, self.radius, self.fits
+        )
+    }
+}
+
+/// `fits` as a short list for an error or a warning: the first five, then how many more.
+pub fn list(fits: &[EdgeFit]) -> String {
+    let mut s: Vec<String> = fits.iter().take(5).map(|e| e.to_string()).collect();
+    if fits.len() > 5 {
+        s.push(format!("and {} more", fits.len() - 5));
+    }
+    s.join(", ")
+}
+
+/// Straight-corner threshold on 1 − c, as the simple type's (there the along-edge term is
+/// capped by the rule, and only the mean width counts here).
+const STRAIGHT_CORNER: f64 = 1e-12;
+
+/// A constraint is broken when its sum exceeds L by more than this fraction of L.
+const SLACK: f64 = 1e-9;
+
+/// How many times the passes repeat at most (each one only lowers factors).
+const PASSES: usize = 64;
+
+/// Along-edge extents of the new point at a corner as coefficients of the widths:
+/// `[[a₁ per w₁, a₁ per w₂], [a₂ per w₁, a₂ per w₂]]`, or `None` where the corner has no
+/// frame (a zero-length edge or a face without area: the rule reports those).
+fn extents(input: &RuleInput, c: usize) -> Option<[[f64; 2]; 2]> {
+    let fr = corner_frame(input, c).ok()?;
+    let (s1, s2) = (fr.m2.dot(fr.u1), fr.m1.dot(fr.u2));
+    if 1.0 - fr.c < STRAIGHT_CORNER {
+        let h1 = 0.5 * s1 / (1.0 + fr.c);
+        let h2 = 0.5 * s2 / (1.0 + fr.c);
+        return Some([[h1, h1], [h2, h2]]);
+    }
+    let d = (1.0 - fr.c * fr.c).max(f64::MIN_POSITIVE);
+    Some([[-fr.c * s1 / d, s1 / d], [s2 / d, -fr.c * s2 / d]])
+}
+
+/// The largest factor `s_E ∈ [0, 1]` per edge such that the widths `s_E·widths[E]` fit
+/// every face not marked in `skip` (faces the rule does not cut, such as the combination
+/// rule's Doo–Sabin faces), each edge of length L keeping at least `(1 − room)·L`.
+/// `input.cut_widths` is not read.
+pub fn fitting_scales(input: &RuleInput, widths: &[f64], skip: &[bool], room: f64) -> Vec<f64> {
+    let (m, t) = (input.mesh, input.topo);
+    let mut scale = vec![1.0f64; widths.len()];
+    // One constraint per face corner: its edge E₁ = c→next(c), with the coefficients of
+    // the widths of E₂(c), E₁ and E₁(next(c)).
+    let mut constraints: Vec<([usize; 3], [f64; 3], f64)> = Vec::new();
+    for f in 0..m.num_faces() {
+        if skip.get(f).copied().unwrap_or(false) {
+            continue;
+        }
+        for c in m.face_corners(f) {
+            let n = t.next[c] as usize;
+            let (Some(kc), Some(kn)) = (extents(input, c), extents(input, n)) else {
+                continue;
+            };
+            let len = (m.positions[m.corner_verts[n] as usize]
+                - m.positions[m.corner_verts[c] as usize])
+                .length();
+            let edges = [
+                t.corner_edge[t.prev[c] as usize] as usize,
+                t.corner_edge[c] as usize,
+                t.corner_edge[n] as usize,
+            ];
+            // a₁(c) = kc[0][0]·w(E₁) + kc[0][1]·w(E₂(c)); a₂(n) = kn[1][0]·w(E₁(n)) + kn[1][1]·w(E₁).
+            let coef = [kc[0][1], kc[0][0] + kn[1][1], kn[1][0]];
+            constraints.push((edges, coef, room * len));
+        }
+    }
+    for _ in 0..PASSES {
+        let mut changed = false;
+        for (edges, coef, len) in &constraints {
+            let terms = [0, 1, 2].map(|i| coef[i] * widths[edges[i]] * scale[edges[i]]);
+            let sum: f64 = terms.iter().sum();
+            if sum <= len * (1.0 + SLACK) {
+                continue;
+            }
+            let pos: f64 = terms.iter().filter(|&&x| x > 0.0).sum();
+            let neg: f64 = terms.iter().filter(|&&x| x < 0.0).sum();
+            let k = ((len - neg) / pos).clamp(0.0, 1.0);
+            for i in 0..3 {
+                if terms[i] > 0.0 {
+                    scale[edges[i]] *= k;
+                    changed = true;
+                }
+            }
+        }
+        if !changed {
+            break;
+        }
+    }
+    scale
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::primitives;
+    use crate::topology::Topology;
+    use glam::DVec3;
+
+    fn scales_on(m: &crate::PolyMesh, widths: impl Fn(f64) -> f64) -> (Topology, Vec<f64>) {
+        let topo = Topology::build(m).unwrap();
+        let normals = crate::geometry::face_normals_raw(m)
+            .into_iter()
+            .map(crate::geometry::unit_or_zero)
+            .collect::<Vec<_>>();
+        let w: Vec<f64> = (0..topo.num_edges())
+            .map(|e| {
+                let (a, b) = topo.edge_verts(m, e);
+                widths((m.positions[a as usize] - m.positions[b as usize]).length())
+            })
+            .collect();
+        let input = RuleInput {
+            mesh: m,
+            topo: &topo,
+            normals: &normals,
+            cut_widths: &[],
+            vertex_neighbourhood: &[],
+        };
+        let s = fitting_scales(&input, &w, &[], 1.0);
+        (topo, s)
+    }
+
+    /// A 4 × 2 × 0.3 slab with width 0.2 on every edge: the side faces are 0.3 high, so the
+    /// eight edges along the top and bottom must go to 0.15 (the rounds meet), and the four
+    /// short vertical edges, whose neighbours fit in 4 and 2, keep theirs.
+    #[test]
+    fn a_thin_slab_halves_its_long_edges_and_nothing_else() {
+        let m = primitives::cuboid(DVec3::ZERO, DVec3::new(4.0, 2.0, 0.3));
+        let (topo, s) = scales_on(&m, |_| 0.2);
+        for (e, &k) in s.iter().enumerate() {
+            let (a, b) = topo.edge_verts(&m, e);
+            let d = m.positions[a as usize] - m.positions[b as usize];
+            let want = if d.z.abs() > 0.0 { 1.0 } else { 0.75 };
+            assert!((k - want).abs() < 1e-12, "edge {a}-{b}: {k}, want {want}");
+        }
+    }
+
+    /// Widths that fit leave every factor at 1.
+    #[test]
+    fn fitting_widths_are_left_alone() {
+        let (_, s) = scales_on(&primitives::l_block(), |_| 0.1);
+        assert!(s.iter().all(|&k| k == 1.0));
+    }
+}

@@ -1,0 +1,149 @@
+//! Rounds that do not fit their faces: refused by default naming the edges and the radius
+//! that fits, clamped on request to a sound solid (docs/algorithms/cylindrical.md, "Overlap").
+
+use prism_geom::rules::{EdgeFit, Overlap, RuleError};
+use prism_geom::{
+    CornerRule, EdgeAttr, EdgeAttrs, EdgeKey, Pipeline, PipelineError, PolyMesh, Scheme, StepError,
+    StepOptions, io, primitives,
+};
+use std::path::Path;
+
+fn computer_room() -> PolyMesh {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../assets/computer-room.obj");
+    io::load(&path).unwrap().0.mesh
+}
+
+fn combination(n: usize, r: f64) -> Vec<Scheme> {
+    vec![Scheme::Biquadratic(CornerRule::Combination { r }); n]
+}
+
+fn run(m: PolyMesh, attrs: EdgeAttrs, steps: Vec<Scheme>, overlap: Overlap) -> Pipeline {
+    let mut p = Pipeline::new(m, attrs, steps);
+    p.options = StepOptions {
+        overlap,
+        ..StepOptions::default()
+    };
+    let _ = p.compute();
+    p
+}
+
+fn refused(p: &Pipeline) -> Vec<EdgeFit> {
+    let n = p.steps().len();
+    match Pipeline::clone(p).compute_with(n, |_, _| {}) {
+        Err(PipelineError {
+            step: 1,
+            source: StepError::Rule(RuleError::Overlap { edges }),
+            ..
+        }) => edges,
+        other => panic!(
+            "not refused for overlap: {:?}",
+            other.map(|l| l.mesh.num_faces())
+        ),
+    }
+}
+
+/// The bundled Computer room at the app's default (combination, r = 0.2): the keyboard and
+/// the monitor stand are 0.3 thick, so the 16 edges along them fit r = 0.15 (the rounds
+/// meet) and the step is refused, naming them; clamped, five levels have no flipped face.
+#[test]
+fn the_computer_room_is_refused_then_clamped_to_a_sound_solid() {
+    let p = run(
+        computer_room(),
+        EdgeAttrs::new(),
+        combination(1, 0.2),
+        Overlap::Refuse,
+    );
+    assert_eq!(p.levels().len(), 1);
+    let edges = refused(&p);
+    assert_eq!(edges.len(), 16);
+    for e in &edges {
+        assert_eq!(e.radius, 0.2);
+        assert!((e.fits - 0.15).abs() < 1e-12, "{e}");
+    }
+    let p = run(
+        computer_room(),
+        EdgeAttrs::new(),
+        combination(4, 0.2),
+        Overlap::Clamp,
+    );
+    assert_eq!(p.levels().len(), 5);
+    let first = p.levels()[1].report.as_ref().unwrap();
+    assert_eq!(first.clamped, edges);
+    for (k, lv) in p.levels().iter().enumerate().skip(1) {
+        let r = lv.report.as_ref().unwrap();
+        assert!(
+            r.flipped.is_empty(),
+            "level {k}: {} flipped",
+            r.flipped.len()
+        );
+        assert!(r.volume > 0.0);
+    }
+}
+
+/// Radii larger than the tripod's unit-wide arms allow are refused, each named edge with a
+/// radius below the one asked; across an arm, 0.5 (a half-round).
+#[test]
+fn radii_too_large_for_the_tripod_are_named() {
+    for r in [0.8, 1.2, 5.0] {
+        let p = run(
+            primitives::tripod(),
+            EdgeAttrs::new(),
+            combination(1, r),
+            Overlap::Refuse,
+        );
+        let edges = refused(&p);
+        assert!(!edges.is_empty());
+        assert!(edges.iter().all(|e| e.fits < r), "r = {r}");
+        if r < 5.0 {
+            assert!(
+                edges.iter().any(|e| (e.fits - 0.5).abs() < 1e-12),
+                "r = {r}"
+            );
+        }
+    }
+}
+
+/// A cylindrical step, then four combination steps: the run is checked once, each
+/// combination step keeps its cut faces' edges, and the solid stays outside out with no
+/// flipped face (it ended inside out before).
+#[test]
+fn cylindrical_then_combination_stays_sound() {
+    let mut steps = vec![Scheme::Biquadratic(CornerRule::Cylindrical { r: 0.2 })];
+    steps.extend(combination(4, 0.2));
+    let p = run(
+        primitives::tripod(),
+        EdgeAttrs::new(),
+        steps,
+        Overlap::Refuse,
+    );
+    assert_eq!(p.levels().len(), 6);
+    for lv in &p.levels()[1..] {
+        let r = lv.report.as_ref().unwrap();
+        assert!(r.flipped.is_empty() && r.volume > 0.0);
+    }
+}
+
+/// An own radius of 0.45 on the tripod's outer vertical edge 0-9 with r = 0.2 elsewhere:
+/// before the combination step fitted its cut widths, a face folded at level 7 and
+/// vertices reached x, y ≈ 19.9; now six levels have no flipped face and stay in the box.
+#[test]
+fn an_own_radius_stays_inside_the_cage() {
+    let mut attrs = EdgeAttrs::new();
+    attrs.insert(EdgeKey::new(0, 9), EdgeAttr::rounded(0.45));
+    let p = run(
+        primitives::tripod(),
+        attrs,
+        combination(6, 0.2),
+        Overlap::Refuse,
+    );
+    assert_eq!(p.levels().len(), 7);
+    for lv in &p.levels()[1..] {
+        assert!(lv.report.as_ref().unwrap().flipped.is_empty());
+        for q in &lv.mesh.positions {
+            assert!(
+                q.min_element() >= -1e-9 && q.max_element() <= 3.0 + 1e-9,
+                "{q}"
+            );
+        }
+    }
+}
