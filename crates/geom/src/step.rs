@@ -141,7 +141,6 @@ pub fn biquadratic_step_carrying(
     )?;
     let (points, rule_report) = rules::corner_points(rule, &prep.input())?;
     let (out, prov) = dual_quad::split(cur, topo, points);
-    let checked = check_children(cur, topo, &prep.normals, &out, &prov);
     let new_attrs = refine::propagate(
         cur,
         topo,
@@ -151,6 +150,7 @@ pub fn biquadratic_step_carrying(
     );
     let combination = matches!(rule, CornerRule::Combination { .. })
         .then(|| CombinationState::next(cur, topo, &prov, prep.combination.as_deref()));
+    let checked = check_children(cur, topo, &prep.normals, &out, &prov);
     let report = StepReport {
         vertices: out.num_vertices(),
         edges: 4 * topo.num_edges(),

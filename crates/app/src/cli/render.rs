@@ -73,24 +73,16 @@ pub fn run(a: RenderArgs) -> Result<(), CliError> {
     let steps = steps_from(&a.steps, doc.pipeline.as_deref(), true)?;
     let mut pipeline = Pipeline::with_tags(doc.mesh, doc.edge_attrs, doc.tags, steps);
     pipeline.options = a.steps.options();
-    let mut volume = prism_geom::geometry::signed_volume(&pipeline.levels()[0].mesh);
-    let mut failed = None;
+    let mut warnings = super::subdivide::LevelWarnings::new(&pipeline.levels()[0].mesh);
     let n = pipeline.steps().len();
     let last = pipeline
         .compute_with(n, |k, level| {
-            let r = level
-                .report
-                .as_ref()
-                .expect("computed levels have a report");
-            if failed.is_none() {
-                failed = super::subdivide::warn_level(k, r, &mut volume);
-            }
+            let r = level.report.as_ref();
+            warnings.level(k, r.expect("computed levels have a report"));
         })
         .map_err(CliError::input)?
         .clone();
-    if let Some(e) = failed {
-        return Err(e);
-    }
+    warnings.finish()?;
     let levels = pipeline.levels();
     let prev = (levels.len() > 1).then(|| &levels[levels.len() - 2].mesh);
     let opts = SceneOptions {

@@ -51,11 +51,7 @@ impl StepArgs {
     /// The step options these arguments ask for.
     pub fn options(&self) -> prism_geom::StepOptions {
         prism_geom::StepOptions {
-            overlap: if self.clamp {
-                prism_geom::rules::Overlap::Clamp
-            } else {
-                prism_geom::rules::Overlap::Refuse
-            },
+            overlap: prism_geom::rules::Overlap::clamping(self.clamp),
             ..Default::default()
         }
     }
@@ -138,10 +134,40 @@ fn scheme_from_flags(name: &str, a: &StepArgs) -> Result<Scheme, CliError> {
     kind.scheme(param, reflex).map_err(CliError::usage)
 }
 
-/// Prints one level's warnings in words, and returns the error that fails the step when
-/// the solid has turned inside out (README: a failing step exits 1). `volume` is the
-/// level before's signed volume, replaced by this one's.
-pub fn warn_level(k: usize, r: &StepReport, volume: &mut f64) -> Option<CliError> {
+/// What `subdivide` and `render` say of every level: its warnings in words, and the
+/// failure of the step that turns the solid inside out (README: a failing step exits 1).
+pub struct LevelWarnings {
+    /// The signed volume of the level before.
+    volume: f64,
+    failed: Option<CliError>,
+}
+
+impl LevelWarnings {
+    pub fn new(input: &prism_geom::PolyMesh) -> LevelWarnings {
+        LevelWarnings {
+            volume: prism_geom::geometry::signed_volume(input),
+            failed: None,
+        }
+    }
+
+    /// Prints the warnings of level `k`, whose step reported `r`.
+    pub fn level(&mut self, k: usize, r: &StepReport) {
+        let before = std::mem::replace(&mut self.volume, r.volume);
+        let failed = warn_level(k, r, before);
+        if self.failed.is_none() {
+            self.failed = failed;
+        }
+    }
+
+    /// The failure of the first step that turned the solid inside out, if any.
+    pub fn finish(self) -> Result<(), CliError> {
+        self.failed.map_or(Ok(()), Err)
+    }
+}
+
+/// Prints one level's warnings; `before` is the signed volume of the level before. Returns
+/// the error when this step turned the solid inside out.
+fn warn_level(k: usize, r: &StepReport, before: f64) -> Option<CliError> {
     if !r.clamped.is_empty() {
         eprintln!(
             "note: level {k}: {} edge radius(es) clamped to fit their faces: {}",
@@ -187,13 +213,18 @@ pub fn warn_level(k: usize, r: &StepReport, volume: &mut f64) -> Option<CliError
             r.guarded_corners
         );
     }
-    let before = std::mem::replace(volume, r.volume);
     if before > 0.0
         && r.volume > 0.0
         && (r.volume / before > VOLUME_JUMP || before / r.volume > VOLUME_JUMP)
     {
         eprintln!(
             "warning: level {k}: the volume jumped from {before:.4e} to {:.4e} (the surface folds through itself)",
+            r.volume
+        );
+    }
+    if r.volume < 0.0 && before <= 0.0 {
+        eprintln!(
+            "warning: level {k}: the solid is inside out (signed volume {:.4e})",
             r.volume
         );
     }
@@ -249,11 +280,10 @@ pub fn run(a: SubdivideArgs) -> Result<(), CliError> {
         "level 0: {} vertices, {} edges, {} faces (input)",
         c0.vertices, c0.edges, c0.faces
     );
-    let mut previous_volume = prism_geom::geometry::signed_volume(&doc.mesh);
+    let mut warnings = LevelWarnings::new(&doc.mesh);
     let mut pipeline = Pipeline::with_tags(doc.mesh, doc.edge_attrs, doc.tags, steps.clone());
     pipeline.options = a.steps.options();
     let n = steps.len();
-    let mut failed = None;
     let result = pipeline.compute_with(n, |k, level| {
         let r = level
             .report
@@ -274,9 +304,7 @@ pub fn run(a: SubdivideArgs) -> Result<(), CliError> {
             r.millis,
             steps[k - 1]
         );
-        if failed.is_none() {
-            failed = warn_level(k, r, &mut previous_volume);
-        }
+        warnings.level(k, r);
     });
     if steps
         .iter()
@@ -287,9 +315,7 @@ pub fn run(a: SubdivideArgs) -> Result<(), CliError> {
         );
     }
     let last = result.map_err(CliError::input)?;
-    if let Some(e) = failed {
-        return Err(e);
-    }
+    warnings.finish()?;
     if io::ExportFormat::of(&a.output).is_some() {
         let holes = &last.tags.holes;
         io::export(&a.output, &last.mesh, &|f| holes.contains(&(f as u32)))

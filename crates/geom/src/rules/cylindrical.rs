@@ -23,7 +23,7 @@ use super::overlap::{EdgeFit, Overlap, fitting_scales};
 use super::prepare::Prepared;
 use super::{CornerRule, RuleError, RuleInput, RuleReport, corner_frame};
 use crate::dissolve::dissolve_flat_edges;
-use crate::edge_attrs::{EdgeAttr, EdgeAttrs, EdgeKey};
+use crate::edge_attrs::{EdgeAttrs, EdgeKey};
 use crate::geometry::signed_bend_angles;
 use crate::mesh::PolyMesh;
 use crate::step::{StepError, StepOptions};
@@ -137,7 +137,6 @@ pub(super) fn prepare<'a>(
             .collect();
         let scales = fitting_scales(&input, &tangents, skip, 1.0);
         let name = |v: u32| old_vertex.as_ref().map_or(v, |o: &Vec<u32>| o[v as usize]);
-        let mut lowered = Vec::new();
         for (e, &s) in scales.iter().enumerate() {
             if s < 1.0 {
                 let (a, b) = topo.edge_verts(&p_mesh, e);
@@ -147,24 +146,15 @@ pub(super) fn prepare<'a>(
                     radius: radii[e],
                     fits: radii[e] * s,
                 };
-                lowered.push((EdgeKey::new(a, b), fit.fits));
                 radii[e] = fit.fits;
                 clamped.push(fit);
+                // The lowered radius becomes the edge's own, so the levels after keep it.
+                let attr = p_attrs.to_mut().entry(EdgeKey::new(a, b)).or_default();
+                attr.radius = Some(fit.fits);
             }
         }
         if !clamped.is_empty() && options.overlap == Overlap::Refuse {
             return Err(RuleError::Overlap { edges: clamped }.into());
-        }
-        for (key, r) in lowered {
-            let attrs = p_attrs.to_mut();
-            let crease = attrs.get(&key).map_or(0.0, |a| a.crease);
-            attrs.insert(
-                key,
-                EdgeAttr {
-                    crease,
-                    radius: Some(r),
-                },
-            );
         }
     }
     let mut cut_widths: Vec<f64> = radii

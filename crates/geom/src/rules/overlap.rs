@@ -3,7 +3,7 @@
 //!
 //! Every face of a cylindrical-family step is cut by lines parallel to its edges, edge `E`'s
 //! line at its width `w_E` inside the face. The new corner point at vertex V (eq. 4 in
-//! Prism's split form, [`super::cylindrical`]) lies along the edge `E₁ = V→V₊` at
+//! Prism's split form, in `rules/cylindrical.rs`) lies along the edge `E₁ = V→V₊` at
 //!
 //! `a₁ = (m₂·u₁)(w₂ − c·w₁)/(1 − c²)`
 //!
@@ -49,6 +49,17 @@ pub struct EdgeFit {
     pub b: u32,
     pub radius: f64,
     pub fits: f64,
+}
+
+impl Overlap {
+    /// `Clamp` when `clamp`, else `Refuse` (the CLI's `--clamp`, the app's checkbox).
+    pub fn clamping(clamp: bool) -> Overlap {
+        if clamp {
+            Overlap::Clamp
+        } else {
+            Overlap::Refuse
+        }
+    }
 }
 
 impl std::fmt::Display for EdgeFit {
@@ -102,30 +113,35 @@ fn extents(input: &RuleInput, c: usize) -> Option<[[f64; 2]; 2]> {
 pub fn fitting_scales(input: &RuleInput, widths: &[f64], skip: &[bool], room: f64) -> Vec<f64> {
     let (m, t) = (input.mesh, input.topo);
     let mut scale = vec![1.0f64; widths.len()];
+    let cut = |c: usize| {
+        !skip
+            .get(t.corner_face[c] as usize)
+            .copied()
+            .unwrap_or(false)
+    };
+    // Each corner's frame once: a constraint reads its own corner and the next.
+    let ext: Vec<Option<[[f64; 2]; 2]>> = (0..m.num_corners())
+        .map(|c| if cut(c) { extents(input, c) } else { None })
+        .collect();
     // One constraint per face corner: its edge E₁ = c→next(c), with the coefficients of
     // the widths of E₂(c), E₁ and E₁(next(c)).
     let mut constraints: Vec<([usize; 3], [f64; 3], f64)> = Vec::new();
-    for f in 0..m.num_faces() {
-        if skip.get(f).copied().unwrap_or(false) {
+    for c in 0..m.num_corners() {
+        let n = t.next[c] as usize;
+        let (Some(kc), Some(kn)) = (ext[c], ext[n]) else {
             continue;
-        }
-        for c in m.face_corners(f) {
-            let n = t.next[c] as usize;
-            let (Some(kc), Some(kn)) = (extents(input, c), extents(input, n)) else {
-                continue;
-            };
-            let len = (m.positions[m.corner_verts[n] as usize]
-                - m.positions[m.corner_verts[c] as usize])
-                .length();
-            let edges = [
-                t.corner_edge[t.prev[c] as usize] as usize,
-                t.corner_edge[c] as usize,
-                t.corner_edge[n] as usize,
-            ];
-            // a₁(c) = kc[0][0]·w(E₁) + kc[0][1]·w(E₂(c)); a₂(n) = kn[1][0]·w(E₁(n)) + kn[1][1]·w(E₁).
-            let coef = [kc[0][1], kc[0][0] + kn[1][1], kn[1][0]];
-            constraints.push((edges, coef, room * len));
-        }
+        };
+        let len = (m.positions[m.corner_verts[n] as usize]
+            - m.positions[m.corner_verts[c] as usize])
+            .length();
+        let edges = [
+            t.corner_edge[t.prev[c] as usize] as usize,
+            t.corner_edge[c] as usize,
+            t.corner_edge[n] as usize,
+        ];
+        // a₁(c) = kc[0][0]·w(E₁) + kc[0][1]·w(E₂(c)); a₂(n) = kn[1][0]·w(E₁(n)) + kn[1][1]·w(E₁).
+        let coef = [kc[0][1], kc[0][0] + kn[1][1], kn[1][0]];
+        constraints.push((edges, coef, room * len));
     }
     for _ in 0..PASSES {
         let mut changed = false;

@@ -96,8 +96,9 @@ impl CornerRule {
     /// Prepares `mesh` (checked closed) for this rule. `state` is the combination state of
     /// `mesh` when the step before was a combination step; only the combination rule reads
     /// it. `options` give the bend angle below which the cylindrical family merges an edge's
-    /// faces and what it does with radii that do not fit ([`super::Overlap`]). `known` is `mesh`'s topology when the split that made it wrote
-    /// it down ([`crate::refine::dual_quad::topology`]); else it is built and checked.
+    /// faces and what it does with radii that do not fit ([`super::Overlap`]). `known` is
+    /// `mesh`'s topology when the split that made it wrote it down
+    /// ([`crate::refine::dual_quad::topology`]); else it is built and checked.
     pub fn prepare<'a>(
         &self,
         mesh: &'a PolyMesh,

@@ -470,11 +470,7 @@ impl ModelTab {
 
     /// What the views do with radii that do not fit ([`ModelTab::clamp`]).
     pub fn overlap(&self) -> prism_geom::rules::Overlap {
-        if self.clamp {
-            prism_geom::rules::Overlap::Clamp
-        } else {
-            prism_geom::rules::Overlap::Refuse
-        }
+        prism_geom::rules::Overlap::clamping(self.clamp)
     }
 
     /// Turns clamping on or off: every view computes its levels again.
