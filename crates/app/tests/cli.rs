@@ -479,3 +479,83 @@ fn schemes_lists_the_catalogue_and_unused_parameters_are_refused() {
         assert!(se.contains(want), "{all:?}: {se}");
     }
 }
+
+/// Pixels of the flipped faces' red in a picture.
+fn red_pixels(path: &Path) -> usize {
+    let img = image::open(path).unwrap().to_rgb8();
+    img.pixels()
+        .filter(|p| p[0] > 170 && p[1] < 90 && p[2] < 90)
+        .count()
+}
+
+/// Seed 000 fig. 10 headless: the simple type's flipped faces at a cube corner, drawn in
+/// red by `--color-by flipped` from a camera framed on that corner; none without it.
+#[test]
+fn render_shows_flipped_faces_close_up() {
+    let out = tmp("cube-flipped.png");
+    let line = "render assets/cube.obj -o {} --scheme cylindrical --radius 0.45 --levels 4 --frame-vertex 0 --fov 8 --size 300x200";
+    let (so, se) = succeeds(run_with(&format!("{line} --color-by flipped"), &[&out]));
+    assert!(so.contains("48 flipped face(s) drawn in red"), "{so}");
+    assert!(se.contains("level 4: 48 face(s) flipped"), "{se}");
+    let red = red_pixels(&out);
+    assert!(red > 80, "{red} red pixels");
+    succeeds(run_with(line, &[&out]));
+    assert_eq!(red_pixels(&out), 0);
+    // The whole cube from the default view: the same faces are a few pixels.
+    succeeds(run_with(
+        "render assets/cube.obj -o {} --scheme cylindrical --radius 0.45 --levels 4 --size 300x200 --color-by flipped",
+        &[&out],
+    ));
+    let far = red_pixels(&out);
+    assert!(far < red / 4, "{far} red pixels far, {red} close");
+    let o = run_with("render assets/cube.obj -o {} --frame-vertex 8", &[&out]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(text(&o).1.contains("0 to 7"), "{:?}", text(&o));
+}
+
+/// A free camera: `--eye`/`--target` in the model's coordinates agree with the named view
+/// they reproduce; a turntable writes its frames, each a different picture.
+#[test]
+fn render_free_camera_and_turntable() {
+    let (a, b) = (tmp("front.png"), tmp("eye.png"));
+    succeeds(run_with(
+        "render assets/tripod.obj -o {} --size 160x120 --view front",
+        &[&a],
+    ));
+    // Front looks along +y at the centre (1.5, 1.5, 1.5) from 1.05·r/sin(17.5°) away.
+    let r = 0.5 * 27f64.sqrt();
+    let d = 1.05 * r / 17.5f64.to_radians().sin();
+    let eye = format!("1.5,{},1.5", 1.5 - d);
+    succeeds(run_with(
+        &format!(
+            "render assets/tripod.obj -o {{}} --size 160x120 --eye {eye} --target 1.5,1.5,1.5"
+        ),
+        &[&b],
+    ));
+    let (ia, ib) = (image::open(&a).unwrap(), image::open(&b).unwrap());
+    let differ = ia
+        .to_rgb8()
+        .pixels()
+        .zip(ib.to_rgb8().pixels())
+        .filter(|(p, q)| (0..3).any(|k| p[k].abs_diff(q[k]) > 8))
+        .count();
+    assert!(differ < 160 * 120 / 100, "{differ} pixels differ");
+    let o = run_with(
+        "render assets/tripod.obj -o {} --eye 1,1,1 --target 1,1,1",
+        &[&a],
+    );
+    assert_eq!(o.status.code(), Some(2));
+    let o = run_with("render assets/tripod.obj -o {} --eye 1,x,1", &[&a]);
+    assert_eq!(o.status.code(), Some(2));
+
+    let turn = tmp("turn.png");
+    let (so, _) = succeeds(run_with(
+        "render assets/tripod.obj -o {} --size 120x90 --frames 3",
+        &[&turn],
+    ));
+    assert!(so.contains("3 frames"), "{so}");
+    let frames: Vec<_> = (0..3)
+        .map(|i| std::fs::read(turn.with_file_name(format!("turn-00{i}.png"))).unwrap())
+        .collect();
+    assert!(frames[0] != frames[1] && frames[1] != frames[2]);
+}

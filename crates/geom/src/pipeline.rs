@@ -108,7 +108,10 @@ impl Pipeline {
     }
 
     /// Computes levels up to `upto` (at most the number of steps), calling `each` after every
-    /// new level. Levels already computed are kept.
+    /// new level. Levels already computed are kept. A step that turns a solid of positive
+    /// volume inside out fails ([`StepError::InsideOut`]) after its level has been kept, so
+    /// that the failure can be looked at (its flipped faces); the steps after it are not
+    /// computed.
     pub fn compute_with(
         &mut self,
         upto: usize,
@@ -119,6 +122,8 @@ impl Pipeline {
         let mut carried = None;
         while self.levels.len() <= upto {
             let k = self.levels.len() - 1;
+            // A level kept after its step failed is not stepped from.
+            self.check_inside_out(k)?;
             let scheme = self.steps[k];
             let prev = &self.levels[k];
             let err = |source: StepError| PipelineError {
@@ -196,8 +201,35 @@ impl Pipeline {
             };
             self.levels.push(level);
             each(k + 1, self.levels.last().expect("just pushed"));
+            self.check_inside_out(k + 1)?;
         }
         Ok(&self.levels[upto])
+    }
+
+    /// The failure of step `k` when it turned a solid of positive volume inside out.
+    fn check_inside_out(&self, k: usize) -> Result<(), PipelineError> {
+        let (Some(prev), Some(r)) = (
+            k.checked_sub(1).map(|j| &self.levels[j]),
+            self.levels[k].report.as_ref(),
+        ) else {
+            return Ok(());
+        };
+        let before = prev
+            .report
+            .as_ref()
+            .map_or_else(|| signed_volume(&prev.mesh), |p| p.volume);
+        if before > 0.0 && r.volume < 0.0 {
+            return Err(PipelineError {
+                step: k,
+                scheme: self.steps[k - 1].to_string(),
+                source: StepError::InsideOut {
+                    before,
+                    after: r.volume,
+                    flipped: r.flipped.len(),
+                },
+            });
+        }
+        Ok(())
     }
 
     /// Whether every step has its level.

@@ -63,6 +63,16 @@ pub enum StepError {
     Primal(#[from] crate::primal::PrimalError),
     #[error(transparent)]
     TooLarge(#[from] OverBudget),
+    /// The step turned a solid of positive volume inside out: its faces point inwards
+    /// (the pipeline keeps the level, so that it can be looked at, and stops there).
+    #[error(
+        "the solid has turned inside out (signed volume {before:.4e} before the step, {after:.4e} after): {flipped} face(s) flipped; lower the radius or parameter, or clamp"
+    )]
+    InsideOut {
+        before: f64,
+        after: f64,
+        flipped: usize,
+    },
 }
 
 /// What a step did, for the summary line, the status bar and the tests.

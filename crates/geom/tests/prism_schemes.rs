@@ -5,6 +5,7 @@ use prism_geom::analysis::{counts, measure_fillet};
 use prism_geom::geometry::signed_volume;
 use prism_geom::primitives;
 use prism_geom::scheme::parse_pipeline;
+use prism_geom::step::StepError;
 use prism_geom::{EdgeAttrs, Pipeline, PolyMesh, Topology};
 
 fn run(mesh: &PolyMesh, pipeline: &str) -> Pipeline {
@@ -132,7 +133,22 @@ fn combination_flips_nothing_on_the_tripod_and_fillets_both_edge_kinds() {
 #[test]
 fn cylindrical_is_within_0_2_percent_after_4_levels_then_breaks_down_visibly() {
     let cube = primitives::cube3();
-    let p = run(&cube, &repeat("cylindrical:r=0.45", 5));
+    let mut p = Pipeline::new(
+        cube.clone(),
+        EdgeAttrs::new(),
+        parse_pipeline(&repeat("cylindrical:r=0.45", 6)).unwrap(),
+    );
+    // Step 5 turns the solid inside out: a failed step, whose level is kept to be looked
+    // at, and nothing is computed after it, however often the pipeline is asked.
+    for _ in 0..2 {
+        let e = p.compute().unwrap_err();
+        assert_eq!(e.step, 5, "{e}");
+        assert!(
+            matches!(e.source, StepError::InsideOut { flipped, .. } if flipped > 0),
+            "{e}"
+        );
+        assert_eq!(p.levels().len(), 6);
+    }
     let m = measure_fillet(&cube, 0, 1, &p.levels()[4].mesh, 0.45).unwrap();
     assert!(m.max_radial_error < 2e-3, "{m:?}");
     // Fig. 10: flips near the original vertices from level 4; inside out at level 5.

@@ -54,6 +54,28 @@ impl Camera {
         c
     }
 
+    /// A camera at `eye` looking at `target` (both in the scene's coordinates) with a
+    /// vertical field of view `fov_y` (radians): the orbit's yaw, pitch and distance that
+    /// put the eye there (pitch kept inside ±89°, as orbiting does). `None` when the two
+    /// points coincide or are not finite.
+    pub fn from_eye(eye: Vec3, target: Vec3, fov_y: f32) -> Option<Camera> {
+        let d = eye - target;
+        let distance = d.length();
+        if !distance.is_finite() || distance < 1e-9 || !target.is_finite() {
+            return None;
+        }
+        let dir = d / distance;
+        let pitch = dir.z.clamp(-1.0, 1.0).asin().clamp(-1.553, 1.553);
+        let yaw = (-dir.x).atan2(-dir.y);
+        Some(Camera {
+            target,
+            distance,
+            yaw,
+            pitch,
+            fov_y,
+        })
+    }
+
     /// Fits a sphere of `radius` around `center` into the view (with a margin).
     pub fn frame(&mut self, center: Vec3, radius: f32) {
         self.target = center;
@@ -110,6 +132,21 @@ impl Camera {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_camera_from_its_eye_puts_the_eye_there() {
+        let t = Vec3::new(0.5, -1.0, 2.0);
+        for e in [
+            Vec3::new(4.0, 3.0, 5.0),
+            Vec3::new(-2.0, 0.5, 1.0),
+            Vec3::new(0.5, -6.0, 2.0),
+        ] {
+            let c = Camera::from_eye(e, t, 0.6).unwrap();
+            assert!((c.eye() - e).length() < 1e-4, "{e} -> {}", c.eye());
+            assert_eq!(c.target, t);
+        }
+        assert!(Camera::from_eye(t, t, 0.6).is_none());
+    }
 
     #[test]
     fn framing_keeps_the_sphere_inside_the_view() {

@@ -76,6 +76,8 @@ pub fn curvature_color(t: f64) -> [f32; 3] {
 pub const KIND_COLORS: [[f32; 3]; 3] = [[0.85, 0.62, 0.35], [0.35, 0.62, 0.85], [0.55, 0.80, 0.45]];
 /// The material colour.
 pub const BASE_COLOR: [f32; 3] = [0.72, 0.74, 0.80];
+/// Faces that point the wrong way (a step's flipped faces, seed 000 fig. 10).
+pub const FLIPPED_COLOR: [f32; 3] = [0.90, 0.12, 0.10];
 
 /// One vertex of the triangle buffer.
 #[repr(C)]
@@ -335,6 +337,21 @@ impl Scene {
             }
         }
         scene
+    }
+
+    /// Paints the faces `faces` of `mesh` (the mesh the scene was built from) in `color`,
+    /// whatever the colouring: flipped faces in red over any colour map. Face numbers
+    /// outside the mesh are ignored.
+    pub fn paint_faces(&mut self, mesh: &PolyMesh, faces: &[u32], color: [f32; 3]) {
+        for &f in faces {
+            if (f as usize) < mesh.num_faces() {
+                for c in mesh.face_corners(f as usize) {
+                    if let Some(v) = self.vertices.get_mut(c) {
+                        v.color = color;
+                    }
+                }
+            }
+        }
     }
 
     /// Adds the polygon edges of another mesh (e.g. the previous level as a ghost cage).

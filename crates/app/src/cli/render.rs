@@ -1,16 +1,27 @@
 //! `prism render IN -o OUT.png [--pipeline P | --scheme S --levels N ...] [--shading flat|smooth]
-//! [--wireframe] [--cage] [--color-by kind|uniform|curvature|scheme] [--size 1280x800] [--view iso|front|top]`:
-//! a headless picture with the viewport's renderer, on any adapter (Mesa's software Vulkan
-//! on a machine without a GPU).
+//! [--wireframe] [--cage] [--color-by uniform|kind|curvature|scheme|flipped] [--size 1280x800]
+//! [--view iso|front|top | --eye X,Y,Z --target X,Y,Z] [--fov DEG] [--frame-vertex N]
+//! [--frames N]`: a headless picture with the viewport's renderer, on any adapter (Mesa's
+//! software Vulkan on a machine without a GPU).
+//!
+//! The camera is a named view of the whole model, or a free one (`--eye`, `--target`, in
+//! the model's coordinates), or a close-up of input vertex N's neighbourhood
+//! (`--frame-vertex`: looking along the vertex's normal unless a view or an eye is given, a
+//! sphere of half its shortest edge around the final level's vertex nearest it).
+//! `--frames N` turns the camera once about the vertical through its target and writes
+//! N pictures `OUT-000.png`, `OUT-001.png`, …
 
 use super::CliError;
 use crate::cli::subdivide::steps_from;
 use clap::{Args, ValueEnum};
+use glam::DVec3;
+use prism_geom::geometry::{face_normals_raw, unit_or_zero};
 use prism_geom::io;
 use prism_geom::refine::FaceKind;
-use prism_geom::{Pipeline, Topology};
+use prism_geom::{Pipeline, PolyMesh, Topology};
+use prism_viewport::scene::FLIPPED_COLOR;
 use prism_viewport::{Camera, ColorBy, Offscreen, Scene, SceneOptions, Shading, View};
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 #[derive(Debug, Clone, Copy, ValueEnum)]
 pub enum ShadingArg {
@@ -24,10 +35,13 @@ pub enum ColorArg {
     Kind,
     Curvature,
     Scheme,
+    /// The material colour, with the last step's flipped faces in red.
+    Flipped,
 }
 
-#[derive(Debug, Clone, Copy, ValueEnum)]
+#[derive(Debug, Clone, Copy, Default, ValueEnum)]
 pub enum ViewArg {
+    #[default]
     Iso,
     Front,
     Top,
@@ -55,8 +69,166 @@ pub struct RenderArgs {
     /// Picture size WIDTHxHEIGHT.
     #[arg(long, default_value = "1280x800")]
     pub size: String,
-    #[arg(long, value_enum, default_value = "iso")]
-    pub view: ViewArg,
+    /// A named view of the whole model (iso unless a free camera is asked for).
+    #[arg(long, value_enum)]
+    pub view: Option<ViewArg>,
+    /// Where the eye is, X,Y,Z in the model's coordinates (with --target, or the model's
+    /// centre).
+    #[arg(long, conflicts_with = "view")]
+    pub eye: Option<String>,
+    /// The point looked at, X,Y,Z in the model's coordinates.
+    #[arg(long)]
+    pub target: Option<String>,
+    /// Vertical field of view in degrees (1 to 150); the camera is placed as for the default
+    /// 35°, so a smaller angle zooms in.
+    #[arg(long, default_value_t = 35.0)]
+    pub fov: f64,
+    /// Zoom on the neighbourhood of input vertex N (0-based, as in the file).
+    #[arg(long)]
+    pub frame_vertex: Option<u32>,
+    /// A turntable: N pictures, the camera turned 360°/N about the vertical each time,
+    /// written to OUT-000.png, OUT-001.png, ...
+    #[arg(long)]
+    pub frames: Option<u32>,
+}
+
+fn parse_point(flag: &str, s: &str) -> Result<DVec3, CliError> {
+    let v: Vec<f64> = s
+        .split(',')
+        .map(|x| x.trim().parse::<f64>())
+        .collect::<Result<_, _>>()
+        .map_err(|_| CliError::usage(format!("{flag} '{s}' is not X,Y,Z")))?;
+    match v[..] {
+        [x, y, z] if v.iter().all(|c| c.is_finite()) => Ok(DVec3::new(x, y, z)),
+        _ => Err(CliError::usage(format!(
+            "{flag} '{s}' is not three finite numbers X,Y,Z"
+        ))),
+    }
+}
+
+/// Input vertex `n`'s neighbourhood: its position, its normal (the sum of its faces'
+/// area-weighted normals) and its shortest edge.
+fn vertex_neighbourhood(mesh: &PolyMesh, n: u32) -> Result<(DVec3, DVec3, f64), CliError> {
+    let p = *mesh.positions.get(n as usize).ok_or_else(|| {
+        CliError::usage(format!(
+            "--frame-vertex {n}: the input has {} vertices (0 to {})",
+            mesh.num_vertices(),
+            mesh.num_vertices().saturating_sub(1)
+        ))
+    })?;
+    let raw = face_normals_raw(mesh);
+    let (mut normal, mut shortest) = (DVec3::ZERO, f64::INFINITY);
+    for (f, face_normal) in raw.iter().enumerate() {
+        let mut touches = false;
+        for l in mesh.face_loops(f) {
+            let vs = mesh.loop_verts(l);
+            for i in 0..vs.len() {
+                let (a, b) = (vs[i], vs[(i + 1) % vs.len()]);
+                if a == n || b == n {
+                    touches = true;
+                    let len = mesh.positions[a as usize].distance(mesh.positions[b as usize]);
+                    if len > 0.0 {
+                        shortest = shortest.min(len);
+                    }
+                }
+            }
+        }
+        if touches {
+            normal += *face_normal;
+        }
+    }
+    if !shortest.is_finite() {
+        return Err(CliError::input(format!(
+            "--frame-vertex {n}: vertex {n} is on no face of the input"
+        )));
+    }
+    Ok((p, unit_or_zero(normal), shortest))
+}
+
+/// The camera the flags ask for, in the scene's coordinates.
+fn camera(
+    a: &RenderArgs,
+    scene: &Scene,
+    input: &PolyMesh,
+    last: &PolyMesh,
+) -> Result<Camera, CliError> {
+    if !(1.0..=150.0).contains(&a.fov) {
+        return Err(CliError::usage(format!(
+            "--fov {} is out of range (1 to 150 degrees)",
+            a.fov
+        )));
+    }
+    let fov = (a.fov as f32).to_radians();
+    let named = |v: ViewArg| match v {
+        ViewArg::Iso => View::Iso,
+        ViewArg::Front => View::Front,
+        ViewArg::Top => View::Top,
+    };
+    let target = a
+        .target
+        .as_deref()
+        .map(|t| parse_point("--target", t))
+        .transpose()?;
+    let eye = a
+        .eye
+        .as_deref()
+        .map(|e| parse_point("--eye", e))
+        .transpose()?;
+    let mut cam = Camera::looking(named(a.view.unwrap_or_default()), glam::Vec3::ZERO, 1.0);
+    cam.fov_y = fov;
+    let (centre, radius, normal) = match a.frame_vertex {
+        Some(n) => {
+            let (p, normal, shortest) = vertex_neighbourhood(input, n)?;
+            // The final level's vertex nearest the input vertex: the rounded corner.
+            let near = last
+                .positions
+                .iter()
+                .copied()
+                .min_by(|x, y| x.distance_squared(p).total_cmp(&y.distance_squared(p)))
+                .unwrap_or(p);
+            (near, 0.5 * shortest, Some(normal))
+        }
+        None => (target.unwrap_or(scene.origin), scene.radius() as f64, None),
+    };
+    let centre = target.unwrap_or(centre);
+    if let Some(eye) = eye {
+        return Camera::from_eye(scene.to_local(eye), scene.to_local(centre), fov).ok_or_else(
+            || CliError::usage("--eye is the point looked at: the camera has no direction"),
+        );
+    }
+    if let (Some(n), None) = (normal, a.view)
+        && n != DVec3::ZERO
+    {
+        let local = scene.to_local(centre);
+        if let Some(c) = Camera::from_eye(local + n.as_vec3(), local, fov) {
+            cam = c;
+        }
+    }
+    // Framed with the default lens, then seen through the one asked for: a narrower field
+    // of view zooms in from the same place.
+    cam.fov_y = Camera::default().fov_y;
+    cam.frame(scene.to_local(centre), radius as f32);
+    cam.fov_y = fov;
+    Ok(cam)
+}
+
+/// `OUT-007.png` for frame 7 of a turntable written to `OUT.png`.
+fn frame_path(out: &Path, i: u32) -> PathBuf {
+    let stem = out.file_stem().map(|s| s.to_string_lossy().into_owned());
+    let ext = out.extension().map(|e| e.to_string_lossy().into_owned());
+    let name = format!(
+        "{}-{i:03}.{}",
+        stem.unwrap_or_else(|| "frame".into()),
+        ext.unwrap_or_else(|| "png".into())
+    );
+    out.with_file_name(name)
+}
+
+fn write_png(img: &image::RgbaImage, path: &Path) -> Result<(), CliError> {
+    let mut png = Vec::new();
+    img.write_to(&mut std::io::Cursor::new(&mut png), image::ImageFormat::Png)
+        .map_err(|e| CliError::input(format!("encoding the PNG: {e}")))?;
+    io::write_atomically(path, &png).map_err(CliError::input)
 }
 
 fn parse_size(s: &str) -> Option<(u32, u32)> {
@@ -67,10 +239,16 @@ fn parse_size(s: &str) -> Option<(u32, u32)> {
 pub fn run(a: RenderArgs) -> Result<(), CliError> {
     let (w, h) = parse_size(&a.size)
         .ok_or_else(|| CliError::usage(format!("--size '{}' is not WIDTHxHEIGHT", a.size)))?;
+    if a.frames == Some(0) {
+        return Err(CliError::usage(
+            "--frames 0: a turntable needs at least one frame",
+        ));
+    }
     let (doc, _) = io::load(&a.input).map_err(CliError::input)?;
     Topology::build(&doc.mesh)
         .map_err(|e| CliError::input(format!("{}: {e}", a.input.display())))?;
     let steps = steps_from(&a.steps, doc.pipeline.as_deref(), true)?;
+    let input = doc.mesh.clone();
     let mut pipeline = Pipeline::with_tags(doc.mesh, doc.edge_attrs, doc.tags, steps);
     pipeline.options = a.steps.options();
     let mut warnings = super::subdivide::LevelWarnings::new(&pipeline.levels()[0].mesh);
@@ -82,7 +260,6 @@ pub fn run(a: RenderArgs) -> Result<(), CliError> {
         })
         .map_err(CliError::input)?
         .clone();
-    warnings.finish()?;
     let levels = pipeline.levels();
     let prev = (levels.len() > 1).then(|| &levels[levels.len() - 2].mesh);
     let opts = SceneOptions {
@@ -91,7 +268,7 @@ pub fn run(a: RenderArgs) -> Result<(), CliError> {
             ShadingArg::Smooth => Shading::Smooth,
         },
         color_by: match a.color_by {
-            ColorArg::Uniform => ColorBy::Uniform,
+            ColorArg::Uniform | ColorArg::Flipped => ColorBy::Uniform,
             ColorArg::Kind => ColorBy::Kind,
             ColorArg::Curvature => ColorBy::Curvature,
             ColorArg::Scheme => {
@@ -113,29 +290,44 @@ pub fn run(a: RenderArgs) -> Result<(), CliError> {
         &|f| holes.contains(&(f as u32)),
         &opts,
     );
+    if matches!(a.color_by, ColorArg::Flipped) {
+        let flipped = last.report.as_ref().map_or(&[][..], |r| &r.flipped[..]);
+        scene.paint_faces(&last.mesh, flipped, FLIPPED_COLOR);
+        println!("{} flipped face(s) drawn in red", flipped.len());
+    }
     if let (true, Some(p)) = (a.cage, prev) {
         scene.add_cage(p, [0.95, 0.75, 0.25]);
     }
-    let view = match a.view {
-        ViewArg::Iso => View::Iso,
-        ViewArg::Front => View::Front,
-        ViewArg::Top => View::Top,
-    };
-    let camera = Camera::looking(view, glam::Vec3::ZERO, scene.radius());
+    let mut camera = camera(&a, &scene, &input, &last.mesh)?;
     let gpu = Offscreen::new().map_err(CliError::input)?;
+    let uploaded = gpu.upload(&scene);
+    let frames = a.frames.unwrap_or(1);
     let t = std::time::Instant::now();
-    let img = gpu.render(&scene, &camera, w, h).map_err(CliError::input)?;
-    let ms = t.elapsed().as_secs_f64() * 1e3;
-    let mut png = Vec::new();
-    img.write_to(&mut std::io::Cursor::new(&mut png), image::ImageFormat::Png)
-        .map_err(|e| CliError::input(format!("encoding the PNG: {e}")))?;
-    io::write_atomically(&a.output, &png).map_err(CliError::input)?;
+    for i in 0..frames {
+        let img = gpu
+            .render_uploaded(&uploaded, &camera, w, h)
+            .map_err(CliError::input)?;
+        let path = match a.frames {
+            Some(_) => frame_path(&a.output, i),
+            None => a.output.clone(),
+        };
+        write_png(&img, &path)?;
+        camera.orbit(std::f32::consts::TAU / frames as f32, 0.0);
+    }
+    let ms = t.elapsed().as_secs_f64() * 1e3 / frames as f64;
+    let wrote = match a.frames {
+        Some(n) => format!(
+            "{n} frames {} … {}",
+            frame_path(&a.output, 0).display(),
+            frame_path(&a.output, n - 1).display()
+        ),
+        None => a.output.display().to_string(),
+    };
     println!(
-        "rendered {} triangles at {w}x{h} in {ms:.1} ms on {} ({:?}); wrote {}",
+        "rendered {} triangles at {w}x{h} in {ms:.1} ms per frame on {} ({:?}); wrote {wrote}",
         scene.triangles(),
         gpu.adapter_info.name,
         gpu.adapter_info.device_type,
-        a.output.display()
     );
     Ok(())
 }

@@ -134,40 +134,29 @@ fn scheme_from_flags(name: &str, a: &StepArgs) -> Result<Scheme, CliError> {
     kind.scheme(param, reflex).map_err(CliError::usage)
 }
 
-/// What `subdivide` and `render` say of every level: its warnings in words, and the
-/// failure of the step that turns the solid inside out (README: a failing step exits 1).
+/// What `subdivide` and `render` say of every level: its warnings in words (a step that
+/// turns the solid inside out fails in the pipeline itself, `StepError::InsideOut`).
 pub struct LevelWarnings {
     /// The signed volume of the level before.
     volume: f64,
-    failed: Option<CliError>,
 }
 
 impl LevelWarnings {
     pub fn new(input: &prism_geom::PolyMesh) -> LevelWarnings {
         LevelWarnings {
             volume: prism_geom::geometry::signed_volume(input),
-            failed: None,
         }
     }
 
     /// Prints the warnings of level `k`, whose step reported `r`.
     pub fn level(&mut self, k: usize, r: &StepReport) {
         let before = std::mem::replace(&mut self.volume, r.volume);
-        let failed = warn_level(k, r, before);
-        if self.failed.is_none() {
-            self.failed = failed;
-        }
-    }
-
-    /// The failure of the first step that turned the solid inside out, if any.
-    pub fn finish(self) -> Result<(), CliError> {
-        self.failed.map_or(Ok(()), Err)
+        warn_level(k, r, before);
     }
 }
 
-/// Prints one level's warnings; `before` is the signed volume of the level before. Returns
-/// the error when this step turned the solid inside out.
-fn warn_level(k: usize, r: &StepReport, before: f64) -> Option<CliError> {
+/// Prints one level's warnings; `before` is the signed volume of the level before.
+fn warn_level(k: usize, r: &StepReport, before: f64) {
     if !r.clamped.is_empty() {
         eprintln!(
             "note: level {k}: {} edge radius(es) clamped to fit their faces: {}",
@@ -228,12 +217,6 @@ fn warn_level(k: usize, r: &StepReport, before: f64) -> Option<CliError> {
             r.volume
         );
     }
-    (before > 0.0 && r.volume < 0.0).then(|| {
-        CliError::input(format!(
-            "step {k}: the solid has turned inside out (signed volume {:.4e})",
-            r.volume
-        ))
-    })
 }
 
 /// A level whose volume differs from the level before's by more than this factor is
@@ -315,7 +298,6 @@ pub fn run(a: SubdivideArgs) -> Result<(), CliError> {
         );
     }
     let last = result.map_err(CliError::input)?;
-    warnings.finish()?;
     if io::ExportFormat::of(&a.output).is_some() {
         let holes = &last.tags.holes;
         io::export(&a.output, &last.mesh, &|f| holes.contains(&(f as u32)))

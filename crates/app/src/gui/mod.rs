@@ -23,6 +23,8 @@ mod viewport;
 
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod tests_rounding;
 
 use command::Command;
 use document::{DocState, Document, Origin};

@@ -8,7 +8,7 @@ use super::model::pick::{self, Projector};
 use super::*;
 use prism_geom::scheme::parse_pipeline;
 
-fn app() -> PrismApp {
+pub(super) fn app() -> PrismApp {
     let mut a = PrismApp::headless(Launch::default(), None).unwrap();
     a.wait_idle();
     rebuild(&mut a);
@@ -17,14 +17,14 @@ fn app() -> PrismApp {
 }
 
 /// Brings the scenes and overlays up to date, as a frame does.
-fn rebuild(a: &mut PrismApp) {
+pub(super) fn rebuild(a: &mut PrismApp) {
     let g = a.doc.generation();
     a.model.rebuild_scenes(a.doc.state(), g);
     a.flush();
 }
 
 /// The app started on a file, its levels computed.
-fn opened(path: &std::path::Path) -> PrismApp {
+pub(super) fn opened(path: &std::path::Path) -> PrismApp {
     let mut a = PrismApp::headless(
         Launch {
             file: Some(path.to_path_buf()),

@@ -390,6 +390,33 @@ impl ModelTab {
         self.framed = true;
     }
 
+    /// Frames face `f` of the active view's shown level (its neighbourhood: a sphere three
+    /// times its size), looking at it from the side away from the model's centre.
+    pub fn frame_face(&mut self, f: u32) {
+        let v = &self.views[self.active];
+        let mesh = &v.pipeline.levels()[v.shown()].mesh;
+        if f as usize >= mesh.num_faces() {
+            return;
+        }
+        let (mut lo, mut hi) = (
+            glam::DVec3::splat(f64::INFINITY),
+            glam::DVec3::splat(f64::NEG_INFINITY),
+        );
+        for c in mesh.face_corners(f as usize) {
+            let p = mesh.positions[mesh.corner_verts[c] as usize];
+            lo = lo.min(p);
+            hi = hi.max(p);
+        }
+        let size = (0.5 * (hi - lo).length()).max(1e-4 * v.scene.radius() as f64);
+        let centre = v.scene.to_local(0.5 * (lo + hi));
+        // Seen from outside: from the model's centre through the face (the scene's origin).
+        if let Some(c) = Camera::from_eye(2.0 * centre, centre, self.camera.fov_y) {
+            self.camera = c;
+        }
+        self.camera.frame(centre, (3.0 * size) as f32);
+        self.framed = true;
+    }
+
     /// The keys of the Model tab (S, B, F, W, X/Y/Z, Esc), when no text field has them.
     pub fn keys(&mut self, ctx: &egui::Context) {
         use egui::Key;

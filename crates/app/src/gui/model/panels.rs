@@ -347,6 +347,32 @@ impl ModelTab {
         }
     }
 
+    /// "N flipped faces": a menu listing them (the first hundred); opening it frames the
+    /// first, clicking one frames that one.
+    fn flipped_menu(&mut self, ui: &mut egui::Ui, flipped: &[u32]) {
+        let red = egui::Color32::from_rgb(240, 90, 80);
+        let title =
+            egui::RichText::new(format!("{} flipped face(s): show", flipped.len())).color(red);
+        let menu = ui.menu_button(title, |ui| {
+            ui.label("Drawn in red. Click one to frame it:");
+            egui::ScrollArea::vertical()
+                .max_height(240.0)
+                .show(ui, |ui| {
+                    for &f in flipped.iter().take(100) {
+                        if ui.button(format!("face {f}")).clicked() {
+                            self.frame_face(f);
+                        }
+                    }
+                    if flipped.len() > 100 {
+                        ui.label(format!("… and {} more", flipped.len() - 100));
+                    }
+                });
+        });
+        if menu.response.clicked() {
+            self.frame_face(flipped[0]);
+        }
+    }
+
     pub(super) fn status(&mut self, ui: &mut egui::Ui, note: Option<&str>) {
         let v = &self.views[self.active];
         let k = v.shown();
@@ -362,9 +388,6 @@ impl ModelTab {
         );
         if let Some(r) = &lv.report {
             text += &format!(", {:.2} ms", r.millis);
-            if !r.flipped.is_empty() {
-                text += &format!(" — warning: {} flipped face(s)", r.flipped.len());
-            }
             if !r.clamped.is_empty() {
                 text += &format!(
                     " — {} radius(es) clamped: {}",
@@ -376,9 +399,18 @@ impl ModelTab {
                 text += &format!(" — warning: {} degenerate face(s)", r.degenerate.len());
             }
         }
+        let flipped = lv
+            .report
+            .as_ref()
+            .map(|r| r.flipped.clone())
+            .unwrap_or_default();
+        let error = v.error.clone();
         ui.horizontal(|ui| {
             ui.label(text);
-            if let Some(e) = &v.error {
+            if !flipped.is_empty() {
+                self.flipped_menu(ui, &flipped);
+            }
+            if let Some(e) = &error {
                 ui.colored_label(egui::Color32::from_rgb(240, 110, 90), e);
             }
             if let Some(n) = note {

@@ -10,7 +10,7 @@ use prism_geom::error::OverBudget;
 use prism_geom::refine::FaceKind;
 use prism_geom::rules::Overlap;
 use prism_geom::{EdgeKey, Level, LimitPoints, Pipeline, Scheme};
-use prism_viewport::scene::scheme_color;
+use prism_viewport::scene::{FLIPPED_COLOR, scheme_color};
 use prism_viewport::{ColorBy, Scene, SceneOptions};
 use std::collections::HashMap;
 use std::sync::Arc;
@@ -30,7 +30,7 @@ fn made_by(p: &Pipeline, k: usize) -> Option<Scheme> {
 }
 
 /// The scene of a level: its faces (holes left out), coloured by kind, curvature or, for a
-/// solid colour, by the scheme of the step that made it (`made_by`).
+/// solid colour, by the scheme of the step that made it (`made_by`); flipped faces red.
 pub fn level_scene(lv: &Level, made_by: Option<Scheme>, opts: &SceneOptions) -> Scene {
     let kinds: Option<&[FaceKind]> = lv.provenance.as_ref().and_then(|p| p.face_kinds());
     let holes = &lv.tags.holes;
@@ -38,13 +38,18 @@ pub fn level_scene(lv: &Level, made_by: Option<Scheme>, opts: &SceneOptions) -> 
     if let ColorBy::Solid(_) = opts.color_by {
         opts.color_by = ColorBy::Solid(scheme_color(made_by.as_ref()));
     }
-    Scene::build(
+    let mut scene = Scene::build(
         &lv.mesh,
         &lv.edge_attrs,
         kinds,
         &|f| holes.contains(&(f as u32)),
         &opts,
-    )
+    );
+    // Faces a step turned against their parent are always shown, in red over any colouring.
+    if let Some(r) = &lv.report {
+        scene.paint_faces(&lv.mesh, &r.flipped, FLIPPED_COLOR);
+    }
+    scene
 }
 
 /// What a scene was made from: (generation, level, display options).

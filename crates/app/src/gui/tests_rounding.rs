@@ -1,0 +1,58 @@
+//! Rounding in the app as a designer meets it: flipped faces drawn in red and framed from
+//! the status bar's list, a step that turns the solid inside out stopping the pipeline with
+//! its level kept to be looked at.
+
+use super::command::Edit;
+use super::tests::{opened, rebuild};
+use prism_geom::scheme::parse_pipeline;
+use prism_viewport::scene::FLIPPED_COLOR;
+
+fn asset(name: &str) -> std::path::PathBuf {
+    std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../../assets")
+        .join(name)
+}
+
+#[test]
+fn flipped_faces_are_red_and_framed_and_inside_out_stops_the_pipeline() {
+    let mut a = opened(&asset("cube.obj"));
+    let steps = parse_pipeline(&["cylindrical:r=0.45"; 6].join(",")).unwrap();
+    a.run(Edit::SetPipeline { view: 0, steps });
+    a.wait_idle();
+    let v = &a.model.views[0];
+    // Step 5 turned the cube inside out (seed 000 fig. 10): kept, and nothing after it.
+    assert_eq!(v.pipeline.levels().len(), 6);
+    let e = v.error.as_deref().unwrap_or_default();
+    assert!(e.contains("step 5") && e.contains("inside out"), "{e}");
+    a.model.views[0].level = 4;
+    rebuild(&mut a);
+    let v = &a.model.views[0];
+    let lv = v.pipeline.levels()[4].clone();
+    let flipped = lv.report.as_ref().unwrap().flipped.clone();
+    assert_eq!(flipped.len(), 48);
+    let red = v
+        .scene
+        .vertices
+        .iter()
+        .filter(|x| x.color == FLIPPED_COLOR)
+        .count();
+    let corners: usize = flipped
+        .iter()
+        .map(|&f| lv.mesh.face_corners(f as usize).len())
+        .sum();
+    assert_eq!(red, corners);
+    // Framing the first brings the camera within a few face sizes of it.
+    let before = a.model.camera;
+    a.model.frame_face(flipped[0]);
+    let c = a.model.camera;
+    assert!(c.distance < 0.2 * before.distance, "{c:?} {before:?}");
+    let f = flipped[0] as usize;
+    let p = lv.mesh.positions[lv.mesh.corner_verts[lv.mesh.face_corners(f).start] as usize];
+    let local = a.model.views[0].scene.to_local(p);
+    assert!((c.target - local).length() < c.distance, "{c:?} {local}");
+    // From outside the cube, on the side of the face.
+    assert!(
+        c.eye().abs().max_element() > 1.5 && c.eye().dot(local) > 0.0,
+        "{c:?}"
+    );
+}
