@@ -559,3 +559,32 @@ fn render_free_camera_and_turntable() {
         .collect();
     assert!(frames[0] != frames[1] && frames[1] != frames[2]);
 }
+
+/// The fillet radius reached, in the summary (every rounded edge) and per edge.
+#[test]
+fn subdivide_reports_the_fillet_radius_reached() {
+    let (_, so, _) = succeeds_to(
+        "tripod-r.obj",
+        "subdivide assets/tripod.obj -o {} --scheme combination --radius 0.2 --levels 5 --measure-edge 0-9,16-12",
+    );
+    assert!(
+        so.contains("fillet at level 5: 27 rounded edge(s), fitted r 0.20006–0.20006 (target 0.2)"),
+        "{so}"
+    );
+    assert!(
+        so.contains("edge 0-9: target r 0.2, fitted 0.200060") && so.contains("edge 12-16:"),
+        "{so}"
+    );
+    let out = tmp("tripod-r2.obj");
+    let o = run_with(
+        "subdivide assets/tripod.obj -o {} --scheme combination --radius 0.2 --levels 2 --measure-edge 0-16",
+        &[&out],
+    );
+    assert_eq!(o.status.code(), Some(1));
+    assert!(text(&o).1.contains("no edge 0-16"), "{:?}", text(&o));
+    let o = run_with(
+        "subdivide assets/tripod.obj -o {} --scheme doo-sabin --levels 1 --measure-edge 0-9",
+        &[&out],
+    );
+    assert_eq!(o.status.code(), Some(2));
+}

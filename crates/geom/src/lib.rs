@@ -44,7 +44,7 @@ pub use edge_attrs::{EdgeAttr, EdgeAttrs, EdgeKey};
 pub use error::{MeshError, MeshWarning};
 pub use glam::DVec3;
 pub use mesh::PolyMesh;
-pub use pipeline::{Level, Pipeline, PipelineError};
+pub use pipeline::{Level, Pipeline, PipelineError, RoundingRun};
 pub use primal::{
     LimitPoints, PrimalError, PrimalOutput, PrimalScheme, RingOrder, limit_points,
     limit_points_ordered, refine_primal, refine_primal_levels, refine_primal_ordered,

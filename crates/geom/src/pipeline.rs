@@ -6,13 +6,14 @@
 //! made by a combination step carries the run's [`CombinationState`] to the next step
 //! (docs/algorithms/cylindrical.md).
 
-use crate::edge_attrs::EdgeAttrs;
+use crate::analysis::{FilletError, FilletSummary, measure_fillets};
+use crate::edge_attrs::{EdgeAttrs, EdgeKey};
 use crate::geometry::signed_volume;
 use crate::mesh::PolyMesh;
 use crate::primal::refine_primal;
 use crate::refine::Provenance;
-use crate::rules::CombinationState;
 use crate::rules::Overlap;
+use crate::rules::{CombinationState, CornerRule};
 use crate::scheme::Scheme;
 use crate::step::{StepError, StepOptions, StepReport, biquadratic_step_carrying};
 use crate::tags::SubdivTags;
@@ -42,6 +43,26 @@ pub struct PipelineError {
     pub scheme: String,
     #[source]
     pub source: StepError,
+}
+
+/// A run of cylindrical-family steps: the level it started from, its (last) rule and the
+/// radii its first step clamped (edges in that level's numbering).
+#[derive(Debug, Clone, PartialEq)]
+pub struct RoundingRun {
+    pub start: usize,
+    pub rule: CornerRule,
+    pub clamped: std::collections::HashMap<EdgeKey, f64>,
+}
+
+impl RoundingRun {
+    /// The radius edge `e` of the start level was rounded to: clamped, else its own, else
+    /// the rule's.
+    pub fn radius(&self, attrs: &EdgeAttrs, e: EdgeKey) -> Option<f64> {
+        self.clamped
+            .get(&e)
+            .copied()
+            .or_else(|| self.rule.edge_radius(attrs.get(&e)))
+    }
 }
 
 /// Steps and the levels computed so far.
@@ -230,6 +251,52 @@ impl Pipeline {
             });
         }
         Ok(())
+    }
+
+    /// The run of cylindrical-family steps whose rounds level `k` shows: the last such run
+    /// that starts before level `k`, or `None` when no step up to `k` rounds edges.
+    pub fn rounding_run(&self, k: usize) -> Option<RoundingRun> {
+        let k = k.min(self.levels.len() - 1);
+        let rounds = |s: &Scheme| matches!(s, Scheme::Biquadratic(r) if r.is_cylindrical_family());
+        let last = (0..k).rev().find(|&i| rounds(&self.steps[i]))?;
+        let start = (0..=last)
+            .rev()
+            .take_while(|&i| rounds(&self.steps[i]))
+            .last()
+            .unwrap_or(last);
+        let Scheme::Biquadratic(rule) = self.steps[last] else {
+            unreachable!("a rounding step is biquadratic")
+        };
+        let clamped = self.levels[start + 1]
+            .report
+            .as_ref()
+            .map(|r| {
+                r.clamped
+                    .iter()
+                    .map(|f| (EdgeKey::new(f.a, f.b), f.fits))
+                    .collect()
+            })
+            .unwrap_or_default();
+        Some(RoundingRun {
+            start,
+            rule,
+            clamped,
+        })
+    }
+
+    /// The fillets level `k` reached on every rounded edge of the level its rounding run
+    /// started from ([`Pipeline::rounding_run`]; `None` when there is none).
+    pub fn measure_fillets(
+        &self,
+        k: usize,
+    ) -> Option<Result<(RoundingRun, Option<FilletSummary>), FilletError>> {
+        let run = self.rounding_run(k)?;
+        let base = &self.levels[run.start];
+        let refined = &self.levels[k.min(self.levels.len() - 1)].mesh;
+        Some(
+            measure_fillets(&base.mesh, refined, &|e| run.radius(&base.edge_attrs, e))
+                .map(|s| (run, s)),
+        )
     }
 
     /// Whether every step has its level.

@@ -78,6 +78,19 @@ fn the_computer_room_is_refused_then_clamped_to_a_sound_solid() {
         );
         assert!(r.volume > 0.0);
     }
+    // Every round measures what it was given: the clamped 0.15 and the others' 0.2, to the
+    // combination rule's 4-per-level error (0.121 % after four levels); the legs' tops touch
+    // the desk, whose points are no part of the legs' fillets.
+    let (run, s) = p.measure_fillets(4).unwrap().unwrap();
+    let s = s.unwrap();
+    assert_eq!((run.start, run.clamped.len()), (0, 16));
+    assert!(s.edges > 200 && s.unmeasured == 0, "{s:?}");
+    assert!(
+        (s.target.0 - 0.15).abs() < 1e-9 && s.target.1 == 0.2,
+        "{s:?}"
+    );
+    assert!(s.ratio.0 > 1.0 && s.ratio.1 < 1.0013, "{s:?}");
+    assert!(s.worst.1.abs() < 1.3e-3, "{s:?}");
 }
 
 /// Radii larger than the tripod's unit-wide arms allow are refused, each named edge with a

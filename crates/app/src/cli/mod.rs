@@ -42,7 +42,7 @@ pub struct Cli {
 }
 
 /// "0-1,4-5" as edges.
-fn parse_edges(s: &str) -> Result<Vec<prism_geom::EdgeKey>, String> {
+pub(crate) fn parse_edges(s: &str) -> Result<Vec<prism_geom::EdgeKey>, String> {
     s.split(',')
         .filter(|t| !t.trim().is_empty())
         .map(|t| {

@@ -6,6 +6,7 @@
 
 use super::{CliError, with_line};
 use clap::Args;
+use prism_geom::analysis::measure_fillet;
 use prism_geom::io::{self, Document};
 use prism_geom::scheme::{Scheme, SchemeError, SchemeKind, parse_pipeline};
 use prism_geom::{CornerRule, Pipeline, ReflexMode, StepReport, Topology};
@@ -66,6 +67,10 @@ pub struct SubdivideArgs {
     pub output: PathBuf,
     #[command(flatten)]
     pub steps: StepArgs,
+    /// Report the fillet reached on these edges, A-B[,C-D...] (vertices of the input,
+    /// 0-based, as in the file).
+    #[arg(long)]
+    pub measure_edge: Option<String>,
 }
 
 /// The steps the arguments ask for; without any, the document's pipeline, or none when
@@ -219,6 +224,86 @@ fn warn_level(k: usize, r: &StepReport, before: f64) {
     }
 }
 
+/// `x` with at most six decimals, trailing zeros dropped (a clamped 0.15000000000000038
+/// reads 0.15).
+fn short(x: f64) -> String {
+    let s = format!("{x:.6}");
+    s.trim_end_matches('0').trim_end_matches('.').to_string()
+}
+
+/// The fillet line of the summary (every rounded edge of the level the rounding run
+/// started from) and the `--measure-edge` lines.
+fn report_fillets(p: &Pipeline, measure: Option<&str>) -> Result<(), CliError> {
+    let n = p.steps().len();
+    let edges = measure
+        .map(|m| super::parse_edges(m).map_err(|e| CliError::usage(format!("--measure-edge: {e}"))))
+        .transpose()?;
+    let Some(measured) = p.measure_fillets(n) else {
+        return match edges {
+            Some(_) => Err(CliError::usage(
+                "--measure-edge needs a rounding step (cylindrical, minimum or combination)",
+            )),
+            None => Ok(()),
+        };
+    };
+    let (run, summary) = measured.map_err(CliError::input)?;
+    let of = if run.start > 0 {
+        format!(" of level {}", run.start)
+    } else {
+        String::new()
+    };
+    match &summary {
+        Some(s) => {
+            let target = if s.target.0 == s.target.1 {
+                short(s.target.0)
+            } else {
+                format!("{}–{}", short(s.target.0), short(s.target.1))
+            };
+            println!(
+                "fillet at level {n}: {} rounded edge(s){of}, fitted r {:.5}–{:.5} (target {target}), fitted/target {:.5}–{:.5}, largest radial error {:+.3} % at edge {}-{}{}",
+                s.edges,
+                s.fitted.0,
+                s.fitted.1,
+                s.ratio.0,
+                s.ratio.1,
+                100.0 * s.worst.1,
+                s.worst.0.0,
+                s.worst.0.1,
+                if s.unmeasured > 0 {
+                    format!(" ({} edge(s) with too few section points)", s.unmeasured)
+                } else {
+                    String::new()
+                }
+            );
+        }
+        None => println!("fillet at level {n}: no rounded edge{of} could be measured"),
+    }
+    let base = &p.levels()[run.start];
+    for e in edges.unwrap_or_default() {
+        let r = run.radius(&base.edge_attrs, e).ok_or_else(|| {
+            CliError::usage(format!(
+                "--measure-edge {}-{}: the edge is not rounded",
+                e.0, e.1
+            ))
+        })?;
+        let m = measure_fillet(&base.mesh, e.0, e.1, &p.levels()[n].mesh, r)
+            .map_err(|x| CliError::input(format!("--measure-edge {}-{}: {x}", e.0, e.1)))?;
+        println!(
+            "edge {}-{}{of}: target r {}, fitted {:.6} (centre {:.2e} off the ideal axis), radial error {:+.4} % to {:+.4} %, {} section point(s), {}",
+            e.0,
+            e.1,
+            short(r),
+            m.fitted_radius,
+            m.centre_offset,
+            100.0 * m.min_radial_error,
+            100.0 * m.max_radial_error,
+            m.points,
+            if m.concave { "concave" } else { "convex" }
+        );
+    }
+    Ok(())
+}
+
 /// A level whose volume differs from the level before's by more than this factor is
 /// named (a subdivision step changes the volume by a few per cent).
 const VOLUME_JUMP: f64 = 10.0;
@@ -297,7 +382,9 @@ pub fn run(a: SubdivideArgs) -> Result<(), CliError> {
             "note: the minimum type never flips faces but does not converge to r: its fillets stall near 0.2 % of r (use combination for true radii)"
         );
     }
-    let last = result.map_err(CliError::input)?;
+    result.map_err(CliError::input)?;
+    report_fillets(&pipeline, a.measure_edge.as_deref())?;
+    let last = &pipeline.levels()[n];
     if io::ExportFormat::of(&a.output).is_some() {
         let holes = &last.tags.holes;
         io::export(&a.output, &last.mesh, &|f| holes.contains(&(f as u32)))

@@ -56,3 +56,26 @@ fn flipped_faces_are_red_and_framed_and_inside_out_stops_the_pipeline() {
         "{c:?}"
     );
 }
+
+/// The Edges tool reads out the fillet reached on the selected edge, for the level shown,
+/// against the radius the edge was given (its own here).
+#[test]
+fn the_selected_edge_reads_out_its_fillet() {
+    let mut a = opened(&asset("tripod.obj"));
+    let e = prism_geom::EdgeKey::new(0, 9);
+    a.model.sel_edges.insert(e);
+    a.model.mark(super::command::EdgeMark::Radius(Some(0.3)));
+    a.flush();
+    let steps = parse_pipeline(&["combination:r=0.2"; 4].join(",")).unwrap();
+    a.run(Edit::SetPipeline { view: 0, steps });
+    a.wait_idle();
+    let doc = a.doc.state().clone();
+    let t4 = a.model.fillet_text(0, &doc);
+    assert!(
+        t4.starts_with("0.300") && t4.contains("r = 0.3000, edge 0-9"),
+        "{t4}"
+    );
+    a.model.views[0].level = 1;
+    let t1 = a.model.fillet_text(0, &doc);
+    assert!(t1 != t4, "{t1}");
+}

@@ -9,10 +9,12 @@
 //! cylindrical cutting gives a polygon circumscribing the arc whose vertices lie at
 //! `r/cos(ψ/2^(k+1))` after k steps: the error falls by about 4 per level.
 
+use crate::edge_attrs::EdgeKey;
 use crate::geometry::{face_normal_raw, unit_or_zero};
 use crate::mesh::PolyMesh;
 use crate::topology::Topology;
 use glam::{DVec2, DVec3};
+use std::collections::HashMap;
 use thiserror::Error;
 
 #[derive(Debug, Clone, PartialEq, Error)]
@@ -64,6 +66,94 @@ pub fn measure_fillet(
             (0..original.num_corners()).find(|&c| cv[c] == b && cv[topo.next[c] as usize] == a)
         })
         .ok_or(FilletError::NoSuchEdge { a, b })?;
+    measure_at_corner(original, &topo, c, refined, r)
+}
+
+/// The fillet over every rounded edge of a run of cylindrical-family steps, for the
+/// summary line: how many edges were measured, the fitted radii and their ratio to each
+/// edge's target, and the edge with the largest radial error.
+#[derive(Debug, Clone, PartialEq)]
+pub struct FilletSummary {
+    /// Edges measured (flat edges have no fillet; edges whose section has fewer than two
+    /// fillet points are counted in `unmeasured`).
+    pub edges: usize,
+    pub unmeasured: usize,
+    /// Smallest and largest fitted radius.
+    pub fitted: (f64, f64),
+    /// Smallest and largest target radius.
+    pub target: (f64, f64),
+    /// Smallest and largest fitted radius / target.
+    pub ratio: (f64, f64),
+    /// The edge whose section strays furthest from its ideal cylinder, and that radial
+    /// error (relative to its r, signed).
+    pub worst: (EdgeKey, f64),
+}
+
+/// Measures every edge of `original` that `radius` gives a round (`radius(edge)` is its
+/// target r, `None` for edges that are not rounded) in `refined`.
+pub fn measure_fillets(
+    original: &PolyMesh,
+    refined: &PolyMesh,
+    radius: &dyn Fn(EdgeKey) -> Option<f64>,
+) -> Result<Option<FilletSummary>, FilletError> {
+    let topo = Topology::build(original)?;
+    let mut out: Option<FilletSummary> = None;
+    let mut unmeasured = 0;
+    for &c in &topo.edge_corner {
+        let c = c as usize;
+        let (a, b) = (
+            original.corner_verts[c],
+            original.corner_verts[topo.next[c] as usize],
+        );
+        let key = EdgeKey::new(a, b);
+        let Some(r) = radius(key) else { continue };
+        let m = match measure_at_corner(original, &topo, c, refined, r) {
+            Ok(m) => m,
+            Err(FilletError::FlatEdge { .. } | FilletError::NoSuchEdge { .. }) => continue,
+            Err(_) => {
+                unmeasured += 1;
+                continue;
+            }
+        };
+        let err = if m.max_radial_error.abs() >= m.min_radial_error.abs() {
+            m.max_radial_error
+        } else {
+            m.min_radial_error
+        };
+        let ratio = m.fitted_radius / r;
+        let s = out.get_or_insert(FilletSummary {
+            edges: 0,
+            unmeasured: 0,
+            fitted: (f64::INFINITY, f64::NEG_INFINITY),
+            target: (f64::INFINITY, f64::NEG_INFINITY),
+            ratio: (f64::INFINITY, f64::NEG_INFINITY),
+            worst: (key, err),
+        });
+        s.edges += 1;
+        let widen = |(lo, hi): (f64, f64), x: f64| (lo.min(x), hi.max(x));
+        s.fitted = widen(s.fitted, m.fitted_radius);
+        s.target = widen(s.target, r);
+        s.ratio = widen(s.ratio, ratio);
+        if err.abs() > s.worst.1.abs() {
+            s.worst = (key, err);
+        }
+    }
+    if let Some(s) = out.as_mut() {
+        s.unmeasured = unmeasured;
+    }
+    Ok(out)
+}
+
+/// [`measure_fillet`] of the edge whose corner in `original` is `c`.
+fn measure_at_corner(
+    original: &PolyMesh,
+    topo: &Topology,
+    c: usize,
+    refined: &PolyMesh,
+    r: f64,
+) -> Result<FilletMeasure, FilletError> {
+    let cv = &original.corner_verts;
+    let (a, b) = (cv[c], cv[topo.next[c] as usize]);
     let t = topo.twin[c];
     if t == crate::topology::NONE {
         return Err(FilletError::NoSuchEdge { a, b });
@@ -90,27 +180,28 @@ pub fn measure_fillet(
     };
     let reach = r * (psi / 2.0).tan() * (1.0 + 1e-6) + 1e-12 * refined.bbox_diagonal();
 
-    // Slice: every undirected edge once (a < b), plus vertices on the plane.
-    let mut pts: Vec<DVec3> = Vec::new();
-    let side = |p: DVec3| (p - mid).dot(axis);
-    for l in 0..refined.num_loops() {
-        let vs = refined.loop_verts(l);
-        for i in 0..vs.len() {
-            let (u, w) = (vs[i], vs[(i + 1) % vs.len()]);
-            let (pu, pw) = (refined.positions[u as usize], refined.positions[w as usize]);
-            let (su, sw) = (side(pu), side(pw));
-            if u < w && ((su < 0.0 && sw > 0.0) || (su > 0.0 && sw < 0.0)) {
-                pts.push(pu + (pw - pu) * (su / (su - sw)));
-            }
-        }
-    }
-    let mut seen = vec![false; refined.num_vertices()];
-    for (v, p) in refined.positions.iter().enumerate() {
-        if side(*p) == 0.0 && !seen[v] {
-            seen[v] = true;
-            pts.push(*p);
-        }
-    }
+    // The section's piece that passes nearest the ideal arc's midpoint: points of another
+    // shell touching this one (a leg under a desk) are not part of this fillet.
+    let arc_mid = if concave {
+        centre - bis * r
+    } else {
+        centre + bis * r
+    };
+    let (all, piece) = section(refined, mid, axis);
+    let nearest = (0..all.len())
+        .filter(|&i| (all[i] - mid).length() <= reach)
+        .min_by(|&i, &j| {
+            (all[i] - arc_mid)
+                .length_squared()
+                .total_cmp(&(all[j] - arc_mid).length_squared())
+        });
+    let mut pts: Vec<DVec3> = match nearest {
+        Some(n) => (0..all.len())
+            .filter(|&i| piece[i] == piece[n])
+            .map(|i| all[i])
+            .collect(),
+        None => Vec::new(),
+    };
     pts.retain(|p| (*p - mid).length() <= reach);
     if pts.len() < 2 {
         return Err(FilletError::TooFewPoints {
@@ -151,6 +242,62 @@ pub fn measure_fillet(
         min_radial_error: min_e,
         concave,
     })
+}
+
+/// The section of `refined` by the plane through `mid` normal to `axis`: the points where
+/// edges cross it and the vertices on it, and for each the piece of the section it belongs
+/// to (the crossings of one face are joined; faces sharing an edge or a vertex share the
+/// point, so a piece is a connected part of the section).
+fn section(refined: &PolyMesh, mid: DVec3, axis: DVec3) -> (Vec<DVec3>, Vec<usize>) {
+    let side = |v: u32| (refined.positions[v as usize] - mid).dot(axis);
+    let mut id: HashMap<(u32, u32), usize> = HashMap::new();
+    let mut pts: Vec<DVec3> = Vec::new();
+    let mut parent: Vec<usize> = Vec::new();
+    fn root(parent: &mut [usize], mut i: usize) -> usize {
+        while parent[i] != i {
+            parent[i] = parent[parent[i]];
+            i = parent[i];
+        }
+        i
+    }
+    let mut here: Vec<usize> = Vec::new();
+    for f in 0..refined.num_faces() {
+        here.clear();
+        for l in refined.face_loops(f) {
+            let vs = refined.loop_verts(l);
+            for i in 0..vs.len() {
+                let (u, w) = (vs[i], vs[(i + 1) % vs.len()]);
+                let (su, sw) = (side(u), side(w));
+                // A vertex on the plane is keyed by itself, a crossing by its edge.
+                let key = if su == 0.0 {
+                    (u, u32::MAX)
+                } else if (su < 0.0 && sw > 0.0) || (su > 0.0 && sw < 0.0) {
+                    (u.min(w), u.max(w))
+                } else {
+                    continue;
+                };
+                let k = *id.entry(key).or_insert_with(|| {
+                    let p = if key.1 == u32::MAX {
+                        refined.positions[u as usize]
+                    } else {
+                        let (pu, pw) =
+                            (refined.positions[u as usize], refined.positions[w as usize]);
+                        pu + (pw - pu) * (su / (su - sw))
+                    };
+                    pts.push(p);
+                    parent.push(parent.len());
+                    pts.len() - 1
+                });
+                here.push(k);
+            }
+        }
+        for j in 1..here.len() {
+            let (x, y) = (root(&mut parent, here[0]), root(&mut parent, here[j]));
+            parent[x] = y;
+        }
+    }
+    let piece = (0..pts.len()).map(|i| root(&mut parent, i)).collect();
+    (pts, piece)
 }
 
 /// Least-squares circle: Kåsa's algebraic fit refined by Gauss–Newton on the geometric

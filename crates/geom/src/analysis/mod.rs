@@ -8,4 +8,4 @@ mod fillet;
 
 pub use counts::{MeshCounts, counts};
 pub use curvature::mean_curvature;
-pub use fillet::{FilletError, FilletMeasure, measure_fillet};
+pub use fillet::{FilletError, FilletMeasure, FilletSummary, measure_fillet, measure_fillets};

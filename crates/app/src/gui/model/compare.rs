@@ -4,20 +4,13 @@
 //! The fillet radius is measured on one control edge ([`prism_geom::analysis::measure_fillet`]:
 //! a circle fitted to the section through the edge's midpoint): the selected edge when
 //! exactly one is selected, otherwise the first control edge that has a fillet. The target
-//! is the radius of the view's last cylindrical-family step (or the edge's own radius).
+//! is the radius the edge was rounded to ([`prism_geom::RoundingRun::radius`]: clamped, its
+//! own, or the step's). The Edges tool shows the same for the selected edge.
 
 use super::ModelTab;
 use crate::gui::document::DocState;
+use prism_geom::EdgeKey;
 use prism_geom::analysis::measure_fillet;
-use prism_geom::{CornerRule, EdgeKey, Scheme};
-
-/// The rule of a pipeline's last step with a radius: it says which radius an edge gets.
-fn rounding_rule(steps: &[Scheme]) -> Option<CornerRule> {
-    steps.iter().rev().find_map(|s| match s {
-        Scheme::Biquadratic(rule) => rule.radius().map(|_| *rule),
-        Scheme::Primal(_) => None,
-    })
-}
 
 impl ModelTab {
     /// The fillet measure of view `i`'s shown level, as table text.
@@ -25,33 +18,38 @@ impl ModelTab {
         let edge = (self.sel_edges.len() == 1)
             .then(|| self.sel_edges.iter().next().copied())
             .flatten();
-        let key = (self.views[i].generation, edge);
+        let key = (self.views[i].generation, self.views[i].shown(), edge);
         if let Some((k, t)) = &self.views[i].fillet
             && *k == key
         {
             return t.clone();
         }
         let v = &self.views[i];
-        let text = match rounding_rule(v.steps()) {
+        let k = v.shown();
+        let text = match v.pipeline.rounding_run(k) {
             None => "—".to_string(),
-            Some(rule) => {
+            // Edges are picked on the control mesh: measured when the rounding starts there.
+            Some(run) if run.start > 0 => format!("(rounding starts at level {})", run.start),
+            Some(run) => {
                 let control = &doc.mesh;
-                let refined = &v.pipeline.levels()[v.shown()].mesh;
+                let refined = &v.pipeline.levels()[k].mesh;
                 let candidates: Vec<EdgeKey> = match edge {
                     Some(e) => vec![e],
                     None => super::pick::mesh_edges(control),
                 };
+                let attrs = &v.pipeline.levels()[0].edge_attrs;
                 // Each try slices the refined mesh: a few edges, not all of a big model.
                 let found = candidates.iter().take(16).find_map(|e| {
-                    let r = rule.edge_radius(doc.edge_attrs.get(e))?;
+                    let r = run.radius(attrs, *e)?;
                     measure_fillet(control, e.0, e.1, refined, r)
                         .ok()
                         .map(|m| (*e, r, m))
                 });
                 match found {
                     Some((e, r, m)) => format!(
-                        "{:.4} (r = {r}, edge {}-{}, error {:+.2} %)",
+                        "{:.4} (r = {:.4}, edge {}-{}, error {:+.2} %)",
                         m.fitted_radius,
+                        r,
                         e.0,
                         e.1,
                         100.0 * m.max_radial_error

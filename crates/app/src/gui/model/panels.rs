@@ -283,6 +283,11 @@ impl ModelTab {
         if ui.button("Clear crease").clicked() {
             self.mark(EdgeMark::Crease(0.0));
         }
+        if self.sel_edges.len() == 1 {
+            let e = *self.sel_edges.first().expect("one edge");
+            let text = self.fillet_text(self.active, doc);
+            ui.label(format!("fillet reached on {}-{}: {text}", e.0, e.1));
+        }
         let marked = doc.edge_attrs.len();
         ui.label(format!(
             "{marked} control edge(s) marked (red: crease, cyan: own radius, yellow: selected)"

@@ -55,6 +55,9 @@ pub fn level_scene(lv: &Level, made_by: Option<Scheme>, opts: &SceneOptions) -> 
 /// What a scene was made from: (generation, level, display options).
 type SceneKey = (u64, usize, SceneOptions);
 
+/// What a fillet measure was made from: (generation, level shown, selected edge).
+pub type FilletKey = (u64, usize, Option<EdgeKey>);
+
 /// A level of a given result: (generation, level).
 type LevelKey = (u64, usize);
 /// The control edge of every edge of a level, or why there is none.
@@ -110,8 +113,8 @@ pub struct ViewPipe {
     origins: Option<(LevelKey, Arc<Origins>)>,
     /// Limit points of a level: computed on a thread, then kept.
     limits: Option<(LevelKey, LimitSlot)>,
-    /// Cached compare-table fillet measure: key (generation, edge), text.
-    pub fillet: Option<((u64, Option<EdgeKey>), String)>,
+    /// Cached fillet measure and what it was made from.
+    pub fillet: Option<(FilletKey, String)>,
 }
 
 impl ViewPipe {
