@@ -588,3 +588,35 @@ fn subdivide_reports_the_fillet_radius_reached() {
     );
     assert_eq!(o.status.code(), Some(2));
 }
+
+/// Chamfers that can be repeated: a shrinking schedule from the command line, the vector
+/// sum above ¼ named and run to the end, bad schedules refused.
+#[test]
+fn chamfer_schedules_and_the_vector_sum_bound() {
+    let (_, so, se) = succeeds_to(
+        "cube-d.obj",
+        "subdivide assets/cube.obj -o {} --scheme cut-width --width 0.1 --levels 3 --shrink 4 --clamp",
+    );
+    assert!(
+        so.contains("[cut-width:d=0.025]") && so.contains("[cut-width:d=0.00625]"),
+        "{so}"
+    );
+    assert_eq!(so.matches("flipped=0,").count(), 3, "{so}{se}");
+    let (_, so, se) = succeeds_to(
+        "cube-a.obj",
+        "subdivide assets/cube.obj -o {} --scheme vector-sum --alpha 0.4 --levels 4",
+    );
+    assert!(
+        se.contains("warning: vector-sum α = 0.4 is above 0.25"),
+        "{se}"
+    );
+    assert!(so.contains("level 4:"), "{so}");
+    let out = tmp("cube-bad.obj");
+    for line in [
+        "subdivide assets/cube.obj -o {} --scheme combination --radius 0.2 --levels 2 --shrink 4",
+        "subdivide assets/cube.obj -o {} --scheme cut-width --width 0.1 --levels 2 --shrink 0.5",
+        "subdivide assets/cube.obj -o {} --pipeline cut-width:d=0.1 --shrink 4",
+    ] {
+        assert_eq!(run_with(line, &[&out]).status.code(), Some(2), "{line}");
+    }
+}

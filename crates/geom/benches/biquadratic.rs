@@ -62,6 +62,7 @@ fn points_and_split(m: &prism_geom::PolyMesh, t: &Topology) -> prism_geom::PolyM
         topo: t,
         normals: &[],
         cut_widths: &[],
+        face_params: &[],
         vertex_neighbourhood: &[],
     };
     let (pts, _) = corner_points(&CornerRule::DooSabin, &input).unwrap();

@@ -65,6 +65,48 @@ pub fn extrude(outer: &[DVec2], holes: &[Vec<DVec2>], z0: f64, z1: f64) -> PolyM
     m
 }
 
+/// The regular `n`-gon of circumradius `radius` around the origin, counter-clockwise, its
+/// first vertex on +x.
+pub fn regular_polygon(n: u32, radius: f64) -> Vec<DVec2> {
+    (0..n)
+        .map(|k| {
+            let t = std::f64::consts::TAU * k as f64 / n as f64;
+            radius * DVec2::new(t.cos(), t.sin())
+        })
+        .collect()
+}
+
+/// A star of `points` tips at `outer` and notches at `inner` around the origin,
+/// counter-clockwise, its first tip on +y.
+pub fn star_polygon(points: u32, outer: f64, inner: f64) -> Vec<DVec2> {
+    (0..2 * points)
+        .map(|k| {
+            let t = std::f64::consts::FRAC_PI_2 + std::f64::consts::PI * k as f64 / points as f64;
+            let r = if k % 2 == 0 { outer } else { inner };
+            r * DVec2::new(t.cos(), t.sin())
+        })
+        .collect()
+}
+
+/// A right prism over the regular `n`-gon of circumradius `radius`, from z = 0 to `height`.
+pub fn ngon_prism(n: u32, radius: f64, height: f64) -> PolyMesh {
+    extrude(&regular_polygon(n, radius), &[], 0.0, height)
+}
+
+/// A right pyramid over the regular `n`-gon of circumradius `radius` at z = 0, apex at
+/// (0, 0, `height`).
+pub fn pyramid(n: u32, radius: f64, height: f64) -> PolyMesh {
+    let mut positions: Vec<DVec3> = regular_polygon(n, radius)
+        .iter()
+        .map(|p| DVec3::new(p.x, p.y, 0.0))
+        .collect();
+    positions.push(DVec3::new(0.0, 0.0, height));
+    let apex = n;
+    let mut faces = vec![(0..n).rev().collect::<Vec<u32>>()];
+    faces.extend((0..n).map(|i| vec![i, (i + 1) % n, apex]));
+    PolyMesh::from_polygons(positions, &faces)
+}
+
 /// The cube of side 3 used throughout the measurements of docs/algorithms/cylindrical.md.
 pub fn cube3() -> PolyMesh {
     cuboid(DVec3::ZERO, DVec3::splat(3.0))

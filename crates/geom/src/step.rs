@@ -93,6 +93,8 @@ pub struct StepReport {
     pub clamped: Vec<rules::EdgeFit>,
     /// Edges whose cut width the combination rule lowered so its cut faces keep their edges.
     pub capped_edges: usize,
+    /// Faces whose chamfer distance or width (l, d) the clamp lowered.
+    pub clamped_faces: usize,
     /// Corners with a zero-length edge that stayed at their vertex.
     pub collapsed_corners: usize,
     /// Signed volume of the result (negative: inside out).
@@ -171,6 +173,7 @@ pub fn biquadratic_step_carrying(
         guarded_corners: rule_report.guarded_corners,
         clamped: prep.clamped.clone(),
         capped_edges: prep.capped_edges,
+        clamped_faces: prep.clamped_faces,
         collapsed_corners: rule_report.collapsed_corners,
         volume: checked.volume,
         millis: start.elapsed().as_secs_f64() * 1e3,

@@ -43,9 +43,14 @@ pub struct StepArgs {
     #[arg(long)]
     pub pipeline: Option<String>,
     /// Lower the radius of edges whose rounds do not fit their faces to what fits, and say
-    /// which (without it such a step is refused, naming them).
+    /// which (without it such a step is refused, naming them); lower a chamfer's l or d on
+    /// faces too small for it (a quarter of the shorter edge at each corner).
     #[arg(long)]
     pub clamp: bool,
+    /// With --scheme angle-bisector or cut-width: divide l or d by K at each step after the
+    /// first (seed 000: about 4, so that the new faces are not cut from both sides).
+    #[arg(long, value_name = "K")]
+    pub shrink: Option<f64>,
 }
 
 impl StepArgs {
@@ -81,15 +86,40 @@ pub fn steps_from(
     allow_none: bool,
 ) -> Result<Vec<Scheme>, CliError> {
     let steps: Vec<Scheme> = match (&a.scheme, &a.pipeline) {
-        (Some(name), None) => vec![scheme_from_flags(name, a)?; a.levels],
+        (Some(name), None) => {
+            let s = scheme_from_flags(name, a)?;
+            match a.shrink {
+                None => vec![s; a.levels],
+                Some(k) if !(k.is_finite() && k >= 1.0) => {
+                    return Err(CliError::usage(format!(
+                        "--shrink {k}: K must be a number of at least 1"
+                    )));
+                }
+                Some(_) if !s.shrinks_when_repeated() => {
+                    return Err(CliError::usage(format!(
+                        "--shrink applies to angle-bisector and cut-width (absolute l, d), not {name}"
+                    )));
+                }
+                Some(k) => s.schedule(a.levels, k),
+            }
+        }
+        (None, Some(_)) if a.shrink.is_some() => {
+            return Err(CliError::usage(
+                "--shrink goes with --scheme; in a pipeline write each step's l or d",
+            ));
+        }
         (None, Some(p)) => parse_pipeline(p).map_err(CliError::usage)?,
         _ => Vec::new(),
     };
     if !steps.is_empty() {
+        warn_unrepeatable(&steps);
         return Ok(steps);
     }
     match document {
-        Some(p) => Ok(p.to_vec()),
+        Some(p) => {
+            warn_unrepeatable(p);
+            Ok(p.to_vec())
+        }
         None if allow_none => Ok(Vec::new()),
         None => Err(CliError::usage(
             "give --scheme and --levels, or --pipeline (the input holds no pipeline)",
@@ -169,6 +199,12 @@ fn warn_level(k: usize, r: &StepReport, before: f64) {
             prism_geom::rules::overlap::list(&r.clamped)
         );
     }
+    if r.clamped_faces > 0 {
+        eprintln!(
+            "note: level {k}: l or d lowered on {} face(s) too small for it (clamp)",
+            r.clamped_faces
+        );
+    }
     if r.capped_edges > 0 {
         eprintln!(
             "note: level {k}: {} edge(s) cut narrower so that the cut faces keep their edges",
@@ -221,6 +257,18 @@ fn warn_level(k: usize, r: &StepReport, before: f64) {
             "warning: level {k}: the solid is inside out (signed volume {:.4e})",
             r.volume
         );
+    }
+}
+
+/// Says once per distinct step that its parameter is above what can be repeated (vector
+/// sum with ¼ < α < ½): admitted, as the paper admits it, but named.
+fn warn_unrepeatable(steps: &[Scheme]) {
+    let mut said: Vec<String> = Vec::new();
+    for w in steps.iter().filter_map(Scheme::repeat_warning) {
+        if !said.contains(&w) {
+            eprintln!("warning: {w}");
+            said.push(w);
+        }
     }
 }
 

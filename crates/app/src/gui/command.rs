@@ -17,10 +17,12 @@ use std::path::PathBuf;
 /// gesture) share one.
 #[derive(Debug, Clone, PartialEq)]
 pub enum Edit {
-    /// Appends a step to view `view`'s pipeline.
+    /// Step >>: appends `scheme`, or, after a step of the same absolute chamfer, that
+    /// step's l or d divided by `shrink` (the chamfer's schedule, seed 000 §3.1).
     PushStep {
         view: usize,
         scheme: Scheme,
+        shrink: f64,
     },
     /// Removes the last step of view `view`'s pipeline.
     PopStep {

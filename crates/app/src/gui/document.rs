@@ -252,6 +252,7 @@ mod tests {
             d.apply(Edit::PushStep {
                 view: 0,
                 scheme: DS,
+                shrink: 1.0,
             })
             .unwrap();
         }
@@ -276,6 +277,7 @@ mod tests {
         d.apply(Edit::PushStep {
             view: 0,
             scheme: DS,
+            shrink: 1.0,
         })
         .unwrap();
         d.apply(Edit::SetViews(2)).unwrap();
@@ -359,6 +361,7 @@ mod tests {
             Edit::PushStep {
                 view: 5,
                 scheme: DS,
+                shrink: 1.0,
             },
             CurveEdit::SetLevels(40).into_edit(),
             CurveEdit::Delete { index: 100 }.into_edit(),

@@ -25,10 +25,21 @@ pub(super) fn apply_to(d: &mut DocState, origin: &mut Origin, edit: Edit) -> Res
         }
     };
     match edit {
-        Edit::PushStep { view, scheme } => {
+        Edit::PushStep {
+            view,
+            scheme,
+            shrink,
+        } => {
             view_ok(view)?;
-            scheme.validate().map_err(|e| e.to_string())?;
-            d.pipelines[view].push(scheme);
+            let p = &mut d.pipelines[view];
+            let next = match p.last() {
+                Some(last) if last.kind() == scheme.kind() && scheme.shrinks_when_repeated() => {
+                    last.shrunk(shrink)
+                }
+                _ => scheme,
+            };
+            next.validate().map_err(|e| e.to_string())?;
+            p.push(next);
         }
         Edit::PopStep { view } => {
             view_ok(view)?;

@@ -79,3 +79,30 @@ fn the_selected_edge_reads_out_its_fillet() {
     let t1 = a.model.fillet_text(0, &doc);
     assert!(t1 != t4, "{t1}");
 }
+
+/// Step >> continues an absolute chamfer's schedule: l or d divided by the panel's factor.
+#[test]
+fn step_continues_a_shrinking_chamfer_schedule() {
+    let mut a = opened(&asset("cube.obj"));
+    a.run(Edit::SetPipeline {
+        view: 0,
+        steps: vec![],
+    });
+    a.model.next = "cut-width:d=0.1".parse().unwrap();
+    for _ in 0..3 {
+        a.model.step();
+        a.flush();
+    }
+    a.wait_idle();
+    assert_eq!(
+        a.doc.state().pipelines[0],
+        parse_pipeline("cut-width:d=0.1,cut-width:d=0.025,cut-width:d=0.00625").unwrap()
+    );
+    // Radii are targets, not schedules: repeated as they are.
+    a.model.next = "combination:r=0.2".parse().unwrap();
+    a.model.step();
+    a.model.step();
+    a.flush();
+    let p = &a.doc.state().pipelines[0];
+    assert_eq!(p[3], p[4]);
+}

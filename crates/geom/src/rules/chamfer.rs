@@ -41,19 +41,71 @@ pub(super) fn cut_width(input: &RuleInput, c: usize, d: f64) -> Result<DVec3, Ru
     Ok(fr.v + d * (fr.m1 + fr.m2) / (1.0 + fr.c))
 }
 
+/// Eq. (2) needs no face normal: only the reflex-inward option asks which corners are
+/// reflex, and a face of no area has none (its corners keep the printed rule). So faces a
+/// previous step flattened (α > ¼ folds them) do not stop the rule.
 pub(super) fn vector_sum(
     input: &RuleInput,
     c: usize,
     alpha: f64,
     reflex: ReflexMode,
 ) -> Result<DVec3, RuleError> {
-    let fr = corner_frame(input, c)?;
-    let sign = if reflex == ReflexMode::Inward && fr.sin_phi < 0.0 {
+    let (m, t) = (input.mesh, input.topo);
+    let at = |corner: u32| m.positions[m.corner_verts[corner as usize] as usize];
+    let v = at(c as u32);
+    let (e1, e2) = (at(t.next[c]) - v, at(t.prev[c]) - v);
+    let face_normal = input.normals[t.corner_face[c] as usize];
+    let reflex_corner = face_normal != DVec3::ZERO && face_normal.dot(e1.cross(e2)) < 0.0;
+    let sign = if reflex == ReflexMode::Inward && reflex_corner {
         -1.0
     } else {
         1.0
     };
-    Ok(fr.v + sign * alpha * (fr.e1 + fr.e2))
+    Ok(v + sign * alpha * (e1 + e2))
+}
+
+/// The per-face clamp of the absolute chamfers (seed 000 §3.1, docs/algorithms/chamfers.md,
+/// "Clamp"): a face's parameter is lowered so that no convex corner moves along either of its
+/// edges by more than a quarter of the shorter one — along an edge, the cut-width point
+/// moves `d·cot(φ/2)` and the bisector point `l·cos(φ/2)`. Returns the parameter of every
+/// face and how many were lowered.
+pub(super) fn face_params(input: &RuleInput, rule: &super::CornerRule) -> (Vec<f64>, usize) {
+    let m = input.mesh;
+    let p = match *rule {
+        super::CornerRule::CutWidth { d } => d,
+        super::CornerRule::AngleBisector { l } => l,
+        _ => return (Vec::new(), 0),
+    };
+    // Along-edge move per unit of the parameter at a convex corner (c = m₁·m₂ = −cos φ):
+    // cot(φ/2) = (1 − c)/sin φ for the cut width, cos(φ/2) = √((1 − c)/2) for the bisector.
+    let along = |fr: &super::CornerFrame| match rule {
+        super::CornerRule::CutWidth { .. } => (1.0 - fr.c) / fr.sin_phi,
+        _ => ((1.0 - fr.c) / 2.0).max(0.0).sqrt(),
+    };
+    let mut lowered = 0;
+    let params = (0..m.num_faces())
+        .map(|f| {
+            let mut x = p;
+            for c in m.face_corners(f) {
+                let Ok(fr) = corner_frame(input, c) else {
+                    continue;
+                };
+                if fr.sin_phi <= 0.0 {
+                    continue;
+                }
+                let room = 0.25 * fr.e1.length().min(fr.e2.length());
+                let a = along(&fr);
+                if a > 0.0 {
+                    x = x.min(room / a);
+                }
+            }
+            if x < p {
+                lowered += 1;
+            }
+            x
+        })
+        .collect();
+    (params, lowered)
 }
 
 #[cfg(test)]
@@ -79,6 +131,7 @@ mod tests {
             topo: &t,
             normals: &n,
             cut_widths: &[],
+            face_params: &[],
             vertex_neighbourhood: &[],
         };
         corner_points(&rule, &input).unwrap().0

@@ -120,6 +120,7 @@ pub(super) fn prepare<'a>(
         topo: &topo,
         normals: &normals,
         cut_widths: &[],
+        face_params: &[],
         vertex_neighbourhood: skip,
     };
     let mut clamped = Vec::new();
@@ -178,6 +179,8 @@ pub(super) fn prepare<'a>(
         topo,
         normals,
         cut_widths,
+        face_params: Vec::new(),
+        clamped_faces: 0,
         combination: p_flags,
         dissolved_edges,
         clamped,
@@ -277,6 +280,7 @@ mod tests {
             topo: &t,
             normals: &[DVec3::Z],
             cut_widths: &widths,
+            face_params: &[],
             vertex_neighbourhood: &[],
         };
         corner_points(&rule, &input).unwrap().0

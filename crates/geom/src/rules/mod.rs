@@ -134,6 +134,8 @@ pub struct RuleInput<'a> {
     pub normals: &'a [DVec3],
     /// Per-edge cut width for the cylindrical family (empty otherwise).
     pub cut_widths: &'a [f64],
+    /// Per-face l or d of a clamped absolute chamfer (empty: the rule's own everywhere).
+    pub face_params: &'a [f64],
     /// Per-face vertex-neighbourhood flag for the combination rule.
     pub vertex_neighbourhood: &'a [bool],
 }
@@ -225,8 +227,14 @@ pub fn corner_points(
         }
         for c in m.face_corners(f) {
             let placed = match *rule {
-                CornerRule::AngleBisector { l } => chamfer::angle_bisector(input, c, l),
-                CornerRule::CutWidth { d } => chamfer::cut_width(input, c, d),
+                CornerRule::AngleBisector { l } => chamfer::angle_bisector(
+                    input,
+                    c,
+                    input.face_params.get(f).copied().unwrap_or(l),
+                ),
+                CornerRule::CutWidth { d } => {
+                    chamfer::cut_width(input, c, input.face_params.get(f).copied().unwrap_or(d))
+                }
                 CornerRule::VectorSum { alpha, reflex } => {
                     chamfer::vector_sum(input, c, alpha, reflex)
                 }

@@ -192,6 +192,7 @@ mod tests {
             topo: &topo,
             normals: &normals,
             cut_widths: &[],
+            face_params: &[],
             vertex_neighbourhood: &[],
         };
         let s = fitting_scales(&input, &w, &[], 1.0);

@@ -28,6 +28,10 @@ pub struct Prepared<'a> {
     pub normals: Vec<DVec3>,
     /// Per-edge cut widths (cylindrical family; empty otherwise).
     pub cut_widths: Vec<f64>,
+    /// Per-face l or d of a clamped absolute chamfer (empty otherwise).
+    pub face_params: Vec<f64>,
+    /// Faces whose l or d the clamp lowered.
+    pub clamped_faces: usize,
     /// The combination run's flags on `mesh`, when this step continues a run.
     pub combination: Option<Vec<bool>>,
     /// Flat edges merged away.
@@ -48,6 +52,7 @@ impl<'a> Prepared<'a> {
             topo: &self.topo,
             normals: &self.normals,
             cut_widths: &self.cut_widths,
+            face_params: &self.face_params,
             vertex_neighbourhood: self.combination.as_deref().unwrap_or(&[]),
         }
     }
@@ -85,6 +90,8 @@ fn plain<'a>(
         topo,
         normals,
         cut_widths: Vec::new(),
+        face_params: Vec::new(),
+        clamped_faces: 0,
         combination: None,
         dissolved_edges: 0,
         clamped: Vec::new(),
@@ -112,10 +119,15 @@ impl CornerRule {
             _ => None,
         };
         if self.is_cylindrical_family() {
-            cylindrical::prepare(self, mesh, attrs, state, options, known)
-        } else {
-            Ok(plain(mesh, attrs, known)?)
+            return cylindrical::prepare(self, mesh, attrs, state, options, known);
         }
+        let mut prep = plain(mesh, attrs, known)?;
+        if options.overlap == super::Overlap::Clamp {
+            let (params, lowered) = super::chamfer::face_params(&prep.input(), self);
+            prep.face_params = params;
+            prep.clamped_faces = lowered;
+        }
+        Ok(prep)
     }
 
     /// The radius this rule rounds an edge with attributes `attr` to: the edge's own radius,

@@ -48,6 +48,9 @@ pub struct ParamSpec {
     /// The range a slider offers.
     pub slider: (f64, f64),
     pub scale: Scale,
+    /// The largest value that can be repeated any number of times, when it is below
+    /// `below`, and why (a value above it is admitted with a warning).
+    pub repeatable: Option<(f64, &'static str)>,
 }
 
 impl ParamSpec {
@@ -112,6 +115,7 @@ const fn length(
         default,
         slider: (0.001, 10.0),
         scale: Scale::Logarithmic,
+        repeatable: None,
     }
 }
 
@@ -176,8 +180,13 @@ pub const CATALOGUE: [Entry; 10] = [
             below: 0.5,
             expected: "0 < alpha < 0.5 (0.25 or less recommended)",
             default: 0.2,
-            slider: (0.001, 0.499),
+            // The slider ends at the repeatable bound; a typed value may go past it.
+            slider: (0.001, 0.25),
             scale: Scale::Linear,
+            repeatable: Some((
+                0.25,
+                "seed 000's \"any number of times\" needs α ≤ ¼: above it some eigenvalue 1 − 4α sin²(πk/n) of a face is negative, and repeated steps fold its new faces into zig-zags",
+            )),
         }),
         reflex_option: true,
     },

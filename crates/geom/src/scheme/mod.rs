@@ -147,6 +147,47 @@ impl Scheme {
         })
     }
 
+    /// Why this scheme's parameter is unsafe to repeat, when it is above the catalogue's
+    /// repeatable bound (vector sum with ¼ < α < ½).
+    pub fn repeat_warning(&self) -> Option<String> {
+        let p = self.kind().entry().param?;
+        let (bound, why) = p.repeatable?;
+        let x = self.param()?;
+        (x > bound).then(|| format!("{} {} = {x} is above {bound}: {why}", self.name(), p.symbol))
+    }
+
+    /// Whether repeating this scheme needs its parameter shrunk: the absolute chamfers,
+    /// whose new faces are about l or d wide and are cut from both sides by the same value
+    /// again (seed 000 §3.1, docs/algorithms/chamfers.md: about 4× per step).
+    pub fn shrinks_when_repeated(&self) -> bool {
+        matches!(
+            self,
+            Scheme::Biquadratic(CornerRule::AngleBisector { .. } | CornerRule::CutWidth { .. })
+        )
+    }
+
+    /// `n` steps of this scheme, the parameter divided by `shrink` at each step after the
+    /// first when it [shrinks when repeated](Scheme::shrinks_when_repeated) (the same scheme
+    /// `n` times otherwise).
+    pub fn schedule(&self, n: usize, shrink: f64) -> Vec<Scheme> {
+        let mut out = Vec::with_capacity(n);
+        let mut s = *self;
+        for _ in 0..n {
+            out.push(s);
+            s = s.shrunk(shrink);
+        }
+        out
+    }
+
+    /// The next step of a shrinking schedule: the parameter divided by `shrink` for the
+    /// absolute chamfers, unchanged otherwise.
+    pub fn shrunk(&self, shrink: f64) -> Scheme {
+        match self.param() {
+            Some(x) if self.shrinks_when_repeated() => self.with_param(x / shrink),
+            _ => *self,
+        }
+    }
+
     /// Checks the parameter against the catalogue's range.
     pub fn validate(&self) -> Result<(), ParamError> {
         match (self.kind().entry().param, self.param()) {

@@ -139,6 +139,8 @@ pub struct ModelTab {
     pub budget_mib: u64,
     /// Clamp radii whose rounds do not fit their faces (on by default; off: refuse them).
     pub clamp: bool,
+    /// Step >> after a step of the same absolute chamfer divides its l or d by this.
+    pub shrink: f64,
     /// A step stopped at the budget: (view, estimate) waiting for the user's answer.
     pub question: Option<(usize, prism_geom::error::OverBudget)>,
     drag: Option<VertexDrag>,
@@ -175,6 +177,7 @@ impl ModelTab {
             next,
             budget_mib: budget_mib.max(64),
             clamp: true,
+            shrink: 4.0,
             question: None,
             drag: None,
             drags: 0,
@@ -291,9 +294,15 @@ impl ModelTab {
     }
 
     /// Step >>: appends the next step to the active view's pipeline.
+    /// Step >>: appends the next scheme to the active view's pipeline; an absolute chamfer
+    /// after a step of the same kind continues its schedule (l or d divided by
+    /// [`ModelTab::shrink`]).
     pub fn step(&mut self) {
-        let (view, scheme) = (self.active, self.next);
-        self.push(Edit::PushStep { view, scheme });
+        self.push(Edit::PushStep {
+            view: self.active,
+            scheme: self.next,
+            shrink: self.shrink,
+        });
     }
 
     /// << Back: removes the last step of the active view's pipeline.

@@ -94,6 +94,13 @@ impl ModelTab {
         if let Some(n) = scheme_editor(ui, "next", "scheme of the next step", &self.next) {
             self.next = n;
         }
+        if self.next.shrinks_when_repeated() {
+            ui.horizontal(|ui| {
+                ui.label("repeated, divide by");
+                ui.add(egui::DragValue::new(&mut self.shrink).range(1.0..=16.0).speed(0.05))
+                    .on_hover_text("Step >> after a step of the same chamfer divides its l or d by this (seed 000: about 4, so the new faces are not cut from both sides)");
+            });
+        }
         ui.horizontal(|ui| {
             if ui.button("Step >> (S)").clicked() {
                 self.step();
@@ -130,10 +137,11 @@ impl ModelTab {
         }
         let mut clamp = self.clamp;
         if ui
-            .checkbox(&mut clamp, "Clamp overlapping radii")
+            .checkbox(&mut clamp, "Clamp overlapping radii and chamfers")
             .on_hover_text(
                 "Lower the radius of edges whose rounds do not fit their faces to what fits \
-                 (listed in the status bar); off: such a step is refused, naming the edges",
+                 (listed in the status bar), and a chamfer's l or d on faces too small for it; \
+                 off: such a rounding step is refused, naming the edges",
             )
             .changed()
         {

@@ -2,8 +2,8 @@
 //! step that Step >> appends. The list, the defaults, the slider ranges and scales come
 //! from the scheme catalogue.
 
-use prism_geom::Scheme;
 use prism_geom::scheme::{CATALOGUE, Scale, SchemeKind};
+use prism_geom::{CornerRule, ReflexMode, Scheme};
 
 /// A scheme picker with its parameter; returns the new scheme when the user changed it.
 /// `name` is what screen readers (and the UI tests) call the picker.
@@ -37,6 +37,11 @@ pub fn scheme_editor(
             // Lengths are in model units: a logarithmic slider, and a typed value may leave
             // its range.
             let slider = match p.scale {
+                // The slider ends at the repeatable bound: typing may go past it, up to the
+                // admissible range, with the warning below.
+                Scale::Linear if p.repeatable.is_some() => {
+                    slider.clamping(egui::SliderClamping::Never)
+                }
                 Scale::Linear => slider,
                 Scale::Logarithmic => slider
                     .logarithmic(true)
@@ -49,7 +54,33 @@ pub fn scheme_editor(
                 out = Some(s.with_param(x));
             }
         }
+        // Seed 000's reflex-corner remark: the displacement reversed at reflex corners.
+        if let Scheme::Biquadratic(CornerRule::VectorSum { alpha, reflex }) = *s {
+            let mut inward = reflex == ReflexMode::Inward;
+            let r = ui.checkbox(&mut inward, "reflex inward").on_hover_text(
+                "reverse the displacement at reflex corners (seed 000's remark on concave faces)",
+            );
+            if r.changed() {
+                let reflex = if inward {
+                    ReflexMode::Inward
+                } else {
+                    ReflexMode::AsPrinted
+                };
+                out = Some(Scheme::Biquadratic(CornerRule::VectorSum { alpha, reflex }));
+            }
+        }
     });
+    // A value that cannot be repeated (vector sum above α = ¼) is admitted and named.
+    let shown = out.as_ref().unwrap_or(s);
+    if let (Some(w), Some(p)) = (shown.repeat_warning(), kind.entry().param)
+        && let Some((bound, _)) = p.repeatable
+    {
+        ui.colored_label(
+            egui::Color32::from_rgb(240, 170, 60),
+            format!("{} above {bound}: folds when repeated", p.symbol),
+        )
+        .on_hover_text(w);
+    }
     out
 }
 

@@ -1,0 +1,112 @@
+//! Chamfers that can be repeated (seed 000 §3.1, docs/algorithms/chamfers.md): the vector
+//! sum without a face normal, its repeatable bound α ≤ ¼ named, and the absolute chamfers'
+//! per-face clamp with a shrinking schedule that survives sharp corners.
+
+use prism_geom::rules::Overlap;
+use prism_geom::scheme::parse_pipeline;
+use prism_geom::{CornerRule, EdgeAttrs, Pipeline, PolyMesh, Scheme, StepOptions, primitives};
+
+fn run(m: &PolyMesh, steps: Vec<Scheme>, overlap: Overlap) -> Pipeline {
+    let mut p = Pipeline::new(m.clone(), EdgeAttrs::new(), steps);
+    p.options = StepOptions {
+        overlap,
+        ..StepOptions::default()
+    };
+    p.compute().unwrap();
+    p
+}
+
+fn flips(p: &Pipeline) -> Vec<usize> {
+    p.levels()[1..]
+        .iter()
+        .map(|l| l.report.as_ref().unwrap().flipped.len())
+        .collect()
+}
+
+/// A five-point star prism whose tips are 38° (the solid).
+fn star_prism() -> PolyMesh {
+    // Inner radius for 38° tips at outer radius 1.5.
+    primitives::extrude(&primitives::star_polygon(5, 1.5, 0.596168), &[], 0.0, 1.0)
+}
+
+#[test]
+fn the_shrinking_schedule_survives_sharp_tips_when_clamped() {
+    let star = star_prism();
+    let first: Scheme = "cut-width:d=0.1".parse().unwrap();
+    let steps = first.schedule(3, 4.0);
+    assert_eq!(
+        steps,
+        parse_pipeline("cut-width:d=0.1,cut-width:d=0.025,cut-width:d=0.00625").unwrap()
+    );
+    // As printed, the tips move d/sin(19°) ≈ 3.07 d and their faces fold at step 3.
+    assert_eq!(
+        flips(&run(&star, steps.clone(), Overlap::Refuse)),
+        vec![0, 0, 40]
+    );
+    let p = run(&star, steps, Overlap::Clamp);
+    assert_eq!(flips(&p), vec![0, 0, 0]);
+    let lowered: Vec<usize> = p.levels()[1..]
+        .iter()
+        .map(|l| l.report.as_ref().unwrap().clamped_faces)
+        .collect();
+    assert!(lowered.iter().all(|&n| n > 0), "{lowered:?}");
+    // The same with the angle bisector, and a constant l that the clamp alone keeps sound.
+    for pipeline in [
+        "angle-bisector:l=0.1,angle-bisector:l=0.025,angle-bisector:l=0.00625",
+        "angle-bisector:l=0.1,angle-bisector:l=0.1,angle-bisector:l=0.1",
+    ] {
+        let p = run(&star, parse_pipeline(pipeline).unwrap(), Overlap::Clamp);
+        assert_eq!(flips(&p), vec![0, 0, 0], "{pipeline}");
+    }
+    // The clamp leaves a solid whose faces have room untouched.
+    let cube = primitives::cube3();
+    let p = run(&cube, first.schedule(3, 4.0), Overlap::Clamp);
+    assert_eq!(p.levels()[1].report.as_ref().unwrap().clamped_faces, 0);
+    let q = run(&cube, first.schedule(3, 4.0), Overlap::Refuse);
+    assert!(p.levels()[1].mesh == q.levels()[1].mesh);
+    // Schedules shrink only l and d.
+    let r: Scheme = "combination:r=0.2".parse().unwrap();
+    assert_eq!(r.schedule(3, 4.0), vec![r; 3]);
+}
+
+#[test]
+fn vector_sum_above_a_quarter_is_named_and_needs_no_face_normal() {
+    let at = |alpha| {
+        Scheme::Biquadratic(CornerRule::VectorSum {
+            alpha,
+            reflex: prism_geom::ReflexMode::AsPrinted,
+        })
+    };
+    assert!(at(0.25).repeat_warning().is_none());
+    let w = at(0.4).repeat_warning().unwrap();
+    assert!(w.contains("0.4") && w.contains("¼"), "{w}");
+    // α = 0.4 flattens faces at level 2 and went on to stop with "face 50 has no area":
+    // the rule as printed needs no normal, so all four levels are made (folded, reported).
+    let p = run(&primitives::cube3(), vec![at(0.4); 4], Overlap::Refuse);
+    assert_eq!(p.levels().len(), 5);
+    assert!(p.levels()[4].mesh.all_finite());
+    assert!(!p.levels()[4].report.as_ref().unwrap().flipped.is_empty());
+    // The reflex-inward option on a concave solid with flattened faces runs too.
+    let inward = Scheme::Biquadratic(CornerRule::VectorSum {
+        alpha: 0.4,
+        reflex: prism_geom::ReflexMode::Inward,
+    });
+    let p = run(&primitives::l_block(), vec![inward; 4], Overlap::Refuse);
+    assert!(p.levels()[4].mesh.all_finite());
+}
+
+#[test]
+fn primitives_are_closed_solids_of_positive_volume() {
+    for m in [
+        primitives::ngon_prism(6, 1.5, 2.0),
+        primitives::pyramid(5, 1.0, 1.5),
+        star_prism(),
+    ] {
+        let t = prism_geom::Topology::build(&m).unwrap();
+        t.require_closed(&m).unwrap();
+        assert!(prism_geom::geometry::signed_volume(&m) > 0.0);
+    }
+    // Hexagonal prism R = 1.5, h = 2: volume (3√3/2)·R²·h.
+    let v = prism_geom::geometry::signed_volume(&primitives::ngon_prism(6, 1.5, 2.0));
+    assert!((v - 1.5 * 3f64.sqrt() * 2.25 * 2.0).abs() < 1e-12, "{v}");
+}
