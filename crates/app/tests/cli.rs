@@ -620,3 +620,56 @@ fn chamfer_schedules_and_the_vector_sum_bound() {
         assert_eq!(run_with(line, &[&out]).status.code(), Some(2), "{line}");
     }
 }
+
+/// `prism new`: solids without a file, an extruded concave outline with a hole, and a
+/// crossing outline named.
+#[test]
+fn new_solids_from_the_command_line() {
+    let (out, so, _) = succeeds_to(
+        "hex.obj",
+        "new prism --sides 6 --radius 1.5 --height 2 -o {}",
+    );
+    assert!(
+        so.contains("12 vertices, 18 edges, 8 faces, volume 11.691343"),
+        "{so}"
+    );
+    assert_finite(&out);
+    let outline = tmp("l.json");
+    std::fs::write(
+        &outline,
+        r#"{"closed": true, "points": [[0,0],[2,0],[2,1],[1,1],[1,2],[0,2]]}"#,
+    )
+    .unwrap();
+    let solid = tmp("l.prism.json");
+    let (so, _) = succeeds(run_with(
+        "new extrude --outline {} --hole 0.3 --height 0.5 -o {}",
+        &[&outline, &solid],
+    ));
+    // 3 × (1 − 0.3²) × 0.5.
+    assert!(so.contains("volume 1.365000"), "{so}");
+    let (so, _) = succeeds(run_with(
+        "subdivide {} -o {} --scheme combination --radius 0.05 --levels 2 --clamp",
+        &[&solid, &tmp("l-round.prism.json")],
+    ));
+    assert_eq!(so.matches("flipped=0,").count(), 2, "{so}");
+    std::fs::write(
+        &outline,
+        r#"{"closed": true, "points": [[0,0],[1,1],[1,0],[0,1]]}"#,
+    )
+    .unwrap();
+    let o = run_with(
+        "new extrude --outline {} -o {}",
+        &[&outline, &tmp("bow.obj")],
+    );
+    assert_eq!(o.status.code(), Some(1));
+    assert!(
+        text(&o)
+            .1
+            .contains("segment 0 (points 0-1) meets segment 2"),
+        "{:?}",
+        text(&o)
+    );
+    let o = run_with("new box --size 1,0,1 -o {}", &[&tmp("flat.obj")]);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(text(&o).1.contains("depth = 0"), "{:?}", text(&o));
+}

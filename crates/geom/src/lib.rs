@@ -35,6 +35,7 @@ pub mod primitives;
 pub mod refine;
 pub mod rules;
 pub mod scheme;
+pub mod solid;
 pub mod step;
 pub mod tags;
 pub mod topology;

@@ -9,7 +9,7 @@ use clap::Args;
 use prism_geom::curve::{CurveScheme, Polyline};
 use prism_geom::io::write_atomically;
 use serde::{Deserialize, Serialize};
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 #[derive(Debug, Args)]
 pub struct CurveArgs {
@@ -39,6 +39,25 @@ struct CurveOut {
     curvature: Vec<f64>,
 }
 
+/// A polyline file `{"closed": bool, "points": [[x, y], ...]}`, or the error naming the
+/// line and column.
+pub fn read_polyline(path: &Path) -> Result<Polyline, CliError> {
+    let text = std::fs::read_to_string(path)
+        .map_err(|e| CliError::input(format!("cannot read {}: {e}", path.display())))?;
+    let c: CurveIn = serde_json::from_str(&text).map_err(|e| {
+        CliError::input(format!(
+            "{}, line {}, column {}: {e} (expected {{\"closed\": bool, \"points\": [[x, y], ...]}})",
+            path.display(),
+            e.line(),
+            e.column()
+        ))
+    })?;
+    Ok(Polyline::new(
+        c.points.iter().map(|&p| p.into()).collect(),
+        c.closed,
+    ))
+}
+
 pub fn run(a: CurveArgs) -> Result<(), CliError> {
     let scheme = CurveScheme::from_name(&a.scheme).ok_or_else(|| {
         CliError::usage(format!(
@@ -46,17 +65,7 @@ pub fn run(a: CurveArgs) -> Result<(), CliError> {
             a.scheme
         ))
     })?;
-    let text = std::fs::read_to_string(&a.input)
-        .map_err(|e| CliError::input(format!("cannot read {}: {e}", a.input.display())))?;
-    let c: CurveIn = serde_json::from_str(&text).map_err(|e| {
-        CliError::input(format!(
-            "{}, line {}, column {}: {e} (expected {{\"closed\": bool, \"points\": [[x, y], ...]}})",
-            a.input.display(),
-            e.line(),
-            e.column()
-        ))
-    })?;
-    let poly = Polyline::new(c.points.iter().map(|&p| p.into()).collect(), c.closed);
+    let poly = read_polyline(&a.input)?;
     let out = poly
         .refine_levels(scheme, a.levels)
         .map_err(|e| CliError::input(format!("{}: {e}", a.input.display())))?;

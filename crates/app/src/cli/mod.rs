@@ -3,6 +3,7 @@
 mod bench;
 mod curve;
 mod limit;
+mod new;
 mod render;
 mod subdivide;
 
@@ -75,6 +76,9 @@ pub enum Command {
     /// Refine a 2D polyline with Catmull-Clark, the circle-preserving or the
     /// log-spiral-preserving rule; writes the points and their curvature.
     Curve(curve::CurveArgs),
+    /// Make a new solid: a box, a prism or pyramid over a regular polygon, a tripod, or a
+    /// closed outline extruded (concave, with an optional hole).
+    New(new::NewArgs),
     /// List the subdivision schemes: name, family, parameter with its range and default,
     /// paper, equation and the docs page with the formula.
     Schemes,
@@ -109,6 +113,7 @@ pub fn run(cli: Cli) -> Result<(), CliError> {
         Some(Command::Bench(a)) => bench::run(a),
         Some(Command::Render(a)) => render::run(a),
         Some(Command::Curve(a)) => curve::run(a),
+        Some(Command::New(a)) => new::run(a),
         Some(Command::Schemes) => {
             print!("{}", prism_geom::scheme::table());
             Ok(())

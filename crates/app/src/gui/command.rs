@@ -172,6 +172,12 @@ pub enum Command {
     RemoveOverBudgetStep,
     /// A message for the status bar (what an action did, or why it did nothing).
     Say(String),
+    /// Opens the New solid window (`extrude`: on the sketch's extrusion).
+    ShowNewSolid {
+        extrude: bool,
+    },
+    /// Makes a new solid the document (undoable), keeping the pipelines and the sketch.
+    NewSolid(prism_geom::solid::Solid),
 }
 
 impl From<Edit> for Command {

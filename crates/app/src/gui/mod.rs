@@ -19,10 +19,13 @@ pub mod document;
 mod edits;
 mod files;
 pub mod model;
+mod new_solid;
 mod viewport;
 
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod tests_new_solid;
 #[cfg(test)]
 mod tests_rounding;
 
@@ -146,6 +149,7 @@ pub struct PrismApp {
     note_at: u64,
     screenshot: Option<(PathBuf, u32, ScreenshotSlot)>,
     last_file: Option<PathBuf>,
+    pub new_solid: new_solid::NewSolid,
 }
 
 impl PrismApp {
@@ -196,6 +200,7 @@ impl PrismApp {
             tab: launch.tab.unwrap_or_default(),
             model,
             curves: curves::CurvesTab::default(),
+            new_solid: Default::default(),
             note: None,
             note_at: 0,
             screenshot: launch
@@ -278,6 +283,13 @@ impl PrismApp {
                 }
             }
             Command::Say(text) => self.say(text),
+            Command::ShowNewSolid { extrude } => {
+                self.new_solid.open = true;
+                if extrude {
+                    self.new_solid.kind = new_solid::Kind::Extrusion;
+                }
+            }
+            Command::NewSolid(solid) => self.make_solid(&solid),
         }
         self.model.sync(&self.doc);
         if self.note.is_some() && self.note_at != self.doc.generation() {
@@ -291,6 +303,37 @@ impl PrismApp {
     pub fn flush(&mut self) {
         for c in self.model.take_commands() {
             self.run(c);
+        }
+    }
+
+    /// Makes `solid` the document (undoable), keeping the pipelines and the curve sketch, and
+    /// shows it on the Model tab.
+    pub fn make_solid(&mut self, solid: &prism_geom::solid::Solid) {
+        match solid.build() {
+            Ok(mesh) => {
+                let old = self.doc.state();
+                let state = DocState {
+                    mesh,
+                    edge_attrs: Default::default(),
+                    tags: Default::default(),
+                    pipelines: old.pipelines.clone(),
+                    curve: old.curve.clone(),
+                };
+                let name = match solid {
+                    prism_geom::solid::Solid::Box { .. } => "a new box",
+                    prism_geom::solid::Solid::Prism { .. } => "a new prism",
+                    prism_geom::solid::Solid::Pyramid { .. } => "a new pyramid",
+                    prism_geom::solid::Solid::Tripod { .. } => "a new tripod",
+                    prism_geom::solid::Solid::Extrusion { .. } => "the extruded sketch",
+                };
+                let origin = document::Origin {
+                    path: None,
+                    name: name.into(),
+                };
+                self.replace_document(state, origin);
+                self.tab = Tab::Model;
+            }
+            Err(e) => self.say(format!("no solid made: {e}")),
         }
     }
 
@@ -354,6 +397,9 @@ impl PrismApp {
         let mut out = Vec::new();
         egui::MenuBar::new().ui(ui, |ui| {
             ui.menu_button("File", |ui| {
+                if ui.button("New solid…").clicked() {
+                    out.push(Command::ShowNewSolid { extrude: false });
+                }
                 if ui.button("Open… (Ctrl+O)").clicked() {
                     out.push(Command::OpenDialog);
                 }
@@ -438,6 +484,11 @@ impl PrismApp {
                     .inner;
                 commands.extend(out);
             }
+        }
+        if self.new_solid.open
+            && let Some(c) = self.new_solid.window(&ctx, &self.doc.state().curve)
+        {
+            commands.push(c);
         }
         for c in commands {
             self.run(c);

@@ -196,6 +196,13 @@ impl CurvesTab {
             if ui.button("Fit").clicked() {
                 self.fit_next = true;
             }
+            if ui
+                .button("Extrude into a solid…")
+                .on_hover_text("a new model: this closed polygon (or its refined curve) extruded, with an optional hole")
+                .clicked()
+            {
+                self.out.push(Command::ShowNewSolid { extrude: true });
+            }
         });
         ui.horizontal_wrapped(|ui| {
             ui.label("Presets:");
