@@ -673,3 +673,55 @@ fn new_solids_from_the_command_line() {
     assert_eq!(o.status.code(), Some(1));
     assert!(text(&o).1.contains("depth = 0"), "{:?}", text(&o));
 }
+
+/// Curves headless: the fig. 6 preset, arc length and evolute in the JSON, the plot, and the
+/// §4 study's table and picture.
+#[test]
+fn curve_presets_plots_and_the_parameter_study() {
+    let out = tmp("fig6.json");
+    let plot = tmp("fig6.png");
+    let (so, _) = succeeds(run_with(
+        "curve --preset fig6:60,30,1,1 --scheme log-spiral --levels 4 -o {} --plot {}",
+        &[&out, &plot],
+    ));
+    assert!(
+        so.contains("49 points after 4 level(s) of log-spiral"),
+        "{so}"
+    );
+    let v: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&out).unwrap()).unwrap();
+    let (pts, s, e) = (
+        v["points"].as_array().unwrap(),
+        v["arc_length"].as_array().unwrap(),
+        v["evolute"].as_array().unwrap(),
+    );
+    assert_eq!((s.len(), e.len()), (pts.len(), pts.len()));
+    // Open ends have no centre of curvature; the arc length runs from 0 and grows.
+    assert!(e[0].is_null() && e[1].is_array());
+    assert_eq!(s[0].as_f64(), Some(0.0));
+    assert!(s.windows(2).all(|w| w[1].as_f64() > w[0].as_f64()));
+    let img = image::open(&plot).unwrap().to_rgb8();
+    assert_eq!(img.dimensions(), (1200, 520));
+    // The curve is drawn in its blue.
+    assert!(img.pixels().filter(|p| p[2] > 150 && p[0] < 80).count() > 500);
+
+    let table = tmp("sweep.csv");
+    let picture = tmp("sweep.png");
+    let (so, _) = succeeds(run_with(
+        "curve --sweep --angles 30,60 --lengths 0.5,1,2 --levels 4 -o {} --plot {}",
+        &[&table, &picture],
+    ));
+    assert!(so.starts_with("36 configurations × 4 levels"), "{so}");
+    let csv = std::fs::read_to_string(&table).unwrap();
+    assert_eq!(csv.lines().count(), 37);
+    assert!(csv.starts_with("theta1,theta2,l1,l2,catmull-clark_defect"));
+    assert!(image::open(&picture).is_ok());
+    for bad in [
+        "curve --preset fig6:60,30,1 --scheme circle -o {}",
+        "curve --preset fig6:60,30,1,0 --scheme circle -o {}",
+        "curve --sweep --lengths 1,-2 -o {}",
+        "curve --scheme circle -o {}",
+    ] {
+        assert_eq!(run_with(bad, &[&out]).status.code(), Some(2), "{bad}");
+    }
+}

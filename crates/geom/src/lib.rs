@@ -22,6 +22,7 @@
 pub mod analysis;
 pub mod ancestry;
 pub mod curve;
+pub mod curve_study;
 pub mod dissolve;
 pub mod edge_attrs;
 pub mod error;

@@ -2,6 +2,7 @@
 
 mod bench;
 mod curve;
+mod curve_plot;
 mod limit;
 mod new;
 mod render;

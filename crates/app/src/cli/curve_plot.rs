@@ -1,0 +1,333 @@
+//! The pictures of `prism curve`, drawn with `plotters` into a buffer and written as PNG:
+//! a refined curve (its control polygon, the curve, its curvature comb) beside its curvature
+//! against arc length; and the §4 study as dimensional stacking (θ₁, θ₂ outer, l₁, l₂ inner).
+//! Text uses the font egui ships (Ubuntu Light), so nothing depends on the system's fonts.
+
+use super::CliError;
+use plotters::prelude::*;
+use prism_geom::curve::Polyline;
+use prism_geom::curve_study::StudyRow;
+use std::path::Path;
+
+const FONT: &str = "sans-serif";
+
+fn register_font() {
+    static ONCE: std::sync::Once = std::sync::Once::new();
+    ONCE.call_once(|| {
+        // The bytes are a valid TrueType font (egui draws its whole UI with them).
+        let _ = plotters::style::register_font(
+            FONT,
+            FontStyle::Normal,
+            epaint_default_fonts::UBUNTU_LIGHT,
+        );
+    });
+}
+
+fn draw_error(e: impl std::fmt::Display) -> CliError {
+    CliError::input(format!("drawing the plot: {e}"))
+}
+
+/// Writes an RGB buffer of `w × h` as a PNG at `path` (atomically).
+fn write_png(buf: Vec<u8>, w: u32, h: u32, path: &Path) -> Result<(), CliError> {
+    let img = image::RgbImage::from_raw(w, h, buf).ok_or_else(|| draw_error("buffer size"))?;
+    let mut png = Vec::new();
+    img.write_to(&mut std::io::Cursor::new(&mut png), image::ImageFormat::Png)
+        .map_err(draw_error)?;
+    prism_geom::io::write_atomically(path, &png).map_err(CliError::input)
+}
+
+/// The range of `v` with a margin, never empty.
+fn padded(lo: f64, hi: f64) -> std::ops::Range<f64> {
+    let span = (hi - lo).abs().max(1e-9);
+    (lo - 0.05 * span)..(hi + 0.05 * span)
+}
+
+/// Curve, control polygon and comb (left); curvature against arc length (right).
+pub fn curve_plot(
+    control: &Polyline,
+    refined: &Polyline,
+    title: &str,
+    path: &Path,
+) -> Result<(), CliError> {
+    register_font();
+    let (w, h) = (1200u32, 520u32);
+    let mut buf = vec![0u8; (w * h * 3) as usize];
+    {
+        let root = BitMapBackend::with_buffer(&mut buf, (w, h)).into_drawing_area();
+        root.fill(&WHITE).map_err(draw_error)?;
+        let (left, right) = root.split_horizontally(w / 2);
+        let k = refined.curvature();
+        let s = refined.arc_length();
+        let pts = &refined.points;
+        // The comb: 0.25 of the curve's extent at the largest |κ|, inwards for κ > 0.
+        let (mut lo, mut hi) = (pts[0], pts[0]);
+        for p in pts.iter().chain(&control.points) {
+            lo = lo.min(*p);
+            hi = hi.max(*p);
+        }
+        let extent = (hi - lo).max_element().max(1e-9);
+        let kmax = k.iter().fold(0.0f64, |m, x| m.max(x.abs())).max(1e-12);
+        let scale = 0.25 * extent / kmax;
+        let n = pts.len();
+        let normal = |i: usize| {
+            let a = if i > 0 || refined.closed {
+                pts[(i + n - 1) % n]
+            } else {
+                pts[i]
+            };
+            let b = if i + 1 < n || refined.closed {
+                pts[(i + 1) % n]
+            } else {
+                pts[i]
+            };
+            (b - a).perp().normalize_or_zero()
+        };
+        let teeth: Vec<(f64, f64)> = (0..n)
+            .map(|i| {
+                let t = pts[i] - scale * k[i] * normal(i);
+                (t.x, t.y)
+            })
+            .collect();
+        let (mut clo, mut chi) = (lo, hi);
+        for t in &teeth {
+            clo = clo.min((*t).into());
+            chi = chi.max((*t).into());
+        }
+        // Equal scales on both axes: a square box around the curve and its comb.
+        let c = 0.5 * (clo + chi);
+        let half = 0.5 * (chi - clo).max_element().max(1e-9) * 1.08;
+        let mut chart = ChartBuilder::on(&left)
+            .caption(title, (FONT, 20))
+            .margin(12)
+            .x_label_area_size(28)
+            .y_label_area_size(40)
+            .build_cartesian_2d((c.x - half)..(c.x + half), (c.y - half)..(c.y + half))
+            .map_err(draw_error)?;
+        chart
+            .configure_mesh()
+            .label_style((FONT, 13))
+            .disable_mesh()
+            .draw()
+            .map_err(draw_error)?;
+        let closed = |p: &Polyline| {
+            let mut v: Vec<(f64, f64)> = p.points.iter().map(|q| (q.x, q.y)).collect();
+            if p.closed && !v.is_empty() {
+                v.push(v[0]);
+            }
+            v
+        };
+        let comb = RGBColor(230, 120, 60);
+        for (i, t) in teeth.iter().enumerate() {
+            chart
+                .draw_series(LineSeries::new([(pts[i].x, pts[i].y), *t], comb.mix(0.6)))
+                .map_err(draw_error)?;
+        }
+        let mut tips = teeth.clone();
+        if refined.closed && !tips.is_empty() {
+            tips.push(tips[0]);
+        }
+        chart
+            .draw_series(LineSeries::new(tips, comb))
+            .map_err(draw_error)?
+            .label("curvature comb")
+            .legend(move |(x, y)| PathElement::new([(x, y), (x + 18, y)], comb));
+        chart
+            .draw_series(LineSeries::new(closed(control), RGBColor(150, 150, 150)))
+            .map_err(draw_error)?
+            .label("control polygon")
+            .legend(|(x, y)| PathElement::new([(x, y), (x + 18, y)], RGBColor(150, 150, 150)));
+        chart
+            .draw_series(LineSeries::new(
+                closed(refined),
+                ShapeStyle::from(&RGBColor(30, 90, 180)).stroke_width(2),
+            ))
+            .map_err(draw_error)?
+            .label("refined curve")
+            .legend(|(x, y)| PathElement::new([(x, y), (x + 18, y)], RGBColor(30, 90, 180)));
+        chart
+            .configure_series_labels()
+            .label_font((FONT, 13))
+            .background_style(WHITE.mix(0.8))
+            .border_style(BLACK)
+            .draw()
+            .map_err(draw_error)?;
+
+        // Curvature against arc length (the ends of an open polyline have none).
+        let range = if refined.closed {
+            0..n
+        } else {
+            1..n.saturating_sub(1)
+        };
+        let series: Vec<(f64, f64)> = range.map(|i| (s[i], k[i])).collect();
+        let (klo, khi) = series
+            .iter()
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| {
+                (a.min(p.1), b.max(p.1))
+            });
+        let (klo, khi) = if klo.is_finite() {
+            (klo, khi)
+        } else {
+            (0.0, 1.0)
+        };
+        let mut chart = ChartBuilder::on(&right)
+            .caption("curvature against arc length", (FONT, 20))
+            .margin(12)
+            .x_label_area_size(36)
+            .y_label_area_size(56)
+            .build_cartesian_2d(
+                padded(0.0, *s.last().unwrap_or(&1.0)),
+                padded(klo.min(0.0), khi),
+            )
+            .map_err(draw_error)?;
+        chart
+            .configure_mesh()
+            .x_desc("arc length s")
+            .y_desc("κ")
+            .label_style((FONT, 13))
+            .axis_desc_style((FONT, 15))
+            .draw()
+            .map_err(draw_error)?;
+        chart
+            .draw_series(LineSeries::new(
+                series.clone(),
+                ShapeStyle::from(&RGBColor(30, 90, 180)).stroke_width(2),
+            ))
+            .map_err(draw_error)?;
+        chart
+            .draw_series(
+                series
+                    .iter()
+                    .map(|&p| Circle::new(p, 2, RGBColor(30, 90, 180).filled())),
+            )
+            .map_err(draw_error)?;
+        root.present().map_err(draw_error)?;
+    }
+    write_png(buf, w, h, path)
+}
+
+/// The colours of the study's cells: method 2 better, method 1 better, a tie.
+pub const BETTER: RGBColor = RGBColor(60, 160, 90);
+pub const WORSE: RGBColor = RGBColor(235, 140, 50);
+pub const TIE: RGBColor = RGBColor(200, 200, 200);
+
+/// Dimensional stacking of the §4 study: θ₁ across and θ₂ up in the outer grid, l₁ across
+/// and l₂ up inside each cell; a cell is green where the log-spiral rule's curvature is more
+/// monotone than the circle rule's, orange where less, grey where they tie.
+pub fn study_plot(
+    rows: &[StudyRow],
+    axes: (&[f64], &[f64], &[f64], &[f64]),
+    path: &Path,
+) -> Result<(), CliError> {
+    register_font();
+    let (t1, t2, l1, l2) = axes;
+    let (w, h) = (900u32, 860u32);
+    let mut buf = vec![0u8; (w * h * 3) as usize];
+    {
+        let root = BitMapBackend::with_buffer(&mut buf, (w, h)).into_drawing_area();
+        root.fill(&WHITE).map_err(draw_error)?;
+        let (nx, ny) = (t1.len() * l1.len(), t2.len() * l2.len());
+        let mut chart = ChartBuilder::on(&root)
+            .caption(
+                "seed 002 §4: log-spiral (method 2) against circle (method 1)",
+                (FONT, 20),
+            )
+            .margin(16)
+            .x_label_area_size(80)
+            .y_label_area_size(50)
+            .build_cartesian_2d(0f64..nx as f64, 0f64..ny as f64)
+            .map_err(draw_error)?;
+        let (n1, n2) = (l1.len(), l2.len());
+        chart
+            .configure_mesh()
+            .disable_mesh()
+            .disable_x_axis()
+            .disable_y_axis()
+            .draw()
+            .map_err(draw_error)?;
+        let index = |v: &[f64], x: f64| v.iter().position(|&y| y == x).unwrap_or(0);
+        chart
+            .draw_series(rows.iter().map(|r| {
+                let x = (index(t1, r.theta1) * n1 + index(l1, r.l1)) as f64;
+                let y = (index(t2, r.theta2) * n2 + index(l2, r.l2)) as f64;
+                let c = match r.log_spiral_better() {
+                    Some(true) => BETTER,
+                    Some(false) => WORSE,
+                    None => TIE,
+                };
+                Rectangle::new([(x + 0.04, y + 0.04), (x + 0.96, y + 0.96)], c.filled())
+            }))
+            .map_err(draw_error)?;
+        // The outer grid.
+        for i in 0..=t1.len() {
+            let x = (i * n1) as f64;
+            chart
+                .draw_series(LineSeries::new([(x, 0.0), (x, ny as f64)], BLACK))
+                .map_err(draw_error)?;
+        }
+        for j in 0..=t2.len() {
+            let y = (j * n2) as f64;
+            chart
+                .draw_series(LineSeries::new([(0.0, y), (nx as f64, y)], BLACK))
+                .map_err(draw_error)?;
+        }
+        // Axis labels, placed in pixels from the chart's coordinates.
+        let style = (FONT, 14).into_font().color(&BLACK);
+        let label = |at: (f64, f64), dx: i32, dy: i32, text: String| -> Result<(), CliError> {
+            let (x, y) = chart.backend_coord(&at);
+            root.draw(&Text::new(text, (x + dx, y + dy), style.clone()))
+                .map_err(draw_error)
+        };
+        for (i, t) in t1.iter().enumerate() {
+            label(
+                ((i * n1) as f64 + 0.5 * n1 as f64, 0.0),
+                -14,
+                8,
+                format!("{t}°"),
+            )?;
+        }
+        for (j, t) in t2.iter().enumerate() {
+            label(
+                (0.0, (j * n2) as f64 + 0.5 * n2 as f64),
+                -44,
+                -7,
+                format!("{t}°"),
+            )?;
+        }
+        let lengths = |v: &[f64]| {
+            v.iter()
+                .map(|x| x.to_string())
+                .collect::<Vec<_>>()
+                .join(", ")
+        };
+        label(
+            (0.0, 0.0),
+            0,
+            30,
+            format!(
+                "outer: θ₁ across, θ₂ up; inside each cell: l₁ across ({}), l₂ up ({}); l₃ = 1",
+                lengths(l1),
+                lengths(l2)
+            ),
+        )?;
+        let (lx, ly) = chart.backend_coord(&(0.0, 0.0));
+        for (k, (c, name)) in [
+            (BETTER, "method 2 (log-spiral) more monotone"),
+            (WORSE, "method 1 (circle) more monotone"),
+            (TIE, "tie"),
+        ]
+        .into_iter()
+        .enumerate()
+        {
+            let x = lx + 290 * k as i32;
+            root.draw(&Rectangle::new(
+                [(x, ly + 54), (x + 14, ly + 68)],
+                c.filled(),
+            ))
+            .map_err(draw_error)?;
+            root.draw(&Text::new(name, (x + 20, ly + 53), style.clone()))
+                .map_err(draw_error)?;
+        }
+        root.present().map_err(draw_error)?;
+    }
+    write_png(buf, w, h, path)
+}
