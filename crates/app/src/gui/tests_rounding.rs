@@ -106,3 +106,34 @@ fn step_continues_a_shrinking_chamfer_schedule() {
     let p = &a.doc.state().pipelines[0];
     assert_eq!(p[3], p[4]);
 }
+
+/// The bundled Computer room at the app's default (clamping on): its 16 keyboard and stand
+/// edges are clamped, drawn orange at every level of the run, and no face flips.
+#[test]
+fn clamped_edges_are_highlighted_at_every_level() {
+    let mut a = opened(&asset("computer-room.obj"));
+    let steps = parse_pipeline(&["combination:r=0.2"; 3].join(",")).unwrap();
+    a.run(Edit::SetPipeline { view: 0, steps });
+    a.wait_idle();
+    for k in 1..=3 {
+        a.model.views[0].level = k;
+        rebuild(&mut a);
+        let v = &a.model.views[0];
+        assert!(
+            v.pipeline.levels()[k]
+                .report
+                .as_ref()
+                .unwrap()
+                .flipped
+                .is_empty()
+        );
+        let orange = v
+            .overlay
+            .lines
+            .iter()
+            .filter(|l| l.color == [1.0, 0.55, 0.10])
+            .count();
+        // Every clamped edge has at least one piece on the level: two ends each.
+        assert!(orange >= 2 * 16, "level {k}: {orange}");
+    }
+}

@@ -1,6 +1,6 @@
 //! What is drawn over each view's level: the previous level as a cage, the control mesh
-//! and its selected vertices (Vertices tool), marked and selected control edges where they
-//! are on this level, corner points with their displacement vectors, limit points with
+//! and its selected vertices (Vertices tool), marked, clamped (orange) and selected control
+//! edges where they are on this level, corner points with their displacement vectors, limit points with
 //! normals. An overlay is rebuilt when the hash of what it is made from changes (the level,
 //! the document, the selection, the display options, the tool); limit points come from a
 //! thread ([`super::view_pipe::ViewPipe::limit_points`]).
@@ -19,6 +19,8 @@ const CONTROL: [f32; 3] = [0.55, 0.62, 0.80];
 const SELECTED: [f32; 3] = [1.0, 0.86, 0.20];
 const CREASE: [f32; 3] = [0.95, 0.30, 0.25];
 const RADIUS: [f32; 3] = [0.25, 0.85, 0.90];
+/// Edges whose radius was clamped to fit their faces.
+const CLAMPED: [f32; 3] = [1.0, 0.55, 0.10];
 const CAGE: [f32; 3] = [0.95, 0.75, 0.25];
 const CORNER: [f32; 3] = [0.45, 0.95, 0.45];
 const LIMIT: [f32; 3] = [0.95, 0.45, 0.95];
@@ -111,7 +113,20 @@ impl ModelTab {
         };
         let creased = marked(&|a| a.crease > 0.0);
         let radiused = marked(&|a| a.radius.is_some());
-        if !creased.is_empty() || !radiused.is_empty() || !self.sel_edges.is_empty() {
+        // Edges whose radius was clamped to fit (when the rounding starts on the control
+        // mesh, their names are control edges).
+        let clamped: BTreeSet<EdgeKey> = {
+            let p = &self.views[i].pipeline;
+            match p.rounding_run(k) {
+                Some(run) if run.start == 0 => run.clamped.keys().copied().collect(),
+                _ => BTreeSet::new(),
+            }
+        };
+        if !creased.is_empty()
+            || !radiused.is_empty()
+            || !clamped.is_empty()
+            || !self.sel_edges.is_empty()
+        {
             let origins = self.views[i].origins();
             if let Ok(map) = origins.as_ref() {
                 let mesh = &self.views[i].pipeline.levels()[k].mesh;
@@ -123,6 +138,7 @@ impl ModelTab {
                 };
                 o.add_segments(&segs(&creased), CREASE);
                 o.add_segments(&segs(&radiused), RADIUS);
+                o.add_segments(&segs(&clamped), CLAMPED);
                 o.add_segments(&segs(&self.sel_edges), SELECTED);
             }
         }

@@ -401,11 +401,18 @@ impl ModelTab {
         );
         if let Some(r) = &lv.report {
             text += &format!(", {:.2} ms", r.millis);
-            if !r.clamped.is_empty() {
+            // The radii the rounding run clamped, at every level of it (orange in the view).
+            let clamped = v
+                .pipeline
+                .rounding_run(k)
+                .and_then(|run| v.pipeline.levels()[run.start + 1].report.as_ref())
+                .map(|first| &first.clamped[..])
+                .unwrap_or(&r.clamped[..]);
+            if !clamped.is_empty() {
                 text += &format!(
-                    " — {} radius(es) clamped: {}",
-                    r.clamped.len(),
-                    prism_geom::rules::overlap::list(&r.clamped)
+                    " — {} radius(es) clamped (orange): {}",
+                    clamped.len(),
+                    prism_geom::rules::overlap::list(clamped)
                 );
             }
             if !r.degenerate.is_empty() {
