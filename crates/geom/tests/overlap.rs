@@ -160,3 +160,82 @@ fn an_own_radius_stays_inside_the_cage() {
         }
     }
 }
+
+/// The clamp does not depend on how the input is numbered: the hexagonal prism's twelve ring
+/// edges are alike and all fit r = 1.0 (combination r = 2.0 on circumradius 1.5), in any
+/// numbering of its vertices and faces. (Lowering edges one after the other made the first
+/// ones give way: 0.94 to 1.06.)
+#[test]
+fn the_radius_that_fits_does_not_depend_on_the_numbering() {
+    let hex = primitives::ngon_prism(6, 1.5, 2.0);
+    let fits_of = |m: &PolyMesh| -> Vec<(i64, i64, i64, f64)> {
+        let p = run(
+            m.clone(),
+            EdgeAttrs::new(),
+            combination(1, 2.0),
+            Overlap::Refuse,
+        );
+        let mut v: Vec<_> = refused(&p)
+            .iter()
+            .map(|e| {
+                // The edge by its midpoint, rounded, so that numberings can be compared.
+                let mid = 0.5 * (m.positions[e.a as usize] + m.positions[e.b as usize]);
+                let r = |x: f64| (x * 1e6).round() as i64;
+                (r(mid.x), r(mid.y), r(mid.z), e.fits)
+            })
+            .collect();
+        v.sort_by(|a, b| a.partial_cmp(b).unwrap());
+        v
+    };
+    let a = fits_of(&hex);
+    assert_eq!(a.len(), 18);
+    for (_, _, z, f) in &a {
+        if *z != 1_000_000 {
+            assert!((f - 1.0).abs() < 1e-9, "{a:?}");
+        }
+    }
+    // The same solid renumbered: vertices reversed, faces listed from the last.
+    let n = hex.num_vertices() as u32;
+    let positions: Vec<_> = hex.positions.iter().rev().copied().collect();
+    let faces: Vec<Vec<u32>> = (0..hex.num_faces())
+        .rev()
+        .map(|f| {
+            let vs = hex.loop_verts(hex.face_loops(f).start);
+            let mut l: Vec<u32> = vs.iter().map(|&v| n - 1 - v).collect();
+            l.rotate_left(1);
+            l
+        })
+        .collect();
+    let b = fits_of(&PolyMesh::from_polygons(positions, &faces));
+    assert_eq!(a.len(), b.len());
+    for (x, y) in a.iter().zip(&b) {
+        assert_eq!((x.0, x.1, x.2), (y.0, y.1, y.2));
+        assert!((x.3 - y.3).abs() < 1e-12, "{x:?} {y:?}");
+    }
+}
+
+/// The cage edit: the own radius 0.45 on edge 0-9 and the arm's two top vertices 9
+/// and 10 dragged up to z = 3.85. It sent a vertex to y = −9,666 at level 5; now six levels
+/// stay inside the cage's box with no flipped face.
+#[test]
+fn an_own_radius_after_a_cage_edit_stays_inside_the_cage() {
+    let mut m = primitives::tripod();
+    for v in [9, 10] {
+        m.positions[v].z = 3.85;
+    }
+    let mut attrs = EdgeAttrs::new();
+    attrs.insert(EdgeKey::new(0, 9), EdgeAttr::rounded(0.45));
+    let (lo, hi) = m.bbox();
+    let p = run(m, attrs, combination(6, 0.2), Overlap::Clamp);
+    assert_eq!(p.levels().len(), 7);
+    for (k, lv) in p.levels().iter().enumerate().skip(1) {
+        let r = lv.report.as_ref().unwrap();
+        assert!(r.flipped.is_empty(), "level {k}: {:?}", r.flipped);
+        for q in &lv.mesh.positions {
+            assert!(
+                q.cmpge(lo - 1e-9).all() && q.cmple(hi + 1e-9).all(),
+                "level {k}: {q}"
+            );
+        }
+    }
+}

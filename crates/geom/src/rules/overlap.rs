@@ -143,7 +143,12 @@ pub fn fitting_scales(input: &RuleInput, widths: &[f64], skip: &[bool], room: f6
         let coef = [kc[0][1], kc[0][0] + kn[1][1], kn[1][0]];
         constraints.push((edges, coef, room * len));
     }
+    // Each pass reads the factors of the pass before and lowers every edge to the least
+    // factor its broken constraints ask for, all at once: no edge is favoured for coming
+    // first, so the result does not depend on how the input is numbered.
+    let mut lowered = vec![1.0f64; widths.len()];
     for _ in 0..PASSES {
+        lowered.fill(1.0);
         let mut changed = false;
         for (edges, coef, len) in &constraints {
             let terms = [0, 1, 2].map(|i| coef[i] * widths[edges[i]] * scale[edges[i]]);
@@ -155,14 +160,17 @@ pub fn fitting_scales(input: &RuleInput, widths: &[f64], skip: &[bool], room: f6
             let neg: f64 = terms.iter().filter(|&&x| x < 0.0).sum();
             let k = ((len - neg) / pos).clamp(0.0, 1.0);
             for i in 0..3 {
-                if terms[i] > 0.0 {
-                    scale[edges[i]] *= k;
+                if terms[i] > 0.0 && k < lowered[edges[i]] {
+                    lowered[edges[i]] = k;
                     changed = true;
                 }
             }
         }
         if !changed {
             break;
+        }
+        for (s, l) in scale.iter_mut().zip(&lowered) {
+            *s *= l;
         }
     }
     scale
