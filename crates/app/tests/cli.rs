@@ -725,3 +725,38 @@ fn curve_presets_plots_and_the_parameter_study() {
         assert_eq!(run_with(bad, &[&out]).status.code(), Some(2), "{bad}");
     }
 }
+
+/// What a newcomer meets first (issue 17): a missing file is said before any window is
+/// tried; a negative number reaches the range check instead of clap's "unexpected
+/// argument"; an unknown output type lists every type.
+#[test]
+fn first_start_messages_say_what_is_wrong() {
+    let o = prism(&["no-such-file.obj"]);
+    assert_eq!(o.status.code(), Some(1));
+    let (_, se) = text(&o);
+    assert!(
+        se.contains("cannot read no-such-file.obj") && !se.contains("window"),
+        "{se}"
+    );
+    let out = tmp("neg.obj");
+    let o = run_with(
+        "subdivide assets/cube.obj -o {} --scheme combination --radius -0.2",
+        &[&out],
+    );
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        text(&o).1.contains("r = -0.2 is out of range"),
+        "{:?}",
+        text(&o)
+    );
+    let o = run_with(
+        "subdivide assets/cube.obj -o {} --scheme doo-sabin",
+        &[&tmp("x.ply")],
+    );
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        text(&o).1.contains(".obj, .prism.json, .stl or .glb"),
+        "{:?}",
+        text(&o)
+    );
+}

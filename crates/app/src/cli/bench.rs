@@ -15,7 +15,8 @@ use std::time::Instant;
 pub struct BenchArgs {
     /// Input mesh (.obj or .prism.json).
     pub input: PathBuf,
-    /// Scheme repeated --levels times (any scheme of `prism subdivide`).
+    /// The step repeated --levels times, in the pipeline's text form with its parameter:
+    /// `combination:r=0.2`, `cut-width:d=0.1`, `doo-sabin`, `catmull-clark`.
     #[arg(long)]
     pub scheme: String,
     /// Number of levels.

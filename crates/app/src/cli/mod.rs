@@ -138,6 +138,11 @@ pub fn run(cli: Cli) -> Result<(), CliError> {
                 Some(s) => parse_edges(s).map_err(CliError::usage)?,
                 None => Vec::new(),
             };
+            // A file that cannot be opened is said before any window is tried, so the
+            // message is not mistaken for a graphics failure.
+            if let Some(f) = &cli.file {
+                crate::gui::document::open(f).map_err(CliError::input)?;
+            }
             crate::gui::run(crate::gui::Launch {
                 file: cli.file,
                 pipeline,

@@ -25,16 +25,16 @@ pub struct StepArgs {
     #[arg(long, default_value_t = 1)]
     pub levels: usize,
     /// α of vector-sum (0 < α < 0.5).
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     pub alpha: Option<f64>,
     /// Radius r of cylindrical, minimum and combination.
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     pub radius: Option<f64>,
     /// Distance l of angle-bisector.
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     pub distance: Option<f64>,
     /// Width d of cut-width.
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     pub width: Option<f64>,
     /// vector-sum: reverse the displacement at reflex corners (the paper's remark).
     #[arg(long)]
@@ -359,7 +359,12 @@ const VOLUME_JUMP: f64 = 10.0;
 pub fn run(a: SubdivideArgs) -> Result<(), CliError> {
     let parsed = steps_from(&a.steps, None, true)?;
     if io::ExportFormat::of(&a.output).is_none() {
-        io::FileKind::of(&a.output).map_err(CliError::usage)?;
+        io::FileKind::of(&a.output).map_err(|_| {
+            CliError::usage(format!(
+                "{}: unknown output type (use .obj, .prism.json, .stl or .glb)",
+                a.output.display()
+            ))
+        })?;
     }
     let (doc, face_lines) = io::load(&a.input).map_err(CliError::input)?;
     let steps = if parsed.is_empty() {

@@ -53,6 +53,15 @@ pub fn stl_bytes(mesh: &PolyMesh, skip: &dyn Fn(usize) -> bool) -> Vec<u8> {
     }
     let mut out = Vec::with_capacity(84 + 50 * tris.len());
     stl_io::write_stl(&mut out, tris.iter()).expect("writing into memory cannot fail");
+    // The 80-byte header says who wrote the file (not starting with "solid", which would
+    // make readers take it for ASCII STL).
+    let header = format!("Prism {} binary STL", env!("CARGO_PKG_VERSION"));
+    for (o, b) in out[..80]
+        .iter_mut()
+        .zip(header.bytes().chain(std::iter::repeat(b' ')))
+    {
+        *o = b;
+    }
     out
 }
 
@@ -212,6 +221,7 @@ mod tests {
     fn stl_reads_back_with_every_triangle() {
         let m = primitives::cube3();
         let bytes = stl_bytes(&m, &|_| false);
+        assert!(bytes.starts_with(b"Prism ") && !bytes.starts_with(b"solid"));
         let back = stl_io::read_stl(&mut std::io::Cursor::new(&bytes)).unwrap();
         assert_eq!(back.faces.len(), 12);
         assert_eq!(back.vertices.len(), 8);

@@ -121,13 +121,13 @@ impl ModelTab {
             }
         }
         if let Some(job) = &v.job {
-            let done = v.pipeline.levels().len() - 1 + job.done;
+            let (k, of) = job.computing();
             let secs = job.started.elapsed().as_secs_f32();
             let fraction = job.done as f32 / job.total.max(1) as f32;
             ui.horizontal(|ui| {
                 ui.add(
                     egui::ProgressBar::new(fraction)
-                        .text(format!("level {} of {n}, {secs:.1} s", done + 1))
+                        .text(format!("level {k} of {of}, {secs:.1} s"))
                         .desired_width(170.0),
                 );
                 if ui.button("Cancel").clicked() {
@@ -310,7 +310,8 @@ impl ModelTab {
         ui.horizontal(|ui| {
             ui.label("colour:");
             ui.radio_value(&mut d.color, Coloring::Uniform, "one");
-            ui.radio_value(&mut d.color, Coloring::Kind, "face kind (F / E / V)");
+            ui.radio_value(&mut d.color, Coloring::Kind, "face kind")
+                .on_hover_text("the FACE-, EDGE- and VERTEX-faces of the last biquadratic step, in the three colours of the legend below");
             ui.radio_value(&mut d.color, Coloring::Curvature, "mean curvature");
             ui.radio_value(&mut d.color, Coloring::Scheme, "scheme");
         });

@@ -128,15 +128,12 @@ impl ModelTab {
                     egui::StrokeKind::Inside,
                 );
             }
-            if v.job.is_some() {
+            if let Some(job) = &v.job {
+                let (k, n) = job.computing();
                 ui.painter().text(
                     rect.right_top() + egui::vec2(-8.0, 8.0),
                     egui::Align2::RIGHT_TOP,
-                    format!(
-                        "computing level {} of {} …",
-                        v.pipeline.levels().len() + v.job.as_ref().map_or(0, |j| j.done),
-                        v.steps().len()
-                    ),
+                    format!("computing level {k} of {n} …"),
                     egui::FontId::proportional(13.0),
                     egui::Color32::from_gray(230),
                 );

@@ -30,6 +30,9 @@ pub struct Job {
     /// Levels finished so far, and how many the job computes.
     pub done: usize,
     pub total: usize,
+    /// The levels its pipeline had when it started (the input included), and its steps.
+    first: usize,
+    steps: usize,
 }
 
 /// What a finished job gives back.
@@ -53,7 +56,8 @@ impl Job {
         let cancel = Arc::new(AtomicBool::new(false));
         let flag = cancel.clone();
         let first = pipeline.levels().len();
-        let total = (pipeline.steps().len() + 1).saturating_sub(first);
+        let pipeline_steps = pipeline.steps().len();
+        let total = (pipeline_steps + 1).saturating_sub(first);
         std::thread::spawn(move || {
             let mut error = None;
             for k in first..=pipeline.steps().len() {
@@ -81,7 +85,16 @@ impl Job {
             started: Instant::now(),
             done: 0,
             total,
+            first,
+            steps: pipeline_steps,
         }
+    }
+
+    /// The level being computed and the pipeline's length, for "level k of n": k counts
+    /// from the levels the job started with, so it never passes n (the view's previous
+    /// result may be longer or shorter than the job's pipeline).
+    pub fn computing(&self) -> (usize, usize) {
+        ((self.first + self.done).min(self.steps), self.steps)
     }
 
     /// Asks the job to stop after the level it is computing.
@@ -149,6 +162,27 @@ mod tests {
         let f = Job::spawn(p, |_| None, || {}).wait();
         assert!(f.error.is_none() && !f.cancelled);
         assert!(f.pipeline.unwrap().is_complete());
+    }
+
+    /// "level k of n" counts from the levels the job started with and never passes n (it
+    /// read "computing level 5 of 3" when S was pressed quickly).
+    #[test]
+    fn the_progress_label_counts_within_the_pipeline() {
+        let steps = parse_pipeline(&["combination:r=0.2"; 5].join(",")).unwrap();
+        let mut p = Pipeline::new(primitives::tripod(), EdgeAttrs::new(), steps);
+        p.compute_with(2, |_, _| {}).unwrap();
+        // A shorter pipeline sharing those levels, as after << Back.
+        let shorter = p.rebased(parse_pipeline(&["combination:r=0.2"; 3].join(",")).unwrap());
+        let mut job = Job::spawn(shorter, |_| None, || {});
+        assert_eq!(job.computing(), (3, 3));
+        let mut seen = Vec::new();
+        while job.poll().is_none() {
+            seen.push(job.computing());
+        }
+        assert!(
+            seen.iter().all(|&(k, n)| n == 3 && (1..=3).contains(&k)),
+            "{seen:?}"
+        );
     }
 
     #[test]
