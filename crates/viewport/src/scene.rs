@@ -391,6 +391,35 @@ impl Scene {
         self.add_segments(&segs, color);
     }
 
+    /// A sphere around most of the model, in the scene's coordinates, for framing: the
+    /// per-axis median of the drawn corners as centre, and the 98th percentile of their
+    /// distances to it (times 1.15) as radius, so that a few vertices thrown far away by a
+    /// broken step do not shrink the model to a dot. Also how many corners lie more than ten
+    /// radii away. The bounding sphere when nothing is drawn.
+    pub fn robust_sphere(&self) -> (Vec3, f32, usize) {
+        let p: Vec<Vec3> = self
+            .vertices
+            .iter()
+            .map(|v| Vec3::from_array(v.position))
+            .filter(|p| p.is_finite())
+            .collect();
+        if p.is_empty() {
+            return (Vec3::ZERO, self.radius(), 0);
+        }
+        let median = |axis: usize| {
+            let mut v: Vec<f32> = p.iter().map(|q| q[axis]).collect();
+            v.sort_by(f32::total_cmp);
+            v[v.len() / 2]
+        };
+        let c = Vec3::new(median(0), median(1), median(2));
+        let mut d: Vec<f32> = p.iter().map(|q| q.distance(c)).collect();
+        d.sort_by(f32::total_cmp);
+        let r98 = d[(d.len() * 98 / 100).min(d.len() - 1)];
+        let r = (1.15 * r98).max(1e-9).min(self.radius().max(1e-9) * 2.0);
+        let far = d.iter().filter(|&&x| x > 10.0 * r).count();
+        (c, r, far)
+    }
+
     /// Radius of the bounding sphere around the origin.
     pub fn radius(&self) -> f32 {
         (0.5 * (self.bbox.1 - self.bbox.0).length()).max(1e-9) as f32
@@ -411,6 +440,25 @@ impl Scene {
 mod tests {
     use super::*;
     use prism_geom::primitives;
+
+    /// A vertex thrown far away (a broken step) does not shrink the frame to a dot: the
+    /// robust sphere holds the torus, and the far corners are counted.
+    #[test]
+    fn framing_leaves_out_a_few_far_vertices() {
+        let mut m = primitives::torus(48, 24, 3.0, 1.0);
+        let clean = Scene::plain(&m);
+        let (_, r, far) = clean.robust_sphere();
+        assert_eq!(far, 0);
+        assert!(r > 3.5 && r < 1.2 * clean.radius(), "{r}");
+        m.positions[0] = DVec3::new(1e4, 0.0, 0.0);
+        let broken = Scene::plain(&m);
+        let (c, r, far) = broken.robust_sphere();
+        assert_eq!(far, 4, "the four corners of vertex 0");
+        assert!(r < 6.0, "{r}");
+        // The centre is the torus's, not halfway to the far vertex.
+        let torus_centre = broken.to_local(DVec3::ZERO);
+        assert!(c.distance(torus_centre) < 0.5, "{c} {torus_centre}");
+    }
 
     #[test]
     fn curvature_colours_run_from_the_inner_to_the_outer_equator_of_a_torus() {

@@ -384,18 +384,20 @@ impl ModelTab {
 
     /// Frames the model of the active view.
     pub fn frame(&mut self, doc: &DocState) {
-        let v = &self.views[self.active];
-        let r = if v.scene.vertices.is_empty() {
+        let v = &mut self.views[self.active];
+        let (centre, r) = if v.scene.vertices.is_empty() {
             let (lo, hi) = doc.mesh.bbox();
-            (0.5 * (hi - lo).length()).max(1e-9) as f32
+            (Vec3::ZERO, (0.5 * (hi - lo).length()).max(1e-9) as f32)
         } else {
-            v.scene.radius()
+            // Most of the model, not the few vertices a broken step threw far away.
+            let (c, r, _) = v.frame_sphere();
+            (c, r)
         };
         // A narrow view (the compare split) has the smaller horizontal field: fit that too.
         let half_y = 0.5 * Camera::default().fov_y;
         let half_x = (half_y.tan() * self.view_aspect.clamp(0.1, 10.0)).atan();
         let r = r * half_y.sin() / half_x.min(half_y).sin();
-        self.camera = Camera::looking(View::Iso, Vec3::ZERO, r);
+        self.camera = Camera::looking(View::Iso, centre, r);
         self.framed = true;
     }
 

@@ -388,6 +388,7 @@ impl ModelTab {
     }
 
     pub(super) fn status(&mut self, ui: &mut egui::Ui, note: Option<&str>) {
+        let (_, _, far) = self.views[self.active].frame_sphere();
         let v = &self.views[self.active];
         let k = v.shown();
         let lv = &v.pipeline.levels()[k];
@@ -418,6 +419,11 @@ impl ModelTab {
             }
             if !r.degenerate.is_empty() {
                 text += &format!(" — warning: {} degenerate face(s)", r.degenerate.len());
+            }
+            if far > 0 {
+                text += &format!(
+                    " — warning: {far} corner(s) lie far outside the rest of the model (framing leaves them out)"
+                );
             }
         }
         let flipped = lv

@@ -113,6 +113,8 @@ pub struct ViewPipe {
     origins: Option<(LevelKey, Arc<Origins>)>,
     /// Limit points of a level: computed on a thread, then kept.
     limits: Option<(LevelKey, LimitSlot)>,
+    /// The framing sphere of the scene with this serial ([`ViewPipe::frame_sphere`]).
+    sphere: Option<(u64, (glam::Vec3, f32, usize))>,
     /// Cached fillet measure and what it was made from.
     pub fillet: Option<(FilletKey, String)>,
 }
@@ -140,6 +142,7 @@ impl ViewPipe {
             edges: None,
             origins: None,
             limits: None,
+            sphere: None,
             fillet: None,
         }
     }
@@ -293,6 +296,25 @@ impl ViewPipe {
     /// scene's origin and size).
     pub fn scene_serial(&self) -> u64 {
         self.scene_serial
+    }
+
+    /// The sphere to frame the scene on screen with (the bounding sphere, or most of the
+    /// model when a few corners lie far outside it) and how many corners lie far outside;
+    /// computed once per scene.
+    pub fn frame_sphere(&mut self) -> (glam::Vec3, f32, usize) {
+        if let Some((serial, s)) = self.sphere
+            && serial == self.scene_serial
+        {
+            return s;
+        }
+        let (c, r, far) = self.scene.robust_sphere();
+        let s = if far == 0 {
+            (glam::Vec3::ZERO, self.scene.radius(), 0)
+        } else {
+            (c, r, far)
+        };
+        self.sphere = Some((self.scene_serial, s));
+        s
     }
 
     /// Cancels the running job and forgets the queued one.
