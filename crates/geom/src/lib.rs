@@ -30,6 +30,7 @@ pub mod freeform;
 pub mod geometry;
 pub mod io;
 pub mod mesh;
+pub mod normals;
 pub mod pipeline;
 pub mod primal;
 pub mod primitives;

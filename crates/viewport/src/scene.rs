@@ -5,14 +5,15 @@
 //! included); triangles and convex quads take a fan. **Flat** shading gives every corner its
 //! face's normal; **smooth** shading averages the area-weighted normals of the faces around
 //! a vertex within each fan between *sharp* edges — crease edges and edges whose faces meet
-//! at more than the crease angle — so that creases stay crisp.
+//! at more than the crease angle — so that creases stay crisp
+//! ([`prism_geom::normals`], which the glTF export shares).
 
 use glam::{DVec3, Vec3};
 use prism_geom::geometry::{face_normals_raw, unit_or_zero};
+use prism_geom::normals::{flat_corner_normals, smooth_corner_normals};
 use prism_geom::refine::FaceKind;
-use prism_geom::topology::{NONE, Topology};
 use prism_geom::triangulate::face_triangles;
-use prism_geom::{EdgeAttrs, EdgeKey, PolyMesh};
+use prism_geom::{EdgeAttrs, PolyMesh};
 
 /// How faces are shaded.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -132,56 +133,6 @@ pub struct Scene {
     pub color_range: Option<(f64, f64)>,
 }
 
-/// Per-corner normals for smooth shading: faces around a vertex are averaged within each
-/// fan between sharp edges.
-fn smooth_corner_normals(
-    mesh: &PolyMesh,
-    topo: &Topology,
-    raw: &[DVec3],
-    sharp: &[bool],
-) -> Vec<DVec3> {
-    let mut out: Vec<DVec3> = topo
-        .corner_face
-        .iter()
-        .map(|&f| unit_or_zero(raw[f as usize]))
-        .collect();
-    let (mut ring_e, mut ring_c) = (Vec::new(), Vec::new());
-    for v in 0..mesh.num_vertices() {
-        topo.vertex_ring_from(mesh, topo.vert_corner[v], &mut ring_e, &mut ring_c);
-        let n = ring_c.len();
-        if n == 0 {
-            continue;
-        }
-        // Face i lies between edges i and i + 1; a sharp edge i + 1 ends a group.
-        let closed = ring_e.len() == n;
-        // Start a group after a sharp edge if there is one, so no group wraps around.
-        let first = if closed {
-            (0..n).find(|&i| sharp[ring_e[i].0 as usize]).unwrap_or(0)
-        } else {
-            0
-        };
-        let mut group: Vec<u32> = Vec::new();
-        let mut sum = DVec3::ZERO;
-        for k in 0..n {
-            let i = (first + k) % n;
-            let c = ring_c[i];
-            group.push(c);
-            sum += raw[topo.corner_face[c as usize] as usize];
-            let next_edge = ring_e[(i + 1) % ring_e.len()].0 as usize;
-            let ends = k + 1 == n || sharp[next_edge];
-            if ends {
-                let nrm = unit_or_zero(sum);
-                for &g in &group {
-                    out[g as usize] = nrm;
-                }
-                group.clear();
-                sum = DVec3::ZERO;
-            }
-        }
-    }
-    out
-}
-
 impl Scene {
     /// Prepares `mesh` for drawing. `kinds` colours faces by kind when given; `attrs`
     /// marks crease edges, which stay sharp in smooth shading; `hidden` faces (holes) are
@@ -216,46 +167,9 @@ impl Scene {
                 .as_vec3()
                 .to_array()
         };
-        // Smooth shading needs the vertex rings; a mesh without valid topology is drawn flat.
-        let topo = match opts.shading {
-            Shading::Smooth => Topology::build(mesh).ok(),
-            Shading::Flat => None,
-        };
-        let corner_normals: Vec<DVec3> = match &topo {
-            Some(t) => {
-                let cos_limit = opts.crease_angle_deg.to_radians().cos();
-                let sharp: Vec<bool> = t
-                    .edge_corner
-                    .iter()
-                    .map(|&c| {
-                        let tw = t.twin[c as usize];
-                        if tw == NONE {
-                            return true;
-                        }
-                        let (a, b) = (
-                            mesh.corner_verts[c as usize],
-                            mesh.corner_verts[t.next[c as usize] as usize],
-                        );
-                        if attrs
-                            .get(&EdgeKey::new(a, b))
-                            .is_some_and(|x| x.crease > 0.0)
-                        {
-                            return true;
-                        }
-                        let n1 = unit_or_zero(raw[t.corner_face[c as usize] as usize]);
-                        let n2 = unit_or_zero(raw[t.corner_face[tw as usize] as usize]);
-                        n1.dot(n2) < cos_limit
-                    })
-                    .collect();
-                smooth_corner_normals(mesh, t, &raw, &sharp)
-            }
-            None => {
-                let mut n = vec![DVec3::ZERO; mesh.num_corners()];
-                for (f, &r) in raw.iter().enumerate() {
-                    n[mesh.face_corners(f)].fill(unit_or_zero(r));
-                }
-                n
-            }
+        let corner_normals: Vec<DVec3> = match opts.shading {
+            Shading::Smooth => smooth_corner_normals(mesh, attrs, opts.crease_angle_deg),
+            Shading::Flat => flat_corner_normals(mesh, &raw),
         };
         let mut scene = Scene {
             origin,

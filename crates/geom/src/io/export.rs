@@ -4,16 +4,19 @@
 //! holes included, are cut by [`crate::triangulate`]; hole faces of the primal schemes are
 //! left out. Coordinates are written as `f32`, which both formats prescribe.
 //!
-//! The glTF file carries positions and indices, no normals: the glTF specification tells a
-//! viewer to compute flat normals then, which keeps the chamfered and rounded edges crisp.
+//! The glTF file carries positions, normals and indices. The normals are smooth within
+//! fans between edges sharper than 40° ([`crate::normals`], the viewport's smooth shading),
+//! so a rounded solid looks round in other viewers while chamfers and creases stay crisp.
 
 use super::{IoError, write_atomically};
+use crate::edge_attrs::EdgeAttrs;
 use crate::geometry::{face_normal_raw, unit_or_zero};
 use crate::mesh::PolyMesh;
-use crate::triangulate::mesh_triangles;
+use crate::normals::smooth_corner_normals;
 use gltf_json as json;
 use json::validation::Checked::Valid;
 use json::validation::USize64;
+use std::collections::HashMap;
 use std::path::Path;
 
 /// Formats a level can be exported to.
@@ -65,14 +68,38 @@ pub fn stl_bytes(mesh: &PolyMesh, skip: &dyn Fn(usize) -> bool) -> Vec<u8> {
     out
 }
 
-/// Binary glTF 2.0 (`.glb`) of `mesh`: one mesh, one node, one scene.
+/// Edges whose faces meet at more than this keep separate normals in the glTF export (the
+/// viewport's smooth shading uses the same default).
+pub const GLB_CREASE_ANGLE_DEG: f64 = 40.0;
+
+/// Binary glTF 2.0 (`.glb`) of `mesh`: one mesh, one node, one scene; positions, smooth
+/// normals split at edges sharper than [`GLB_CREASE_ANGLE_DEG`] (a vertex on such an edge is
+/// written once per side), triangles.
 pub fn glb_bytes(mesh: &PolyMesh, skip: &dyn Fn(usize) -> bool) -> Vec<u8> {
-    let tris = mesh_triangles(mesh, skip);
-    let positions: Vec<f32> = mesh
-        .positions
-        .iter()
-        .flat_map(|p| [p.x as f32, p.y as f32, p.z as f32])
-        .collect();
+    let corner_normals = smooth_corner_normals(mesh, &EdgeAttrs::new(), GLB_CREASE_ANGLE_DEG);
+    // One glTF vertex per distinct (mesh vertex, normal) pair.
+    let mut index: HashMap<(u32, [u32; 3]), u32> = HashMap::new();
+    let (mut positions, mut normals): (Vec<f32>, Vec<f32>) = (Vec::new(), Vec::new());
+    let mut vertex_of = |c: u32| -> u32 {
+        let v = mesh.corner_verts[c as usize];
+        let n = corner_normals[c as usize].as_vec3();
+        *index
+            .entry((v, n.to_array().map(f32::to_bits)))
+            .or_insert_with(|| {
+                let p = mesh.positions[v as usize];
+                positions.extend([p.x as f32, p.y as f32, p.z as f32]);
+                normals.extend(n.to_array());
+                (positions.len() / 3 - 1) as u32
+            })
+    };
+    let raw = crate::geometry::face_normals_raw(mesh);
+    let mut tris: Vec<[u32; 3]> = Vec::new();
+    for f in (0..mesh.num_faces()).filter(|&f| !skip(f)) {
+        for t in crate::triangulate::face_triangles(mesh, f, unit_or_zero(raw[f])) {
+            tris.push(t.map(&mut vertex_of));
+        }
+    }
+    let vertices = positions.len() / 3;
     let mut min = [f32::MAX; 3];
     let mut max = [f32::MIN; 3];
     for p in positions.chunks_exact(3) {
@@ -86,8 +113,10 @@ pub fn glb_bytes(mesh: &PolyMesh, skip: &dyn Fn(usize) -> bool) -> Vec<u8> {
     }
     let mut bin: Vec<u8> = positions.iter().flat_map(|x| x.to_le_bytes()).collect();
     let pos_len = bin.len();
+    bin.extend(normals.iter().flat_map(|x| x.to_le_bytes()));
+    let nrm_len = bin.len() - pos_len;
     bin.extend(tris.iter().flatten().flat_map(|i| i.to_le_bytes()));
-    let idx_len = bin.len() - pos_len;
+    let idx_len = bin.len() - pos_len - nrm_len;
 
     let mut root = json::Root::default();
     root.asset.generator = Some(format!("Prism {}", env!("CARGO_PKG_VERSION")));
@@ -111,9 +140,15 @@ pub fn glb_bytes(mesh: &PolyMesh, skip: &dyn Fn(usize) -> bool) -> Vec<u8> {
         })
     };
     let pos_view = view(&mut root, 0, pos_len, json::buffer::Target::ArrayBuffer);
-    let idx_view = view(
+    let nrm_view = view(
         &mut root,
         pos_len,
+        nrm_len,
+        json::buffer::Target::ArrayBuffer,
+    );
+    let idx_view = view(
+        &mut root,
+        pos_len + nrm_len,
         idx_len,
         json::buffer::Target::ElementArrayBuffer,
     );
@@ -134,10 +169,17 @@ pub fn glb_bytes(mesh: &PolyMesh, skip: &dyn Fn(usize) -> bool) -> Vec<u8> {
         };
     let pos = root.push(accessor(
         pos_view,
-        mesh.num_vertices(),
+        vertices,
         json::accessor::Type::Vec3,
         json::accessor::ComponentType::F32,
         Some((min, max)),
+    ));
+    let nrm = root.push(accessor(
+        nrm_view,
+        vertices,
+        json::accessor::Type::Vec3,
+        json::accessor::ComponentType::F32,
+        None,
     ));
     let idx = root.push(accessor(
         idx_view,
@@ -147,7 +189,11 @@ pub fn glb_bytes(mesh: &PolyMesh, skip: &dyn Fn(usize) -> bool) -> Vec<u8> {
         None,
     ));
     let primitive = json::mesh::Primitive {
-        attributes: [(Valid(json::mesh::Semantic::Positions), pos)].into(),
+        attributes: [
+            (Valid(json::mesh::Semantic::Positions), pos),
+            (Valid(json::mesh::Semantic::Normals), nrm),
+        ]
+        .into(),
         indices: Some(idx),
         material: None,
         mode: Valid(json::mesh::Mode::Triangles),
@@ -263,16 +309,33 @@ mod tests {
         let bin_at = 20 + json_len;
         assert_eq!(&bytes[bin_at + 4..bin_at + 8], b"BIN\0");
         let bin = &bytes[bin_at + 8..];
-        assert_eq!(root.accessors[0].count.0, 8);
-        assert_eq!(root.accessors[1].count.0, 36);
-        // Every index is a vertex, and the positions are the cube's.
-        let idx_at = 8 * 12;
+        // A cube's edges are all sharp: each corner vertex is written once per face (24),
+        // with its face's normal.
+        assert_eq!(root.accessors[0].count.0, 24);
+        assert_eq!(root.accessors[1].count.0, 24);
+        assert_eq!(root.accessors[2].count.0, 36);
+        let f32_at = |i: usize| f32::from_le_bytes(bin[i..i + 4].try_into().unwrap());
+        let (pos_at, nrm_at, idx_at) = (0, 24 * 12, 48 * 12);
+        let centre = 0.5 * (m.bbox().0 + m.bbox().1);
         for k in 0..36 {
-            let i = u32::from_le_bytes(bin[idx_at + 4 * k..idx_at + 4 * k + 4].try_into().unwrap());
-            assert!(i < 8);
+            let i = u32::from_le_bytes(bin[idx_at + 4 * k..idx_at + 4 * k + 4].try_into().unwrap())
+                as usize;
+            assert!(i < 24);
+            let p = glam::DVec3::from_array(std::array::from_fn(|a| {
+                f32_at(pos_at + 12 * i + 4 * a) as f64
+            }));
+            let n = glam::DVec3::from_array(std::array::from_fn(|a| {
+                f32_at(nrm_at + 12 * i + 4 * a) as f64
+            }));
+            assert!((n.length() - 1.0).abs() < 1e-6 && n.dot(p - centre) > 0.0);
+            assert!(m.positions.iter().any(|q| q.distance(p) < 1e-6));
         }
-        let x0 = f32::from_le_bytes(bin[0..4].try_into().unwrap());
-        assert_eq!(x0 as f64, m.positions[0].x);
+        // A smooth solid shares its vertices: the torus's 1152 are written once each.
+        let t = primitives::torus(48, 24, 3.0, 1.0);
+        let bytes = glb_bytes(&t, &|_| false);
+        let json_len = u32::from_le_bytes(bytes[12..16].try_into().unwrap()) as usize;
+        let root: json::Root = json::deserialize::from_slice(&bytes[20..20 + json_len]).unwrap();
+        assert_eq!(root.accessors[0].count.0, 48 * 24);
     }
 
     #[test]
