@@ -7,6 +7,19 @@ use super::{PrismApp, SAMPLES_FILES};
 use prism_geom::io;
 use std::path::Path;
 
+/// Whether something can show a native file dialog: zenity on the PATH, or a desktop
+/// portal on the session bus (its service file installed).
+fn dialog_helper_present() -> bool {
+    let on_path = |name: &str| {
+        std::env::var_os("PATH")
+            .is_some_and(|p| std::env::split_paths(&p).any(|d| d.join(name).is_file()))
+    };
+    let portal = ["/usr/share/dbus-1/services/org.freedesktop.portal.Desktop.service"]
+        .iter()
+        .any(|f| Path::new(f).is_file());
+    on_path("zenity") || portal
+}
+
 /// A bundled sample as a document.
 pub fn sample(k: usize) -> Result<(DocState, Origin), String> {
     let (name, file, text) = *SAMPLES_FILES
@@ -56,16 +69,34 @@ impl PrismApp {
     }
 
     pub(super) fn open_dialog(&mut self) {
-        if let Some(p) = rfd::FileDialog::new()
+        let asked = std::time::Instant::now();
+        match rfd::FileDialog::new()
             .add_filter("Prism documents and OBJ", &["json", "obj"])
             .pick_file()
         {
-            self.open_path(&p);
+            Some(p) => self.open_path(&p),
+            None => self.no_dialog(asked),
+        }
+    }
+
+    /// A dialog that came back at once with nothing most likely never opened: on Linux the
+    /// native dialogs need an xdg-desktop-portal or zenity. Says so, and what works anyway.
+    fn no_dialog(&mut self, asked: std::time::Instant) {
+        if cfg!(target_os = "linux")
+            && asked.elapsed() < std::time::Duration::from_millis(300)
+            && !dialog_helper_present()
+        {
+            self.say(
+                "no file dialog could be shown: it needs zenity or an xdg-desktop-portal \
+                 (apt-get install zenity); meanwhile drag a file onto the window, or start \
+                 `prism FILE`",
+            );
         }
     }
 
     /// Saves to the document's own file, or asks where (`as_new`: always asks).
     pub(super) fn save_dialog(&mut self, as_new: bool) {
+        let asked = std::time::Instant::now();
         let path = match (&self.doc.origin().path, as_new) {
             (Some(p), false) => Some(p.clone()),
             _ => rfd::FileDialog::new()
@@ -74,6 +105,9 @@ impl PrismApp {
                 .set_file_name("model.prism.json")
                 .save_file(),
         };
+        if path.is_none() {
+            self.no_dialog(asked);
+        }
         if let Some(p) = path
             && let Err(e) = self.save_to(&p)
         {
@@ -82,13 +116,18 @@ impl PrismApp {
     }
 
     pub(super) fn export_dialog(&mut self, ext: &str) {
-        if let Some(p) = rfd::FileDialog::new()
+        let asked = std::time::Instant::now();
+        match rfd::FileDialog::new()
             .add_filter(ext, &[ext])
             .set_file_name(format!("level.{ext}"))
             .save_file()
-            && let Err(e) = self.export_to(&p)
         {
-            self.say(format!("could not export: {e}"));
+            Some(p) => {
+                if let Err(e) = self.export_to(&p) {
+                    self.say(format!("could not export: {e}"));
+                }
+            }
+            None => self.no_dialog(asked),
         }
     }
 
