@@ -392,6 +392,13 @@ fn the_panels_buttons_and_keys_drive_the_document() {
     h.get_by_label("Select edges sharper than").click();
     settle(&mut h);
     assert!(!h.state().model.sel_edges.is_empty());
+    // Under biquadratic steps only, Crease is disabled (they ignore sharpness).
+    h.get_by_label("Crease").click();
+    settle(&mut h);
+    assert!(h.state().doc.state().edge_attrs.is_empty());
+    let steps = parse_pipeline("combination:r=0.2,catmull-clark").unwrap();
+    h.state_mut().run(Edit::SetPipeline { view: 0, steps });
+    settle(&mut h);
     h.get_by_label("Crease").click();
     settle(&mut h);
     let creased = &h.state().doc.state().edge_attrs;

@@ -266,8 +266,19 @@ impl ModelTab {
             );
         });
         ui.label(format!("{} control edge(s) selected", self.sel_edges.len()));
+        // Sharpness is read by the primal steps only: say so rather than report a crease
+        // that changes nothing.
+        let primal = self.views[self.active]
+            .steps()
+            .iter()
+            .any(|s| matches!(s, prism_geom::Scheme::Primal(_)));
         ui.horizontal(|ui| {
-            if ui.button("Crease").clicked() {
+            let crease = ui
+                .add_enabled(primal, egui::Button::new("Crease"))
+                .on_disabled_hover_text(
+                    "creases are read by Catmull–Clark and Loop steps; this pipeline has none (the biquadratic steps round or chamfer every edge)",
+                );
+            if crease.clicked() {
                 self.mark(EdgeMark::Crease(self.crease_value));
             }
             ui.add(
