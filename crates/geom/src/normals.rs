@@ -5,21 +5,23 @@
 //! mesh without valid topology gets its faces' normals (flat).
 
 use crate::edge_attrs::{EdgeAttrs, EdgeKey};
-use crate::geometry::{face_normals_raw, unit_or_zero};
+use crate::geometry::unit_or_zero;
 use crate::mesh::PolyMesh;
 use crate::topology::{NONE, Topology};
 use glam::DVec3;
 
 /// The unit normal of every face corner, smooth within fans between sharp edges
-/// (`crease_angle_deg`: faces meeting at more than this keep their edge sharp).
+/// (`crease_angle_deg`: faces meeting at more than this keep their edge sharp); `raw` are
+/// the faces' Newell normals ([`crate::geometry::face_normals_raw`]), which the caller has
+/// for its triangulation too.
 pub fn smooth_corner_normals(
     mesh: &PolyMesh,
+    raw: &[DVec3],
     attrs: &EdgeAttrs,
     crease_angle_deg: f64,
 ) -> Vec<DVec3> {
-    let raw = face_normals_raw(mesh);
     let Ok(topo) = Topology::build(mesh) else {
-        return flat_corner_normals(mesh, &raw);
+        return flat_corner_normals(mesh, raw);
     };
     let cos_limit = crease_angle_deg.to_radians().cos();
     let sharp: Vec<bool> = topo
@@ -45,7 +47,7 @@ pub fn smooth_corner_normals(
             n1.dot(n2) < cos_limit
         })
         .collect();
-    fans(mesh, &topo, &raw, &sharp)
+    fans(mesh, &topo, raw, &sharp)
 }
 
 /// Every corner gets its face's unit normal.

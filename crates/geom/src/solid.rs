@@ -251,14 +251,15 @@ fn extrusion(outline: &[DVec2], height: f64, hole: Option<f64>) -> Result<PolyMe
                     expected: "between 0 and 1",
                 });
             }
-            // The area centroid: inside every convex outline and most others.
+            // The area centroid: inside every convex outline and most others (`p` now runs
+            // counter-clockwise, twice its area is |a2|).
             let c = (0..p.len())
                 .map(|i| {
                     let (a, b) = (p[i], p[(i + 1) % p.len()]);
                     (a + b) * a.perp_dot(b)
                 })
                 .sum::<DVec2>()
-                / (3.0 * area2(&p));
+                / (3.0 * a2.abs());
             let h: Vec<DVec2> = p.iter().rev().map(|&q| c + s * (q - c)).collect();
             if !inside(&p, c) {
                 return Err(SolidError::HoleOutside {

@@ -168,7 +168,7 @@ impl Scene {
                 .to_array()
         };
         let corner_normals: Vec<DVec3> = match opts.shading {
-            Shading::Smooth => smooth_corner_normals(mesh, attrs, opts.crease_angle_deg),
+            Shading::Smooth => smooth_corner_normals(mesh, &raw, attrs, opts.crease_angle_deg),
             Shading::Flat => flat_corner_normals(mesh, &raw),
         };
         let mut scene = Scene {

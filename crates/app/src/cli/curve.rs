@@ -69,11 +69,7 @@ struct CurveOut {
 
 /// Comma-separated finite numbers, named by the flag that gave them.
 fn numbers(flag: &str, s: &str) -> Result<Vec<f64>, CliError> {
-    let v: Vec<f64> = s
-        .split(',')
-        .map(|x| x.trim().parse::<f64>())
-        .collect::<Result<_, _>>()
-        .map_err(|_| CliError::usage(format!("{flag} '{s}' is not a list of numbers")))?;
+    let v = super::comma_numbers(flag, s, "a list of numbers")?;
     if v.is_empty() || v.iter().any(|x| !x.is_finite()) {
         return Err(CliError::usage(format!(
             "{flag} '{s}' is not a list of finite numbers"

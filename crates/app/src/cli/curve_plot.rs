@@ -30,10 +30,7 @@ fn draw_error(e: impl std::fmt::Display) -> CliError {
 /// Writes an RGB buffer of `w × h` as a PNG at `path` (atomically).
 fn write_png(buf: Vec<u8>, w: u32, h: u32, path: &Path) -> Result<(), CliError> {
     let img = image::RgbImage::from_raw(w, h, buf).ok_or_else(|| draw_error("buffer size"))?;
-    let mut png = Vec::new();
-    img.write_to(&mut std::io::Cursor::new(&mut png), image::ImageFormat::Png)
-        .map_err(draw_error)?;
-    prism_geom::io::write_atomically(path, &png).map_err(CliError::input)
+    super::write_png(img.into(), path)
 }
 
 /// The range of `v` with a margin, never empty.

@@ -44,6 +44,24 @@ pub struct Cli {
 }
 
 /// "0-1,4-5" as edges.
+/// Encodes `img` as PNG and writes it through a temporary file (`render`'s pictures and
+/// `curve`'s plots).
+pub(crate) fn write_png(img: image::DynamicImage, path: &std::path::Path) -> Result<(), CliError> {
+    let mut png = Vec::new();
+    img.write_to(&mut std::io::Cursor::new(&mut png), image::ImageFormat::Png)
+        .map_err(|e| CliError::input(format!("encoding the PNG: {e}")))?;
+    prism_geom::io::write_atomically(path, &png).map_err(CliError::input)
+}
+
+/// Numbers separated by commas, as `--size 3,2,1`, `--eye 1,2,3` and `--angles 15,30` give
+/// them; `form` is what the message says was expected ("X,Y,Z").
+pub(crate) fn comma_numbers(flag: &str, s: &str, form: &str) -> Result<Vec<f64>, CliError> {
+    s.split(',')
+        .map(|x| x.trim().parse::<f64>())
+        .collect::<Result<_, _>>()
+        .map_err(|_| CliError::usage(format!("{flag} '{s}' is not {form}")))
+}
+
 pub(crate) fn parse_edges(s: &str) -> Result<Vec<prism_geom::EdgeKey>, String> {
     s.split(',')
         .filter(|t| !t.trim().is_empty())

@@ -56,12 +56,7 @@ pub struct NewArgs {
 pub fn run(a: NewArgs) -> Result<(), CliError> {
     let solid = match a.kind {
         SolidKind::Box => {
-            let v: Vec<f64> = a
-                .size
-                .split(',')
-                .map(|x| x.trim().parse::<f64>())
-                .collect::<Result<_, _>>()
-                .map_err(|_| CliError::usage(format!("--size '{}' is not W,D,H", a.size)))?;
+            let v = super::comma_numbers("--size", &a.size, "W,D,H")?;
             let [w, d, h] = v[..] else {
                 return Err(CliError::usage(format!("--size '{}' is not W,D,H", a.size)));
             };

@@ -15,7 +15,7 @@ use super::CliError;
 use crate::cli::subdivide::steps_from;
 use clap::{Args, ValueEnum};
 use glam::DVec3;
-use prism_geom::geometry::{face_normals_raw, unit_or_zero};
+use prism_geom::geometry::{face_normal_raw, unit_or_zero};
 use prism_geom::io;
 use prism_geom::refine::FaceKind;
 use prism_geom::{Pipeline, PolyMesh, Topology};
@@ -93,11 +93,7 @@ pub struct RenderArgs {
 }
 
 fn parse_point(flag: &str, s: &str) -> Result<DVec3, CliError> {
-    let v: Vec<f64> = s
-        .split(',')
-        .map(|x| x.trim().parse::<f64>())
-        .collect::<Result<_, _>>()
-        .map_err(|_| CliError::usage(format!("{flag} '{s}' is not X,Y,Z")))?;
+    let v = super::comma_numbers(flag, s, "X,Y,Z")?;
     match v[..] {
         [x, y, z] if v.iter().all(|c| c.is_finite()) => Ok(DVec3::new(x, y, z)),
         _ => Err(CliError::usage(format!(
@@ -106,9 +102,13 @@ fn parse_point(flag: &str, s: &str) -> Result<DVec3, CliError> {
     }
 }
 
-/// Input vertex `n`'s neighbourhood: its position, its normal (the sum of its faces'
-/// area-weighted normals) and its shortest edge.
-fn vertex_neighbourhood(mesh: &PolyMesh, n: u32) -> Result<(DVec3, DVec3, f64), CliError> {
+/// Input vertex `n`'s neighbourhood, from its ring in `topo`: its position, its normal (the
+/// sum of its faces' area-weighted normals) and its shortest edge.
+fn vertex_neighbourhood(
+    mesh: &PolyMesh,
+    topo: &Topology,
+    n: u32,
+) -> Result<(DVec3, DVec3, f64), CliError> {
     let p = *mesh.positions.get(n as usize).ok_or_else(|| {
         CliError::usage(format!(
             "--frame-vertex {n}: the input has {} vertices (0 to {})",
@@ -116,27 +116,17 @@ fn vertex_neighbourhood(mesh: &PolyMesh, n: u32) -> Result<(DVec3, DVec3, f64), 
             mesh.num_vertices().saturating_sub(1)
         ))
     })?;
-    let raw = face_normals_raw(mesh);
-    let (mut normal, mut shortest) = (DVec3::ZERO, f64::INFINITY);
-    for (f, face_normal) in raw.iter().enumerate() {
-        let mut touches = false;
-        for l in mesh.face_loops(f) {
-            let vs = mesh.loop_verts(l);
-            for i in 0..vs.len() {
-                let (a, b) = (vs[i], vs[(i + 1) % vs.len()]);
-                if a == n || b == n {
-                    touches = true;
-                    let len = mesh.positions[a as usize].distance(mesh.positions[b as usize]);
-                    if len > 0.0 {
-                        shortest = shortest.min(len);
-                    }
-                }
-            }
-        }
-        if touches {
-            normal += *face_normal;
-        }
-    }
+    let (mut ring_e, mut ring_c) = (Vec::new(), Vec::new());
+    topo.vertex_ring_from(mesh, topo.vert_corner[n as usize], &mut ring_e, &mut ring_c);
+    let normal: DVec3 = ring_c
+        .iter()
+        .map(|&c| face_normal_raw(mesh, topo.corner_face[c as usize] as usize))
+        .sum();
+    let shortest = ring_e
+        .iter()
+        .map(|&(_, other)| p.distance(mesh.positions[other as usize]))
+        .filter(|&len| len > 0.0)
+        .fold(f64::INFINITY, f64::min);
     if !shortest.is_finite() {
         return Err(CliError::input(format!(
             "--frame-vertex {n}: vertex {n} is on no face of the input"
@@ -149,7 +139,7 @@ fn vertex_neighbourhood(mesh: &PolyMesh, n: u32) -> Result<(DVec3, DVec3, f64), 
 fn camera(
     a: &RenderArgs,
     scene: &Scene,
-    input: &PolyMesh,
+    input: (&PolyMesh, &Topology),
     last: &PolyMesh,
 ) -> Result<Camera, CliError> {
     if !(1.0..=150.0).contains(&a.fov) {
@@ -178,7 +168,7 @@ fn camera(
     cam.fov_y = fov;
     let (centre, radius, normal) = match a.frame_vertex {
         Some(n) => {
-            let (p, normal, shortest) = vertex_neighbourhood(input, n)?;
+            let (p, normal, shortest) = vertex_neighbourhood(input.0, input.1, n)?;
             // The final level's vertex nearest the input vertex: the rounded corner.
             let near = last
                 .positions
@@ -224,13 +214,6 @@ fn frame_path(out: &Path, i: u32) -> PathBuf {
     out.with_file_name(name)
 }
 
-fn write_png(img: &image::RgbaImage, path: &Path) -> Result<(), CliError> {
-    let mut png = Vec::new();
-    img.write_to(&mut std::io::Cursor::new(&mut png), image::ImageFormat::Png)
-        .map_err(|e| CliError::input(format!("encoding the PNG: {e}")))?;
-    io::write_atomically(path, &png).map_err(CliError::input)
-}
-
 fn parse_size(s: &str) -> Option<(u32, u32)> {
     let (w, h) = s.split_once(['x', 'X'])?;
     Some((w.trim().parse().ok()?, h.trim().parse().ok()?))
@@ -245,10 +228,9 @@ pub fn run(a: RenderArgs) -> Result<(), CliError> {
         ));
     }
     let (doc, _) = io::load(&a.input).map_err(CliError::input)?;
-    Topology::build(&doc.mesh)
+    let topo = Topology::build(&doc.mesh)
         .map_err(|e| CliError::input(format!("{}: {e}", a.input.display())))?;
     let steps = steps_from(&a.steps, doc.pipeline.as_deref(), true)?;
-    let input = doc.mesh.clone();
     let mut pipeline = Pipeline::with_tags(doc.mesh, doc.edge_attrs, doc.tags, steps);
     pipeline.options = a.steps.options();
     let mut warnings = super::subdivide::LevelWarnings::new(&pipeline.levels()[0].mesh);
@@ -298,7 +280,8 @@ pub fn run(a: RenderArgs) -> Result<(), CliError> {
     if let (true, Some(p)) = (a.cage, prev) {
         scene.add_cage(p, [0.95, 0.75, 0.25]);
     }
-    let mut camera = camera(&a, &scene, &input, &last.mesh)?;
+    let input = (&pipeline.levels()[0].mesh, &topo);
+    let mut camera = camera(&a, &scene, input, &last.mesh)?;
     let gpu = Offscreen::new().map_err(CliError::input)?;
     let uploaded = gpu.upload(&scene);
     let frames = a.frames.unwrap_or(1);
@@ -311,7 +294,7 @@ pub fn run(a: RenderArgs) -> Result<(), CliError> {
             Some(_) => frame_path(&a.output, i),
             None => a.output.clone(),
         };
-        write_png(&img, &path)?;
+        super::write_png(img.into(), &path)?;
         camera.orbit(std::f32::consts::TAU / frames as f32, 0.0);
     }
     let ms = t.elapsed().as_secs_f64() * 1e3 / frames as f64;

@@ -76,7 +76,8 @@ pub const GLB_CREASE_ANGLE_DEG: f64 = 40.0;
 /// normals split at edges sharper than [`GLB_CREASE_ANGLE_DEG`] (a vertex on such an edge is
 /// written once per side), triangles.
 pub fn glb_bytes(mesh: &PolyMesh, skip: &dyn Fn(usize) -> bool) -> Vec<u8> {
-    let corner_normals = smooth_corner_normals(mesh, &EdgeAttrs::new(), GLB_CREASE_ANGLE_DEG);
+    let raw = crate::geometry::face_normals_raw(mesh);
+    let corner_normals = smooth_corner_normals(mesh, &raw, &EdgeAttrs::new(), GLB_CREASE_ANGLE_DEG);
     // One glTF vertex per distinct (mesh vertex, normal) pair.
     let mut index: HashMap<(u32, [u32; 3]), u32> = HashMap::new();
     let (mut positions, mut normals): (Vec<f32>, Vec<f32>) = (Vec::new(), Vec::new());
@@ -92,7 +93,6 @@ pub fn glb_bytes(mesh: &PolyMesh, skip: &dyn Fn(usize) -> bool) -> Vec<u8> {
                 (positions.len() / 3 - 1) as u32
             })
     };
-    let raw = crate::geometry::face_normals_raw(mesh);
     let mut tris: Vec<[u32; 3]> = Vec::new();
     for f in (0..mesh.num_faces()).filter(|&f| !skip(f)) {
         for t in crate::triangulate::face_triangles(mesh, f, unit_or_zero(raw[f])) {
