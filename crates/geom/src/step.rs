@@ -97,6 +97,9 @@ pub struct StepReport {
     pub clamped_faces: usize,
     /// Corners with a zero-length edge that stayed at their vertex.
     pub collapsed_corners: usize,
+    /// Faces the combination rule moved into the vertex blend because their cut points
+    /// would have folded a new face ([`rules::unfold`]).
+    pub unfolded_faces: usize,
     /// Signed volume of the result (negative: inside out).
     pub volume: f64,
     /// Wall time of the step in milliseconds.
@@ -151,7 +154,19 @@ pub fn biquadratic_step_carrying(
         options.memory_budget,
         (cur.num_faces() + topo.num_edges() + cur.num_vertices()) as u64,
     )?;
-    let (points, rule_report) = rules::corner_points(rule, &prep.input())?;
+    let (mut points, rule_report) = rules::corner_points(rule, &prep.input())?;
+    let is_combination = matches!(rule, CornerRule::Combination { .. });
+    let unfolded = if is_combination {
+        rules::unfold(
+            cur,
+            topo,
+            &prep.normals,
+            prep.input().vertex_neighbourhood,
+            &mut points,
+        )
+    } else {
+        Vec::new()
+    };
     let (out, prov) = dual_quad::split(cur, topo, points);
     let new_attrs = refine::propagate(
         cur,
@@ -160,8 +175,8 @@ pub fn biquadratic_step_carrying(
         Numbering::DualQuad,
         |_, a, _| Some(*a),
     );
-    let combination = matches!(rule, CornerRule::Combination { .. })
-        .then(|| CombinationState::next(cur, topo, &prov, prep.combination.as_deref()));
+    let combination = is_combination
+        .then(|| CombinationState::next(cur, topo, &prov, prep.combination.as_deref(), &unfolded));
     let checked = check_children(cur, topo, &prep.normals, &out, &prov);
     let report = StepReport {
         vertices: out.num_vertices(),
@@ -175,6 +190,7 @@ pub fn biquadratic_step_carrying(
         capped_edges: prep.capped_edges,
         clamped_faces: prep.clamped_faces,
         collapsed_corners: rule_report.collapsed_corners,
+        unfolded_faces: unfolded.len(),
         volume: checked.volume,
         millis: start.elapsed().as_secs_f64() * 1e3,
     };

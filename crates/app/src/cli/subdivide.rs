@@ -237,6 +237,12 @@ fn warn_level(k: usize, r: &StepReport, before: f64) {
             r.collapsed_corners
         );
     }
+    if r.unfolded_faces > 0 {
+        eprintln!(
+            "note: level {k}: {} face(s) joined the vertex blend (Doo–Sabin) because their cut points would have folded a new face",
+            r.unfolded_faces
+        );
+    }
     if r.guarded_corners > 0 {
         eprintln!(
             "note: level {k}: {} straight corner(s) with unequal cut widths capped",

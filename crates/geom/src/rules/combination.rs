@@ -19,21 +19,32 @@ impl CombinationState {
     /// The state after a combination step of `mesh` (topology `topo`) whose split gave
     /// `prov`: on the first step of a run (`parent` is `None`) the VERTEX-faces; afterwards
     /// the FACE-face of a flagged face, the EDGE-faces of its edges and the VERTEX-faces of
-    /// its vertices.
+    /// its vertices. `unfolded` are the faces of `mesh` the fold guard moved into the blend
+    /// ([`super::unfold`]): they count as flagged.
     pub fn next(
         mesh: &PolyMesh,
         topo: &Topology,
         prov: &Provenance,
         parent: Option<&[bool]>,
+        unfolded: &[u32],
     ) -> CombinationState {
-        let Some(pf) = parent else {
-            return CombinationState {
-                flags: prov
-                    .face_kind
-                    .iter()
-                    .map(|&k| k == FaceKind::Vertex)
-                    .collect(),
-            };
+        let first = || prov.face_kind.iter().map(|&k| k == FaceKind::Vertex);
+        let owned;
+        let pf = match (parent, unfolded.is_empty()) {
+            (Some(pf), true) => pf,
+            (None, true) => {
+                return CombinationState {
+                    flags: first().collect(),
+                };
+            }
+            (p, false) => {
+                let mut f = p.map_or_else(|| vec![false; mesh.num_faces()], <[bool]>::to_vec);
+                for &u in unfolded {
+                    f[u as usize] = true;
+                }
+                owned = f;
+                &owned
+            }
         };
         let mut edge_flag = vec![false; topo.num_edges()];
         let mut vert_flag = vec![false; mesh.num_vertices()];
@@ -52,7 +63,12 @@ impl CombinationState {
                 FaceKind::Edge => edge_flag[p as usize],
                 FaceKind::Vertex => vert_flag[p as usize],
             })
-            .collect();
+            .collect::<Vec<bool>>();
+        let flags = if parent.is_none() {
+            flags.iter().zip(first()).map(|(&a, b)| a || b).collect()
+        } else {
+            flags
+        };
         CombinationState { flags }
     }
 }

@@ -13,7 +13,10 @@
 //! split form `V' = V + x̄(m₁ + m₂)/(1 + c) + δ(m₁ − m₂)/(1 − c)` with x̄ = (x₁+x₂)/2,
 //! δ = (x₁−x₂)/2, whose first term is finite for every φ ∈ (0, 2π) and whose second is
 //! singular only at a straight corner with unequal widths: there the along-edge shift is
-//! capped at ¼ of the shorter adjacent edge and the corner is counted.
+//! capped at ¼ of the shorter adjacent edge and the corner is counted. In a combination
+//! run, an acute corner beside a vertex blend is set back by the blend edge's width x, not
+//! x/sin φ (equal at 90°), so oblique strip ends turn square instead of shearing until the
+//! surface folds (cylindrical.md, "Strip ends beside a blend").
 //!
 //! **Minimum type** (eq. 5): `V' = V + u₁·min(x₂/sin φ, ¼|e₁|) + u₂·min(x₁/sin φ, ¼|e₂|)`;
 //! at reflex corners the magnitude is capped and the sign kept. It never flips in the
@@ -208,6 +211,23 @@ pub(super) fn simple(
             vertex: input.mesh.corner_verts[c],
         });
     }
+    if fr.c < 0.0 && fr.sin_phi > 0.0 && !input.vertex_neighbourhood.is_empty() {
+        // An acute corner beside a vertex blend: the set-back along the other edge is the
+        // blend edge's width itself, not width / sin φ (docs/algorithms/cylindrical.md,
+        // "Strip ends beside a blend"). Equal to eq. 4 at φ = 90°.
+        let t = input.topo;
+        let blend = |k: u32| {
+            let tw = t.twin[k as usize];
+            tw != crate::topology::NONE
+                && input.vertex_neighbourhood[t.corner_face[tw as usize] as usize]
+        };
+        let (b1, b2) = (blend(c as u32), blend(t.prev[c]));
+        if b1 || b2 {
+            let a1 = if b2 { x2 } else { x2 / fr.sin_phi };
+            let a2 = if b1 { x1 } else { x1 / fr.sin_phi };
+            return Ok(fr.v + fr.u1 * a1 + fr.u2 * a2);
+        }
+    }
     let xbar = 0.5 * (x1 + x2);
     let delta = 0.5 * (x1 - x2);
     let mut p = fr.v + xbar * (fr.m1 + fr.m2) / (1.0 + fr.c);
@@ -267,6 +287,52 @@ mod tests {
         // Concave 90° edge: the same width (θ = 270°: +0.586 r).
         assert!((cut_width(1.0, -FRAC_PI_2) - 0.585_786_437_626_905).abs() < 1e-12);
         assert!(cut_width(1.0, PI).is_infinite());
+    }
+
+    /// A 45° corner beside a vertex blend (docs/algorithms/cylindrical.md, "Strip ends beside a
+    /// blend"): the set-back along the strip is the blend edge's width x₂, not x₂/sin φ; the
+    /// offset from the strip's long edge stays x₁. Without the blend it is eq. 4.
+    #[test]
+    fn an_acute_corner_beside_a_blend_is_set_back_by_the_width() {
+        let (c, sn) = (FRAC_PI_2 / 2.0).sin_cos();
+        let p = vec![
+            DVec3::ZERO,
+            DVec3::X,
+            DVec3::new(1.0 + c, sn, 0.0),
+            DVec3::new(c, sn, 0.0),
+            DVec3::new(-1.0, 0.5, 0.0),
+        ];
+        let m = PolyMesh::from_polygons(p, &[vec![0, 1, 2, 3], vec![0, 3, 4]]);
+        let t = Topology::build(&m).unwrap();
+        let (x1, x2) = (0.01, 0.03);
+        let mut widths = vec![0.0; t.num_edges()];
+        widths[t.find_edge(&m, 0, 1).unwrap() as usize] = x1;
+        widths[t.find_edge(&m, 3, 0).unwrap() as usize] = x2;
+        let at_origin = |flags: &[bool]| {
+            let input = RuleInput {
+                mesh: &m,
+                topo: &t,
+                normals: &[DVec3::Z, DVec3::Z],
+                cut_widths: &widths,
+                face_params: &[],
+                vertex_neighbourhood: flags,
+            };
+            let corner = m.face_corners(0).start;
+            simple(&input, corner, &mut RuleReport::default()).unwrap()
+        };
+        let u2 = DVec3::new(c, sn, 0.0);
+        let s = sn;
+        let beside = at_origin(&[false, true]);
+        assert!(
+            (beside - (DVec3::X * x2 + u2 * x1 / s)).length() < 1e-15,
+            "{beside}"
+        );
+        assert!((beside.y - x1).abs() < 1e-15, "the strip's offset stays x1");
+        let alone = at_origin(&[false, false]);
+        assert!(
+            (alone - (DVec3::X * x2 / s + u2 * x1 / s)).length() < 1e-15,
+            "{alone}"
+        );
     }
 
     /// A unit square face with per-edge widths, corner 0 at the origin.

@@ -27,11 +27,13 @@ mod doo_sabin;
 pub mod overlap;
 mod prepare;
 pub mod primal;
+mod unfold;
 
 pub use combination::CombinationState;
 pub use cylindrical::{cut_width, dissolve_needed};
 pub use overlap::{EdgeFit, Overlap};
 pub use prepare::Prepared;
+pub(crate) use unfold::unfold;
 
 use crate::mesh::PolyMesh;
 use crate::topology::Topology;

@@ -1,0 +1,140 @@
+//! The combination rule's fold guard (docs/algorithms/cylindrical.md, "Folds at a vertex
+//! blend").
+//!
+//! The combination type places Doo–Sabin points on the faces of the vertex neighbourhoods and
+//! cut points (eq. 4) everywhere else. Where a blend meets a strip with a sharp corner at its
+//! end — fillets of different radii meeting at a vertex, a tilted face beside a round — the
+//! corner's cut point lies `x/sin φ` along the strip while the blend's point moves towards
+//! its centroid, and a new face built from both can come out reversed. No edge of any face
+//! is out of order there, so the overlap guard cannot see it.
+//!
+//! The guard looks at every new face before the split, with the same test the step's report
+//! uses (Newell normal against the parent element's normal). A new face that would be
+//! flipped and has cut points in it joins the vertex neighbourhood: the faces that gave it
+//! cut points take Doo–Sabin points instead, which the blend uses anyway, and the check
+//! repeats until no such face is left (each face moves at most once, so it ends). The moved
+//! faces stay in the neighbourhood for the rest of the run ([`super::CombinationState`]), as
+//! the paper's own marking would keep them. Where nothing folds — every solid the paper
+//! shows — nothing changes.
+
+use super::doo_sabin;
+use crate::mesh::PolyMesh;
+use crate::topology::{NONE, Topology};
+use glam::DVec3;
+
+/// Newell normal of the polygon through `pts[c]` for the corners `cs`.
+fn newell(pts: &[DVec3], cs: impl Iterator<Item = u32> + Clone) -> DVec3 {
+    let mut it = cs.clone().map(|c| pts[c as usize]);
+    let Some(o) = it.next() else {
+        return DVec3::ZERO;
+    };
+    let mut acc = DVec3::ZERO;
+    let mut prev = DVec3::ZERO;
+    for p in it {
+        let cur = p - o;
+        acc += prev.cross(cur);
+        prev = cur;
+    }
+    0.5 * acc
+}
+
+/// Moves to Doo–Sabin the faces of `mesh` whose cut points would fold a new face, rewriting
+/// their points in `pts` (indexed by corner). `flags` are the run's vertex-neighbourhood
+/// flags (empty: none); `normals` the unit face normals. Returns the faces moved, ascending.
+pub(crate) fn unfold(
+    mesh: &PolyMesh,
+    topo: &Topology,
+    normals: &[DVec3],
+    flags: &[bool],
+    pts: &mut [DVec3],
+) -> Vec<u32> {
+    let nf = mesh.num_faces();
+    let mut blend: Vec<bool> = (0..nf)
+        .map(|f| flags.get(f).copied().unwrap_or(false))
+        .collect();
+    let mut vsum = vec![DVec3::ZERO; mesh.num_vertices()];
+    for c in 0..mesh.num_corners() {
+        vsum[mesh.corner_verts[c] as usize] += normals[topo.corner_face[c] as usize];
+    }
+    let mut moved = Vec::new();
+    loop {
+        let mut to_move = vec![false; nf];
+        let mut any = false;
+        // A face that can still move (not in the blend, no hole: Doo–Sabin needs one loop).
+        let movable = |f: usize, blend: &[bool]| !blend[f] && mesh.face_loops(f).len() == 1;
+        let mark = |f: usize, to_move: &mut [bool], any: &mut bool| {
+            if movable(f, &blend) && !to_move[f] {
+                to_move[f] = true;
+                *any = true;
+            }
+        };
+        // FACE-faces: the face's own points.
+        for f in 0..nf {
+            if blend[f] || normals[f] == DVec3::ZERO {
+                continue;
+            }
+            let n = mesh
+                .face_loops(f)
+                .map(|l| newell(pts, mesh.loop_corners(l).map(|c| c as u32)))
+                .sum::<DVec3>();
+            if n.dot(normals[f]) < 0.0 {
+                mark(f, &mut to_move, &mut any);
+            }
+        }
+        // EDGE-faces: (next c, c, next t, t).
+        for &c in &topo.edge_corner {
+            let t = topo.twin[c as usize];
+            let (fa, fb) = (
+                topo.corner_face[c as usize] as usize,
+                topo.corner_face[t as usize] as usize,
+            );
+            if blend[fa] && blend[fb] {
+                continue;
+            }
+            let q = [topo.next[c as usize], c, topo.next[t as usize], t];
+            let n = newell(pts, q.iter().copied());
+            if n.dot(normals[fa] + normals[fb]) < 0.0 {
+                mark(fa, &mut to_move, &mut any);
+                mark(fb, &mut to_move, &mut any);
+            }
+        }
+        // VERTEX-faces: the corners at the vertex in ring order.
+        for (v, &start) in topo.vert_corner.iter().enumerate() {
+            if start == NONE {
+                continue;
+            }
+            let ring = std::iter::successors(Some(start), |&c| {
+                let n = topo.ring_next(c);
+                (n != start).then_some(n)
+            });
+            if ring
+                .clone()
+                .all(|c| blend[topo.corner_face[c as usize] as usize])
+            {
+                continue;
+            }
+            let n = newell(pts, ring.clone());
+            if n.dot(vsum[v]) < 0.0 {
+                for c in ring {
+                    mark(
+                        topo.corner_face[c as usize] as usize,
+                        &mut to_move,
+                        &mut any,
+                    );
+                }
+            }
+        }
+        if !any {
+            break;
+        }
+        for f in 0..nf {
+            if to_move[f] {
+                doo_sabin::loop_points(mesh, mesh.face_loops(f).start, pts);
+                blend[f] = true;
+                moved.push(f as u32);
+            }
+        }
+    }
+    moved.sort_unstable();
+    moved
+}
