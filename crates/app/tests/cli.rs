@@ -760,3 +760,65 @@ fn first_start_messages_say_what_is_wrong() {
         text(&o)
     );
 }
+
+/// `prism skin` on the three bundled section sets: exit 0, the summary, a closed mesh whose
+/// every section vertex is a mesh vertex; `--no-caps`, `--patches`, STL; bad sections exit 1
+/// naming the section, bad usage 2.
+#[test]
+fn skin_builds_the_bundled_sections_and_names_bad_ones() {
+    for name in ["spout", "wing", "wing-pitched"] {
+        let (out, so, _) = succeeds_to(
+            &format!("{name}.obj"),
+            &format!("skin assets/{name}.skin.json -o {{}} --resolution 4"),
+        );
+        assert!(
+            so.contains("largest normal jump across patch borders"),
+            "{so}"
+        );
+        let (doc, _) = prism_geom::io::load(&out).unwrap();
+        let topo = prism_geom::Topology::build(&doc.mesh).unwrap();
+        topo.require_closed(&doc.mesh).unwrap();
+        assert_finite(&out);
+    }
+    let (_, so, _) = succeeds_to("wing.obj", "skin assets/wing.skin.json -o {} --no-caps");
+    assert!(
+        so.contains("1 crease chain(s)") && so.contains("open ends"),
+        "{so}"
+    );
+    let patches = tmp("spout-patches.json");
+    let out = tmp("spout.stl");
+    succeeds(run_with(
+        "skin assets/spout.skin.json -o {} --patches {}",
+        &[&out, &patches],
+    ));
+    let v: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&patches).unwrap()).unwrap();
+    assert_eq!(v["patches"].as_array().unwrap().len(), 60);
+
+    let bad = tmp("bad.json");
+    std::fs::write(
+        &bad,
+        r#"{"sections": [{"points": [[0,0,0],[1,0,0],[1,1,0],[0,1,0]]},
+                          {"points": [[0,0,1],[1,0,1],[1,1,1.5],[0,1,1]]}]}"#,
+    )
+    .unwrap();
+    let o = run_with("skin {} -o {}", &[&bad, &tmp("bad.obj")]);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(
+        text(&o).1.contains("section 1 is not planar: point"),
+        "{:?}",
+        text(&o)
+    );
+    std::fs::write(
+        &bad,
+        r#"{"sections": [{"points": [[0,0,0],[1,0,0],[0,1,0]]}]}"#,
+    )
+    .unwrap();
+    let o = run_with("skin {} -o {}", &[&bad, &tmp("bad.obj")]);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(text(&o).1.contains("at least 2 sections"));
+    let o = run("skin assets/spout.skin.json -o out.obj --resolution 0");
+    assert_eq!(o.status.code(), Some(2));
+    let o = run("skin assets/missing.skin.json -o /tmp/x.obj");
+    assert_eq!(o.status.code(), Some(1));
+}

@@ -6,6 +6,7 @@ mod curve_plot;
 mod limit;
 mod new;
 mod render;
+mod skin;
 mod subdivide;
 
 use clap::{Parser, Subcommand};
@@ -98,6 +99,9 @@ pub enum Command {
     /// Make a new solid: a box, a prism or pyramid over a regular polygon, a tripod, or a
     /// closed outline extruded (concave, with an optional hole).
     New(new::NewArgs),
+    /// Skin a smooth solid through planar cross-sections (seed 003): Gregory patches, G1
+    /// across every inner border, tessellated K×K quads a patch, with planar caps.
+    Skin(skin::SkinArgs),
     /// List the subdivision schemes: name, family, parameter with its range and default,
     /// paper, equation and the docs page with the formula.
     Schemes,
@@ -133,6 +137,7 @@ pub fn run(cli: Cli) -> Result<(), CliError> {
         Some(Command::Render(a)) => render::run(a),
         Some(Command::Curve(a)) => curve::run(a),
         Some(Command::New(a)) => new::run(a),
+        Some(Command::Skin(a)) => skin::run(a),
         Some(Command::Schemes) => {
             print!("{}", prism_geom::scheme::table());
             Ok(())

@@ -1,8 +1,14 @@
 //! The free-form family: curves and patches evaluated exactly rather than refined — rational
-//! Bézier curves ([`bezier`]) now; Gregory patches, skinning through cross-sections (seed 003)
-//! and envelopes of primitives (seed 004) land beside them (docs/architecture.md, "Where the
+//! Bézier curves ([`bezier`]), C2 cubic splines ([`spline`]), bicubic Gregory patches
+//! ([`gregory`]) and skinning through cross-sections ([`skin`], seed 003); envelopes of
+//! primitives (seed 004) land beside them (docs/architecture.md, "Where the
 //! free-form family goes").
 
 pub mod bezier;
+pub mod gregory;
+pub mod skin;
+pub mod spline;
 
 pub use bezier::RationalBezier;
+pub use gregory::Gregory;
+pub use skin::{SectionInput, Skin, SkinError, skin};

@@ -1,0 +1,152 @@
+//! `prism skin SECTIONS.json -o OUT.obj|.prism.json|.stl|.glb [--resolution K] [--no-caps]
+//! [--patches PATCHES.json]`: a smooth solid through planar cross-sections (seed 003;
+//! docs/algorithms/skin.md). SECTIONS is `{"sections": [{"points": [[x, y, z], ...],
+//! "corners": [i, ...], "polygon": false}, ...]}`, or a `.prism.json` with a `"skin"` block
+//! of that form. Sections and points are numbered from 0 as listed.
+
+use super::CliError;
+use clap::Args;
+use prism_geom::freeform::{SectionInput, Skin, skin};
+use prism_geom::io::{self, Document};
+use std::path::{Path, PathBuf};
+
+#[derive(Debug, Args)]
+pub struct SkinArgs {
+    /// Sections file: {"sections": [{"points": [[x, y, z], ...], "corners": [...], "polygon": false}, ...]}, or a .prism.json with a "skin" block.
+    pub input: PathBuf,
+    /// Output: .obj, .prism.json, .stl or .glb.
+    #[arg(short, long)]
+    pub output: PathBuf,
+    /// Quads along each side of a patch (1 to 256): section vertices are mesh vertices and
+    /// each section curve is n·K mesh edges.
+    #[arg(long, default_value_t = 8)]
+    pub resolution: usize,
+    /// Leave the end sections open (two boundary loops) instead of closing them with planar
+    /// caps.
+    #[arg(long)]
+    pub no_caps: bool,
+    /// Also write the patches' control points as JSON.
+    #[arg(long)]
+    pub patches: Option<PathBuf>,
+}
+
+#[derive(serde::Deserialize)]
+struct SectionsFile {
+    #[serde(alias = "skin")]
+    sections: SectionsOrBlock,
+}
+
+#[derive(serde::Deserialize)]
+#[serde(untagged)]
+enum SectionsOrBlock {
+    List(Vec<SectionInput>),
+    Block { sections: Vec<SectionInput> },
+}
+
+/// The sections of a file.
+pub fn read_sections(path: &Path) -> Result<Vec<SectionInput>, CliError> {
+    let text = std::fs::read_to_string(path)
+        .map_err(|e| CliError::input(format!("{}: cannot read it: {e}", path.display())))?;
+    let f: SectionsFile = serde_json::from_str(&text).map_err(|e| {
+        CliError::input(format!(
+            "{}: not a sections file ({e}); expected {{\"sections\": [{{\"points\": [[x, y, z], ...]}}, ...]}}",
+            path.display()
+        ))
+    })?;
+    Ok(match f.sections {
+        SectionsOrBlock::List(s) | SectionsOrBlock::Block { sections: s } => s,
+    })
+}
+
+fn patches_json(s: &Skin) -> serde_json::Value {
+    let p = |v: glam::DVec3| serde_json::json!([v.x, v.y, v.z]);
+    let n = s.points_per_section();
+    let patches: Vec<_> = s
+        .patches
+        .iter()
+        .enumerate()
+        .map(|(idx, g)| {
+            serde_json::json!({
+                "section": idx / n,
+                "chain": idx % n,
+                "points": g.points.iter().map(|row| row.iter().map(|&v| p(v)).collect::<Vec<_>>()).collect::<Vec<_>>(),
+                "u_copies": g.u_copies.iter().map(|row| row.iter().map(|&v| p(v)).collect::<Vec<_>>()).collect::<Vec<_>>(),
+            })
+        })
+        .collect();
+    serde_json::json!({
+        "kind": "bicubic Gregory patches, points[i][j] = P_ij (interior: the copies tied to the v-borders), u_copies[i-1][j-1] = the copies tied to the u-borders",
+        "patches": patches,
+    })
+}
+
+pub fn run(a: SkinArgs) -> Result<(), CliError> {
+    if io::ExportFormat::of(&a.output).is_none() {
+        io::FileKind::of(&a.output).map_err(|_| {
+            CliError::usage(format!(
+                "{}: unknown output type (use .obj, .prism.json, .stl or .glb)",
+                a.output.display()
+            ))
+        })?;
+    }
+    if a.resolution == 0 || a.resolution > 256 {
+        return Err(CliError::usage(format!(
+            "--resolution {} is out of range: 1 to 256",
+            a.resolution
+        )));
+    }
+    let sections = read_sections(&a.input)?;
+    let s = skin(&sections).map_err(|e| CliError::input(format!("{}: {e}", a.input.display())))?;
+    let mesh = s
+        .tessellate(a.resolution, !a.no_caps)
+        .map_err(CliError::input)?;
+    let counts = prism_geom::analysis::counts(&mesh);
+    let n = s.points_per_section();
+    let shifts: Vec<String> = s
+        .shifts
+        .iter()
+        .zip(&s.twists)
+        .enumerate()
+        .map(|(k, (sh, t))| format!("{k}→{}: {sh} (twist {:.1}°)", k + 1, t.to_degrees()))
+        .collect();
+    println!(
+        "{} sections of {n} points, {} patches, shifts {}, {} inserted point(s), {} crease chain(s), largest normal jump across patch borders {:.2e}°",
+        s.sections.len(),
+        s.patches.len(),
+        shifts.join(", "),
+        0,
+        s.creases(),
+        s.border_normal_jump(8)
+    );
+    if let Some(pp) = &a.patches {
+        let text = serde_json::to_string_pretty(&patches_json(&s)).expect("JSON of numbers");
+        io::write_atomically(pp, text.as_bytes()).map_err(CliError::input)?;
+        println!("wrote {}", pp.display());
+    }
+    if io::ExportFormat::of(&a.output).is_some() {
+        io::export(&a.output, &mesh, &|_| false).map_err(CliError::input)?;
+    } else {
+        let doc = Document {
+            mesh,
+            edge_attrs: Default::default(),
+            tags: Default::default(),
+            pipeline: None,
+            curve: None,
+        };
+        io::save(&a.output, &doc).map_err(CliError::input)?;
+    }
+    println!(
+        "{} vertices, {} faces ({}×{} quads a patch{}); wrote {}",
+        counts.vertices,
+        counts.faces,
+        a.resolution,
+        a.resolution,
+        if a.no_caps {
+            ", open ends"
+        } else {
+            ", two caps"
+        },
+        a.output.display()
+    );
+    Ok(())
+}

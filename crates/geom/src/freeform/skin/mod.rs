@@ -1,0 +1,227 @@
+//! Skinning a solid through planar cross-sections (seed 003, DESIGNBASE; ALGORITHMS §10;
+//! docs/algorithms/skin.md).
+//!
+//! A designer places a few closed planar sections in space; the skin is a G1 surface of
+//! Gregory patches through them, found without a hand-drawn trajectory:
+//!
+//! 1. each section is checked and prepared ([`sections`]: centre, normal along the skinning
+//!    direction, the closed C2 spline through its points or C2 pieces between corners);
+//! 2. the previous section is swept into the next plane by the minimal rotation between their
+//!    normals, and the correspondence of least total twist is chosen over all n shifts
+//!    ([`network`]);
+//! 3. C2 cubic chains join corresponding vertices;
+//! 4. every cell gets a Gregory patch, G1 across every inner border through the
+//!    numbering-independent virtual basis ([`patches`]); chains through corners are creases;
+//! 5. [`Skin::tessellate`] samples K×K quads a patch into one welded mesh, with planar caps.
+
+pub mod network;
+pub mod patches;
+pub mod sections;
+mod tessellate;
+
+use crate::freeform::RationalBezier;
+use crate::freeform::gregory::Gregory;
+use crate::freeform::spline::Cubic;
+use glam::DVec3;
+pub use sections::Section;
+use thiserror::Error;
+
+/// One section as given: its points, the indices where its curve has a corner, and whether
+/// every point is one.
+#[derive(Debug, Clone, PartialEq, Default, serde::Serialize, serde::Deserialize)]
+pub struct SectionInput {
+    pub points: Vec<DVec3>,
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub corners: Vec<usize>,
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub polygon: bool,
+}
+
+/// Why a skin cannot be built. Sections and points are numbered from 0, as listed.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum SkinError {
+    #[error("a skin needs at least 2 sections, {0} given")]
+    TooFewSections(usize),
+    #[error("section {section} has {points} point(s): a section needs at least 3")]
+    TooFewPoints { section: usize, points: usize },
+    #[error("section {section}, point {point}: a coordinate is not a finite number")]
+    NonFinite { section: usize, point: usize },
+    #[error("section {section}: points {a} and {b} are the same point")]
+    RepeatedPoint { section: usize, a: usize, b: usize },
+    #[error("section {section}: corner {corner} is not a point (the section has {points})")]
+    CornerOutOfRange {
+        section: usize,
+        corner: usize,
+        points: usize,
+    },
+    #[error("section {section} encloses no area (its points are collinear)")]
+    NoArea { section: usize },
+    #[error(
+        "section {section} is not planar: point {point} is {distance:.3e} from its plane (tolerance {tolerance:.3e}, 1e-6 of the section's size)"
+    )]
+    NonPlanar {
+        section: usize,
+        point: usize,
+        distance: f64,
+        tolerance: f64,
+    },
+    #[error("section {section} intersects itself: its sides {a} and {b} cross")]
+    SelfIntersecting { section: usize, a: usize, b: usize },
+    #[error(
+        "sections {a} and {b} are coincident (same centre): neighbouring sections must be apart"
+    )]
+    Coincident { a: usize, b: usize },
+    #[error(
+        "section {section} has {points} points but section 0 has {expected}: every section needs the same number of points"
+    )]
+    UnequalCounts {
+        section: usize,
+        points: usize,
+        expected: usize,
+    },
+    #[error("resolution {0} is out of range: 1 to 256 quads a patch side")]
+    Resolution(usize),
+}
+
+/// A skin: the prepared sections, the curve network and one Gregory patch per cell.
+#[derive(Debug, Clone)]
+pub struct Skin {
+    pub sections: Vec<Section>,
+    /// σ between sections k and k + 1 (in the prepared, counter-clockwise numbering).
+    pub shifts: Vec<usize>,
+    /// Total twist of each chosen shift, radians.
+    pub twists: Vec<f64>,
+    /// Per section, its vertex on chain 0.
+    pub offset: Vec<usize>,
+    /// Per chain, its cubic pieces between consecutive sections.
+    pub chains: Vec<Vec<Cubic>>,
+    /// Per chain, whether it is a crease (through a corner).
+    pub crease: Vec<bool>,
+    /// The virtual trajectories between neighbouring centres (for display).
+    pub trajectories: Vec<RationalBezier>,
+    /// The swept sections: section k moved into section k + 1's plane.
+    pub swept: Vec<Vec<DVec3>>,
+    /// Patch of cell (k, i) at `k * n + i`.
+    pub patches: Vec<Gregory>,
+}
+
+/// Builds the skin through `input` (at least 2 sections, each with the same number of
+/// points).
+pub fn skin(input: &[SectionInput]) -> Result<Skin, SkinError> {
+    if input.len() < 2 {
+        return Err(SkinError::TooFewSections(input.len()));
+    }
+    let checked = input
+        .iter()
+        .enumerate()
+        .map(|(k, s)| sections::check(k, s))
+        .collect::<Result<Vec<_>, _>>()?;
+    let n = checked[0].0.len();
+    if let Some((k, c)) = checked.iter().enumerate().find(|(_, c)| c.0.len() != n) {
+        return Err(SkinError::UnequalCounts {
+            section: k,
+            points: c.0.len(),
+            expected: n,
+        });
+    }
+    for k in 1..checked.len() {
+        let size = checked[k]
+            .0
+            .iter()
+            .map(|p| (*p - checked[k].1).length())
+            .fold(0.0, f64::max);
+        if (checked[k].1 - checked[k - 1].1).length() <= 1e-9 * size {
+            return Err(SkinError::Coincident { a: k - 1, b: k });
+        }
+    }
+    let sections = sections::prepare(input, checked);
+    let m = sections.len();
+    let mut shifts = Vec::with_capacity(m - 1);
+    let mut twists = Vec::with_capacity(m - 1);
+    let mut swept = Vec::with_capacity(m - 1);
+    let mut trajectories = Vec::with_capacity(m - 1);
+    for k in 0..m - 1 {
+        let s = network::sweep(&sections[k], &sections[k + 1]);
+        let (sigma, twist) = network::least_twist(&s, &sections[k + 1]);
+        shifts.push(sigma);
+        twists.push(twist);
+        swept.push(s);
+        trajectories.push(network::trajectory(&sections[k], &sections[k + 1]));
+    }
+    let (chains, offset) = network::chains(&sections, &shifts);
+    let crease: Vec<bool> = (0..n)
+        .map(|i| {
+            sections
+                .iter()
+                .zip(&offset)
+                .any(|(s, &o)| s.corner[(i + o) % n])
+        })
+        .collect();
+    let net = patches::Network {
+        sections: &sections,
+        chains: &chains,
+        offset: &offset,
+        crease: &crease,
+    };
+    let patches = (0..m - 1)
+        .flat_map(|k| (0..n).map(move |i| (k, i)))
+        .map(|(k, i)| net.patch(k, i))
+        .collect();
+    Ok(Skin {
+        sections,
+        shifts,
+        twists,
+        offset,
+        chains,
+        crease,
+        trajectories,
+        swept,
+        patches,
+    })
+}
+
+impl Skin {
+    /// Points per section.
+    pub fn points_per_section(&self) -> usize {
+        self.sections[0].points.len()
+    }
+
+    /// The patch of cell (k, i).
+    pub fn patch(&self, k: usize, i: usize) -> &Gregory {
+        &self.patches[k * self.points_per_section() + i]
+    }
+
+    /// The largest angle, in degrees, between the two patches' normals along any inner border
+    /// that is not a crease, sampled at `samples` points a border (analytic normals).
+    pub fn border_normal_jump(&self, samples: usize) -> f64 {
+        let n = self.points_per_section();
+        let m = self.sections.len();
+        let mut worst = 0.0f64;
+        let angle = |a: DVec3, b: DVec3| a.cross(b).length().atan2(a.dot(b)).to_degrees();
+        for k in 0..m - 1 {
+            for i in 0..n {
+                for s in 0..=samples {
+                    let t = s as f64 / samples as f64;
+                    // Chain i + 1 between cells (k, i) and (k, i + 1).
+                    if !self.crease[(i + 1) % n] {
+                        let a = self.patch(k, i).eval(1.0, t).normal;
+                        let b = self.patch(k, (i + 1) % n).eval(0.0, t).normal;
+                        worst = worst.max(angle(a, b));
+                    }
+                    // Section k + 1 between cells (k, i) and (k + 1, i).
+                    if k + 2 < m {
+                        let a = self.patch(k, i).eval(t, 1.0).normal;
+                        let b = self.patch(k + 1, i).eval(t, 0.0).normal;
+                        worst = worst.max(angle(a, b));
+                    }
+                }
+            }
+        }
+        worst
+    }
+
+    /// Number of chains that are creases.
+    pub fn creases(&self) -> usize {
+        self.crease.iter().filter(|&&c| c).count()
+    }
+}

@@ -1,0 +1,135 @@
+//! Gregory patches over the skin's curve network, G1 across every inner border (seed 003 §2
+//! step 5; ALGORITHMS §8.2 and §10.8; docs/algorithms/skin.md).
+//!
+//! Cell (k, i) is bounded by the piece of section k from chain i to chain i + 1 (v = 0), the
+//! same on section k + 1 (v = 1), and the pieces of chains i (u = 0) and i + 1 (u = 1) between
+//! the two sections. Each border's interior copies come from its cross-derivative function
+//! `k(t) g(t) + h(t) C′(t)/3` with the **virtual basis** `g(t) = (1 − t) g₀ + t g₃`, where g₀,
+//! g₃ are the unit tangents of the curves crossing the border at its ends: the section curve
+//! for a chain piece, the chain for an intermediate section piece. Both cells of a border use
+//! the same g, fitted to their own end legs (`a₀ = k₀ g₀ + h₀ ℓ₀`, `a₃ = k₁ g₃ + h₁ ℓ₂`), so
+//! both cross derivatives lie in span(g(t), C′(t)): one tangent plane along the whole border,
+//! whatever the numbering. Borders on the end sections and chains through corners (creases)
+//! take the basis construction, `a₁ = (2a₀ + a₃)/3`, `a₂ = (a₀ + 2a₃)/3`.
+
+use super::sections::Section;
+use crate::freeform::gregory::Gregory;
+use crate::freeform::spline::{self, Cubic};
+use glam::DVec3;
+
+/// Least-squares `a ≈ k g + h l` (g, l span the tangent plane).
+fn fit(a: DVec3, g: DVec3, l: DVec3) -> (f64, f64) {
+    let (gg, gl, ll) = (g.dot(g), g.dot(l), l.dot(l));
+    let (ag, al) = (a.dot(g), a.dot(l));
+    let det = gg * ll - gl * gl;
+    if det.abs() <= 1e-24 * gg * ll {
+        return (ag / gg, 0.0);
+    }
+    ((ag * ll - al * gl) / det, (al * gg - ag * gl) / det)
+}
+
+/// The two interior cross vectors of a border `c` whose cell has end legs `a0` (at c₀) and `a3`
+/// (at c₃) into the cell: linear (`basis = None`) or from the virtual basis `(g₀, g₃)`.
+pub fn cross_vectors(c: &Cubic, a0: DVec3, a3: DVec3, basis: Option<(DVec3, DVec3)>) -> [DVec3; 2] {
+    let Some((g0, g3)) = basis else {
+        return [(2.0 * a0 + a3) / 3.0, (a0 + 2.0 * a3) / 3.0];
+    };
+    let l = [c[1] - c[0], c[2] - c[1], c[3] - c[2]];
+    let (k0, h0) = fit(a0, g0, l[0]);
+    let (k1, h1) = fit(a3, g3, l[2]);
+    [
+        ((k0 + k1) * g0 + k0 * g3) / 3.0 + (h1 * l[0] + 2.0 * h0 * l[1]) / 3.0,
+        (k1 * g0 + (k0 + k1) * g3) / 3.0 + (2.0 * h1 * l[1] + h0 * l[2]) / 3.0,
+    ]
+}
+
+/// Unit tangent of a curve piece at its start (t = 0) or end.
+fn tangent(c: &Cubic, at_end: bool) -> DVec3 {
+    spline::derivative(c, if at_end { 1.0 } else { 0.0 }).normalize_or_zero()
+}
+
+/// Everything the patches are built from.
+pub struct Network<'a> {
+    pub sections: &'a [Section],
+    /// Per chain, its pieces between consecutive sections.
+    pub chains: &'a [Vec<Cubic>],
+    /// Per section, the vertex of chain 0.
+    pub offset: &'a [usize],
+    /// Per chain, whether it is a crease (it passes through a corner of some section).
+    pub crease: &'a [bool],
+}
+
+impl Network<'_> {
+    fn n(&self) -> usize {
+        self.sections[0].points.len()
+    }
+
+    /// The vertex of section k on chain i.
+    fn vertex(&self, k: usize, i: usize) -> usize {
+        (i + self.offset[k]) % self.n()
+    }
+
+    /// Unit tangent of section k's curve at its vertex on chain i (leaving it).
+    fn section_tangent(&self, k: usize, i: usize) -> DVec3 {
+        tangent(&self.sections[k].curve[self.vertex(k, i)], false)
+    }
+
+    /// Unit tangent of chain i at section k.
+    fn chain_tangent(&self, k: usize, i: usize) -> DVec3 {
+        let c = &self.chains[i];
+        if k < c.len() {
+            tangent(&c[k], false)
+        } else {
+            tangent(&c[k - 1], true)
+        }
+    }
+
+    /// The Gregory patch of cell (k, i).
+    pub fn patch(&self, k: usize, i: usize) -> Gregory {
+        let n = self.n();
+        let i1 = (i + 1) % n;
+        let s0 = &self.sections[k].curve[self.vertex(k, i)];
+        let s1 = &self.sections[k + 1].curve[self.vertex(k + 1, i)];
+        let c0 = &self.chains[i][k];
+        let c1 = &self.chains[i1][k];
+        let mut p = [[DVec3::ZERO; 4]; 4];
+        for t in 0..4 {
+            p[t][0] = s0[t];
+            p[t][3] = s1[t];
+            p[0][t] = c0[t];
+            p[3][t] = c1[t];
+        }
+        let chain_basis = |ci: usize| {
+            (!self.crease[ci])
+                .then(|| (self.section_tangent(k, ci), self.section_tangent(k + 1, ci)))
+        };
+        let last = self.sections.len() - 1;
+        let section_basis = |kk: usize| {
+            (kk != 0 && kk != last).then(|| (self.chain_tangent(kk, i), self.chain_tangent(kk, i1)))
+        };
+        let mut g = Gregory {
+            points: p,
+            u_copies: [[DVec3::ZERO; 2]; 2],
+        };
+        // u = 0: chain i.
+        let x = cross_vectors(c0, p[1][0] - p[0][0], p[1][3] - p[0][3], chain_basis(i));
+        g.u_copies[0] = [c0[1] + x[0], c0[2] + x[1]];
+        // u = 1: chain i + 1.
+        let x = cross_vectors(c1, p[2][0] - p[3][0], p[2][3] - p[3][3], chain_basis(i1));
+        g.u_copies[1] = [c1[1] + x[0], c1[2] + x[1]];
+        // v = 0: section k.
+        let x = cross_vectors(s0, p[0][1] - p[0][0], p[3][1] - p[3][0], section_basis(k));
+        g.points[1][1] = s0[1] + x[0];
+        g.points[2][1] = s0[2] + x[1];
+        // v = 1: section k + 1.
+        let x = cross_vectors(
+            s1,
+            p[0][2] - p[0][3],
+            p[3][2] - p[3][3],
+            section_basis(k + 1),
+        );
+        g.points[1][2] = s1[1] + x[0];
+        g.points[2][2] = s1[2] + x[1];
+        g
+    }
+}

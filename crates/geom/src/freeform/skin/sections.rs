@@ -1,0 +1,201 @@
+//! Checking and preparing the sections of a skin (ALGORITHMS §10.2 and §10.7;
+//! docs/algorithms/skin.md): each is a closed planar polygon; its centre is the area centroid
+//! in its plane, its normal the Newell normal oriented along the skinning direction (the point
+//! list reversed when that flips it, so every section runs counter-clockwise about its normal),
+//! and its curve the closed C2 spline through its points, or open C2 pieces between the
+//! vertices marked as corners.
+
+use super::{SectionInput, SkinError};
+use crate::freeform::spline::{self, Cubic};
+use glam::{DVec2, DVec3};
+
+/// Largest distance of a point from its section's plane, as a fraction of the section's
+/// size (bounding-box diagonal).
+pub const PLANARITY_TOLERANCE: f64 = 1e-6;
+
+/// A section ready for skinning.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Section {
+    /// The points, counter-clockwise about `normal`.
+    pub points: Vec<DVec3>,
+    /// The input index of each point.
+    pub original: Vec<usize>,
+    /// Whether the curve has a corner at each point.
+    pub corner: Vec<bool>,
+    pub centre: DVec3,
+    pub normal: DVec3,
+    /// `points.len()` cubic pieces, piece j from point j to point j + 1.
+    pub curve: Vec<Cubic>,
+}
+
+/// A frame of the plane with normal `n`.
+fn plane_frame(n: DVec3) -> (DVec3, DVec3) {
+    let x = n.any_orthonormal_vector();
+    (x, n.cross(x))
+}
+
+fn segments_cross(a: DVec2, b: DVec2, c: DVec2, d: DVec2) -> bool {
+    let orient = |p: DVec2, q: DVec2, r: DVec2| (q - p).perp_dot(r - p);
+    let (o1, o2) = (orient(a, b, c), orient(a, b, d));
+    let (o3, o4) = (orient(c, d, a), orient(c, d, b));
+    o1 * o2 < 0.0 && o3 * o4 < 0.0
+}
+
+/// Checks section `k` and computes its plane, centre and orientation-free data.
+pub(super) fn check(k: usize, s: &SectionInput) -> Result<(Vec<DVec3>, DVec3, DVec3), SkinError> {
+    let p = &s.points;
+    if p.len() < 3 {
+        return Err(SkinError::TooFewPoints {
+            section: k,
+            points: p.len(),
+        });
+    }
+    if let Some(i) = p.iter().position(|q| !q.is_finite()) {
+        return Err(SkinError::NonFinite {
+            section: k,
+            point: i,
+        });
+    }
+    let (lo, hi) = p
+        .iter()
+        .fold((p[0], p[0]), |(lo, hi), &q| (lo.min(q), hi.max(q)));
+    let size = (hi - lo).length();
+    for i in 0..p.len() {
+        for j in i + 1..p.len() {
+            if (p[i] - p[j]).length() <= 1e-12 * size {
+                return Err(SkinError::RepeatedPoint {
+                    section: k,
+                    a: i,
+                    b: j,
+                });
+            }
+        }
+    }
+    if let Some(&c) = s.corners.iter().find(|&&c| c >= p.len()) {
+        return Err(SkinError::CornerOutOfRange {
+            section: k,
+            corner: c,
+            points: p.len(),
+        });
+    }
+    let o = p[0];
+    let mut newell = DVec3::ZERO;
+    for i in 0..p.len() {
+        newell += (p[i] - o).cross(p[(i + 1) % p.len()] - o);
+    }
+    let normal = newell.normalize_or_zero();
+    if normal == DVec3::ZERO {
+        return Err(SkinError::NoArea { section: k });
+    }
+    let mean = p.iter().sum::<DVec3>() / p.len() as f64;
+    let (worst, dist) = p
+        .iter()
+        .map(|q| (q - mean).dot(normal).abs())
+        .enumerate()
+        .fold((0, 0.0), |a, (i, d)| if d > a.1 { (i, d) } else { a });
+    if dist > PLANARITY_TOLERANCE * size {
+        return Err(SkinError::NonPlanar {
+            section: k,
+            point: worst,
+            distance: dist,
+            tolerance: PLANARITY_TOLERANCE * size,
+        });
+    }
+    let (x, y) = plane_frame(normal);
+    let flat: Vec<DVec2> = p
+        .iter()
+        .map(|q| DVec2::new((q - mean).dot(x), (q - mean).dot(y)))
+        .collect();
+    let n = flat.len();
+    for i in 0..n {
+        for j in i + 2..n {
+            if i == 0 && j == n - 1 {
+                continue;
+            }
+            if segments_cross(flat[i], flat[(i + 1) % n], flat[j], flat[(j + 1) % n]) {
+                return Err(SkinError::SelfIntersecting {
+                    section: k,
+                    a: i,
+                    b: j,
+                });
+            }
+        }
+    }
+    // Area centroid in the plane.
+    let (mut area, mut c) = (0.0, DVec2::ZERO);
+    for i in 0..n {
+        let (a, b) = (flat[i], flat[(i + 1) % n]);
+        let w = a.perp_dot(b);
+        area += w;
+        c += w * (a + b);
+    }
+    let c = c / (3.0 * area);
+    let centre = mean + c.x * x + c.y * y;
+    Ok((p.clone(), centre, normal))
+}
+
+/// The section curve: the closed C2 spline through the points, or open C2 pieces between
+/// corners (a polygon when every point is one).
+pub(super) fn curve(points: &[DVec3], corner: &[bool]) -> Vec<Cubic> {
+    let n = points.len();
+    let Some(first) = corner.iter().position(|&c| c) else {
+        return spline::closed(points);
+    };
+    let mut out = vec![[DVec3::ZERO; 4]; n];
+    let mut start = first;
+    loop {
+        let mut end = (start + 1) % n;
+        while !corner[end] {
+            end = (end + 1) % n;
+        }
+        let len = (end + n - start - 1) % n + 2;
+        let chain: Vec<DVec3> = (0..len).map(|i| points[(start + i) % n]).collect();
+        for (i, seg) in spline::open(&chain).into_iter().enumerate() {
+            out[(start + i) % n] = seg;
+        }
+        start = end;
+        if start == first {
+            break;
+        }
+    }
+    out
+}
+
+/// Orients the checked sections along the skinning direction and builds their curves.
+pub(super) fn prepare(
+    input: &[SectionInput],
+    checked: Vec<(Vec<DVec3>, DVec3, DVec3)>,
+) -> Vec<Section> {
+    let m = checked.len();
+    let centres: Vec<DVec3> = checked.iter().map(|c| c.1).collect();
+    checked
+        .into_iter()
+        .enumerate()
+        .map(|(k, (points, centre, mut normal))| {
+            let dir = centres[(k + 1).min(m - 1)] - centres[k.saturating_sub(1)];
+            let n = points.len();
+            let s = &input[k];
+            let mut corner = vec![s.polygon; n];
+            for &c in &s.corners {
+                corner[c] = true;
+            }
+            let mut original: Vec<usize> = (0..n).collect();
+            let mut points = points;
+            if normal.dot(dir) < 0.0 {
+                normal = -normal;
+                points.reverse();
+                corner.reverse();
+                original.reverse();
+            }
+            let curve = curve(&points, &corner);
+            Section {
+                points,
+                original,
+                corner,
+                centre,
+                normal,
+                curve,
+            }
+        })
+        .collect()
+}
