@@ -275,3 +275,16 @@ fn dihedral_angles_fall_with_the_resolution() {
         assert!(b32 <= 0.4 * b8 && i32 <= 0.4 * i8, "{name}");
     }
 }
+
+/// A section placed turned by 100° in its plane (a 90° step of its square plus 10°): the
+/// least-twist search pairs it so that the chains turn by 10° only, not 100°.
+#[test]
+fn a_wrongly_rotated_section_is_corrected_by_the_twist_search() {
+    let sq = |phase: f64, z: f64| ellipse(4, 1.0, 1.0, phase, DVec3::new(0.0, 0.0, z), DVec3::Z);
+    let input = vec![sq(0.0, 0.0), sq(100f64.to_radians(), 1.0), sq(0.0, 2.0)];
+    let s = skin(&input).unwrap();
+    assert_eq!(s.shifts, vec![3, 1]);
+    for (a, b) in s.twists.iter().zip([40.0, 40.0]) {
+        assert!((a.to_degrees() - b).abs() < 1e-9, "{a}");
+    }
+}

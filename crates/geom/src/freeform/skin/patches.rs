@@ -133,3 +133,87 @@ impl Network<'_> {
         g
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn line(a: DVec3, b: DVec3) -> Cubic {
+        [a, a + (b - a) / 3.0, a + 2.0 * (b - a) / 3.0, b]
+    }
+
+    /// Four straight borders of a bilinear patch with the basis construction on every border
+    /// reproduce the bilinear patch (ALGORITHMS §10.8): its cross derivatives are linear.
+    #[test]
+    fn straight_borders_reproduce_a_bilinear_patch() {
+        let c = [
+            DVec3::new(0.0, 0.0, 0.0),
+            DVec3::new(2.0, 0.1, 0.3),
+            DVec3::new(-0.2, 1.5, 0.4),
+            DVec3::new(2.3, 1.8, -0.5),
+        ];
+        let bilinear = |u: f64, v: f64| {
+            (1.0 - u) * (1.0 - v) * c[0]
+                + u * (1.0 - v) * c[1]
+                + (1.0 - u) * v * c[2]
+                + u * v * c[3]
+        };
+        let (s0, s1) = (line(c[0], c[1]), line(c[2], c[3]));
+        let (c0, c1) = (line(c[0], c[2]), line(c[1], c[3]));
+        let mut p = [[DVec3::ZERO; 4]; 4];
+        for t in 0..4 {
+            p[t][0] = s0[t];
+            p[t][3] = s1[t];
+            p[0][t] = c0[t];
+            p[3][t] = c1[t];
+        }
+        let mut g = Gregory {
+            points: p,
+            u_copies: [[DVec3::ZERO; 2]; 2],
+        };
+        let x = cross_vectors(&c0, p[1][0] - p[0][0], p[1][3] - p[0][3], None);
+        g.u_copies[0] = [c0[1] + x[0], c0[2] + x[1]];
+        let x = cross_vectors(&c1, p[2][0] - p[3][0], p[2][3] - p[3][3], None);
+        g.u_copies[1] = [c1[1] + x[0], c1[2] + x[1]];
+        let x = cross_vectors(&s0, p[0][1] - p[0][0], p[3][1] - p[3][0], None);
+        g.points[1][1] = s0[1] + x[0];
+        g.points[2][1] = s0[2] + x[1];
+        let x = cross_vectors(&s1, p[0][2] - p[0][3], p[3][2] - p[3][3], None);
+        g.points[1][2] = s1[1] + x[0];
+        g.points[2][2] = s1[2] + x[1];
+        for k in 0..=8 {
+            for l in 0..=8 {
+                let (u, v) = (k as f64 / 8.0, l as f64 / 8.0);
+                assert!((g.point(u, v) - bilinear(u, v)).length() < 1e-14, "{u} {v}");
+            }
+        }
+    }
+
+    /// The virtual basis: with g along the crossing legs, both sides' cross vectors lie in
+    /// span(g(t), C′(t)) for every t (one tangent plane), whatever each side's own legs.
+    #[test]
+    fn both_sides_share_the_tangent_plane() {
+        let c: Cubic = [
+            DVec3::ZERO,
+            DVec3::new(0.3, 0.1, 1.0),
+            DVec3::new(0.1, -0.2, 2.0),
+            DVec3::new(0.4, 0.0, 3.0),
+        ];
+        let (g0, g3) = (DVec3::X, DVec3::new(0.8, 0.6, 0.0));
+        let a = cross_vectors(&c, 0.7 * g0, 0.4 * g3, Some((g0, g3)));
+        let b = cross_vectors(&c, -1.3 * g0, -0.2 * g3, Some((g0, g3)));
+        for k in 0..=10 {
+            let t = k as f64 / 10.0;
+            let g = (1.0 - t) * g0 + t * g3;
+            let d = spline::derivative(&c, t);
+            let n = g.cross(d).normalize();
+            let s = 1.0 - t;
+            let side = |x: &[DVec3; 2], a0: DVec3, a3: DVec3| {
+                s * s * s * a0 + 3.0 * s * s * t * x[0] + 3.0 * s * t * t * x[1] + t * t * t * a3
+            };
+            let xa = side(&a, 0.7 * g0, 0.4 * g3);
+            let xb = side(&b, -1.3 * g0, -0.2 * g3);
+            assert!(xa.dot(n).abs() < 1e-14 && xb.dot(n).abs() < 1e-14, "{t}");
+        }
+    }
+}
