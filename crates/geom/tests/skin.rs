@@ -200,12 +200,24 @@ fn bad_sections_are_refused_by_name() {
     let mut s = good.clone();
     s[2] = s[1].clone();
     assert!(matches!(err(s), SkinError::Coincident { a: 1, b: 2 }));
+    // Unequal counts are matched by polar angle, which needs star-shaped sections: a
+    // C-shaped section is refused by name.
     let mut s = good.clone();
     s[4].points.pop();
-    assert!(matches!(
-        err(s),
-        SkinError::UnequalCounts { section: 4, .. }
-    ));
+    s[2].points = [
+        [0.0, 0.0],
+        [2.0, 0.0],
+        [2.0, 0.5],
+        [0.5, 0.5],
+        [0.5, 1.5],
+        [2.0, 1.5],
+        [2.0, 2.0],
+        [0.0, 2.0],
+    ]
+    .iter()
+    .map(|p| DVec3::new(p[0] - 1.0, p[1] - 1.0, 1.0))
+    .collect();
+    assert!(matches!(err(s), SkinError::NotStarShaped { section: 2 }));
     let mut s = good;
     s[0].corners = vec![9];
     assert!(matches!(
@@ -287,4 +299,54 @@ fn a_wrongly_rotated_section_is_corrected_by_the_twist_search() {
     for (a, b) in s.twists.iter().zip([40.0, 40.0]) {
         assert!((a.to_degrees() - b).abs() < 1e-9, "{a}");
     }
+}
+
+/// Beyond the paper: a triangle, a square and a hexagon (planes tilted, turned in their
+/// planes) are matched by polar angle. Every section ends with the same count (at most the
+/// sum), the pairing has no twist, and the skin is closed, outward, through every original
+/// vertex and G1.
+#[test]
+fn triangle_square_hexagon_skin_through_every_original_vertex() {
+    let input = vec![
+        ellipse(3, 1.0, 1.0, 0.2, DVec3::ZERO, DVec3::Z),
+        ellipse(
+            4,
+            0.9,
+            0.9,
+            0.5,
+            DVec3::new(0.1, 0.0, 1.5),
+            DVec3::new(0.15, 0.0, 1.0),
+        ),
+        ellipse(
+            6,
+            1.1,
+            1.1,
+            1.0,
+            DVec3::new(0.3, 0.1, 3.0),
+            DVec3::new(0.0, -0.2, 1.0),
+        ),
+    ];
+    let s = skin(&input).unwrap();
+    let n = s.points_per_section();
+    assert!(
+        s.sections.iter().all(|sec| sec.points.len() == n) && n <= 13,
+        "{n}"
+    );
+    assert_eq!(s.inserted.iter().sum::<usize>(), 3 * n - 13);
+    for t in &s.twists {
+        assert!(*t < 1e-9, "{t}");
+    }
+    let mesh = s.tessellate(8, true).unwrap();
+    let d = mesh.bbox_diagonal();
+    for sec in &input {
+        for &p in &sec.points {
+            assert!(nearest(p, &mesh) <= 1e-12 * d, "{p}");
+        }
+    }
+    Topology::build(&mesh)
+        .unwrap()
+        .require_closed(&mesh)
+        .unwrap();
+    assert!(prism_geom::geometry::signed_volume(&mesh) > 0.0);
+    assert!(s.border_normal_jump(16) < 1e-9);
 }

@@ -110,11 +110,11 @@ pub fn run(a: SkinArgs) -> Result<(), CliError> {
         .map(|(k, (sh, t))| format!("{k}→{}: {sh} (twist {:.1}°)", k + 1, t.to_degrees()))
         .collect();
     println!(
-        "{} sections of {n} points, {} patches, shifts {}, {} inserted point(s), {} crease chain(s), largest normal jump across patch borders {:.2e}°",
+        "{} sections of {n} points, {} patches, shifts {}, {} point(s) inserted by polar angle, {} crease chain(s), largest normal jump across patch borders {:.2e}°",
         s.sections.len(),
         s.patches.len(),
         shifts.join(", "),
-        0,
+        s.inserted.iter().sum::<usize>(),
         s.creases(),
         s.border_normal_jump(8)
     );

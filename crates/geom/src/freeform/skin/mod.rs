@@ -9,6 +9,7 @@
 //! 2. the previous section is swept into the next plane by the minimal rotation between their
 //!    normals, and the correspondence of least total twist is chosen over all n shifts
 //!    ([`network`]);
+//!    (sections with unequal counts first get vertices inserted by polar angle, [`polar`]);
 //! 3. C2 cubic chains join corresponding vertices;
 //! 4. every cell gets a Gregory patch, G1 across every inner border through the
 //!    numbering-independent virtual basis ([`patches`]); chains through corners are creases;
@@ -16,6 +17,7 @@
 
 pub mod network;
 pub mod patches;
+mod polar;
 pub mod sections;
 mod tessellate;
 
@@ -72,13 +74,9 @@ pub enum SkinError {
     )]
     Coincident { a: usize, b: usize },
     #[error(
-        "section {section} has {points} points but section 0 has {expected}: every section needs the same number of points"
+        "section {section} is not star-shaped about its centre (a ray from the centre meets its curve more than once): sections with unequal point counts are matched by polar angle and need it; give every section the same number of points instead"
     )]
-    UnequalCounts {
-        section: usize,
-        points: usize,
-        expected: usize,
-    },
+    NotStarShaped { section: usize },
     #[error("resolution {0} is out of range: 1 to 256 quads a patch side")]
     Resolution(usize),
 }
@@ -103,10 +101,12 @@ pub struct Skin {
     pub swept: Vec<Vec<DVec3>>,
     /// Patch of cell (k, i) at `k * n + i`.
     pub patches: Vec<Gregory>,
+    /// Vertices inserted into each section to equalise the counts (polar method, §10.9).
+    pub inserted: Vec<usize>,
 }
 
-/// Builds the skin through `input` (at least 2 sections, each with the same number of
-/// points).
+/// Builds the skin through `input` (at least 2 sections). Sections with unequal point counts
+/// get vertices inserted by polar angle (beyond the paper, [`polar`]).
 pub fn skin(input: &[SectionInput]) -> Result<Skin, SkinError> {
     if input.len() < 2 {
         return Err(SkinError::TooFewSections(input.len()));
@@ -116,14 +116,6 @@ pub fn skin(input: &[SectionInput]) -> Result<Skin, SkinError> {
         .enumerate()
         .map(|(k, s)| sections::check(k, s))
         .collect::<Result<Vec<_>, _>>()?;
-    let n = checked[0].0.len();
-    if let Some((k, c)) = checked.iter().enumerate().find(|(_, c)| c.0.len() != n) {
-        return Err(SkinError::UnequalCounts {
-            section: k,
-            points: c.0.len(),
-            expected: n,
-        });
-    }
     for k in 1..checked.len() {
         let size = checked[k]
             .0
@@ -134,7 +126,14 @@ pub fn skin(input: &[SectionInput]) -> Result<Skin, SkinError> {
             return Err(SkinError::Coincident { a: k - 1, b: k });
         }
     }
-    let sections = sections::prepare(input, checked);
+    let mut sections = sections::prepare(input, checked);
+    let n0 = sections[0].points.len();
+    let inserted = if sections.iter().all(|s| s.points.len() == n0) {
+        vec![0; sections.len()]
+    } else {
+        polar::equalise(&mut sections)?
+    };
+    let n = sections[0].points.len();
     let m = sections.len();
     let mut shifts = Vec::with_capacity(m - 1);
     let mut twists = Vec::with_capacity(m - 1);
@@ -177,6 +176,7 @@ pub fn skin(input: &[SectionInput]) -> Result<Skin, SkinError> {
         trajectories,
         swept,
         patches,
+        inserted,
     })
 }
 
