@@ -26,6 +26,7 @@ fn bundled_assets_are_the_builders_and_are_closed() {
             tags: Default::default(),
             pipeline: None,
             curve: None,
+            skin: None,
         };
         if std::env::var_os("PRISM_WRITE_ASSETS").is_some() {
             io::save(&path, &doc).unwrap();

@@ -104,6 +104,7 @@ pub fn run(a: NewArgs) -> Result<(), CliError> {
         tags: Default::default(),
         pipeline: None,
         curve: None,
+        skin: None,
     };
     let c = prism_geom::analysis::counts(&doc.mesh);
     io::save(&a.output, &doc).map_err(CliError::input)?;

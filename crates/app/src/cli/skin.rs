@@ -6,7 +6,7 @@
 
 use super::CliError;
 use clap::Args;
-use prism_geom::freeform::{SectionInput, Skin, skin};
+use prism_geom::freeform::{SectionInput, Skin, SkinSpec, skin};
 use prism_geom::io::{self, Document};
 use std::path::{Path, PathBuf};
 
@@ -128,10 +128,12 @@ pub fn run(a: SkinArgs) -> Result<(), CliError> {
     } else {
         let doc = Document {
             mesh,
-            edge_attrs: Default::default(),
-            tags: Default::default(),
-            pipeline: None,
-            curve: None,
+            skin: Some(SkinSpec {
+                sections: sections.clone(),
+                resolution: a.resolution,
+                caps: !a.no_caps,
+            }),
+            ..Document::default()
         };
         io::save(&a.output, &doc).map_err(CliError::input)?;
     }

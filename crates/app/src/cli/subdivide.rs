@@ -457,6 +457,7 @@ pub fn run(a: SubdivideArgs) -> Result<(), CliError> {
         tags: last.tags.clone(),
         pipeline: None,
         curve: None,
+        skin: None,
     };
     let warnings = io::save(&a.output, &out).map_err(CliError::input)?;
     for w in warnings {

@@ -9,6 +9,7 @@
 use super::document::{DocState, Origin};
 use glam::{DVec2, DVec3};
 use prism_geom::curve::{CurveScheme, Polyline};
+use prism_geom::freeform::SkinSpec;
 use prism_geom::{EdgeKey, Scheme};
 use std::path::PathBuf;
 
@@ -74,6 +75,12 @@ pub enum Edit {
     },
     /// An edit of the Curves tab's sketch.
     Curve(CurveEdit),
+    /// The Skin tab's sections as they are after a change (a sample, add, delete, reorder,
+    /// typed numbers); edits of one gesture (a slider or a drag, number `gesture`) coalesce.
+    SetSkin {
+        spec: Option<SkinSpec>,
+        gesture: Option<u64>,
+    },
     /// A whole new document with its name and save target (File ▸ Open, a sample,
     /// drag-and-drop); undoable.
     Replace {
@@ -118,6 +125,7 @@ pub enum CurveEdit {
 pub enum CoalesceKey {
     VertexDrag(u64),
     CurveDrag(u64),
+    SkinGesture(u64),
     Step { view: usize, index: usize },
 }
 
@@ -127,6 +135,9 @@ impl Edit {
         match self {
             Edit::DragVertices { drag, .. } => Some(CoalesceKey::VertexDrag(*drag)),
             Edit::Curve(CurveEdit::Move { drag, .. }) => Some(CoalesceKey::CurveDrag(*drag)),
+            Edit::SetSkin {
+                gesture: Some(g), ..
+            } => Some(CoalesceKey::SkinGesture(*g)),
             Edit::SetStep { view, index, .. } => Some(CoalesceKey::Step {
                 view: *view,
                 index: *index,
@@ -154,6 +165,8 @@ pub enum Command {
     /// Opens a file (as an undoable [`Edit::Replace`]).
     Open(PathBuf),
     OpenSample(usize),
+    /// Puts bundled skin sample k into the Skin tab (undoable) and shows the tab.
+    OpenSkinSample(usize),
     /// Asks where, then opens.
     OpenDialog,
     /// Saves to the document's file, or asks where (`as_new`: always asks).

@@ -12,6 +12,7 @@
 use super::command::{CoalesceKey, Edit};
 use super::edits::apply_to;
 use prism_geom::curve::CurveSketch;
+use prism_geom::freeform::SkinSpec;
 use prism_geom::io::{self, Document as FileDocument};
 use prism_geom::{EdgeAttrs, PolyMesh, Scheme, SubdivTags};
 use std::path::{Path, PathBuf};
@@ -26,6 +27,8 @@ pub struct DocState {
     pub tags: SubdivTags,
     pub pipelines: Vec<Vec<Scheme>>,
     pub curve: CurveSketch,
+    /// The Skin tab's sections (none until a sample or a first section is placed).
+    pub skin: Option<SkinSpec>,
 }
 
 impl DocState {
@@ -36,6 +39,7 @@ impl DocState {
             tags: doc.tags,
             pipelines: vec![doc.pipeline.unwrap_or_default()],
             curve: doc.curve.unwrap_or_default(),
+            skin: doc.skin,
         }
     }
 
@@ -48,6 +52,7 @@ impl DocState {
             tags: self.tags.clone(),
             pipeline: self.pipelines.first().filter(|p| !p.is_empty()).cloned(),
             curve: (self.curve != CurveSketch::default()).then(|| self.curve.clone()),
+            skin: self.skin.clone(),
         }
     }
 }

@@ -56,6 +56,19 @@ impl PrismApp {
 
     /// Exports the level shown in the active view (OBJ with its creases, STL, glTF).
     pub fn export_to(&mut self, path: &Path) -> Result<(), String> {
+        if self.tab == super::Tab::Skin {
+            let Some(Ok((_, mesh))) = self.skin.built().map(|b| &b.result) else {
+                return Err("there is no skin to export (see the Skin tab's message)".into());
+            };
+            if io::ExportFormat::of(path).is_some() {
+                io::export(path, mesh, &|_| false).map_err(|e| e.to_string())?;
+            } else {
+                io::write_obj(path, mesh, &Default::default(), &Default::default())
+                    .map_err(|e| e.to_string())?;
+            }
+            self.say(format!("exported the skin to {}", path.display()));
+            return Ok(());
+        }
         let (k, lv) = self.model.shown_level();
         let holes = &lv.tags.holes;
         if io::ExportFormat::of(path).is_some() {
@@ -119,7 +132,11 @@ impl PrismApp {
         let asked = std::time::Instant::now();
         match rfd::FileDialog::new()
             .add_filter(ext, &[ext])
-            .set_file_name(format!("level.{ext}"))
+            .set_file_name(if self.tab == super::Tab::Skin {
+                format!("skin.{ext}")
+            } else {
+                format!("level.{ext}")
+            })
             .save_file()
         {
             Some(p) => {

@@ -20,6 +20,7 @@ mod edits;
 mod files;
 pub mod model;
 mod new_solid;
+mod skin;
 mod viewport;
 
 #[cfg(test)]
@@ -28,6 +29,8 @@ mod tests;
 mod tests_new_solid;
 #[cfg(test)]
 mod tests_rounding;
+#[cfg(test)]
+mod tests_skin;
 
 use command::Command;
 use document::{DocState, Document, Origin};
@@ -59,6 +62,7 @@ pub enum Tab {
     #[default]
     Model,
     Curves,
+    Skin,
 }
 
 /// How the app was started.
@@ -142,6 +146,7 @@ pub struct PrismApp {
     pub tab: Tab,
     pub model: ModelTab,
     pub curves: curves::CurvesTab,
+    pub skin: skin::SkinTab,
     /// A message for the status bar (what the last action did, or why it did nothing);
     /// cleared by the next change of the document.
     pub note: Option<String>,
@@ -200,6 +205,7 @@ impl PrismApp {
             tab: launch.tab.unwrap_or_default(),
             model,
             curves: curves::CurvesTab::default(),
+            skin: skin::SkinTab::default(),
             new_solid: Default::default(),
             note: None,
             note_at: 0,
@@ -225,6 +231,7 @@ impl PrismApp {
         };
         let mut app = PrismApp::headless(launch, settings)?;
         app.model.has_gpu = true;
+        app.skin.has_gpu = true;
         let ctx = cc.egui_ctx.clone();
         app.model.waker = Arc::new(move || ctx.request_repaint());
         Ok(app)
@@ -266,6 +273,18 @@ impl PrismApp {
             Command::Open(p) => self.open_path(&p),
             Command::OpenSample(k) => match files::sample(k) {
                 Ok((state, origin)) => self.replace_document(state, origin),
+                Err(e) => self.say(e),
+            },
+            Command::OpenSkinSample(k) => match skin::sample(k) {
+                Ok(spec) => {
+                    self.tab = Tab::Skin;
+                    self.skin.reframe();
+                    self.run(Command::Edit(command::Edit::SetSkin {
+                        spec: Some(spec),
+                        gesture: None,
+                    }));
+                    self.say(format!("skin sample: {}", skin::SKIN_SAMPLES[k].0));
+                }
                 Err(e) => self.say(e),
             },
             Command::OpenDialog => self.open_dialog(),
@@ -318,6 +337,7 @@ impl PrismApp {
                     tags: Default::default(),
                     pipelines: old.pipelines.clone(),
                     curve: old.curve.clone(),
+                    skin: old.skin.clone(),
                 };
                 let name = match solid {
                     prism_geom::solid::Solid::Box { .. } => "a new box",
@@ -409,6 +429,13 @@ impl PrismApp {
                             out.push(Command::OpenSample(k));
                         }
                     }
+                    ui.separator();
+                    ui.label("Skins (the Skin tab)");
+                    for (k, (name, _, _)) in skin::SKIN_SAMPLES.iter().enumerate() {
+                        if ui.button(*name).clicked() {
+                            out.push(Command::OpenSkinSample(k));
+                        }
+                    }
                 });
                 ui.separator();
                 if ui.button("Save (Ctrl+S)").clicked() {
@@ -438,6 +465,7 @@ impl PrismApp {
             ui.separator();
             ui.selectable_value(&mut self.tab, Tab::Model, "Model");
             ui.selectable_value(&mut self.tab, Tab::Curves, "Curves");
+            ui.selectable_value(&mut self.tab, Tab::Skin, "Skin");
         });
         out
     }
@@ -476,6 +504,10 @@ impl PrismApp {
             Tab::Model => {
                 let note = self.note.clone();
                 commands.extend(self.model.ui(ui, &self.doc, note.as_deref()));
+            }
+            Tab::Skin => {
+                let spec = self.doc.state().skin.as_ref();
+                commands.extend(self.skin.ui(ui, spec));
             }
             Tab::Curves => {
                 let sketch = &self.doc.state().curve;

@@ -482,6 +482,7 @@ fn a_big_level_gets_its_scene_on_a_thread_and_the_old_one_stays_meanwhile() {
         tags: Default::default(),
         pipeline: None,
         curve: None,
+        skin: None,
     };
     prism_geom::io::save(&path, &doc).unwrap();
     let mut a = opened(&path);

@@ -11,4 +11,4 @@ pub mod spline;
 
 pub use bezier::RationalBezier;
 pub use gregory::Gregory;
-pub use skin::{SectionInput, Skin, SkinError, skin};
+pub use skin::{SectionInput, Skin, SkinError, SkinSpec, skin};

@@ -12,12 +12,15 @@
 //!   "curve": { "closed": false, "points": [[0, 0], [1, 0], ...], "scheme": "circle",
 //!              "levels": 4 } }
 //! ```
-//! The optional `"curve"` block is the Curves tab's sketch ([`CurveSketch`]).
+//! The optional `"curve"` block is the Curves tab's sketch ([`CurveSketch`]), the optional
+//! `"skin"` block the Skin tab's sections ([`SkinSpec`]: `{"sections": [{"points": [[x, y, z],
+//! ...], "corners": [...], "polygon": false}, ...], "resolution": 8, "caps": true}`).
 //! A face is a list of loops, the outer loop first; indices are 0-based.
 
 use super::{IoError, write_atomically};
 use crate::curve::CurveSketch;
 use crate::edge_attrs::{EdgeAttr, EdgeAttrs, EdgeKey};
+use crate::freeform::SkinSpec;
 use crate::mesh::PolyMesh;
 use crate::scheme::{Scheme, format_pipeline, parse_pipeline};
 use crate::tags::SubdivTags;
@@ -38,6 +41,8 @@ pub struct Document {
     pub pipeline: Option<Vec<Scheme>>,
     /// The curve sketch of the Curves tab, when the document has one.
     pub curve: Option<CurveSketch>,
+    /// The Skin tab's sections, when the document has them.
+    pub skin: Option<SkinSpec>,
 }
 
 #[derive(Serialize, Deserialize)]
@@ -61,6 +66,8 @@ struct FileV1 {
     pipeline: Option<String>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     curve: Option<CurveSketch>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    skin: Option<SkinSpec>,
 }
 
 #[derive(Deserialize)]
@@ -121,6 +128,7 @@ pub fn document_from_str(path: &Path, text: &str) -> Result<Document, IoError> {
         tags: f.subdivision,
         pipeline,
         curve: f.curve,
+        skin: f.skin,
     })
 }
 
@@ -154,6 +162,7 @@ pub fn document_to_string(doc: &Document) -> String {
         subdivision: doc.tags.clone(),
         pipeline: doc.pipeline.as_deref().map(format_pipeline),
         curve: doc.curve.clone(),
+        skin: doc.skin.clone(),
     };
     // Compact: one vertex or face per line would be nicer to diff, but serde_json's pretty
     // printer puts every number on its own line; plain is smaller and as exact.
@@ -194,6 +203,26 @@ mod tests {
                 scheme: crate::curve::CurveScheme::LogSpiral,
                 levels: 3,
                 ..CurveSketch::default()
+            }),
+            skin: Some(crate::freeform::SkinSpec {
+                sections: vec![
+                    crate::freeform::SectionInput {
+                        points: vec![DVec3::ZERO, DVec3::X, DVec3::Y],
+                        corners: vec![1],
+                        polygon: false,
+                    },
+                    crate::freeform::SectionInput {
+                        points: vec![
+                            DVec3::Z,
+                            DVec3::new(1.0, 0.0, 1.0),
+                            DVec3::new(0.0, 1.0, 1.0),
+                        ],
+                        corners: vec![],
+                        polygon: true,
+                    },
+                ],
+                resolution: 5,
+                caps: false,
             }),
         };
         let text = document_to_string(&doc);

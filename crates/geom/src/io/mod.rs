@@ -96,6 +96,7 @@ pub fn load_str(path: &Path, text: &str) -> Result<(Document, Option<Vec<usize>>
                     tags: m.tags,
                     pipeline: None,
                     curve: None,
+                    skin: None,
                 },
                 Some(m.face_lines),
             ))

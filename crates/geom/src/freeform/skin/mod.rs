@@ -39,6 +39,37 @@ pub struct SectionInput {
     pub polygon: bool,
 }
 
+/// A skin as a document keeps it (the `"skin"` block of a `.prism.json`, the Skin tab):
+/// the sections and how to tessellate.
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
+pub struct SkinSpec {
+    pub sections: Vec<SectionInput>,
+    /// Quads along each side of a patch.
+    #[serde(default = "SkinSpec::default_resolution")]
+    pub resolution: usize,
+    /// Close the end sections with planar caps.
+    #[serde(default = "SkinSpec::default_caps")]
+    pub caps: bool,
+}
+
+impl SkinSpec {
+    fn default_resolution() -> usize {
+        8
+    }
+    fn default_caps() -> bool {
+        true
+    }
+
+    /// Sections with the default resolution and caps.
+    pub fn new(sections: Vec<SectionInput>) -> SkinSpec {
+        SkinSpec {
+            sections,
+            resolution: 8,
+            caps: true,
+        }
+    }
+}
+
 /// Why a skin cannot be built. Sections and points are numbered from 0, as listed.
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum SkinError {

@@ -1,0 +1,566 @@
+//! The Skin tab (seed 003; docs/algorithms/skin.md, docs/user-guide.md "The Skin tab"): the
+//! sections listed, added, deleted, reordered, moved, turned, tilted and scaled by typed or
+//! dragged numbers, their points edited in their own plane; the G1 skin through them rebuilt
+//! live, with the paper's teaching pictures on request (trajectories, swept sections, the
+//! chosen chains). Every change is one [`Edit::SetSkin`]; a drag of one number is one undo step.
+
+mod build;
+
+use super::command::{Command, Edit};
+use super::viewport;
+use build::{Built, Overlays};
+use glam::{DQuat, DVec3};
+use prism_geom::freeform::{SectionInput, SkinSpec};
+use prism_viewport::{Camera, Scene, View};
+use std::sync::Arc;
+
+/// The bundled section sets: name, file name, contents.
+pub const SKIN_SAMPLES: [(&str, &str, &str); 3] = [
+    (
+        "Spout (6 sections)",
+        "spout.skin.json",
+        include_str!("../../../../../assets/spout.skin.json"),
+    ),
+    (
+        "Wing (4 sections)",
+        "wing.skin.json",
+        include_str!("../../../../../assets/wing.skin.json"),
+    ),
+    (
+        "Wing moved and pitched",
+        "wing-pitched.skin.json",
+        include_str!("../../../../../assets/wing-pitched.skin.json"),
+    ),
+];
+
+/// The sections of bundled sample `k`.
+pub fn sample(k: usize) -> Result<SkinSpec, String> {
+    let (name, _, text) = SKIN_SAMPLES.get(k).ok_or("no such sample")?;
+    serde_json::from_str(text).map_err(|e| format!("{name}: {e}"))
+}
+
+/// The view slot of the Skin tab's 3D view (the Model tab's views use 0–3).
+const VIEW_SLOT: usize = 16;
+
+/// Transient values of the number fields that act by difference (turn, tilt, scale).
+#[derive(Debug, Default, Clone, Copy)]
+struct Gesture {
+    turn: f64,
+    tilt_x: f64,
+    tilt_y: f64,
+    scale: f64,
+}
+
+pub struct SkinTab {
+    pub selected: usize,
+    pub overlays: Overlays,
+    pub has_gpu: bool,
+    camera: Camera,
+    framed: bool,
+    built: Option<Built>,
+    scene: Arc<Scene>,
+    overlay: Arc<Scene>,
+    version: u64,
+    shown: Option<(usize, Overlays)>,
+    gestures: u64,
+    gesture: Gesture,
+    /// The gesture a field drag belongs to, while it lasts.
+    active: Option<u64>,
+    out: Vec<Command>,
+}
+
+impl Default for SkinTab {
+    fn default() -> Self {
+        SkinTab {
+            selected: 0,
+            overlays: Overlays::default(),
+            has_gpu: false,
+            camera: Camera::default(),
+            framed: false,
+            built: None,
+            scene: Arc::new(Scene::default()),
+            overlay: Arc::new(Scene::default()),
+            version: 0,
+            shown: None,
+            gestures: 0,
+            gesture: Gesture {
+                scale: 100.0,
+                ..Gesture::default()
+            },
+            active: None,
+            out: Vec::new(),
+        }
+    }
+}
+
+/// The unit normal and in-plane frame of a section's points (Newell), and their mean.
+fn frame(points: &[DVec3]) -> (DVec3, DVec3, DVec3, DVec3) {
+    let n = points.len().max(1);
+    let mean = points.iter().sum::<DVec3>() / n as f64;
+    let mut newell = DVec3::ZERO;
+    for i in 0..points.len() {
+        newell += (points[i] - mean).cross(points[(i + 1) % points.len()] - mean);
+    }
+    let normal = newell.normalize_or(DVec3::Z);
+    let x = (points.first().copied().unwrap_or(DVec3::X) - mean)
+        .reject_from(normal)
+        .normalize_or(normal.any_orthonormal_vector());
+    (mean, normal, x, normal.cross(x))
+}
+
+impl SkinTab {
+    /// The last build (for the tests and the export).
+    pub fn built(&self) -> Option<&Built> {
+        self.built.as_ref()
+    }
+
+    /// Rebuilds the skin and the scenes when the sections or the overlays changed.
+    pub fn sync(&mut self, spec: Option<&SkinSpec>) {
+        let Some(spec) = spec else {
+            self.built = None;
+            self.scene = Arc::new(Scene::default());
+            self.overlay = Arc::new(Scene::default());
+            self.shown = None;
+            return;
+        };
+        let fresh = self.built.as_ref().is_none_or(|b| &b.spec != spec);
+        if fresh {
+            self.built = Some(Built::new(spec));
+        }
+        self.selected = self.selected.min(spec.sections.len().saturating_sub(1));
+        if fresh || self.shown != Some((self.selected, self.overlays)) {
+            let b = self.built.as_ref().expect("built above");
+            (self.scene, self.overlay) = build::scenes(b, self.selected, &self.overlays);
+            self.version += 1;
+            self.shown = Some((self.selected, self.overlays));
+        }
+    }
+
+    /// Frames the skin again on the next frame (a new sample).
+    pub fn reframe(&mut self) {
+        self.framed = false;
+    }
+
+    fn frame_view(&mut self) {
+        let (lo, hi) = self.scene.bbox;
+        let r = (0.5 * (hi - lo).length()).max(1e-6) as f32;
+        let c = self.scene.to_local(0.5 * (lo + hi));
+        self.camera = Camera::looking(View::Iso, c, r * 1.1);
+        self.framed = true;
+    }
+
+    fn set(&mut self, spec: Option<SkinSpec>, gesture: Option<u64>) {
+        self.out
+            .push(Command::Edit(Edit::SetSkin { spec, gesture }));
+    }
+
+    /// The gesture id of a number field being dragged (a new one when the drag starts).
+    fn gesture_of(&mut self, r: &egui::Response) -> Option<u64> {
+        if r.drag_started() || (r.changed() && self.active.is_none()) {
+            self.gestures += 1;
+            self.active = Some(self.gestures);
+        }
+        let id = self.active;
+        if r.drag_stopped() || (!r.dragged() && !r.has_focus()) {
+            self.active = None;
+        }
+        id
+    }
+
+    pub fn ui(&mut self, ui: &mut egui::Ui, spec: Option<&SkinSpec>) -> Vec<Command> {
+        self.sync(spec);
+        egui::Panel::left("skin_panel")
+            .resizable(true)
+            .default_size(300.0)
+            .show(ui, |ui| {
+                egui::ScrollArea::vertical().show(ui, |ui| self.panel(ui, spec));
+            });
+        egui::CentralPanel::default().show(ui, |ui| self.view(ui, spec));
+        std::mem::take(&mut self.out)
+    }
+
+    fn panel(&mut self, ui: &mut egui::Ui, spec: Option<&SkinSpec>) {
+        ui.heading("Skin through sections");
+        let Some(spec) = spec else {
+            ui.label("No sections yet. Start from a sample (also in File > Samples):");
+            for (k, (name, _, _)) in SKIN_SAMPLES.iter().enumerate() {
+                if ui.button(*name).clicked() {
+                    match sample(k) {
+                        Ok(s) => {
+                            self.framed = false;
+                            self.set(Some(s), None);
+                        }
+                        Err(e) => self.out.push(Command::Say(e)),
+                    }
+                }
+            }
+            if ui.button("Two circles").clicked() {
+                let circle = |z: f64, r: f64| SectionInput {
+                    points: (0..8)
+                        .map(|i| {
+                            let t = i as f64 * std::f64::consts::TAU / 8.0;
+                            DVec3::new(r * t.cos(), r * t.sin(), z)
+                        })
+                        .collect(),
+                    ..SectionInput::default()
+                };
+                self.framed = false;
+                self.set(
+                    Some(SkinSpec::new(vec![circle(0.0, 1.0), circle(2.0, 0.6)])),
+                    None,
+                );
+            }
+            return;
+        };
+        self.summary(ui);
+        ui.separator();
+        ui.label("Sections (in skinning order)");
+        for (k, s) in spec.sections.iter().enumerate() {
+            let mut text = format!("{k}: {} points", s.points.len());
+            if s.polygon {
+                text.push_str(", polygon");
+            } else if !s.corners.is_empty() {
+                text.push_str(&format!(", {} corner(s)", s.corners.len()));
+            }
+            if ui.selectable_label(k == self.selected, text).clicked() {
+                self.selected = k;
+            }
+        }
+        let k = self.selected;
+        let n = spec.sections.len();
+        ui.horizontal_wrapped(|ui| {
+            if ui
+                .button("Add after")
+                .on_hover_text("A copy of the selected section, moved along its normal")
+                .clicked()
+            {
+                let mut s = spec.clone();
+                let mut copy = s.sections[k].clone();
+                let (_, normal, _, _) = frame(&copy.points);
+                let size = copy
+                    .points
+                    .iter()
+                    .map(|p| (*p - copy.points[0]).length())
+                    .fold(0.0, f64::max);
+                let step = if k + 1 < n {
+                    let (a, _, _, _) = frame(&s.sections[k].points);
+                    let (b, _, _, _) = frame(&s.sections[k + 1].points);
+                    0.5 * (b - a)
+                } else {
+                    normal * size.max(1e-3)
+                };
+                for p in &mut copy.points {
+                    *p += step;
+                }
+                s.sections.insert(k + 1, copy);
+                self.selected = k + 1;
+                self.set(Some(s), None);
+            }
+            let delete = ui.add_enabled(n > 2, egui::Button::new("Delete"));
+            if delete
+                .on_disabled_hover_text("A skin needs at least 2 sections")
+                .clicked()
+            {
+                let mut s = spec.clone();
+                s.sections.remove(k);
+                self.set(Some(s), None);
+            }
+            if ui.add_enabled(k > 0, egui::Button::new("Up")).clicked() {
+                let mut s = spec.clone();
+                s.sections.swap(k, k - 1);
+                self.selected = k - 1;
+                self.set(Some(s), None);
+            }
+            if ui
+                .add_enabled(k + 1 < n, egui::Button::new("Down"))
+                .clicked()
+            {
+                let mut s = spec.clone();
+                s.sections.swap(k, k + 1);
+                self.selected = k + 1;
+                self.set(Some(s), None);
+            }
+            if ui.button("Clear all").clicked() {
+                self.set(None, None);
+            }
+        });
+        ui.separator();
+        self.section_editor(ui, spec);
+        ui.separator();
+        ui.label("Surface");
+        let mut res = spec.resolution;
+        let r = ui.add(egui::Slider::new(&mut res, 1..=32).text("quads a patch side"));
+        let g = self.gesture_of(&r);
+        if res != spec.resolution {
+            let mut s = spec.clone();
+            s.resolution = res;
+            self.set(Some(s), g);
+        }
+        let mut caps = spec.caps;
+        if ui.checkbox(&mut caps, "Planar caps at the ends").changed() {
+            let mut s = spec.clone();
+            s.caps = caps;
+            self.set(Some(s), None);
+        }
+        ui.separator();
+        ui.label("Show");
+        let o = &mut self.overlays;
+        ui.checkbox(&mut o.sections, "Section curves (yellow; selected red)");
+        ui.checkbox(&mut o.chains, "Chains (blue; creases violet)");
+        ui.checkbox(&mut o.trajectories, "Trajectories between centres (fig. 1)");
+        ui.checkbox(&mut o.swept, "Swept sections (fig. 2)");
+        ui.checkbox(&mut o.wireframe, "Iso-parameter lines");
+        ui.checkbox(&mut o.smooth, "Smooth shading");
+        if ui.button("Frame the skin").clicked() {
+            self.frame_view();
+        }
+    }
+
+    fn summary(&self, ui: &mut egui::Ui) {
+        let Some(b) = &self.built else { return };
+        match &b.result {
+            Ok((s, m)) => {
+                let shifts: Vec<String> = s.shifts.iter().map(|x| x.to_string()).collect();
+                ui.label(format!(
+                    "{} sections × {} points, {} patches, {} quads; shifts {}; {} inserted, {} crease chain(s)",
+                    s.sections.len(),
+                    s.points_per_section(),
+                    s.patches.len(),
+                    m.num_faces(),
+                    shifts.join(", "),
+                    s.inserted.iter().sum::<usize>(),
+                    s.creases()
+                ));
+                ui.label(format!(
+                    "G1: largest normal jump across patch borders {:.1e}°; built in {:.1} ms",
+                    b.jump, b.millis
+                ));
+            }
+            Err(e) => {
+                ui.colored_label(
+                    egui::Color32::from_rgb(255, 120, 100),
+                    format!("No skin: {e}"),
+                );
+            }
+        }
+    }
+
+    fn section_editor(&mut self, ui: &mut egui::Ui, spec: &SkinSpec) {
+        let k = self.selected;
+        let Some(sec) = spec.sections.get(k) else {
+            return;
+        };
+        let (centre, normal, x, y) = frame(&sec.points);
+        ui.label(format!("Section {k}"));
+        let mut moved = centre;
+        let mut changed = None;
+        ui.horizontal(|ui| {
+            ui.label("centre");
+            for a in 0..3 {
+                let r = ui.add(
+                    egui::DragValue::new(&mut moved[a])
+                        .speed(0.01)
+                        .max_decimals(4),
+                );
+                let g = self.gesture_of(&r);
+                if r.changed() {
+                    changed = Some(g);
+                }
+            }
+        });
+        let mut s = spec.clone();
+        if let Some(g) = changed {
+            for p in &mut s.sections[k].points {
+                *p += moved - centre;
+            }
+            self.set(Some(s.clone()), g);
+        }
+        // Turn, tilt and scale act by difference from where the drag started.
+        let mut gst = self.gesture;
+        let mut act: Option<(DQuat, f64, Option<u64>)> = None;
+        ui.horizontal(|ui| {
+            ui.label("turn in plane °");
+            let before = gst.turn;
+            let r = ui.add(egui::DragValue::new(&mut gst.turn).speed(0.5));
+            let g = self.gesture_of(&r);
+            if r.changed() {
+                act = Some((
+                    DQuat::from_axis_angle(normal, (gst.turn - before).to_radians()),
+                    1.0,
+                    g,
+                ));
+            }
+            if !r.dragged() && !r.has_focus() {
+                gst.turn = 0.0;
+            }
+        });
+        ui.horizontal(|ui| {
+            ui.label("tilt °");
+            let (bx, by) = (gst.tilt_x, gst.tilt_y);
+            let r1 = ui.add(
+                egui::DragValue::new(&mut gst.tilt_x)
+                    .speed(0.5)
+                    .prefix("about x: "),
+            );
+            let g1 = self.gesture_of(&r1);
+            if r1.changed() {
+                act = Some((
+                    DQuat::from_axis_angle(x, (gst.tilt_x - bx).to_radians()),
+                    1.0,
+                    g1,
+                ));
+            }
+            let r2 = ui.add(
+                egui::DragValue::new(&mut gst.tilt_y)
+                    .speed(0.5)
+                    .prefix("about y: "),
+            );
+            let g2 = self.gesture_of(&r2);
+            if r2.changed() {
+                act = Some((
+                    DQuat::from_axis_angle(y, (gst.tilt_y - by).to_radians()),
+                    1.0,
+                    g2,
+                ));
+            }
+            if !r1.dragged() && !r1.has_focus() {
+                gst.tilt_x = 0.0;
+            }
+            if !r2.dragged() && !r2.has_focus() {
+                gst.tilt_y = 0.0;
+            }
+        });
+        ui.horizontal(|ui| {
+            ui.label("scale %");
+            let before = gst.scale;
+            let r = ui.add(
+                egui::DragValue::new(&mut gst.scale)
+                    .speed(0.5)
+                    .range(1.0..=1000.0),
+            );
+            let g = self.gesture_of(&r);
+            if r.changed() && before > 0.0 {
+                act = Some((DQuat::IDENTITY, gst.scale / before, g));
+            }
+            if !r.dragged() && !r.has_focus() {
+                gst.scale = 100.0;
+            }
+        });
+        self.gesture = gst;
+        if let Some((q, f, g)) = act {
+            let mut s = spec.clone();
+            for p in &mut s.sections[k].points {
+                *p = centre + q * ((*p - centre) * f);
+            }
+            self.set(Some(s), g);
+        }
+        let mut polygon = sec.polygon;
+        if ui
+            .checkbox(
+                &mut polygon,
+                "Polygon (every point a corner: straight sides, creases)",
+            )
+            .changed()
+        {
+            let mut s = spec.clone();
+            s.sections[k].polygon = polygon;
+            self.set(Some(s), None);
+        }
+        egui::CollapsingHeader::new(format!("Points of section {k} (in its plane)"))
+            .id_salt(("skin_points", k))
+            .show(ui, |ui| {
+                let mut edit: Option<(usize, DVec3, bool, Option<u64>)> = None;
+                for (i, p) in sec.points.iter().enumerate() {
+                    let d = *p - centre;
+                    let (mut u, mut v) = (d.dot(x), d.dot(y));
+                    let mut corner = sec.corners.contains(&i);
+                    ui.horizontal(|ui| {
+                        ui.label(format!("{i}"));
+                        let r1 = ui.add(egui::DragValue::new(&mut u).speed(0.005).max_decimals(4));
+                        let g1 = self.gesture_of(&r1);
+                        let r2 = ui.add(egui::DragValue::new(&mut v).speed(0.005).max_decimals(4));
+                        let g2 = self.gesture_of(&r2);
+                        let c = ui.checkbox(&mut corner, "corner");
+                        if r1.changed() || r2.changed() || c.changed() {
+                            let g = if r1.changed() { g1 } else { g2 };
+                            let off = d.dot(normal);
+                            let g = if c.changed() { None } else { g };
+                            edit = Some((i, centre + u * x + v * y + off * normal, corner, g));
+                        }
+                    });
+                }
+                if let Some((i, p, corner, g)) = edit {
+                    let mut s = spec.clone();
+                    let sec = &mut s.sections[k];
+                    sec.points[i] = p;
+                    sec.corners.retain(|&c| c != i);
+                    if corner {
+                        sec.corners.push(i);
+                        sec.corners.sort_unstable();
+                    }
+                    self.set(Some(s), g);
+                }
+            });
+    }
+
+    fn view(&mut self, ui: &mut egui::Ui, spec: Option<&SkinSpec>) {
+        let rect = ui.available_rect_before_wrap();
+        if spec.is_none() {
+            ui.centered_and_justified(|ui| {
+                ui.label("Place sections from a sample on the left; the skin appears here.");
+            });
+            return;
+        }
+        if !self.framed && !self.scene.vertices.is_empty() {
+            self.frame_view();
+        }
+        let resp = ui.interact(
+            rect,
+            ui.scope_id().with("skin_view"),
+            egui::Sense::click_and_drag(),
+        );
+        if resp.dragged_by(egui::PointerButton::Primary) {
+            let d = resp.drag_delta();
+            self.camera.orbit(-d.x * 0.01, d.y * 0.01);
+        }
+        if resp.dragged_by(egui::PointerButton::Secondary)
+            || resp.dragged_by(egui::PointerButton::Middle)
+        {
+            let d = resp.drag_delta();
+            self.camera.pan(d.x / rect.height(), d.y / rect.height());
+        }
+        if resp.hovered() {
+            let scroll = ui.input(|i| i.smooth_scroll_delta.y);
+            if scroll != 0.0 {
+                self.camera.zoom((-scroll * 0.002).exp());
+            }
+        }
+        let bg = prism_viewport::renderer::BACKGROUND;
+        let srgb = |x: f64| (255.0 * x.powf(1.0 / 2.2)) as u8;
+        ui.painter().rect_filled(
+            rect,
+            0.0,
+            egui::Color32::from_rgb(srgb(bg.r), srgb(bg.g), srgb(bg.b)),
+        );
+        if self.has_gpu {
+            ui.painter().add(egui_wgpu::Callback::new_paint_callback(
+                rect,
+                viewport::ViewCallback {
+                    view: VIEW_SLOT,
+                    scene: self.scene.clone(),
+                    overlay: self.overlay.clone(),
+                    version: self.version,
+                    camera: self.camera,
+                    aspect: rect.width() / rect.height().max(1.0),
+                },
+            ));
+        }
+        ui.painter().text(
+            rect.left_bottom() + egui::vec2(8.0, -8.0),
+            egui::Align2::LEFT_BOTTOM,
+            "drag: orbit · right drag: pan · wheel: zoom",
+            egui::FontId::proportional(12.0),
+            egui::Color32::from_gray(170),
+        );
+    }
+}
