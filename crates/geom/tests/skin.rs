@@ -350,3 +350,78 @@ fn triangle_square_hexagon_skin_through_every_original_vertex() {
     assert!(prism_geom::geometry::signed_volume(&mesh) > 0.0);
     assert!(s.border_normal_jump(16) < 1e-9);
 }
+
+/// Whether segment pq crosses triangle abc (strictly: signed volumes of opposite signs).
+fn segment_crosses(p: DVec3, q: DVec3, t: [DVec3; 3]) -> bool {
+    let vol = |a: DVec3, b: DVec3, c: DVec3, d: DVec3| (b - a).cross(c - a).dot(d - a);
+    let (s1, s2) = (vol(t[0], t[1], t[2], p), vol(t[0], t[1], t[2], q));
+    if s1 * s2 >= 0.0 {
+        return false;
+    }
+    let (a, b, c) = (
+        vol(p, q, t[0], t[1]),
+        vol(p, q, t[1], t[2]),
+        vol(p, q, t[2], t[0]),
+    );
+    (a > 0.0 && b > 0.0 && c > 0.0) || (a < 0.0 && b < 0.0 && c < 0.0)
+}
+
+/// No two triangles of the bundled skins that share no vertex intersect (K = 4, caps fanned
+/// from their centroid): the surfaces do not fold through themselves.
+#[test]
+fn the_bundled_skins_do_not_intersect_themselves() {
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../assets");
+    for name in ["spout", "wing", "wing-pitched"] {
+        let text = std::fs::read_to_string(dir.join(format!("{name}.skin.json"))).unwrap();
+        let v: serde_json::Value = serde_json::from_str(&text).unwrap();
+        let sections: Vec<SectionInput> = serde_json::from_value(v["sections"].clone()).unwrap();
+        let mesh = skin(&sections).unwrap().tessellate(4, true).unwrap();
+        let mut pos = mesh.positions.clone();
+        let mut tris: Vec<[usize; 3]> = Vec::new();
+        for f in 0..mesh.num_faces() {
+            let vs: Vec<usize> = mesh
+                .loop_verts(mesh.face_loops(f).start)
+                .iter()
+                .map(|&v| v as usize)
+                .collect();
+            if vs.len() == 4 {
+                tris.push([vs[0], vs[1], vs[2]]);
+                tris.push([vs[0], vs[2], vs[3]]);
+            } else {
+                let c = pos.len();
+                pos.push(vs.iter().map(|&v| mesh.positions[v]).sum::<DVec3>() / vs.len() as f64);
+                for i in 0..vs.len() {
+                    tris.push([vs[i], vs[(i + 1) % vs.len()], c]);
+                }
+            }
+        }
+        let boxes: Vec<(DVec3, DVec3)> = tris
+            .iter()
+            .map(|t| {
+                let p = t.map(|i| pos[i]);
+                (p[0].min(p[1]).min(p[2]), p[0].max(p[1]).max(p[2]))
+            })
+            .collect();
+        let mut crossings = 0;
+        for a in 0..tris.len() {
+            for b in a + 1..tris.len() {
+                if tris[a].iter().any(|v| tris[b].contains(v)) {
+                    continue;
+                }
+                let (la, ha) = boxes[a];
+                let (lb, hb) = boxes[b];
+                if la.cmpgt(hb).any() || lb.cmpgt(ha).any() {
+                    continue;
+                }
+                let ta = tris[a].map(|i| pos[i]);
+                let tb = tris[b].map(|i| pos[i]);
+                let hit = (0..3).any(|i| segment_crosses(ta[i], ta[(i + 1) % 3], tb))
+                    || (0..3).any(|i| segment_crosses(tb[i], tb[(i + 1) % 3], ta));
+                if hit {
+                    crossings += 1;
+                }
+            }
+        }
+        assert_eq!(crossings, 0, "{name}: {} triangles", tris.len());
+    }
+}

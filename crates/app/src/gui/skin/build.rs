@@ -8,7 +8,7 @@ use prism_geom::freeform::spline;
 use prism_geom::freeform::{Skin, SkinSpec, skin};
 use prism_geom::{EdgeAttrs, PolyMesh};
 use prism_viewport::Scene;
-use prism_viewport::scene::{SceneOptions, Shading};
+use prism_viewport::{ColorBy, SceneOptions, Shading};
 use std::sync::Arc;
 use std::time::Instant;
 
@@ -21,6 +21,10 @@ pub struct Overlays {
     pub swept: bool,
     pub wireframe: bool,
     pub smooth: bool,
+    /// Mean-curvature colours.
+    pub curvature: bool,
+    /// Contour lines: sections of the surface by 24 planes z = const (fig. 4b).
+    pub contours: bool,
 }
 
 impl Default for Overlays {
@@ -32,6 +36,8 @@ impl Default for Overlays {
             swept: false,
             wireframe: false,
             smooth: true,
+            curvature: false,
+            contours: false,
         }
     }
 }
@@ -42,6 +48,39 @@ pub const CHAIN: [f32; 3] = [0.3, 0.8, 1.0];
 pub const CREASE: [f32; 3] = [0.9, 0.3, 0.9];
 pub const TRAJECTORY: [f32; 3] = [0.9, 0.4, 1.0];
 pub const SWEPT: [f32; 3] = [1.0, 0.6, 0.2];
+pub const CONTOUR: [f32; 3] = [0.15, 0.15, 0.2];
+
+/// The sections of `mesh` by `count` planes z = const spread over its height (the paper's
+/// contour display, fig. 4b): per face, the crossings of its edges joined in pairs.
+pub fn contours(mesh: &PolyMesh, count: usize) -> Vec<(DVec3, DVec3)> {
+    let (lo, hi) = mesh.bbox();
+    let h = hi.z - lo.z;
+    if h <= 0.0 {
+        return Vec::new();
+    }
+    let mut out = Vec::new();
+    for j in 1..=count {
+        let z = lo.z + h * j as f64 / (count + 1) as f64;
+        for f in 0..mesh.num_faces() {
+            let vs = mesh.loop_verts(mesh.face_loops(f).start);
+            let mut hits = Vec::with_capacity(2);
+            for i in 0..vs.len() {
+                let (a, b) = (
+                    mesh.positions[vs[i] as usize],
+                    mesh.positions[vs[(i + 1) % vs.len()] as usize],
+                );
+                if (a.z < z) != (b.z < z) {
+                    let t = (z - a.z) / (b.z - a.z);
+                    hits.push(a.lerp(b, t));
+                }
+            }
+            for pair in hits.chunks_exact(2) {
+                out.push((pair[0], pair[1]));
+            }
+        }
+    }
+    out
+}
 
 /// One build of the skin.
 pub struct Built {
@@ -107,6 +146,11 @@ pub fn scenes(built: &Built, selected: usize, o: &Overlays) -> (Arc<Scene>, Arc<
             Shading::Flat
         },
         wireframe: o.wireframe,
+        color_by: if o.curvature {
+            ColorBy::Curvature
+        } else {
+            ColorBy::Uniform
+        },
         ..SceneOptions::default()
     };
     let scene = match &built.result {
@@ -161,6 +205,11 @@ pub fn scenes(built: &Built, selected: usize, o: &Overlays) -> (Arc<Scene>, Arc<
                 }
                 let centres: Vec<DVec3> = s.sections.iter().map(|x| x.centre).collect();
                 overlay.add_points(&centres, 0.01 * overlay_size(&overlay), TRAJECTORY);
+            }
+            if o.contours
+                && let Ok((_, mesh)) = &built.result
+            {
+                overlay.add_segments(&contours(mesh, 24), CONTOUR);
             }
             if o.swept {
                 for w in &s.swept {

@@ -310,6 +310,8 @@ impl SkinTab {
         ui.checkbox(&mut o.trajectories, "Trajectories between centres (fig. 1)");
         ui.checkbox(&mut o.swept, "Swept sections (fig. 2)");
         ui.checkbox(&mut o.wireframe, "Iso-parameter lines");
+        ui.checkbox(&mut o.contours, "Contour lines (z = const, fig. 4b)");
+        ui.checkbox(&mut o.curvature, "Mean-curvature colours");
         ui.checkbox(&mut o.smooth, "Smooth shading");
         if ui.button("Frame the skin").clicked() {
             self.frame_view();
