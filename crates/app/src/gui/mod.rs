@@ -20,7 +20,7 @@ mod edits;
 mod files;
 pub mod model;
 mod new_solid;
-mod skin;
+pub(crate) mod skin;
 mod viewport;
 
 #[cfg(test)]

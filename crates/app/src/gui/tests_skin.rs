@@ -94,6 +94,34 @@ fn the_skin_tab_places_edits_undoes_saves_and_exports_a_skin() {
     settle(&mut h);
     assert_eq!(h.state().doc.state().skin.as_ref().unwrap(), &before);
 
+    // A drag in the view with the turn tool turns the selected section: one undo step.
+    h.state_mut().skin.mouse = skin::Mouse::Turn;
+    h.state_mut().skin.selected = 2;
+    let at = egui::pos2(800.0, 400.0);
+    let press = |down| egui::Event::PointerButton {
+        pos: at + if down { egui::Vec2::ZERO } else { egui::vec2(120.0, 0.0) },
+        button: egui::PointerButton::Primary,
+        pressed: down,
+        modifiers: egui::Modifiers::NONE,
+    };
+    h.event(egui::Event::PointerMoved(at));
+    h.step();
+    h.event(press(true));
+    h.step();
+    for x in [30.0, 60.0, 90.0, 120.0] {
+        h.event(egui::Event::PointerMoved(at + egui::vec2(x, 0.0)));
+        h.step();
+    }
+    h.event(press(false));
+    settle(&mut h);
+    let turned = h.state().doc.state().skin.clone().unwrap();
+    assert_ne!(turned.sections[2], before.sections[2]);
+    assert_eq!(turned.sections[1], before.sections[1]);
+    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::Z);
+    settle(&mut h);
+    assert_eq!(h.state().doc.state().skin.as_ref().unwrap(), &before);
+    h.state_mut().skin.mouse = skin::Mouse::Orbit;
+
     // Saved with the document and reopened; exported as STL from the tab.
     let dir = std::env::temp_dir().join(format!("prism-skin-tab-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();

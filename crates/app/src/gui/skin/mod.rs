@@ -42,6 +42,27 @@ pub fn sample(k: usize) -> Result<SkinSpec, String> {
 /// The view slot of the Skin tab's 3D view (the Model tab's views use 0–3).
 const VIEW_SLOT: usize = 16;
 
+/// What a primary drag in the view does.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Mouse {
+    #[default]
+    Orbit,
+    /// Moves the selected section in the view plane.
+    Move,
+    /// Turns the selected section about its normal.
+    Turn,
+    /// Scales the selected section about its centre.
+    Scale,
+}
+
+/// A drag of the selected section in the view: its gesture and the points it started from.
+#[derive(Debug, Clone)]
+struct SectionDrag {
+    gesture: u64,
+    section: usize,
+    start: Vec<DVec3>,
+}
+
 /// Transient values of the number fields that act by difference (turn, tilt, scale).
 #[derive(Debug, Default, Clone, Copy)]
 struct Gesture {
@@ -53,6 +74,8 @@ struct Gesture {
 
 pub struct SkinTab {
     pub selected: usize,
+    pub mouse: Mouse,
+    drag: Option<SectionDrag>,
     pub overlays: Overlays,
     pub has_gpu: bool,
     camera: Camera,
@@ -73,6 +96,8 @@ impl Default for SkinTab {
     fn default() -> Self {
         SkinTab {
             selected: 0,
+            mouse: Mouse::Orbit,
+            drag: None,
             overlays: Overlays::default(),
             has_gpu: false,
             camera: Camera::default(),
@@ -286,6 +311,16 @@ impl SkinTab {
         });
         ui.separator();
         self.section_editor(ui, spec);
+        ui.separator();
+        ui.horizontal_wrapped(|ui| {
+            ui.label("Drag in the view:");
+            ui.radio_value(&mut self.mouse, Mouse::Orbit, "orbit");
+            ui.radio_value(&mut self.mouse, Mouse::Move, "move");
+            ui.radio_value(&mut self.mouse, Mouse::Turn, "turn");
+            ui.radio_value(&mut self.mouse, Mouse::Scale, "scale");
+        })
+        .response
+        .on_hover_text("Move, turn and scale act on the selected section; right drag orbits then");
         ui.separator();
         ui.label("Surface");
         let mut res = spec.resolution;
@@ -505,6 +540,62 @@ impl SkinTab {
             });
     }
 
+    /// A primary drag that moves, turns or scales the selected section (one undo step).
+    fn section_drag(
+        &mut self,
+        ui: &egui::Ui,
+        resp: &egui::Response,
+        rect: egui::Rect,
+        spec: &SkinSpec,
+    ) {
+        let k = self.selected;
+        if resp.drag_started_by(egui::PointerButton::Primary) && k < spec.sections.len() {
+            self.gestures += 1;
+            self.drag = Some(SectionDrag {
+                gesture: self.gestures,
+                section: k,
+                start: spec.sections[k].points.clone(),
+            });
+        }
+        if resp.dragged_by(egui::PointerButton::Primary)
+            && let Some(d) = &self.drag
+            && d.section < spec.sections.len()
+        {
+            let total = ui
+                .input(|i| i.pointer.press_origin().zip(i.pointer.latest_pos()))
+                .map_or(egui::Vec2::ZERO, |(a, b)| b - a);
+            let (centre, normal, _, _) = frame(&d.start);
+            let points: Vec<DVec3> = match self.mouse {
+                Mouse::Move => {
+                    let c = &self.camera;
+                    let fwd = (c.target - c.eye()).normalize();
+                    let right = fwd.cross(glam::Vec3::Z).normalize_or(glam::Vec3::X);
+                    let up = right.cross(fwd);
+                    let scale = 2.0 * c.distance * (0.5 * c.fov_y).tan() / rect.height().max(1.0);
+                    let by = (scale * (total.x * right - total.y * up)).as_dvec3();
+                    d.start.iter().map(|p| *p + by).collect()
+                }
+                Mouse::Turn => {
+                    let q =
+                        DQuat::from_axis_angle(normal, (total.x as f64 * 0.01).clamp(-10.0, 10.0));
+                    d.start.iter().map(|p| centre + q * (*p - centre)).collect()
+                }
+                Mouse::Scale => {
+                    let f = (-total.y as f64 * 0.005).exp();
+                    d.start.iter().map(|p| centre + (*p - centre) * f).collect()
+                }
+                Mouse::Orbit => return,
+            };
+            let mut s = spec.clone();
+            s.sections[d.section].points = points;
+            let g = d.gesture;
+            self.set(Some(s), Some(g));
+        }
+        if resp.drag_stopped() {
+            self.drag = None;
+        }
+    }
+
     fn view(&mut self, ui: &mut egui::Ui, spec: Option<&SkinSpec>) {
         let rect = ui.available_rect_before_wrap();
         if spec.is_none() {
@@ -521,11 +612,21 @@ impl SkinTab {
             ui.scope_id().with("skin_view"),
             egui::Sense::click_and_drag(),
         );
-        if resp.dragged_by(egui::PointerButton::Primary) {
+        let orbit = if self.mouse == Mouse::Orbit {
+            egui::PointerButton::Primary
+        } else {
+            egui::PointerButton::Secondary
+        };
+        if resp.dragged_by(orbit) {
             let d = resp.drag_delta();
             self.camera.orbit(-d.x * 0.01, d.y * 0.01);
         }
-        if resp.dragged_by(egui::PointerButton::Secondary)
+        if self.mouse != Mouse::Orbit
+            && let Some(spec) = spec
+        {
+            self.section_drag(ui, &resp, rect, spec);
+        }
+        if (self.mouse == Mouse::Orbit && resp.dragged_by(egui::PointerButton::Secondary))
             || resp.dragged_by(egui::PointerButton::Middle)
         {
             let d = resp.drag_delta();
@@ -560,7 +661,16 @@ impl SkinTab {
         ui.painter().text(
             rect.left_bottom() + egui::vec2(8.0, -8.0),
             egui::Align2::LEFT_BOTTOM,
-            "drag: orbit · right drag: pan · wheel: zoom",
+            match self.mouse {
+                Mouse::Orbit => "drag: orbit · right drag: pan · wheel: zoom",
+                Mouse::Move => {
+                    "drag: move the selected section in the view plane · right drag: orbit"
+                }
+                Mouse::Turn => {
+                    "drag sideways: turn the selected section in its plane · right drag: orbit"
+                }
+                Mouse::Scale => "drag up or down: scale the selected section · right drag: orbit",
+            },
             egui::FontId::proportional(12.0),
             egui::Color32::from_gray(170),
         );
