@@ -107,3 +107,36 @@ fn the_curves_tab_draws_curves_and_the_curvature_plot() {
     assert!(orange(0..1280, 100..560) > 200, "no curve in the canvas");
     assert!(orange(0..1280, 570..790) > 50, "no curvature plot");
 }
+
+/// The Skin tab on a document with a skin block (the spout, written by `prism skin`): the
+/// shaded skin fills the view and the yellow section curves are drawn over it.
+#[test]
+fn the_skin_tab_draws_the_skin_and_its_sections() {
+    let doc =
+        std::env::temp_dir().join(format!("prism-gui-{}-spout.prism.json", std::process::id()));
+    let o = Command::new(env!("CARGO_BIN_EXE_prism"))
+        .args([
+            "skin",
+            "assets/spout.skin.json",
+            "-o",
+            doc.to_str().unwrap(),
+        ])
+        .current_dir(Path::new(env!("CARGO_MANIFEST_DIR")).join("../.."))
+        .output()
+        .unwrap();
+    assert!(o.status.success());
+    let img = screenshot("skin", &[doc.to_str().unwrap(), "--tab", "skin"]);
+    let n = shades(&img, 450..1200, 150..700);
+    assert!(n > 20, "only {n} shades in the view");
+    let yellow = (450..1200)
+        .flat_map(|x| (100..750).map(move |y| (x, y)))
+        .filter(|&(x, y)| {
+            let p = img.get_pixel(x, y).0;
+            p[0] > 200 && p[1] > 170 && p[2] < 100
+        })
+        .count();
+    assert!(
+        yellow > 300,
+        "only {yellow} yellow pixels: no section curves"
+    );
+}

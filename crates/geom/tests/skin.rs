@@ -425,3 +425,31 @@ fn the_bundled_skins_do_not_intersect_themselves() {
         assert_eq!(crossings, 0, "{name}: {} triangles", tris.len());
     }
 }
+
+/// Seed 003 fig. 3: four square sections whose lists start at different corners; the chain
+/// from vertex 1 of the first section runs through V₁₁, V₂₄, V₃₁, V₄₂ (1-based), which is
+/// what the least-twist pairing finds.
+#[test]
+fn figure_3_gives_figure_3s_chain() {
+    let start = [0usize, 3, 0, 1];
+    let input: Vec<SectionInput> = start
+        .iter()
+        .enumerate()
+        .map(|(k, &c)| SectionInput {
+            points: (0..4)
+                .map(|i| {
+                    let j = (i + 4 - c) % 4;
+                    let a = std::f64::consts::FRAC_PI_4 + j as f64 * std::f64::consts::FRAC_PI_2;
+                    DVec3::new(a.cos(), a.sin(), k as f64)
+                })
+                .collect(),
+            ..SectionInput::default()
+        })
+        .collect();
+    let s = skin(&input).unwrap();
+    // Chain 0 starts at vertex 0 of section 0; its vertex in section k is the offset.
+    let chain0: Vec<usize> = (0..4)
+        .map(|k| s.sections[k].original[s.offset[k]] + 1)
+        .collect();
+    assert_eq!(chain0, vec![1, 4, 1, 2]);
+}

@@ -99,7 +99,12 @@ fn the_skin_tab_places_edits_undoes_saves_and_exports_a_skin() {
     h.state_mut().skin.selected = 2;
     let at = egui::pos2(800.0, 400.0);
     let press = |down| egui::Event::PointerButton {
-        pos: at + if down { egui::Vec2::ZERO } else { egui::vec2(120.0, 0.0) },
+        pos: at
+            + if down {
+                egui::Vec2::ZERO
+            } else {
+                egui::vec2(120.0, 0.0)
+            },
         button: egui::PointerButton::Primary,
         pressed: down,
         modifiers: egui::Modifiers::NONE,
