@@ -453,3 +453,37 @@ fn figure_3_gives_figure_3s_chain() {
         .collect();
     assert_eq!(chain0, vec![1, 4, 1, 2]);
 }
+
+/// The paper's one-sided basis stays an option: still G1, but a different surface from the
+/// virtual basis, and one that moves when the first section's list starts one point later
+/// (the chains are renumbered, so another cell is the basis at one border; about 7e-5 of the
+/// diagonal), where the virtual basis does not move.
+#[test]
+fn the_one_sided_basis_is_g1_but_depends_on_the_numbering() {
+    use prism_geom::freeform::{Basis, skin_with};
+    // The spout with one section made uneven, so that the two sides of a border differ.
+    let mut input = spout();
+    let c = input[2].points.iter().sum::<DVec3>() / 8.0;
+    for (i, p) in input[2].points.iter_mut().enumerate() {
+        *p = c + (*p - c) * (1.0 + 0.15 * (3.0 * i as f64).sin());
+    }
+    let one = skin_with(&input, Basis::OneSided).unwrap();
+    assert!(
+        one.border_normal_jump(16) < 1e-9,
+        "{}",
+        one.border_normal_jump(16)
+    );
+    let a = one.tessellate(4, true).unwrap();
+    let v = skin(&input).unwrap().tessellate(4, true).unwrap();
+    let d = v.bbox_diagonal();
+    assert!(hausdorff(&a, &v) > 1e-6 * d);
+    let mut rot = input.clone();
+    rot[0].points.rotate_left(1);
+    let r = skin_with(&rot, Basis::OneSided)
+        .unwrap()
+        .tessellate(4, true)
+        .unwrap();
+    assert!(hausdorff(&a, &r) > 1e-6 * d);
+    let rv = skin(&rot).unwrap().tessellate(4, true).unwrap();
+    assert!(hausdorff(&v, &rv) < 1e-9 * d);
+}

@@ -1,12 +1,12 @@
 //! `prism skin SECTIONS.json -o OUT.obj|.prism.json|.stl|.glb [--resolution K] [--no-caps]
-//! [--patches PATCHES.json]`: a smooth solid through planar cross-sections (seed 003;
+//! [--basis virtual|one-sided] [--patches PATCHES.json]`: a smooth solid through planar cross-sections (seed 003;
 //! docs/algorithms/skin.md). SECTIONS is `{"sections": [{"points": [[x, y, z], ...],
 //! "corners": [i, ...], "polygon": false}, ...]}`, or a `.prism.json` with a `"skin"` block
 //! of that form. Sections and points are numbered from 0 as listed.
 
 use super::CliError;
 use clap::Args;
-use prism_geom::freeform::{SectionInput, Skin, SkinSpec, skin};
+use prism_geom::freeform::{Basis, SectionInput, Skin, SkinSpec, skin_with};
 use prism_geom::io::{self, Document};
 use std::path::{Path, PathBuf};
 
@@ -25,6 +25,11 @@ pub struct SkinArgs {
     /// caps.
     #[arg(long)]
     pub no_caps: bool,
+    /// G1 construction of inner borders: `virtual` (both sides from the crossing curves'
+    /// tangents; independent of numbering) or `one-sided` (the paper's: the cell listed first
+    /// is the basis).
+    #[arg(long, default_value = "virtual", value_parser = ["virtual", "one-sided"])]
+    pub basis: String,
     /// Also write the patches' control points as JSON.
     #[arg(long)]
     pub patches: Option<PathBuf>,
@@ -96,7 +101,13 @@ pub fn run(a: SkinArgs) -> Result<(), CliError> {
         )));
     }
     let sections = read_sections(&a.input)?;
-    let s = skin(&sections).map_err(|e| CliError::input(format!("{}: {e}", a.input.display())))?;
+    let basis = if a.basis == "one-sided" {
+        Basis::OneSided
+    } else {
+        Basis::Virtual
+    };
+    let s = skin_with(&sections, basis)
+        .map_err(|e| CliError::input(format!("{}: {e}", a.input.display())))?;
     let mesh = s
         .tessellate(a.resolution, !a.no_caps)
         .map_err(CliError::input)?;
@@ -132,6 +143,7 @@ pub fn run(a: SkinArgs) -> Result<(), CliError> {
                 sections: sections.clone(),
                 resolution: a.resolution,
                 caps: !a.no_caps,
+                basis,
             }),
             ..Document::default()
         };

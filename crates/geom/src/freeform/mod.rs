@@ -11,4 +11,4 @@ pub mod spline;
 
 pub use bezier::RationalBezier;
 pub use gregory::Gregory;
-pub use skin::{SectionInput, Skin, SkinError, SkinSpec, skin};
+pub use skin::{Basis, SectionInput, Skin, SkinError, SkinSpec, skin, skin_with};

@@ -223,6 +223,7 @@ mod tests {
                 ],
                 resolution: 5,
                 caps: false,
+                basis: crate::freeform::Basis::OneSided,
             }),
         };
         let text = document_to_string(&doc);

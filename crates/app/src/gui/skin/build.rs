@@ -5,7 +5,7 @@
 
 use glam::DVec3;
 use prism_geom::freeform::spline;
-use prism_geom::freeform::{Skin, SkinSpec, skin};
+use prism_geom::freeform::{Skin, SkinSpec, skin_with};
 use prism_geom::{EdgeAttrs, PolyMesh};
 use prism_viewport::Scene;
 use prism_viewport::{ColorBy, SceneOptions, Shading};
@@ -94,7 +94,7 @@ pub struct Built {
 impl Built {
     pub fn new(spec: &SkinSpec) -> Built {
         let start = Instant::now();
-        let result = skin(&spec.sections)
+        let result = skin_with(&spec.sections, spec.basis)
             .map_err(|e| e.to_string())
             .and_then(|s| {
                 let m = s

@@ -10,7 +10,7 @@ use super::command::{Command, Edit};
 use super::viewport;
 use build::{Built, Overlays};
 use glam::{DQuat, DVec3};
-use prism_geom::freeform::{SectionInput, SkinSpec};
+use prism_geom::freeform::{Basis, SectionInput, SkinSpec};
 use prism_viewport::{Camera, Scene, View};
 use std::sync::Arc;
 
@@ -330,6 +330,19 @@ impl SkinTab {
             let mut s = spec.clone();
             s.resolution = res;
             self.set(Some(s), g);
+        }
+        let mut basis = spec.basis;
+        ui.horizontal(|ui| {
+            ui.label("G1 basis");
+            ui.radio_value(&mut basis, Basis::Virtual, "virtual")
+                .on_hover_text("Both sides of a border from the crossing curves' tangents: the surface does not depend on how sections are listed (the default)");
+            ui.radio_value(&mut basis, Basis::OneSided, "one-sided (paper)")
+                .on_hover_text("The cell listed first is the basis and the other follows it: G1 too, but the shape depends on the numbering");
+        });
+        if basis != spec.basis {
+            let mut s = spec.clone();
+            s.basis = basis;
+            self.set(Some(s), None);
         }
         let mut caps = spec.caps;
         if ui.checkbox(&mut caps, "Planar caps at the ends").changed() {

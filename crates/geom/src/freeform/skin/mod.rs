@@ -25,6 +25,7 @@ use crate::freeform::RationalBezier;
 use crate::freeform::gregory::Gregory;
 use crate::freeform::spline::Cubic;
 use glam::DVec3;
+pub use patches::Basis;
 pub use sections::Section;
 use thiserror::Error;
 
@@ -50,6 +51,14 @@ pub struct SkinSpec {
     /// Close the end sections with planar caps.
     #[serde(default = "SkinSpec::default_caps")]
     pub caps: bool,
+    /// The G1 construction of inner borders (the numbering-independent virtual basis, or the
+    /// paper's one-sided basis).
+    #[serde(default, skip_serializing_if = "is_virtual")]
+    pub basis: Basis,
+}
+
+fn is_virtual(b: &Basis) -> bool {
+    *b == Basis::Virtual
 }
 
 impl SkinSpec {
@@ -66,6 +75,7 @@ impl SkinSpec {
             sections,
             resolution: 8,
             caps: true,
+            basis: Basis::Virtual,
         }
     }
 }
@@ -139,6 +149,11 @@ pub struct Skin {
 /// Builds the skin through `input` (at least 2 sections). Sections with unequal point counts
 /// get vertices inserted by polar angle (beyond the paper, [`polar`]).
 pub fn skin(input: &[SectionInput]) -> Result<Skin, SkinError> {
+    skin_with(input, Basis::Virtual)
+}
+
+/// [`skin`] with the G1 construction of the inner borders chosen.
+pub fn skin_with(input: &[SectionInput], basis: Basis) -> Result<Skin, SkinError> {
     if input.len() < 2 {
         return Err(SkinError::TooFewSections(input.len()));
     }
@@ -192,6 +207,7 @@ pub fn skin(input: &[SectionInput]) -> Result<Skin, SkinError> {
         chains: &chains,
         offset: &offset,
         crease: &crease,
+        basis,
     };
     let patches = (0..m - 1)
         .flat_map(|k| (0..n).map(move |i| (k, i)))

@@ -57,6 +57,20 @@ pub struct Network<'a> {
     pub offset: &'a [usize],
     /// Per chain, whether it is a crease (it passes through a corner of some section).
     pub crease: &'a [bool],
+    /// Which G1 construction the inner borders take.
+    pub basis: Basis,
+}
+
+/// The G1 construction of inner borders (ALGORITHMS §8.2).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, serde::Serialize, serde::Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Basis {
+    /// Both sides from the unit tangents of the crossing curves: independent of numbering.
+    #[default]
+    Virtual,
+    /// The paper's literal reading: the cell listed first is the basis (its cross derivative
+    /// linear), the other follows it. Depends on the numbering.
+    OneSided,
 }
 
 impl Network<'_> {
@@ -84,6 +98,21 @@ impl Network<'_> {
         }
     }
 
+    /// The legs into cell (k, i) at the two ends of its border `side` (0: u = 0, 1: u = 1,
+    /// 2: v = 0, 3: v = 1), as that cell's boundary points give them.
+    fn legs(&self, k: usize, i: usize, side: usize) -> (DVec3, DVec3) {
+        let n = self.n();
+        let s0 = &self.sections[k].curve[self.vertex(k, i)];
+        let s1 = &self.sections[k + 1].curve[self.vertex(k + 1, i)];
+        let (c0, c1) = (&self.chains[i][k], &self.chains[(i + 1) % n][k]);
+        match side {
+            0 => (s0[1] - s0[0], s1[1] - s1[0]),
+            1 => (s0[2] - s0[3], s1[2] - s1[3]),
+            2 => (c0[1] - c0[0], c1[1] - c1[0]),
+            _ => (c0[2] - c0[3], c1[2] - c1[3]),
+        }
+    }
+
     /// The Gregory patch of cell (k, i).
     pub fn patch(&self, k: usize, i: usize) -> Gregory {
         let n = self.n();
@@ -99,13 +128,35 @@ impl Network<'_> {
             p[0][t] = c0[t];
             p[3][t] = c1[t];
         }
-        let chain_basis = |ci: usize| {
-            (!self.crease[ci])
-                .then(|| (self.section_tangent(k, ci), self.section_tangent(k + 1, ci)))
+        let one_sided = self.basis == Basis::OneSided;
+        // One-sided: the cell listed first (smaller k·n + i) is the basis (None); the other
+        // follows its legs.
+        let chain_basis = |ci: usize| -> Option<(DVec3, DVec3)> {
+            if self.crease[ci] {
+                return None;
+            }
+            if !one_sided {
+                return Some((self.section_tangent(k, ci), self.section_tangent(k + 1, ci)));
+            }
+            // The neighbour across chain ci: (k, ci − 1) on the left when ci == i, (k, i1)
+            // on the right when ci == i1.
+            let (other, other_side) = if ci == i {
+                ((i + n - 1) % n, 1)
+            } else {
+                (i1, 0)
+            };
+            (other < i).then(|| self.legs(k, other, other_side))
         };
         let last = self.sections.len() - 1;
-        let section_basis = |kk: usize| {
-            (kk != 0 && kk != last).then(|| (self.chain_tangent(kk, i), self.chain_tangent(kk, i1)))
+        let section_basis = |kk: usize| -> Option<(DVec3, DVec3)> {
+            if kk == 0 || kk == last {
+                return None;
+            }
+            if !one_sided {
+                return Some((self.chain_tangent(kk, i), self.chain_tangent(kk, i1)));
+            }
+            // Across section kk: the cell below (kk − 1, i) is listed first.
+            (kk == k).then(|| self.legs(kk - 1, i, 3))
         };
         let mut g = Gregory {
             points: p,
