@@ -487,3 +487,62 @@ fn the_one_sided_basis_is_g1_but_depends_on_the_numbering() {
     let rv = skin(&rot).unwrap().tessellate(4, true).unwrap();
     assert!(hausdorff(&v, &rv) < 1e-9 * d);
 }
+
+/// Each section curve lies in its section's plane, and the mesh rows along it (every K-th
+/// row) are points of that curve: the skin passes through the whole section, not just its
+/// vertices.
+#[test]
+fn section_curves_lie_in_their_planes_and_on_the_surface() {
+    let input = spout();
+    let s = skin(&input).unwrap();
+    let k = 8;
+    let mesh = s.tessellate(k, false).unwrap();
+    let cols = s.points_per_section() * k;
+    let d = mesh.bbox_diagonal();
+    for (j, sec) in s.sections.iter().enumerate() {
+        for piece in &sec.curve {
+            for t in 0..=10 {
+                let p = prism_geom::freeform::spline::eval(piece, t as f64 / 10.0);
+                assert!((p - sec.centre).dot(sec.normal).abs() < 1e-12 * d);
+            }
+        }
+        for c in 0..cols {
+            let p = mesh.positions[j * k * cols + c];
+            assert!(
+                (p - sec.centre).dot(sec.normal).abs() < 1e-12 * d,
+                "section {j}"
+            );
+            let piece = &sec.curve[(c / k + s.offset[j]) % s.points_per_section()];
+            let q = prism_geom::freeform::spline::eval(piece, (c % k) as f64 / k as f64);
+            assert!((p - q).length() < 1e-12 * d, "section {j}, column {c}");
+        }
+    }
+}
+
+/// Across the wing's crease chain (its sharp trailing edge) the dihedral angle does not fall
+/// with K as it does across smooth borders: it tends to the crease angle.
+#[test]
+fn across_a_crease_the_dihedral_keeps_the_crease_angle() {
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../assets");
+    let text = std::fs::read_to_string(dir.join("wing.skin.json")).unwrap();
+    let v: serde_json::Value = serde_json::from_str(&text).unwrap();
+    let sections: Vec<SectionInput> = serde_json::from_value(v["sections"].clone()).unwrap();
+    let s = skin(&sections).unwrap();
+    assert_eq!(s.creases(), 1);
+    let crease_dihedral = |k: usize| {
+        let m = s.tessellate(k, false).unwrap();
+        let cols = s.points_per_section() * k;
+        let rows = m.num_faces() / cols;
+        let ci = s.crease.iter().position(|&c| c).unwrap();
+        let c = ci * k;
+        (0..rows)
+            .map(|r| {
+                let a = prism_geom::geometry::face_normal_raw(&m, r * cols + (c + cols - 1) % cols);
+                let b = prism_geom::geometry::face_normal_raw(&m, r * cols + c);
+                a.cross(b).length().atan2(a.dot(b)).to_degrees()
+            })
+            .fold(f64::INFINITY, f64::min)
+    };
+    let (d8, d32) = (crease_dihedral(8), crease_dihedral(32));
+    assert!(d8 > 10.0 && d32 > 0.8 * d8, "{d8}° → {d32}°");
+}
