@@ -794,6 +794,14 @@ fn skin_builds_the_bundled_sections_and_names_bad_ones() {
     let v: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(&patches).unwrap()).unwrap();
     assert_eq!(v["patches"].as_array().unwrap().len(), 60);
+    // A .prism.json written by skin keeps the sections as its "skin" block, and skin reads it.
+    let (doc, _, _) = succeeds_to(
+        "spout.prism.json",
+        "skin assets/spout.skin.json -o {} --basis one-sided",
+    );
+    let again = tmp("again.obj");
+    let (so, _) = succeeds(run_with("skin {} -o {}", &[&doc, &again]));
+    assert!(so.contains("6 sections of 12 points"), "{so}");
 
     let bad = tmp("bad.json");
     std::fs::write(
