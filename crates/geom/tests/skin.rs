@@ -278,7 +278,9 @@ fn dihedral_angles_fall_with_the_resolution() {
         let sections: Vec<SectionInput> = serde_json::from_value(v["sections"].clone()).unwrap();
         let s = skin(&sections).unwrap();
         let (b8, i8) = dihedrals(&s, 8);
+        let (b16, i16) = dihedrals(&s, 16);
         let (b32, i32) = dihedrals(&s, 32);
+        assert!(b8 > b16 && b16 > b32 && i8 > i16 && i16 > i32, "{name}");
         eprintln!(
             "{name}: border {b8:.3}° → {b32:.3}° ({:.2}), inner {i8:.3}° → {i32:.3}° ({:.2})",
             b32 / b8,
@@ -519,8 +521,8 @@ fn section_curves_lie_in_their_planes_and_on_the_surface() {
     }
 }
 
-/// Across the wing's crease chain (its sharp trailing edge) the dihedral angle does not fall
-/// with K as it does across smooth borders: it tends to the crease angle.
+/// Across the wing's crease chain (its sharp trailing edge) and across its caps the dihedral
+/// angle does not fall with K as it does across smooth borders: it tends to the crease angle.
 #[test]
 fn across_a_crease_the_dihedral_keeps_the_crease_angle() {
     let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../assets");
@@ -545,4 +547,18 @@ fn across_a_crease_the_dihedral_keeps_the_crease_angle() {
     };
     let (d8, d32) = (crease_dihedral(8), crease_dihedral(32));
     assert!(d8 > 10.0 && d32 > 0.8 * d8, "{d8}° → {d32}°");
+    // The same across the caps: the first row of faces against the first cap.
+    let cap_dihedral = |k: usize| {
+        let m = s.tessellate(k, true).unwrap();
+        let cols = s.points_per_section() * k;
+        let cap = prism_geom::geometry::face_normal_raw(&m, m.num_faces() - 2);
+        (0..cols)
+            .map(|c| {
+                let a = prism_geom::geometry::face_normal_raw(&m, c);
+                a.cross(cap).length().atan2(a.dot(cap)).to_degrees()
+            })
+            .fold(f64::INFINITY, f64::min)
+    };
+    let (c8, c32) = (cap_dihedral(8), cap_dihedral(32));
+    assert!(c8 > 45.0 && c32 > 0.8 * c8, "{c8}° → {c32}°");
 }

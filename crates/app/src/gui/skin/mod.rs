@@ -353,8 +353,14 @@ impl SkinTab {
         ui.separator();
         ui.label("Show");
         let o = &mut self.overlays;
-        ui.checkbox(&mut o.sections, "Section curves (yellow; selected red)");
-        ui.checkbox(&mut o.chains, "Chains (blue; creases violet)");
+        ui.checkbox(
+            &mut o.sections,
+            "Section curves: patch borders across (yellow; selected red)",
+        );
+        ui.checkbox(
+            &mut o.chains,
+            "Chains: patch borders along (blue; creases violet)",
+        );
         ui.checkbox(&mut o.trajectories, "Trajectories between centres (fig. 1)");
         ui.checkbox(&mut o.swept, "Swept sections (fig. 2)");
         ui.checkbox(&mut o.wireframe, "Iso-parameter lines");
