@@ -830,3 +830,35 @@ fn skin_builds_the_bundled_sections_and_names_bad_ones() {
     let o = run("skin assets/missing.skin.json -o /tmp/x.obj");
     assert_eq!(o.status.code(), Some(1));
 }
+
+/// Counts from the file or the command line that overflow are errors, never a panic: a tag
+/// announcing u64::MAX integers (it panicked the reader, exit 101), and --levels past what
+/// any machine holds (it asked for 16 GB before reading, or panicked with a capacity
+/// overflow).
+#[test]
+fn huge_counts_are_errors_not_panics() {
+    let obj = tmp("huge-tag.obj");
+    for tag in [
+        "t crease 18446744073709551615/1/0 0 1 2",
+        "t crease 18446744073709551615/2/0 0 1 2",
+        "t crease 1 18446744073709551615 5 0 1 2",
+    ] {
+        std::fs::write(&obj, format!("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n{tag}\n")).unwrap();
+        let o = run_with("subdivide {} --scheme loop -o {}", &[&obj, &tmp("huge.obj")]);
+        assert_eq!(o.status.code(), Some(1), "{tag}: {:?}", text(&o));
+        assert!(text(&o).1.contains("line 5"), "{:?}", text(&o));
+    }
+    for levels in ["41", "1000000000", "18446744073709551615"] {
+        let o = run(&format!(
+            "subdivide assets/cube.obj --scheme doo-sabin --levels {levels} -o /tmp/never.obj"
+        ));
+        assert_eq!(o.status.code(), Some(2), "{levels}");
+        assert!(text(&o).1.contains("at most 40"));
+        let o = run(&format!("bench assets/cube.obj --scheme doo-sabin --levels {levels}"));
+        assert_eq!(o.status.code(), Some(2), "bench {levels}");
+        let o = run(&format!(
+            "limit assets/cube.obj --scheme catmull-clark --levels {levels} -o /tmp/never.obj"
+        ));
+        assert_eq!(o.status.code(), Some(2), "limit {levels}");
+    }
+}

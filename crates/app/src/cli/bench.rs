@@ -42,6 +42,7 @@ pub fn run(a: BenchArgs) -> Result<(), CliError> {
             "--scheme takes one scheme (use it with --levels)",
         ));
     }
+    super::check_levels(a.levels)?;
     if a.runs == 0 || a.levels == 0 {
         return Err(CliError::usage("--runs and --levels must be at least 1"));
     }

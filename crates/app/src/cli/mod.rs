@@ -107,6 +107,21 @@ pub enum Command {
     Schemes,
 }
 
+/// The most levels any command refines: every level has about four times the faces of the
+/// one before, so level 40 of a single quad is 1.2e24 faces — past any machine. Larger
+/// counts are bad usage (exit 2) before anything is read or allocated.
+pub const MAX_LEVELS: usize = 40;
+
+/// `--levels N` checked against [`MAX_LEVELS`].
+pub fn check_levels(levels: usize) -> Result<(), CliError> {
+    if levels > MAX_LEVELS {
+        return Err(CliError::usage(format!(
+            "--levels {levels} is out of range: at most {MAX_LEVELS} (each level has about 4× the faces of the one before)"
+        )));
+    }
+    Ok(())
+}
+
 /// An error for the user: one line, and the exit code (1 bad input, 2 bad usage).
 #[derive(Debug)]
 pub struct CliError {

@@ -85,6 +85,7 @@ pub fn steps_from(
     document: Option<&[Scheme]>,
     allow_none: bool,
 ) -> Result<Vec<Scheme>, CliError> {
+    super::check_levels(a.levels)?;
     let steps: Vec<Scheme> = match (&a.scheme, &a.pipeline) {
         (Some(name), None) => {
             let s = scheme_from_flags(name, a)?;

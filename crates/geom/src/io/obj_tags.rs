@@ -44,7 +44,14 @@ fn parse_tag(words: &[String]) -> Result<Tag<'_>, String> {
             num(1).ok_or("a tag line needs its counts")?,
         );
         match num(2) {
-            Some(s) if rest.len() == 3 + i + f + s => (vec![i, f, s], &rest[3..]),
+            Some(s)
+                if [3, i, f, s]
+                    .iter()
+                    .try_fold(0usize, |a, &b| a.checked_add(b))
+                    == Some(rest.len()) =>
+            {
+                (vec![i, f, s], &rest[3..])
+            }
             _ => (vec![i, f], &rest[2..]),
         }
     };
@@ -53,7 +60,10 @@ fn parse_tag(words: &[String]) -> Result<Tag<'_>, String> {
         counts.get(1).copied().unwrap_or(0),
     );
     let ns = counts.get(2).copied().unwrap_or(0);
-    if args.len() < ni + nf + ns {
+    // Counts come from the file: added with overflow checks (u64::MAX/1/0 must be an error,
+    // not a panic).
+    let total = ni.checked_add(nf).and_then(|x| x.checked_add(ns));
+    if total.is_none_or(|t| args.len() < t) {
         return Err(format!(
             "tag '{name}' announces {ni} integers, {nf} floats, {ns} strings but has {} values",
             args.len()
