@@ -844,7 +844,10 @@ fn huge_counts_are_errors_not_panics() {
         "t crease 1 18446744073709551615 5 0 1 2",
     ] {
         std::fs::write(&obj, format!("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n{tag}\n")).unwrap();
-        let o = run_with("subdivide {} --scheme loop -o {}", &[&obj, &tmp("huge.obj")]);
+        let o = run_with(
+            "subdivide {} --scheme loop -o {}",
+            &[&obj, &tmp("huge.obj")],
+        );
         assert_eq!(o.status.code(), Some(1), "{tag}: {:?}", text(&o));
         assert!(text(&o).1.contains("line 5"), "{:?}", text(&o));
     }
@@ -854,11 +857,36 @@ fn huge_counts_are_errors_not_panics() {
         ));
         assert_eq!(o.status.code(), Some(2), "{levels}");
         assert!(text(&o).1.contains("at most 40"));
-        let o = run(&format!("bench assets/cube.obj --scheme doo-sabin --levels {levels}"));
+        let o = run(&format!(
+            "bench assets/cube.obj --scheme doo-sabin --levels {levels}"
+        ));
         assert_eq!(o.status.code(), Some(2), "bench {levels}");
         let o = run(&format!(
             "limit assets/cube.obj --scheme catmull-clark --levels {levels} -o /tmp/never.obj"
         ));
         assert_eq!(o.status.code(), Some(2), "limit {levels}");
+    }
+}
+
+/// Messages that named the wrong problem: `--levels 0` with a scheme (it said "give --scheme
+/// and --levels"), and an unknown input kind is bad usage like an unknown output kind.
+#[test]
+fn levels_zero_and_unknown_input_kinds_say_what_is_wrong() {
+    let o = run("subdivide assets/cube.obj --scheme doo-sabin --levels 0 -o /tmp/never.obj");
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        text(&o).1.contains("--levels 0 refines nothing"),
+        "{:?}",
+        text(&o)
+    );
+    for cmd in [
+        "subdivide assets/cube.xyz --scheme doo-sabin -o /tmp/never.obj",
+        "render assets/cube.xyz -o /tmp/never.png",
+        "bench assets/cube.xyz --scheme doo-sabin",
+        "limit assets/cube.xyz --scheme loop -o /tmp/never.obj",
+    ] {
+        let o = run(cmd);
+        assert_eq!(o.status.code(), Some(2), "{cmd}: {:?}", text(&o));
+        assert!(text(&o).1.contains("unknown file type"), "{cmd}");
     }
 }

@@ -220,3 +220,82 @@ fn bad_input_gives_typed_errors() {
         "{e}"
     );
 }
+
+/// Both readers validate alike (issue 15): a `.prism.json` is refused for what the OBJ
+/// reader refuses — negative sharpness, corners and holes that name nothing, edges naming
+/// vertices that do not exist or that no face has — and for a radius that is not above 0;
+/// each message names the element.
+#[test]
+fn documents_are_validated_like_obj_files() {
+    use std::path::Path;
+    let tet = r#""vertices": [[0,0,0],[1,0,0],[0,1,0],[0,0,1]],
+                 "faces": [[[0,2,1]],[[0,1,3]],[[1,2,3]],[[0,3,2]]]"#;
+    let load = |extra: &str| {
+        let text = format!("{{\"version\": 1, {tet}{extra}}}");
+        prism_geom::io::load_str(Path::new("t.prism.json"), &text).map(|_| ())
+    };
+    load("").unwrap();
+    for (extra, says) in [
+        (
+            r#", "edges": [{"a": 0, "b": 1, "crease": -2}]"#,
+            "edge 0-1: crease sharpness -2",
+        ),
+        (
+            r#", "edges": [{"a": 0, "b": 9, "crease": 2}]"#,
+            "edge 0-9 names a vertex",
+        ),
+        (
+            r#", "edges": [{"a": 0, "b": 1, "radius": -0.3}]"#,
+            "edge 0-1: radius -0.3",
+        ),
+        (
+            r#", "edges": [{"a": 0, "b": 1, "radius": 0}]"#,
+            "edge 0-1: radius 0",
+        ),
+        (
+            r#", "subdivision": {"corners": {"7": 10}}"#,
+            "corner at vertex 7",
+        ),
+        (
+            r#", "subdivision": {"corners": {"1": -1}}"#,
+            "corner at vertex 1: sharpness -1",
+        ),
+        (r#", "subdivision": {"holes": [4]}"#, "hole 4: no such face"),
+    ] {
+        let e = load(extra).unwrap_err().to_string();
+        assert!(e.contains(says), "{extra}: {e}");
+    }
+    let bad_face = r#"{"version": 1, "vertices": [[0,0,0],[1,0,0],[0,1,0]], "faces": [[[0,1,5]]]}"#;
+    let e = prism_geom::io::load_str(Path::new("t.prism.json"), bad_face).unwrap_err();
+    assert!(
+        e.to_string().contains("face 0, loop 0: vertex index 5"),
+        "{e}"
+    );
+}
+
+/// OBJ text as other tools write it: a UTF-8 byte-order mark and bare CR line ends read as
+/// the plain file (they gave "vertex index 8 is out of range" and tobj's "color parse error");
+/// a face naming a texture coordinate or normal that does not exist is refused by line.
+#[test]
+fn obj_byte_order_marks_and_cr_line_ends_read_and_missing_vt_is_named() {
+    use std::path::Path;
+    let plain = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 1 4 3\n";
+    let load = |t: &str| prism_geom::io::load_str(Path::new("t.obj"), t).map(|d| d.0.mesh);
+    let base = load(plain).unwrap();
+    assert_eq!(load(&format!("\u{feff}{plain}")).unwrap(), base);
+    assert_eq!(load(&plain.replace('\n', "\r")).unwrap(), base);
+    assert_eq!(load(&plain.replace('\n', "\r\n")).unwrap(), base);
+    let e = load(&plain.replace("f 1 3 2", "f 1/7/3 3 2"))
+        .unwrap_err()
+        .to_string();
+    assert!(
+        e.contains("line 5") && e.contains("texture coordinate 7"),
+        "{e}"
+    );
+    let with = plain.replace("f 1 3 2", "vt 0 0\nvn 0 0 1\nf 1/1/1 3 2");
+    assert_eq!(load(&with).unwrap().num_faces(), 4);
+    let e = load(&with.replace("f 1/1/1", "f 1/1/2"))
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("normal 2"), "{e}");
+}

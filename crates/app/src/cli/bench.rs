@@ -6,7 +6,6 @@
 
 use super::CliError;
 use clap::Args;
-use prism_geom::io;
 use prism_geom::{Pipeline, Scheme, StepOptions, parse_pipeline, refine_primal_levels};
 use std::path::PathBuf;
 use std::time::Instant;
@@ -47,7 +46,7 @@ pub fn run(a: BenchArgs) -> Result<(), CliError> {
         return Err(CliError::usage("--runs and --levels must be at least 1"));
     }
     let steps = vec![step[0]; a.levels];
-    let (doc, _) = io::load(&a.input).map_err(CliError::input)?;
+    let (doc, _) = super::load_input(&a.input)?;
     println!(
         "input: {} vertices, {} faces; {} × {}",
         doc.mesh.num_vertices(),

@@ -8,7 +8,7 @@
 
 use super::{CliError, with_line};
 use clap::Args;
-use prism_geom::io::{self, write_atomically};
+use prism_geom::io::write_atomically;
 use prism_geom::{PrimalScheme, StepOptions, limit_points_ordered, refine_primal_ordered};
 use std::fmt::Write as _;
 use std::path::PathBuf;
@@ -43,7 +43,7 @@ pub fn run(a: LimitArgs) -> Result<(), CliError> {
                 known.join(", ")
             ))
         })?;
-    let (doc, face_lines) = io::load(&a.input).map_err(CliError::input)?;
+    let (doc, face_lines) = super::load_input(&a.input)?;
     let input_error = |e: prism_geom::PrimalError| {
         let msg = match &e {
             prism_geom::PrimalError::Mesh(m) => with_line(m, face_lines.as_deref()),

@@ -122,6 +122,15 @@ pub fn check_levels(levels: usize) -> Result<(), CliError> {
     Ok(())
 }
 
+/// Loads the input solid; a file name of no known kind is bad usage (exit 2, like an
+/// unknown output kind), anything wrong inside the file bad input (exit 1).
+pub fn load_input(
+    path: &std::path::Path,
+) -> Result<(prism_geom::io::Document, Option<Vec<usize>>), CliError> {
+    prism_geom::io::FileKind::of(path).map_err(CliError::usage)?;
+    prism_geom::io::load(path).map_err(CliError::input)
+}
+
 /// An error for the user: one line, and the exit code (1 bad input, 2 bad usage).
 #[derive(Debug)]
 pub struct CliError {

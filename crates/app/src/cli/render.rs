@@ -16,7 +16,6 @@ use crate::cli::subdivide::steps_from;
 use clap::{Args, ValueEnum};
 use glam::DVec3;
 use prism_geom::geometry::{face_normal_raw, unit_or_zero};
-use prism_geom::io;
 use prism_geom::refine::FaceKind;
 use prism_geom::{Pipeline, PolyMesh, Topology};
 use prism_viewport::scene::FLIPPED_COLOR;
@@ -227,7 +226,7 @@ pub fn run(a: RenderArgs) -> Result<(), CliError> {
             "--frames 0: a turntable needs at least one frame",
         ));
     }
-    let (doc, _) = io::load(&a.input).map_err(CliError::input)?;
+    let (doc, _) = super::load_input(&a.input)?;
     let topo = Topology::build(&doc.mesh)
         .map_err(|e| CliError::input(format!("{}: {e}", a.input.display())))?;
     let steps = steps_from(&a.steps, doc.pipeline.as_deref(), true)?;

@@ -86,6 +86,11 @@ pub fn steps_from(
     allow_none: bool,
 ) -> Result<Vec<Scheme>, CliError> {
     super::check_levels(a.levels)?;
+    if a.scheme.is_some() && a.levels == 0 {
+        return Err(CliError::usage(
+            "--levels 0 refines nothing: give 1 or more (without --scheme the input is written as it is)",
+        ));
+    }
     let steps: Vec<Scheme> = match (&a.scheme, &a.pipeline) {
         (Some(name), None) => {
             let s = scheme_from_flags(name, a)?;
@@ -373,7 +378,7 @@ pub fn run(a: SubdivideArgs) -> Result<(), CliError> {
             ))
         })?;
     }
-    let (doc, face_lines) = io::load(&a.input).map_err(CliError::input)?;
+    let (doc, face_lines) = super::load_input(&a.input)?;
     let steps = if parsed.is_empty() {
         steps_from(&a.steps, doc.pipeline.as_deref(), false)?
     } else {

@@ -7,11 +7,13 @@ mod document;
 mod export;
 mod obj;
 mod obj_tags;
+mod validate;
 
 pub use atomic::write_atomically;
 pub use document::{DOCUMENT_VERSION, Document, document_from_str, read_document, write_document};
 pub use export::{ExportFormat, export, glb_bytes, stl_bytes};
 pub use obj::{ObjModel, obj_to_string, read_obj, read_obj_str, write_obj};
+pub use validate::validate_model;
 
 use std::path::{Path, PathBuf};
 use thiserror::Error;
@@ -45,6 +47,8 @@ pub enum IoError {
         "{path}: document version {found} is not supported (this Prism reads version {DOCUMENT_VERSION})"
     )]
     UnknownVersion { path: PathBuf, found: u64 },
+    #[error("{path}: {message}")]
+    Invalid { path: PathBuf, message: String },
     #[error("{path}: unknown file type (use .obj or .prism.json)")]
     UnknownExtension { path: PathBuf },
 }
@@ -86,6 +90,16 @@ pub fn load(path: &Path) -> Result<(Document, Option<Vec<usize>>), IoError> {
 /// As [`load`], for text already in memory (the app's bundled samples); the kind comes
 /// from `path`'s name, which messages quote.
 pub fn load_str(path: &Path, text: &str) -> Result<(Document, Option<Vec<usize>>), IoError> {
+    let loaded = load_unchecked(path, text)?;
+    let d = &loaded.0;
+    validate_model(&d.mesh, &d.edge_attrs, &d.tags).map_err(|message| IoError::Invalid {
+        path: path.into(),
+        message,
+    })?;
+    Ok(loaded)
+}
+
+fn load_unchecked(path: &Path, text: &str) -> Result<(Document, Option<Vec<usize>>), IoError> {
     match FileKind::of(path)? {
         FileKind::Obj => {
             let m = read_obj_str(path, text)?;

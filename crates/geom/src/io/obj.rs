@@ -60,6 +60,15 @@ pub fn read_obj_str(path: &Path, text: &str) -> Result<ObjModel, IoError> {
     let mut saw_face = false;
     let mut interleaved = false;
     let mut negative = false;
+    // A UTF-8 byte-order mark is not part of the first line; old Mac files end lines with a
+    // bare CR, which would otherwise make the whole file one line.
+    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
+    let text: std::borrow::Cow<'_, str> = if text.contains('\r') {
+        text.replace("\r\n", "\n").replace('\r', "\n").into()
+    } else {
+        text.into()
+    };
+    let (mut textures, mut normals) = (0i64, 0i64);
     for (i, raw) in text.lines().enumerate() {
         let lineno = i + 1;
         let line = raw.split('#').next().unwrap_or("").trim();
@@ -93,6 +102,28 @@ pub fn read_obj_str(path: &Path, text: &str) -> Result<ObjModel, IoError> {
                     ));
                 }
                 for w in &idx {
+                    // v, v/vt, v//vn or v/vt/vn: the texture and normal indices must name
+                    // lines that exist (they are not used, but a wrong one means a broken file).
+                    for (slot, (what, count)) in w
+                        .split('/')
+                        .skip(1)
+                        .zip([("texture coordinate", textures), ("normal", normals)])
+                    {
+                        if slot.is_empty() {
+                            continue;
+                        }
+                        let k: i64 = slot.parse().map_err(|_| {
+                            err(Some(lineno), format!("'{w}' is not a vertex index"))
+                        })?;
+                        if k == 0 || k > count || k < -count {
+                            return Err(err(
+                                Some(lineno),
+                                format!(
+                                    "'{w}' names {what} {k}, but the file has {count} {what}(s) so far"
+                                ),
+                            ));
+                        }
+                    }
                     let v = w.split('/').next().unwrap_or("");
                     let k: i64 = v
                         .parse()
@@ -113,6 +144,15 @@ pub fn read_obj_str(path: &Path, text: &str) -> Result<ObjModel, IoError> {
                 rest.push('\n');
             }
             Some("t") => tags.push((lineno, words.map(str::to_string).collect())),
+            Some(kind @ ("vt" | "vn")) => {
+                if kind == "vt" {
+                    textures += 1;
+                } else {
+                    normals += 1;
+                }
+                rest.push_str(line);
+                rest.push('\n');
+            }
             Some("o" | "g" | "usemtl" | "mtllib" | "l" | "p") | None => {}
             Some(_) => {
                 rest.push_str(line);
