@@ -890,3 +890,48 @@ fn levels_zero_and_unknown_input_kinds_say_what_is_wrong() {
         assert!(text(&o).1.contains("unknown file type"), "{cmd}");
     }
 }
+
+/// Saves keep the file's identity (issue 15, item 4): an output in a directory that does not
+/// exist fails before any work; a read-only output is refused unless --force, and keeps its
+/// bits when forced; a symbolic link stays a link.
+#[cfg(unix)]
+#[test]
+fn outputs_are_checked_first_and_keep_links_and_permissions() {
+    use std::os::unix::fs::PermissionsExt;
+    let o = run("subdivide assets/cube.obj --scheme doo-sabin --levels 2 -o /no/such/dir/x.obj");
+    assert_eq!(o.status.code(), Some(1));
+    assert!(text(&o).1.contains("does not exist"), "{:?}", text(&o));
+    let ro = tmp("ro.obj");
+    let _ = std::fs::remove_file(&ro);
+    std::fs::write(&ro, "keep").unwrap();
+    std::fs::set_permissions(&ro, std::fs::Permissions::from_mode(0o444)).unwrap();
+    let o = run_with("subdivide assets/cube.obj --scheme doo-sabin -o {}", &[&ro]);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(text(&o).1.contains("read-only"), "{:?}", text(&o));
+    assert_eq!(std::fs::read_to_string(&ro).unwrap(), "keep");
+    succeeds(run_with(
+        "subdivide assets/cube.obj --scheme doo-sabin -o {} --force",
+        &[&ro],
+    ));
+    assert!(std::fs::read_to_string(&ro).unwrap().contains("\nf "));
+    assert_eq!(
+        std::fs::metadata(&ro).unwrap().permissions().mode() & 0o777,
+        0o444
+    );
+    let real = tmp("real.obj");
+    std::fs::write(&real, "old").unwrap();
+    let link = tmp("link.obj");
+    let _ = std::fs::remove_file(&link);
+    std::os::unix::fs::symlink(&real, &link).unwrap();
+    succeeds(run_with(
+        "skin assets/spout.skin.json -o {} --resolution 2",
+        &[&link],
+    ));
+    assert!(
+        std::fs::symlink_metadata(&link)
+            .unwrap()
+            .file_type()
+            .is_symlink()
+    );
+    assert!(std::fs::read_to_string(&real).unwrap().contains("\nf "));
+}

@@ -131,6 +131,26 @@ pub fn load_input(
     prism_geom::io::load(path).map_err(CliError::input)
 }
 
+/// Checks before any work that `-o` can be written (its directory exists and takes a file;
+/// a read-only target needs `--force`): a long computation is never lost to a bad path.
+pub fn check_output(path: &std::path::Path, force: bool) -> Result<(), CliError> {
+    prism_geom::io::check_writable(path, force).map_err(CliError::input)
+}
+
+/// Runs the save `f`; with `force` a read-only target is replaced (and keeps its bits).
+pub fn saving<T>(
+    path: &std::path::Path,
+    force: bool,
+    f: impl FnOnce() -> Result<T, prism_geom::io::IoError>,
+) -> Result<T, CliError> {
+    if force {
+        prism_geom::io::forced(path, f)
+    } else {
+        f()
+    }
+    .map_err(CliError::input)
+}
+
 /// An error for the user: one line, and the exit code (1 bad input, 2 bad usage).
 #[derive(Debug)]
 pub struct CliError {

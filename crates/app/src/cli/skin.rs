@@ -30,6 +30,9 @@ pub struct SkinArgs {
     /// is the basis).
     #[arg(long, default_value = "virtual", value_parser = ["virtual", "one-sided"])]
     pub basis: String,
+    /// Replace a read-only output file (it keeps its permission bits).
+    #[arg(long)]
+    pub force: bool,
     /// Also write the patches' control points as JSON.
     #[arg(long)]
     pub patches: Option<PathBuf>,
@@ -100,6 +103,7 @@ pub fn run(a: SkinArgs) -> Result<(), CliError> {
             a.resolution
         )));
     }
+    super::check_output(&a.output, a.force)?;
     let sections = read_sections(&a.input)?;
     let basis = if a.basis == "one-sided" {
         Basis::OneSided
@@ -135,7 +139,9 @@ pub fn run(a: SkinArgs) -> Result<(), CliError> {
         println!("wrote {}", pp.display());
     }
     if io::ExportFormat::of(&a.output).is_some() {
-        io::export(&a.output, &mesh, &|_| false).map_err(CliError::input)?;
+        super::saving(&a.output, a.force, || {
+            io::export(&a.output, &mesh, &|_| false)
+        })?;
     } else {
         let doc = Document {
             mesh,
@@ -147,7 +153,7 @@ pub fn run(a: SkinArgs) -> Result<(), CliError> {
             }),
             ..Document::default()
         };
-        io::save(&a.output, &doc).map_err(CliError::input)?;
+        super::saving(&a.output, a.force, || io::save(&a.output, &doc))?;
     }
     println!(
         "{} vertices, {} faces ({}×{} quads a patch{}); wrote {}",

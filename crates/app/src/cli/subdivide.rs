@@ -70,6 +70,9 @@ pub struct SubdivideArgs {
     /// Output file: .obj or .prism.json (with creases and tags), or .stl / .glb (triangles).
     #[arg(short, long)]
     pub output: PathBuf,
+    /// Replace a read-only output file (it keeps its permission bits).
+    #[arg(long)]
+    pub force: bool,
     #[command(flatten)]
     pub steps: StepArgs,
     /// Report the fillet reached on these edges, A-B[,C-D...] (vertices of the input,
@@ -378,6 +381,7 @@ pub fn run(a: SubdivideArgs) -> Result<(), CliError> {
             ))
         })?;
     }
+    super::check_output(&a.output, a.force)?;
     let (doc, face_lines) = super::load_input(&a.input)?;
     let steps = if parsed.is_empty() {
         steps_from(&a.steps, doc.pipeline.as_deref(), false)?
@@ -452,8 +456,9 @@ pub fn run(a: SubdivideArgs) -> Result<(), CliError> {
     let last = &pipeline.levels()[n];
     if io::ExportFormat::of(&a.output).is_some() {
         let holes = &last.tags.holes;
-        io::export(&a.output, &last.mesh, &|f| holes.contains(&(f as u32)))
-            .map_err(CliError::input)?;
+        super::saving(&a.output, a.force, || {
+            io::export(&a.output, &last.mesh, &|f| holes.contains(&(f as u32)))
+        })?;
         println!("wrote {}", a.output.display());
         return Ok(());
     }
@@ -465,7 +470,7 @@ pub fn run(a: SubdivideArgs) -> Result<(), CliError> {
         curve: None,
         skin: None,
     };
-    let warnings = io::save(&a.output, &out).map_err(CliError::input)?;
+    let warnings = super::saving(&a.output, a.force, || io::save(&a.output, &out))?;
     for w in warnings {
         eprintln!("warning: {}: {w}", a.output.display());
     }

@@ -1,38 +1,211 @@
-//! Writing a file through a temporary file renamed into place.
+//! Writing a file through a temporary file renamed into place, keeping what the user set up
+//! around the target (docs/reliability.md "Saves").
+//!
+//! - The bytes go to `.NAME.prism-tmp` beside the target (the final target, when the path is
+//!   a symbolic link: the link stays a link and its target gets the new contents), flushed
+//!   and synced, then renamed over the target, and the directory is synced after the rename.
+//!   A save killed half-way leaves the old file whole and, at worst, that temporary file,
+//!   which the next save to the same target overwrites; every error path removes it.
+//! - The new file gets the old one's permission bits (a 0600 file stays 0600).
+//! - A read-only target is refused unless `force` is given ([`write_atomically_with`]).
+//!
+//! What it cannot keep: hard links (an atomic rename makes a new inode), and the owner when
+//! another user's file is written.
 
 use super::IoError;
 use std::io::Write;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
-/// Writes `bytes` to `path` atomically: a temporary file beside it, flushed and synced, then
-/// renamed over the target. On any error the previous file is untouched and the temporary
-/// file removed.
+/// Writes `bytes` to `path` atomically (a read-only target is refused).
 pub fn write_atomically(path: &Path, bytes: &[u8]) -> Result<(), IoError> {
+    write_atomically_with(path, bytes, false)
+}
+
+/// The file a save to `path` writes: `path` itself, or the final target of a symbolic link
+/// (a dangling link's target, resolved beside the link).
+pub fn save_target(path: &Path) -> PathBuf {
+    match std::fs::symlink_metadata(path) {
+        Ok(m) if m.file_type().is_symlink() => std::fs::canonicalize(path).unwrap_or_else(|_| {
+            let link = std::fs::read_link(path).unwrap_or_default();
+            match path.parent() {
+                Some(dir) if link.is_relative() => dir.join(link),
+                _ => link,
+            }
+        }),
+        _ => path.to_path_buf(),
+    }
+}
+
+fn parent_dir(path: &Path) -> PathBuf {
+    match path.parent() {
+        Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
+        _ => PathBuf::from("."),
+    }
+}
+
+fn temp_path(target: &Path) -> PathBuf {
+    let name = target
+        .file_name()
+        .map(|n| n.to_string_lossy().into_owned())
+        .unwrap_or_default();
+    parent_dir(target).join(format!(".{name}.prism-tmp"))
+}
+
+/// Checks, before any work, that a save to `path` can happen: its directory exists and
+/// takes a new file, and the target is not read-only (unless `force`).
+pub fn check_writable(path: &Path, force: bool) -> Result<(), IoError> {
+    let target = save_target(path);
     let err = |source| IoError::Write {
         path: path.into(),
         source,
     };
-    let dir = match path.parent() {
-        Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
-        _ => std::path::PathBuf::from("."),
+    if target.file_name().is_none() {
+        return Err(err(std::io::Error::other("no file name")));
+    }
+    let dir = parent_dir(&target);
+    if !dir.is_dir() {
+        return Err(err(std::io::Error::other(format!(
+            "the directory {} does not exist",
+            dir.display()
+        ))));
+    }
+    if let Ok(m) = std::fs::metadata(&target)
+        && m.permissions().readonly()
+        && !force
+    {
+        return Err(err(std::io::Error::other(
+            "the file is read-only (give --force to replace it)",
+        )));
+    }
+    let tmp = temp_path(&target);
+    std::fs::File::create(&tmp).map_err(err)?;
+    let _ = std::fs::remove_file(&tmp);
+    Ok(())
+}
+
+/// Runs a save `f` to `path` that may replace a read-only target: the target is made
+/// writable for the save and given its old permission bits back after (the `--force` of the
+/// commands). Without a read-only target it is just `f`.
+pub fn forced<T>(path: &Path, f: impl FnOnce() -> Result<T, IoError>) -> Result<T, IoError> {
+    let target = save_target(path);
+    let Ok(m) = std::fs::metadata(&target) else {
+        return f();
     };
-    let name = path
-        .file_name()
-        .ok_or_else(|| err(std::io::Error::other("no file name")))?;
-    let tmp = dir.join(format!(
-        ".{}.{}.tmp",
-        name.to_string_lossy(),
-        std::process::id()
-    ));
+    if !m.permissions().readonly() {
+        return f();
+    }
+    let old = m.permissions();
+    let mut w = old.clone();
+    #[allow(clippy::permissions_set_readonly_false)]
+    w.set_readonly(false);
+    let _ = std::fs::set_permissions(&target, w);
+    let out = f();
+    let _ = std::fs::set_permissions(&target, old);
+    out
+}
+
+/// [`write_atomically`], replacing a read-only target when `force`.
+pub fn write_atomically_with(path: &Path, bytes: &[u8], force: bool) -> Result<(), IoError> {
+    let target = save_target(path);
+    let err = |source| IoError::Write {
+        path: path.into(),
+        source,
+    };
+    if target.file_name().is_none() {
+        return Err(err(std::io::Error::other("no file name")));
+    }
+    let old = std::fs::metadata(&target).ok();
+    if let Some(m) = &old
+        && m.permissions().readonly()
+        && !force
+    {
+        return Err(err(std::io::Error::other(
+            "the file is read-only (give --force to replace it)",
+        )));
+    }
+    let tmp = temp_path(&target);
     let result = (|| {
         let mut f = std::fs::File::create(&tmp)?;
         f.write_all(bytes)?;
+        if let Some(m) = &old {
+            // The old file's bits, read-only included when forced (it was written above).
+            f.set_permissions(m.permissions())?;
+        }
         f.sync_all()?;
-        std::fs::rename(&tmp, path)
+        drop(f);
+        std::fs::rename(&tmp, &target)?;
+        // The rename is durable once the directory is synced (not possible everywhere).
+        if let Ok(d) = std::fs::File::open(parent_dir(&target)) {
+            let _ = d.sync_all();
+        }
+        Ok(())
     })();
     if let Err(e) = result {
         let _ = std::fs::remove_file(&tmp);
         return Err(err(e));
     }
     Ok(())
+}
+
+#[cfg(all(test, unix))]
+mod tests {
+    use super::*;
+    use std::os::unix::fs::PermissionsExt;
+
+    fn dir() -> PathBuf {
+        let d = std::env::temp_dir().join(format!("prism-atomic-{}", std::process::id()));
+        std::fs::create_dir_all(&d).unwrap();
+        d
+    }
+
+    #[test]
+    fn permissions_links_read_only_and_stale_temporaries() {
+        let d = dir();
+        // Permission bits are kept.
+        let f = d.join("private.obj");
+        std::fs::write(&f, "old").unwrap();
+        std::fs::set_permissions(&f, std::fs::Permissions::from_mode(0o600)).unwrap();
+        write_atomically(&f, b"new").unwrap();
+        assert_eq!(std::fs::read_to_string(&f).unwrap(), "new");
+        let mode = std::fs::metadata(&f).unwrap().permissions().mode() & 0o777;
+        assert_eq!(mode, 0o600);
+        // A symbolic link stays a link; its target gets the contents.
+        let real = d.join("real.obj");
+        std::fs::write(&real, "old").unwrap();
+        let link = d.join("link.obj");
+        let _ = std::fs::remove_file(&link);
+        std::os::unix::fs::symlink(&real, &link).unwrap();
+        write_atomically(&link, b"through the link").unwrap();
+        assert!(
+            std::fs::symlink_metadata(&link)
+                .unwrap()
+                .file_type()
+                .is_symlink()
+        );
+        assert_eq!(std::fs::read_to_string(&real).unwrap(), "through the link");
+        // A read-only file is refused, then replaced when forced (and stays read-only).
+        let ro = d.join("ro.obj");
+        let _ = std::fs::remove_file(&ro);
+        std::fs::write(&ro, "keep").unwrap();
+        std::fs::set_permissions(&ro, std::fs::Permissions::from_mode(0o444)).unwrap();
+        let e = write_atomically(&ro, b"x").unwrap_err().to_string();
+        assert!(e.contains("read-only"), "{e}");
+        assert!(check_writable(&ro, false).is_err() && check_writable(&ro, true).is_ok());
+        assert_eq!(std::fs::read_to_string(&ro).unwrap(), "keep");
+        write_atomically_with(&ro, b"forced", true).unwrap();
+        assert_eq!(std::fs::read_to_string(&ro).unwrap(), "forced");
+        assert!(std::fs::metadata(&ro).unwrap().permissions().readonly());
+        // A stale temporary file of a killed save is overwritten by the next save, and no
+        // temporary file is left.
+        let t = d.join("t.obj");
+        std::fs::write(d.join(".t.obj.prism-tmp"), "half a file").unwrap();
+        write_atomically(&t, b"whole").unwrap();
+        assert!(!d.join(".t.obj.prism-tmp").exists());
+        assert_eq!(std::fs::read_to_string(&t).unwrap(), "whole");
+        // A missing directory is named before any work.
+        let e = check_writable(&d.join("no/such/dir/x.obj"), false)
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("does not exist"), "{e}");
+    }
 }
