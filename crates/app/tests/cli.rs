@@ -935,3 +935,49 @@ fn outputs_are_checked_first_and_keep_links_and_permissions() {
     );
     assert!(std::fs::read_to_string(&real).unwrap().contains("\nf "));
 }
+
+/// A save killed at any moment leaves the old file or the whole new one, never a part: the
+/// output is written to a temporary file and renamed into place.
+#[cfg(unix)]
+#[test]
+fn a_killed_save_leaves_the_old_file_or_the_whole_new_one() {
+    let out = tmp("killed.obj");
+    let expected = {
+        let o = run_with(
+            "subdivide assets/cube.obj --scheme catmull-clark --levels 6 -o {}",
+            &[&out],
+        );
+        assert!(o.status.success());
+        prism_geom::io::load(&out).unwrap().0.mesh.num_faces()
+    };
+    for delay_ms in [5, 20, 60, 120, 250] {
+        std::fs::write(&out, "# the old file\n").unwrap();
+        let mut child = Command::new(env!("CARGO_BIN_EXE_prism"))
+            .args([
+                "subdivide",
+                "assets/cube.obj",
+                "--scheme",
+                "catmull-clark",
+                "--levels",
+                "6",
+            ])
+            .arg("-o")
+            .arg(&out)
+            .current_dir(Path::new(env!("CARGO_MANIFEST_DIR")).join("../.."))
+            .stdout(std::process::Stdio::null())
+            .stderr(std::process::Stdio::null())
+            .spawn()
+            .unwrap();
+        std::thread::sleep(std::time::Duration::from_millis(delay_ms));
+        let _ = child.kill();
+        let _ = child.wait();
+        let text = std::fs::read_to_string(&out).unwrap();
+        if text != "# the old file\n" {
+            let faces = prism_geom::io::load(&out).unwrap().0.mesh.num_faces();
+            assert_eq!(
+                faces, expected,
+                "killed after {delay_ms} ms: a partial file"
+            );
+        }
+    }
+}

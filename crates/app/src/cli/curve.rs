@@ -118,7 +118,7 @@ pub fn read_polyline(path: &Path) -> Result<Polyline, CliError> {
 }
 
 pub fn run(a: CurveArgs) -> Result<(), CliError> {
-    super::check_output(&a.output, false)?;
+    super::check_output(&a.output, None)?;
     if a.sweep {
         return sweep(&a);
     }

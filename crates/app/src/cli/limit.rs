@@ -29,7 +29,7 @@ pub struct LimitArgs {
 }
 
 pub fn run(a: LimitArgs) -> Result<(), CliError> {
-    super::check_output(&a.output, false)?;
+    super::check_output(&a.output, None)?;
     super::check_levels(a.levels)?;
     // Limit masks exist for the B-spline schemes: Catmull–Clark and Loop.
     let with_limits = [PrimalScheme::CatmullClark, PrimalScheme::Loop];

@@ -133,8 +133,16 @@ pub fn load_input(
 
 /// Checks before any work that `-o` can be written (its directory exists and takes a file;
 /// a read-only target needs `--force`): a long computation is never lost to a bad path.
-pub fn check_output(path: &std::path::Path, force: bool) -> Result<(), CliError> {
-    prism_geom::io::check_writable(path, force).map_err(CliError::input)
+/// `force` is `None` for commands without `--force`.
+pub fn check_output(path: &std::path::Path, force: Option<bool>) -> Result<(), CliError> {
+    prism_geom::io::check_writable(path, force.unwrap_or(false)).map_err(|e| {
+        let m = e.to_string();
+        match (m.contains("read-only"), force) {
+            (true, Some(_)) => CliError::input(format!("{m} (give --force to replace it)")),
+            (true, None) => CliError::input(format!("{m} (make it writable to replace it)")),
+            _ => CliError::input(m),
+        }
+    })
 }
 
 /// Runs the save `f`; with `force` a read-only target is replaced (and keeps its bits).

@@ -54,7 +54,7 @@ pub struct NewArgs {
 }
 
 pub fn run(a: NewArgs) -> Result<(), CliError> {
-    super::check_output(&a.output, false)?;
+    super::check_output(&a.output, None)?;
     let solid = match a.kind {
         SolidKind::Box => {
             let v = super::comma_numbers("--size", &a.size, "W,D,H")?;

@@ -219,7 +219,7 @@ fn parse_size(s: &str) -> Option<(u32, u32)> {
 }
 
 pub fn run(a: RenderArgs) -> Result<(), CliError> {
-    super::check_output(&a.output, false)?;
+    super::check_output(&a.output, None)?;
     let (w, h) = parse_size(&a.size)
         .ok_or_else(|| CliError::usage(format!("--size '{}' is not WIDTHxHEIGHT", a.size)))?;
     if a.frames == Some(0) {

@@ -103,7 +103,7 @@ pub fn run(a: SkinArgs) -> Result<(), CliError> {
             a.resolution
         )));
     }
-    super::check_output(&a.output, a.force)?;
+    super::check_output(&a.output, Some(a.force))?;
     let sections = read_sections(&a.input)?;
     let basis = if a.basis == "one-sided" {
         Basis::OneSided

@@ -381,7 +381,7 @@ pub fn run(a: SubdivideArgs) -> Result<(), CliError> {
             ))
         })?;
     }
-    super::check_output(&a.output, a.force)?;
+    super::check_output(&a.output, Some(a.force))?;
     let (doc, face_lines) = super::load_input(&a.input)?;
     let steps = if parsed.is_empty() {
         steps_from(&a.steps, doc.pipeline.as_deref(), false)?

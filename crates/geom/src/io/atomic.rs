@@ -73,9 +73,7 @@ pub fn check_writable(path: &Path, force: bool) -> Result<(), IoError> {
         && m.permissions().readonly()
         && !force
     {
-        return Err(err(std::io::Error::other(
-            "the file is read-only (give --force to replace it)",
-        )));
+        return Err(err(std::io::Error::other("the file is read-only")));
     }
     let tmp = temp_path(&target);
     std::fs::File::create(&tmp).map_err(err)?;
@@ -119,9 +117,7 @@ pub fn write_atomically_with(path: &Path, bytes: &[u8], force: bool) -> Result<(
         && m.permissions().readonly()
         && !force
     {
-        return Err(err(std::io::Error::other(
-            "the file is read-only (give --force to replace it)",
-        )));
+        return Err(err(std::io::Error::other("the file is read-only")));
     }
     let tmp = temp_path(&target);
     let result = (|| {
