@@ -78,15 +78,12 @@ impl Gregory {
         (p, du, dv)
     }
 
-    /// Position, partials and normal at (u, v) ∈ [0, 1]² (ALGORITHMS §7.3). Where
-    /// `S_u × S_v` vanishes (a corner with collinear legs) the normal is taken a small step
-    /// towards the patch centre.
-    pub fn eval(&self, u: f64, v: f64) -> PatchPoint {
+    /// `S`, `S_u` and `S_v` at (u, v): the Bernstein sums of §7.3, the interior points blended
+    /// and their own derivatives included.
+    fn sums(&self, u: f64, v: f64) -> (DVec3, DVec3, DVec3) {
         let (bu, bv) = (bernstein(u), bernstein(v));
         let (du_b, dv_b) = (bernstein_d(u), bernstein_d(v));
-        let mut p = DVec3::ZERO;
-        let mut du = DVec3::ZERO;
-        let mut dv = DVec3::ZERO;
+        let (mut p, mut du, mut dv) = (DVec3::ZERO, DVec3::ZERO, DVec3::ZERO);
         for i in 0..4 {
             for j in 0..4 {
                 let inner = (1..=2).contains(&i) && (1..=2).contains(&j);
@@ -100,11 +97,19 @@ impl Gregory {
                 dv += bu[i] * dv_b[j] * q + bu[i] * bv[j] * qv;
             }
         }
+        (p, du, dv)
+    }
+
+    /// Position, partials and normal at (u, v) ∈ [0, 1]² (ALGORITHMS §7.3). Where
+    /// `S_u × S_v` vanishes (a corner with collinear legs) the normal is taken a small step
+    /// towards the patch centre.
+    pub fn eval(&self, u: f64, v: f64) -> PatchPoint {
+        let (p, du, dv) = self.sums(u, v);
         let mut n = du.cross(dv);
         if n.length_squared() <= 1e-30 * (du.length_squared() + dv.length_squared()).powi(2) {
             let (cu, cv) = (u + 1e-6 * (0.5 - u).signum(), v + 1e-6 * (0.5 - v).signum());
-            let q = self.eval_partials(cu, cv);
-            n = q.0.cross(q.1);
+            let (_, su, sv) = self.sums(cu, cv);
+            n = su.cross(sv);
         }
         PatchPoint {
             point: p,
@@ -114,28 +119,9 @@ impl Gregory {
         }
     }
 
-    fn eval_partials(&self, u: f64, v: f64) -> (DVec3, DVec3) {
-        let (bu, bv) = (bernstein(u), bernstein(v));
-        let (du_b, dv_b) = (bernstein_d(u), bernstein_d(v));
-        let (mut du, mut dv) = (DVec3::ZERO, DVec3::ZERO);
-        for i in 0..4 {
-            for j in 0..4 {
-                let inner = (1..=2).contains(&i) && (1..=2).contains(&j);
-                let (q, qu, qv) = if inner {
-                    self.interior(i, j, u, v)
-                } else {
-                    (self.points[i][j], DVec3::ZERO, DVec3::ZERO)
-                };
-                du += du_b[i] * bv[j] * q + bu[i] * bv[j] * qu;
-                dv += bu[i] * dv_b[j] * q + bu[i] * bv[j] * qv;
-            }
-        }
-        (du, dv)
-    }
-
     /// The patch's point at (u, v).
     pub fn point(&self, u: f64, v: f64) -> DVec3 {
-        self.eval(u, v).point
+        self.sums(u, v).0
     }
 }
 

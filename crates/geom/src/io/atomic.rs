@@ -7,7 +7,8 @@
 //!   A save killed half-way leaves the old file whole and, at worst, that temporary file,
 //!   which the next save to the same target overwrites; every error path removes it.
 //! - The new file gets the old one's permission bits (a 0600 file stays 0600).
-//! - A read-only target is refused unless `force` is given ([`write_atomically_with`]).
+//! - A read-only target is refused; [`forced`] runs a save that may replace one (the
+//!   commands' `--force`), giving the file its bits back after.
 //!
 //! What it cannot keep: hard links (an atomic rename makes a new inode), and the owner when
 //! another user's file is written.
@@ -15,11 +16,6 @@
 use super::IoError;
 use std::io::Write;
 use std::path::{Path, PathBuf};
-
-/// Writes `bytes` to `path` atomically (a read-only target is refused).
-pub fn write_atomically(path: &Path, bytes: &[u8]) -> Result<(), IoError> {
-    write_atomically_with(path, bytes, false)
-}
 
 /// The file a save to `path` writes: `path` itself, or the final target of a symbolic link
 /// (a dangling link's target, resolved beside the link).
@@ -51,32 +47,43 @@ fn temp_path(target: &Path) -> PathBuf {
     parent_dir(target).join(format!(".{name}.prism-tmp"))
 }
 
+fn write_error(path: &Path, source: std::io::Error) -> IoError {
+    IoError::Write {
+        path: path.into(),
+        source,
+    }
+}
+
+/// What every save to `path` checks first: the file it writes ([`save_target`]) has a name,
+/// and, unless `force`, is not read-only. Returns that file and its metadata when it exists.
+fn target_of(path: &Path, force: bool) -> Result<(PathBuf, Option<std::fs::Metadata>), IoError> {
+    let target = save_target(path);
+    if target.file_name().is_none() {
+        return Err(write_error(path, std::io::Error::other("no file name")));
+    }
+    let old = std::fs::metadata(&target).ok();
+    if !force && old.as_ref().is_some_and(|m| m.permissions().readonly()) {
+        return Err(write_error(
+            path,
+            std::io::Error::other("the file is read-only"),
+        ));
+    }
+    Ok((target, old))
+}
+
 /// Checks, before any work, that a save to `path` can happen: its directory exists and
 /// takes a new file, and the target is not read-only (unless `force`).
 pub fn check_writable(path: &Path, force: bool) -> Result<(), IoError> {
-    let target = save_target(path);
-    let err = |source| IoError::Write {
-        path: path.into(),
-        source,
-    };
-    if target.file_name().is_none() {
-        return Err(err(std::io::Error::other("no file name")));
-    }
+    let (target, _) = target_of(path, force)?;
     let dir = parent_dir(&target);
     if !dir.is_dir() {
-        return Err(err(std::io::Error::other(format!(
-            "the directory {} does not exist",
-            dir.display()
-        ))));
-    }
-    if let Ok(m) = std::fs::metadata(&target)
-        && m.permissions().readonly()
-        && !force
-    {
-        return Err(err(std::io::Error::other("the file is read-only")));
+        return Err(write_error(
+            path,
+            std::io::Error::other(format!("the directory {} does not exist", dir.display())),
+        ));
     }
     let tmp = temp_path(&target);
-    std::fs::File::create(&tmp).map_err(err)?;
+    std::fs::File::create(&tmp).map_err(|e| write_error(path, e))?;
     let _ = std::fs::remove_file(&tmp);
     Ok(())
 }
@@ -102,29 +109,16 @@ pub fn forced<T>(path: &Path, f: impl FnOnce() -> Result<T, IoError>) -> Result<
     out
 }
 
-/// [`write_atomically`], replacing a read-only target when `force`.
-pub fn write_atomically_with(path: &Path, bytes: &[u8], force: bool) -> Result<(), IoError> {
-    let target = save_target(path);
-    let err = |source| IoError::Write {
-        path: path.into(),
-        source,
-    };
-    if target.file_name().is_none() {
-        return Err(err(std::io::Error::other("no file name")));
-    }
-    let old = std::fs::metadata(&target).ok();
-    if let Some(m) = &old
-        && m.permissions().readonly()
-        && !force
-    {
-        return Err(err(std::io::Error::other("the file is read-only")));
-    }
+/// Writes `bytes` to `path` atomically; a read-only target is refused (see [`forced`]).
+pub fn write_atomically(path: &Path, bytes: &[u8]) -> Result<(), IoError> {
+    let (target, old) = target_of(path, false)?;
     let tmp = temp_path(&target);
     let result = (|| {
         let mut f = std::fs::File::create(&tmp)?;
         f.write_all(bytes)?;
         if let Some(m) = &old {
-            // The old file's bits, read-only included when forced (it was written above).
+            // The old file's bits (a read-only file never gets here: `forced` makes it
+            // writable for the save and gives it its bits back after).
             f.set_permissions(m.permissions())?;
         }
         f.sync_all()?;
@@ -138,7 +132,7 @@ pub fn write_atomically_with(path: &Path, bytes: &[u8], force: bool) -> Result<(
     })();
     if let Err(e) = result {
         let _ = std::fs::remove_file(&tmp);
-        return Err(err(e));
+        return Err(write_error(path, e));
     }
     Ok(())
 }
@@ -188,7 +182,7 @@ mod tests {
         assert!(e.contains("read-only"), "{e}");
         assert!(check_writable(&ro, false).is_err() && check_writable(&ro, true).is_ok());
         assert_eq!(std::fs::read_to_string(&ro).unwrap(), "keep");
-        write_atomically_with(&ro, b"forced", true).unwrap();
+        forced(&ro, || write_atomically(&ro, b"forced")).unwrap();
         assert_eq!(std::fs::read_to_string(&ro).unwrap(), "forced");
         assert!(std::fs::metadata(&ro).unwrap().permissions().readonly());
         // A stale temporary file of a killed save is overwritten by the next save, and no

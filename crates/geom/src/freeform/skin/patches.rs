@@ -98,36 +98,26 @@ impl Network<'_> {
         }
     }
 
-    /// The legs into cell (k, i) at the two ends of its border `side` (0: u = 0, 1: u = 1,
-    /// 2: v = 0, 3: v = 1), as that cell's boundary points give them.
-    fn legs(&self, k: usize, i: usize, side: usize) -> (DVec3, DVec3) {
+    /// The four borders of cell (k, i): v = 0, v = 1, u = 0, u = 1.
+    fn borders(&self, k: usize, i: usize) -> [&Cubic; 4] {
         let n = self.n();
-        let s0 = &self.sections[k].curve[self.vertex(k, i)];
-        let s1 = &self.sections[k + 1].curve[self.vertex(k + 1, i)];
-        let (c0, c1) = (&self.chains[i][k], &self.chains[(i + 1) % n][k]);
-        match side {
-            0 => (s0[1] - s0[0], s1[1] - s1[0]),
-            1 => (s0[2] - s0[3], s1[2] - s1[3]),
-            2 => (c0[1] - c0[0], c1[1] - c1[0]),
-            _ => (c0[2] - c0[3], c1[2] - c1[3]),
-        }
+        [
+            &self.sections[k].curve[self.vertex(k, i)],
+            &self.sections[k + 1].curve[self.vertex(k + 1, i)],
+            &self.chains[i][k],
+            &self.chains[(i + 1) % n][k],
+        ]
+    }
+
+    /// The legs into cell (k, i) at the two ends of its border `side` ([`border_legs`]).
+    fn legs(&self, k: usize, i: usize, side: usize) -> (DVec3, DVec3) {
+        border_legs(self.borders(k, i), side)
     }
 
     /// The Gregory patch of cell (k, i).
     pub fn patch(&self, k: usize, i: usize) -> Gregory {
         let n = self.n();
         let i1 = (i + 1) % n;
-        let s0 = &self.sections[k].curve[self.vertex(k, i)];
-        let s1 = &self.sections[k + 1].curve[self.vertex(k + 1, i)];
-        let c0 = &self.chains[i][k];
-        let c1 = &self.chains[i1][k];
-        let mut p = [[DVec3::ZERO; 4]; 4];
-        for t in 0..4 {
-            p[t][0] = s0[t];
-            p[t][3] = s1[t];
-            p[0][t] = c0[t];
-            p[3][t] = c1[t];
-        }
         let one_sided = self.basis == Basis::OneSided;
         // One-sided: the cell listed first (smaller k·n + i) is the basis (None); the other
         // follows its legs.
@@ -158,31 +148,56 @@ impl Network<'_> {
             // Across section kk: the cell below (kk − 1, i) is listed first.
             (kk == k).then(|| self.legs(kk - 1, i, 3))
         };
-        let mut g = Gregory {
-            points: p,
-            u_copies: [[DVec3::ZERO; 2]; 2],
-        };
-        // u = 0: chain i.
-        let x = cross_vectors(c0, p[1][0] - p[0][0], p[1][3] - p[0][3], chain_basis(i));
-        g.u_copies[0] = [c0[1] + x[0], c0[2] + x[1]];
-        // u = 1: chain i + 1.
-        let x = cross_vectors(c1, p[2][0] - p[3][0], p[2][3] - p[3][3], chain_basis(i1));
-        g.u_copies[1] = [c1[1] + x[0], c1[2] + x[1]];
-        // v = 0: section k.
-        let x = cross_vectors(s0, p[0][1] - p[0][0], p[3][1] - p[3][0], section_basis(k));
-        g.points[1][1] = s0[1] + x[0];
-        g.points[2][1] = s0[2] + x[1];
-        // v = 1: section k + 1.
-        let x = cross_vectors(
-            s1,
-            p[0][2] - p[0][3],
-            p[3][2] - p[3][3],
-            section_basis(k + 1),
-        );
-        g.points[1][2] = s1[1] + x[0];
-        g.points[2][2] = s1[2] + x[1];
-        g
+        with_borders(
+            self.borders(k, i),
+            [
+                chain_basis(i),
+                chain_basis(i1),
+                section_basis(k),
+                section_basis(k + 1),
+            ],
+        )
     }
+}
+
+/// The legs into a cell with borders `[v = 0, v = 1, u = 0, u = 1]` at the two ends of its
+/// border `side` (0: u = 0, 1: u = 1, 2: v = 0, 3: v = 1): the first legs of the two borders
+/// that cross it, pointing into the cell.
+fn border_legs([s0, s1, c0, c1]: [&Cubic; 4], side: usize) -> (DVec3, DVec3) {
+    match side {
+        0 => (s0[1] - s0[0], s1[1] - s1[0]),
+        1 => (s0[2] - s0[3], s1[2] - s1[3]),
+        2 => (c0[1] - c0[0], c1[1] - c1[0]),
+        _ => (c0[2] - c0[3], c1[2] - c1[3]),
+    }
+}
+
+/// The Gregory patch with borders `[v = 0, v = 1, u = 0, u = 1]`: their control points are its
+/// boundary points, and each border's interior copies come from [`cross_vectors`] with the
+/// cell's own legs and the basis given for that border, in the order u = 0, u = 1, v = 0,
+/// v = 1 (`None`: the basis construction).
+pub fn with_borders(borders: [&Cubic; 4], bases: [Option<(DVec3, DVec3)>; 4]) -> Gregory {
+    let [s0, s1, c0, c1] = borders;
+    let mut g = Gregory {
+        points: [[DVec3::ZERO; 4]; 4],
+        u_copies: [[DVec3::ZERO; 2]; 2],
+    };
+    for t in 0..4 {
+        g.points[t][0] = s0[t];
+        g.points[t][3] = s1[t];
+        g.points[0][t] = c0[t];
+        g.points[3][t] = c1[t];
+    }
+    let copies = |side: usize, c: &Cubic| {
+        let (a0, a3) = border_legs(borders, side);
+        let x = cross_vectors(c, a0, a3, bases[side]);
+        [c[1] + x[0], c[2] + x[1]]
+    };
+    g.u_copies[0] = copies(0, c0);
+    g.u_copies[1] = copies(1, c1);
+    [g.points[1][1], g.points[2][1]] = copies(2, s0);
+    [g.points[1][2], g.points[2][2]] = copies(3, s1);
+    g
 }
 
 #[cfg(test)]
@@ -211,27 +226,7 @@ mod tests {
         };
         let (s0, s1) = (line(c[0], c[1]), line(c[2], c[3]));
         let (c0, c1) = (line(c[0], c[2]), line(c[1], c[3]));
-        let mut p = [[DVec3::ZERO; 4]; 4];
-        for t in 0..4 {
-            p[t][0] = s0[t];
-            p[t][3] = s1[t];
-            p[0][t] = c0[t];
-            p[3][t] = c1[t];
-        }
-        let mut g = Gregory {
-            points: p,
-            u_copies: [[DVec3::ZERO; 2]; 2],
-        };
-        let x = cross_vectors(&c0, p[1][0] - p[0][0], p[1][3] - p[0][3], None);
-        g.u_copies[0] = [c0[1] + x[0], c0[2] + x[1]];
-        let x = cross_vectors(&c1, p[2][0] - p[3][0], p[2][3] - p[3][3], None);
-        g.u_copies[1] = [c1[1] + x[0], c1[2] + x[1]];
-        let x = cross_vectors(&s0, p[0][1] - p[0][0], p[3][1] - p[3][0], None);
-        g.points[1][1] = s0[1] + x[0];
-        g.points[2][1] = s0[2] + x[1];
-        let x = cross_vectors(&s1, p[0][2] - p[0][3], p[3][2] - p[3][3], None);
-        g.points[1][2] = s1[1] + x[0];
-        g.points[2][2] = s1[2] + x[1];
+        let g = with_borders([&s0, &s1, &c0, &c1], [None; 4]);
         for k in 0..=8 {
             for l in 0..=8 {
                 let (u, v) = (k as f64 / 8.0, l as f64 / 8.0);
