@@ -103,13 +103,29 @@ impl Camera {
         self.distance = (self.distance * factor).max(1e-6);
     }
 
-    /// Pan in the view plane by fractions of the visible height.
-    pub fn pan(&mut self, dx: f32, dy: f32) {
+    /// The view plane's right and up directions (up as the screen shows it).
+    pub fn view_axes(&self) -> (Vec3, Vec3) {
         let fwd = (self.target - self.eye()).normalize();
         let right = fwd.cross(Vec3::Z).normalize_or(Vec3::X);
-        let up = right.cross(fwd);
-        let h = 2.0 * self.distance * (0.5 * self.fov_y).tan();
-        self.target += h * (-dx * right + dy * up);
+        (right, right.cross(fwd))
+    }
+
+    /// The height the view shows at the target, in model units.
+    pub fn visible_height(&self) -> f32 {
+        2.0 * self.distance * (0.5 * self.fov_y).tan()
+    }
+
+    /// A screen drag of (`dx`, `dy`) pixels in a view `height` pixels high, as a movement in
+    /// the view plane at the target (screen y grows downwards).
+    pub fn drag_in_view_plane(&self, dx: f32, dy: f32, height: f32) -> Vec3 {
+        let (right, up) = self.view_axes();
+        self.visible_height() / height.max(1.0) * (dx * right - dy * up)
+    }
+
+    /// Pan in the view plane by fractions of the visible height.
+    pub fn pan(&mut self, dx: f32, dy: f32) {
+        let (right, up) = self.view_axes();
+        self.target += self.visible_height() * (-dx * right + dy * up);
     }
 
     /// View and projection for an aspect ratio (width / height); near and far planes are

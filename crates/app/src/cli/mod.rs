@@ -131,6 +131,18 @@ pub fn load_input(
     prism_geom::io::load(path).map_err(CliError::input)
 }
 
+/// A solid's output must be one of the kinds Prism writes: bad usage (exit 2) otherwise.
+pub fn check_solid_output_kind(path: &std::path::Path) -> Result<(), CliError> {
+    use prism_geom::io::{ExportFormat, FileKind};
+    if ExportFormat::of(path).is_none() && FileKind::of(path).is_err() {
+        return Err(CliError::usage(format!(
+            "{}: unknown output type (use .obj, .prism.json, .stl or .glb)",
+            path.display()
+        )));
+    }
+    Ok(())
+}
+
 /// Checks before any work that `-o` can be written (its directory exists and takes a file;
 /// a read-only target needs `--force`): a long computation is never lost to a bad path.
 /// `force` is `None` for commands without `--force`.

@@ -89,14 +89,7 @@ fn patches_json(s: &Skin) -> serde_json::Value {
 }
 
 pub fn run(a: SkinArgs) -> Result<(), CliError> {
-    if io::ExportFormat::of(&a.output).is_none() {
-        io::FileKind::of(&a.output).map_err(|_| {
-            CliError::usage(format!(
-                "{}: unknown output type (use .obj, .prism.json, .stl or .glb)",
-                a.output.display()
-            ))
-        })?;
-    }
+    super::check_solid_output_kind(&a.output)?;
     if a.resolution == 0 || a.resolution > 256 {
         return Err(CliError::usage(format!(
             "--resolution {} is out of range: 1 to 256",

@@ -373,14 +373,7 @@ const VOLUME_JUMP: f64 = 10.0;
 
 pub fn run(a: SubdivideArgs) -> Result<(), CliError> {
     let parsed = steps_from(&a.steps, None, true)?;
-    if io::ExportFormat::of(&a.output).is_none() {
-        io::FileKind::of(&a.output).map_err(|_| {
-            CliError::usage(format!(
-                "{}: unknown output type (use .obj, .prism.json, .stl or .glb)",
-                a.output.display()
-            ))
-        })?;
-    }
+    super::check_solid_output_kind(&a.output)?;
     super::check_output(&a.output, Some(a.force))?;
     let (doc, face_lines) = super::load_input(&a.input)?;
     let steps = if parsed.is_empty() {

@@ -173,3 +173,48 @@ fn bad_sections_show_their_message_and_keep_the_sections() {
         a.note
     );
 }
+
+/// Dragging a number of the selected section (the tilt about x) over several frames is one
+/// undo step: the fields drawn after it in the same frame used to end its gesture, so every
+/// frame of the drag was an undo step of its own.
+#[test]
+fn dragging_a_section_number_is_one_undo_step() {
+    let mut h = Harness::builder()
+        .with_size(egui::vec2(1280.0, 800.0))
+        .build_ui_state(|ui, app: &mut PrismApp| app.frame_ui(ui), app());
+    settle(&mut h);
+    h.get_by_label("Skin").click();
+    settle(&mut h);
+    h.get_by_label("Spout (6 sections)").click();
+    settle(&mut h);
+    let before = h.state().doc.state().skin.clone().unwrap();
+    let at = h.get_by_value("about x: 0.0").rect().center();
+    h.event(egui::Event::PointerMoved(at));
+    h.step();
+    h.event(egui::Event::PointerButton {
+        pos: at,
+        button: egui::PointerButton::Primary,
+        pressed: true,
+        modifiers: egui::Modifiers::NONE,
+    });
+    h.step();
+    for x in [10.0, 20.0, 30.0, 40.0] {
+        h.event(egui::Event::PointerMoved(at + egui::vec2(x, 0.0)));
+        h.step();
+    }
+    h.event(egui::Event::PointerButton {
+        pos: at + egui::vec2(40.0, 0.0),
+        button: egui::PointerButton::Primary,
+        pressed: false,
+        modifiers: egui::Modifiers::NONE,
+    });
+    settle(&mut h);
+    let tilted = h.state().doc.state().skin.clone().unwrap();
+    assert_ne!(
+        tilted.sections[0], before.sections[0],
+        "the drag tilted nothing"
+    );
+    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::Z);
+    settle(&mut h);
+    assert_eq!(h.state().doc.state().skin.as_ref().unwrap(), &before);
+}

@@ -85,3 +85,40 @@ impl egui_wgpu::CallbackTrait for ViewCallback {
         }
     }
 }
+
+/// Orbit (drag with `orbit`), pan (drag with any of `pan`) and zoom (the wheel over the
+/// view) of a view's camera: the mouse of every 3D view.
+pub fn camera_input(
+    camera: &mut Camera,
+    ui: &egui::Ui,
+    resp: &egui::Response,
+    rect: egui::Rect,
+    orbit: egui::PointerButton,
+    pan: &[egui::PointerButton],
+) {
+    if resp.dragged_by(orbit) {
+        let d = resp.drag_delta();
+        camera.orbit(-d.x * 0.01, d.y * 0.01);
+    }
+    if pan.iter().any(|b| resp.dragged_by(*b)) {
+        let d = resp.drag_delta();
+        camera.pan(d.x / rect.height(), d.y / rect.height());
+    }
+    if resp.hovered() {
+        let scroll = ui.input(|i| i.smooth_scroll_delta.y);
+        if scroll != 0.0 {
+            camera.zoom((-scroll * 0.002).exp());
+        }
+    }
+}
+
+/// The renderer's background colour under a view (what shows without a GPU too).
+pub fn paint_background(ui: &egui::Ui, rect: egui::Rect) {
+    let bg = prism_viewport::renderer::BACKGROUND;
+    let srgb = |x: f64| (255.0 * x.powf(1.0 / 2.2)) as u8;
+    ui.painter().rect_filled(
+        rect,
+        0.0,
+        egui::Color32::from_rgb(srgb(bg.r), srgb(bg.g), srgb(bg.b)),
+    );
+}

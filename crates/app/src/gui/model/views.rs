@@ -8,7 +8,7 @@ use super::{ModelTab, Tool, VertexDrag};
 use crate::gui::command::{Command, Edit};
 use crate::gui::document::DocState;
 use crate::gui::viewport;
-use glam::{DVec3, Vec3};
+use glam::DVec3;
 use std::collections::BTreeSet;
 
 /// Rectangles of `n` views in `area` (side by side for two, 2×2 for four).
@@ -96,13 +96,7 @@ impl ModelTab {
                 );
             }
             self.view_input(ui, i, rect, doc);
-            let bg = prism_viewport::renderer::BACKGROUND;
-            let srgb = |x: f64| (255.0 * x.powf(1.0 / 2.2)) as u8;
-            ui.painter().rect_filled(
-                rect,
-                0.0,
-                egui::Color32::from_rgb(srgb(bg.r), srgb(bg.g), srgb(bg.b)),
-            );
+            viewport::paint_background(ui, rect);
             let v = &self.views[i];
             if self.has_gpu {
                 ui.painter().add(egui_wgpu::Callback::new_paint_callback(
@@ -162,20 +156,14 @@ impl ModelTab {
                 [egui::PointerButton::Middle, egui::PointerButton::Middle],
             ),
         };
-        if resp.dragged_by(orbit_button) {
-            let d = resp.drag_delta();
-            self.camera.orbit(-d.x * 0.01, d.y * 0.01);
-        }
-        if pan_buttons.iter().any(|b| resp.dragged_by(*b)) {
-            let d = resp.drag_delta();
-            self.camera.pan(d.x / rect.height(), d.y / rect.height());
-        }
-        if resp.hovered() {
-            let scroll = ui.input(|inp| inp.smooth_scroll_delta.y);
-            if scroll != 0.0 {
-                self.camera.zoom((-scroll * 0.002).exp());
-            }
-        }
+        viewport::camera_input(
+            &mut self.camera,
+            ui,
+            &resp,
+            rect,
+            orbit_button,
+            &pan_buttons,
+        );
         if self.tool == Tool::Orbit {
             return;
         }
@@ -231,13 +219,10 @@ impl ModelTab {
     /// A screen drag as a movement in the model: in the view plane, or along the held axis.
     pub fn drag_vector(&self, delta: egui::Vec2, rect: egui::Rect) -> DVec3 {
         let c = &self.camera;
-        let fwd = (c.target - c.eye()).normalize();
-        let right = fwd.cross(Vec3::Z).normalize_or(Vec3::X);
-        let up = right.cross(fwd);
-        let scale = 2.0 * c.distance * (0.5 * c.fov_y).tan() / rect.height().max(1.0);
-        let d = (scale * (delta.x * right - delta.y * up)).as_dvec3();
         match self.axis {
             Some(a) => {
+                let (right, up) = c.view_axes();
+                let scale = c.visible_height() / rect.height().max(1.0);
                 let mut axis = DVec3::ZERO;
                 axis[a] = 1.0;
                 // The screen motion along the axis' own screen direction.
@@ -249,7 +234,9 @@ impl ModelTab {
                 let along = (delta.x as f64 * s.0 - delta.y as f64 * s.1) / len2;
                 axis * along * scale as f64
             }
-            None => d,
+            None => c
+                .drag_in_view_plane(delta.x, delta.y, rect.height())
+                .as_dvec3(),
         }
     }
 

@@ -88,7 +88,7 @@ pub struct SkinTab {
     gestures: u64,
     gesture: Gesture,
     /// The gesture a field drag belongs to, while it lasts.
-    active: Option<u64>,
+    active: Option<(egui::Id, u64)>,
     out: Vec<Command>,
 }
 
@@ -179,17 +179,47 @@ impl SkinTab {
             .push(Command::Edit(Edit::SetSkin { spec, gesture }));
     }
 
-    /// The gesture id of a number field being dragged (a new one when the drag starts).
-    fn gesture_of(&mut self, r: &egui::Response) -> Option<u64> {
-        if r.drag_started() || (r.changed() && self.active.is_none()) {
-            self.gestures += 1;
-            self.active = Some(self.gestures);
+    /// A number field that acts by difference (turn, tilt, scale): returns its value before
+    /// and after this frame's change and the change's gesture; when let go it falls back to
+    /// `rest`.
+    fn delta_field(
+        &mut self,
+        ui: &mut egui::Ui,
+        value: &mut f64,
+        rest: f64,
+        prefix: &str,
+        range: Option<std::ops::RangeInclusive<f64>>,
+    ) -> Option<(f64, f64, Option<u64>)> {
+        let before = *value;
+        let mut field = egui::DragValue::new(value).speed(0.5).prefix(prefix);
+        if let Some(range) = range {
+            field = field.range(range);
         }
-        let id = self.active;
-        if r.drag_stopped() || (!r.dragged() && !r.has_focus()) {
+        let r = ui.add(field);
+        let g = self.gesture_of(&r);
+        let out = r.changed().then_some((before, *value, g));
+        if !r.dragged() && !r.has_focus() {
+            *value = rest;
+        }
+        out
+    }
+
+    /// The gesture id of a number field being dragged (a new one when the drag starts).
+    /// Keyed by the field, so that the fields drawn after the dragged one in the same frame do
+    /// not end its gesture.
+    fn gesture_of(&mut self, r: &egui::Response) -> Option<u64> {
+        let mine = self.active.filter(|(id, _)| *id == r.id).map(|(_, g)| g);
+        let gesture = if r.drag_started() || (r.changed() && mine.is_none()) {
+            self.gestures += 1;
+            self.active = Some((r.id, self.gestures));
+            Some(self.gestures)
+        } else {
+            mine
+        };
+        if gesture.is_some() && (r.drag_stopped() || (!r.dragged() && !r.has_focus())) {
             self.active = None;
         }
-        id
+        gesture
     }
 
     pub fn ui(&mut self, ui: &mut egui::Ui, spec: Option<&SkinSpec>) -> Vec<Command> {
@@ -431,75 +461,42 @@ impl SkinTab {
             }
             self.set(Some(s.clone()), g);
         }
-        // Turn, tilt and scale act by difference from where the drag started.
+        // Turn, tilt and scale act by difference: each frame's change of the field is applied
+        // to the section as it is, and the field falls back to its rest value when let go.
         let mut gst = self.gesture;
         let mut act: Option<(DQuat, f64, Option<u64>)> = None;
+        let turn = |axis: DVec3, before: f64, after: f64| {
+            (
+                DQuat::from_axis_angle(axis, (after - before).to_radians()),
+                1.0,
+            )
+        };
         ui.horizontal(|ui| {
             ui.label("turn in plane °");
-            let before = gst.turn;
-            let r = ui.add(egui::DragValue::new(&mut gst.turn).speed(0.5));
-            let g = self.gesture_of(&r);
-            if r.changed() {
-                act = Some((
-                    DQuat::from_axis_angle(normal, (gst.turn - before).to_radians()),
-                    1.0,
-                    g,
-                ));
-            }
-            if !r.dragged() && !r.has_focus() {
-                gst.turn = 0.0;
+            if let Some((b, a, g)) = self.delta_field(ui, &mut gst.turn, 0.0, "", None) {
+                let (q, f) = turn(normal, b, a);
+                act = Some((q, f, g));
             }
         });
         ui.horizontal(|ui| {
             ui.label("tilt °");
-            let (bx, by) = (gst.tilt_x, gst.tilt_y);
-            let r1 = ui.add(
-                egui::DragValue::new(&mut gst.tilt_x)
-                    .speed(0.5)
-                    .prefix("about x: "),
-            );
-            let g1 = self.gesture_of(&r1);
-            if r1.changed() {
-                act = Some((
-                    DQuat::from_axis_angle(x, (gst.tilt_x - bx).to_radians()),
-                    1.0,
-                    g1,
-                ));
+            if let Some((b, a, g)) = self.delta_field(ui, &mut gst.tilt_x, 0.0, "about x: ", None) {
+                let (q, f) = turn(x, b, a);
+                act = Some((q, f, g));
             }
-            let r2 = ui.add(
-                egui::DragValue::new(&mut gst.tilt_y)
-                    .speed(0.5)
-                    .prefix("about y: "),
-            );
-            let g2 = self.gesture_of(&r2);
-            if r2.changed() {
-                act = Some((
-                    DQuat::from_axis_angle(y, (gst.tilt_y - by).to_radians()),
-                    1.0,
-                    g2,
-                ));
-            }
-            if !r1.dragged() && !r1.has_focus() {
-                gst.tilt_x = 0.0;
-            }
-            if !r2.dragged() && !r2.has_focus() {
-                gst.tilt_y = 0.0;
+            if let Some((b, a, g)) = self.delta_field(ui, &mut gst.tilt_y, 0.0, "about y: ", None) {
+                let (q, f) = turn(y, b, a);
+                act = Some((q, f, g));
             }
         });
         ui.horizontal(|ui| {
             ui.label("scale %");
-            let before = gst.scale;
-            let r = ui.add(
-                egui::DragValue::new(&mut gst.scale)
-                    .speed(0.5)
-                    .range(1.0..=1000.0),
-            );
-            let g = self.gesture_of(&r);
-            if r.changed() && before > 0.0 {
-                act = Some((DQuat::IDENTITY, gst.scale / before, g));
-            }
-            if !r.dragged() && !r.has_focus() {
-                gst.scale = 100.0;
+            if let Some((b, a, g)) =
+                self.delta_field(ui, &mut gst.scale, 100.0, "", Some(1.0..=1000.0))
+                && b > 0.0
+                && a > 0.0
+            {
+                act = Some((DQuat::IDENTITY, a / b, g));
             }
         });
         self.gesture = gst;
@@ -586,12 +583,10 @@ impl SkinTab {
             let (centre, normal, _, _) = frame(&d.start);
             let points: Vec<DVec3> = match self.mouse {
                 Mouse::Move => {
-                    let c = &self.camera;
-                    let fwd = (c.target - c.eye()).normalize();
-                    let right = fwd.cross(glam::Vec3::Z).normalize_or(glam::Vec3::X);
-                    let up = right.cross(fwd);
-                    let scale = 2.0 * c.distance * (0.5 * c.fov_y).tan() / rect.height().max(1.0);
-                    let by = (scale * (total.x * right - total.y * up)).as_dvec3();
+                    let by = self
+                        .camera
+                        .drag_in_view_plane(total.x, total.y, rect.height())
+                        .as_dvec3();
                     d.start.iter().map(|p| *p + by).collect()
                 }
                 Mouse::Turn => {
@@ -631,39 +626,24 @@ impl SkinTab {
             ui.scope_id().with("skin_view"),
             egui::Sense::click_and_drag(),
         );
-        let orbit = if self.mouse == Mouse::Orbit {
-            egui::PointerButton::Primary
+        let (orbit, pan) = if self.mouse == Mouse::Orbit {
+            (
+                egui::PointerButton::Primary,
+                [egui::PointerButton::Secondary, egui::PointerButton::Middle],
+            )
         } else {
-            egui::PointerButton::Secondary
+            (
+                egui::PointerButton::Secondary,
+                [egui::PointerButton::Middle, egui::PointerButton::Middle],
+            )
         };
-        if resp.dragged_by(orbit) {
-            let d = resp.drag_delta();
-            self.camera.orbit(-d.x * 0.01, d.y * 0.01);
-        }
+        viewport::camera_input(&mut self.camera, ui, &resp, rect, orbit, &pan);
         if self.mouse != Mouse::Orbit
             && let Some(spec) = spec
         {
             self.section_drag(ui, &resp, rect, spec);
         }
-        if (self.mouse == Mouse::Orbit && resp.dragged_by(egui::PointerButton::Secondary))
-            || resp.dragged_by(egui::PointerButton::Middle)
-        {
-            let d = resp.drag_delta();
-            self.camera.pan(d.x / rect.height(), d.y / rect.height());
-        }
-        if resp.hovered() {
-            let scroll = ui.input(|i| i.smooth_scroll_delta.y);
-            if scroll != 0.0 {
-                self.camera.zoom((-scroll * 0.002).exp());
-            }
-        }
-        let bg = prism_viewport::renderer::BACKGROUND;
-        let srgb = |x: f64| (255.0 * x.powf(1.0 / 2.2)) as u8;
-        ui.painter().rect_filled(
-            rect,
-            0.0,
-            egui::Color32::from_rgb(srgb(bg.r), srgb(bg.g), srgb(bg.b)),
-        );
+        viewport::paint_background(ui, rect);
         if self.has_gpu {
             ui.painter().add(egui_wgpu::Callback::new_paint_callback(
                 rect,
