@@ -41,6 +41,14 @@ fn spout() -> Vec<SectionInput> {
         .collect()
 }
 
+/// The sections of bundled asset `assets/NAME.skin.json`.
+fn asset(name: &str) -> Vec<SectionInput> {
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../assets");
+    let text = std::fs::read_to_string(dir.join(format!("{name}.skin.json"))).unwrap();
+    let v: serde_json::Value = serde_json::from_str(&text).unwrap();
+    serde_json::from_value(v["sections"].clone()).unwrap()
+}
+
 fn nearest(p: DVec3, m: &PolyMesh) -> f64 {
     m.positions
         .iter()
@@ -271,11 +279,8 @@ fn dihedrals(s: &prism_geom::freeform::Skin, k: usize) -> (f64, f64) {
 /// or a crease would keep them), on the spout and on the wing with its sharp trailing edge.
 #[test]
 fn dihedral_angles_fall_with_the_resolution() {
-    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../assets");
     for name in ["spout", "wing", "wing-pitched"] {
-        let text = std::fs::read_to_string(dir.join(format!("{name}.skin.json"))).unwrap();
-        let v: serde_json::Value = serde_json::from_str(&text).unwrap();
-        let sections: Vec<SectionInput> = serde_json::from_value(v["sections"].clone()).unwrap();
+        let sections = asset(name);
         let s = skin(&sections).unwrap();
         let (b8, i8) = dihedrals(&s, 8);
         let (b16, i16) = dihedrals(&s, 16);
@@ -372,11 +377,8 @@ fn segment_crosses(p: DVec3, q: DVec3, t: [DVec3; 3]) -> bool {
 /// from their centroid): the surfaces do not fold through themselves.
 #[test]
 fn the_bundled_skins_do_not_intersect_themselves() {
-    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../assets");
     for name in ["spout", "wing", "wing-pitched"] {
-        let text = std::fs::read_to_string(dir.join(format!("{name}.skin.json"))).unwrap();
-        let v: serde_json::Value = serde_json::from_str(&text).unwrap();
-        let sections: Vec<SectionInput> = serde_json::from_value(v["sections"].clone()).unwrap();
+        let sections = asset(name);
         let mesh = skin(&sections).unwrap().tessellate(4, true).unwrap();
         let mut pos = mesh.positions.clone();
         let mut tris: Vec<[usize; 3]> = Vec::new();
@@ -525,10 +527,7 @@ fn section_curves_lie_in_their_planes_and_on_the_surface() {
 /// angle does not fall with K as it does across smooth borders: it tends to the crease angle.
 #[test]
 fn across_a_crease_the_dihedral_keeps_the_crease_angle() {
-    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../assets");
-    let text = std::fs::read_to_string(dir.join("wing.skin.json")).unwrap();
-    let v: serde_json::Value = serde_json::from_str(&text).unwrap();
-    let sections: Vec<SectionInput> = serde_json::from_value(v["sections"].clone()).unwrap();
+    let sections = asset("wing");
     let s = skin(&sections).unwrap();
     assert_eq!(s.creases(), 1);
     let crease_dihedral = |k: usize| {

@@ -25,8 +25,8 @@ fn sections(h: &Harness<'_, PrismApp>) -> usize {
         .map_or(0, |s| s.sections.len())
 }
 
-#[test]
-fn the_skin_tab_places_edits_undoes_saves_and_exports_a_skin() {
+/// The app at 1280 × 800 on the Skin tab, with the spout placed from the tab's button.
+fn spout_in_the_skin_tab() -> Harness<'static, PrismApp> {
     let mut h = Harness::builder()
         .with_size(egui::vec2(1280.0, 800.0))
         .build_ui_state(|ui, app: &mut PrismApp| app.frame_ui(ui), app());
@@ -37,6 +37,34 @@ fn the_skin_tab_places_edits_undoes_saves_and_exports_a_skin() {
     h.get_by_label("Spout (6 sections)").click();
     settle(&mut h);
     assert_eq!(sections(&h), 6);
+    h
+}
+
+/// A primary-button drag from `at` to the right by `steps` (one frame each), then settled.
+fn drag_right(h: &mut Harness<'_, PrismApp>, at: egui::Pos2, steps: &[f32]) {
+    let button = |pos, pressed| egui::Event::PointerButton {
+        pos,
+        button: egui::PointerButton::Primary,
+        pressed,
+        modifiers: egui::Modifiers::NONE,
+    };
+    h.event(egui::Event::PointerMoved(at));
+    h.step();
+    h.event(button(at, true));
+    h.step();
+    let mut end = at;
+    for &x in steps {
+        end = at + egui::vec2(x, 0.0);
+        h.event(egui::Event::PointerMoved(end));
+        h.step();
+    }
+    h.event(button(end, false));
+    settle(h);
+}
+
+#[test]
+fn the_skin_tab_places_edits_undoes_saves_and_exports_a_skin() {
+    let mut h = spout_in_the_skin_tab();
     {
         let b = h.state().skin.built().expect("built");
         let (s, mesh) = b.result.as_ref().expect("a skin");
@@ -97,28 +125,7 @@ fn the_skin_tab_places_edits_undoes_saves_and_exports_a_skin() {
     // A drag in the view with the turn tool turns the selected section: one undo step.
     h.state_mut().skin.mouse = skin::Mouse::Turn;
     h.state_mut().skin.selected = 2;
-    let at = egui::pos2(800.0, 400.0);
-    let press = |down| egui::Event::PointerButton {
-        pos: at
-            + if down {
-                egui::Vec2::ZERO
-            } else {
-                egui::vec2(120.0, 0.0)
-            },
-        button: egui::PointerButton::Primary,
-        pressed: down,
-        modifiers: egui::Modifiers::NONE,
-    };
-    h.event(egui::Event::PointerMoved(at));
-    h.step();
-    h.event(press(true));
-    h.step();
-    for x in [30.0, 60.0, 90.0, 120.0] {
-        h.event(egui::Event::PointerMoved(at + egui::vec2(x, 0.0)));
-        h.step();
-    }
-    h.event(press(false));
-    settle(&mut h);
+    drag_right(&mut h, egui::pos2(800.0, 400.0), &[30.0, 60.0, 90.0, 120.0]);
     let turned = h.state().doc.state().skin.clone().unwrap();
     assert_ne!(turned.sections[2], before.sections[2]);
     assert_eq!(turned.sections[1], before.sections[1]);
@@ -179,36 +186,10 @@ fn bad_sections_show_their_message_and_keep_the_sections() {
 /// frame of the drag was an undo step of its own.
 #[test]
 fn dragging_a_section_number_is_one_undo_step() {
-    let mut h = Harness::builder()
-        .with_size(egui::vec2(1280.0, 800.0))
-        .build_ui_state(|ui, app: &mut PrismApp| app.frame_ui(ui), app());
-    settle(&mut h);
-    h.get_by_label("Skin").click();
-    settle(&mut h);
-    h.get_by_label("Spout (6 sections)").click();
-    settle(&mut h);
+    let mut h = spout_in_the_skin_tab();
     let before = h.state().doc.state().skin.clone().unwrap();
     let at = h.get_by_value("about x: 0.0").rect().center();
-    h.event(egui::Event::PointerMoved(at));
-    h.step();
-    h.event(egui::Event::PointerButton {
-        pos: at,
-        button: egui::PointerButton::Primary,
-        pressed: true,
-        modifiers: egui::Modifiers::NONE,
-    });
-    h.step();
-    for x in [10.0, 20.0, 30.0, 40.0] {
-        h.event(egui::Event::PointerMoved(at + egui::vec2(x, 0.0)));
-        h.step();
-    }
-    h.event(egui::Event::PointerButton {
-        pos: at + egui::vec2(40.0, 0.0),
-        button: egui::PointerButton::Primary,
-        pressed: false,
-        modifiers: egui::Modifiers::NONE,
-    });
-    settle(&mut h);
+    drag_right(&mut h, at, &[10.0, 20.0, 30.0, 40.0]);
     let tilted = h.state().doc.state().skin.clone().unwrap();
     assert_ne!(
         tilted.sections[0], before.sections[0],
