@@ -274,10 +274,11 @@ fn a_tilted_arm_top_beside_an_own_radius_does_not_fold() {
 }
 
 /// Catmull–Clark then combination (clamped, as the app runs it): it ended with 1,304 flipped
-/// and 9,343 degenerate faces and an empty view. Its faces are warped, and a few edge faces
-/// between two Doo–Sabin faces still come out against their parent's normal (at most 9 of
-/// 866–221,186 faces, docs/algorithms/cylindrical.md), but the solid stays where it was: inside
-/// the first level's box, its volume within 1 %, no face of no area.
+/// and 9,343 degenerate faces and an empty view, then (with the set-back and the fold guard)
+/// kept 6–9 flipped faces at levels 3–7 behind spiky vertex faces at the bottom's acute
+/// corners. With the star test of the fold guard no face is flipped or of no area through
+/// level 7, the solid stays inside the first level's box and loses volume only as rounding
+/// does (docs/algorithms/cylindrical.md, "Spiky vertex faces").
 #[test]
 fn catmull_clark_then_combination_stays_in_place() {
     let mut steps = prism_geom::scheme::parse_pipeline("catmull-clark").unwrap();
@@ -293,13 +294,10 @@ fn catmull_clark_then_combination_stays_in_place() {
     let v1 = p.levels()[1].report.as_ref().unwrap().volume;
     for (k, lv) in p.levels().iter().enumerate().skip(2) {
         let r = lv.report.as_ref().unwrap();
-        assert!(r.flipped.len() <= 9, "level {k}: {}", r.flipped.len());
+        assert!(r.flipped.is_empty(), "level {k}: {:?}", r.flipped);
         assert!(r.degenerate.is_empty(), "level {k}");
-        assert!(
-            (r.volume / v1 - 1.0).abs() < 0.01,
-            "level {k}: {}",
-            r.volume
-        );
+        let ratio = r.volume / v1;
+        assert!((0.93..=1.0).contains(&ratio), "level {k}: {}", r.volume);
         let (a, b) = lv.mesh.bbox();
         assert!(
             a.cmpge(lo - 1e-9).all() && b.cmple(hi + 1e-9).all(),

@@ -16,6 +16,10 @@
 //! faces stay in the neighbourhood for the rest of the run ([`super::CombinationState`]), as
 //! the paper's own marking would keep them. Where nothing folds — every solid the paper
 //! shows — nothing changes.
+//!
+//! A VERTEX-face of five or more corners must also be star-shaped about its vertex centroid
+//! (cylindrical.md, "Spiky vertex faces"): acute corners make it a spiked star that is not
+//! flipped but whose Doo–Sabin points, at the next step, fold the edge faces beside it.
 
 use super::doo_sabin;
 use crate::mesh::PolyMesh;
@@ -36,6 +40,21 @@ fn newell(pts: &[DVec3], cs: impl Iterator<Item = u32> + Clone) -> DVec3 {
         prev = cur;
     }
     0.5 * acc
+}
+
+/// Whether the polygon through `pts[c]` for the corners `cs` (Newell normal `n`) is
+/// star-shaped about its vertex centroid: no fan triangle from the centroid turns against `n`.
+fn star_shaped(pts: &[DVec3], cs: impl Iterator<Item = u32>, n: DVec3) -> bool {
+    let ring: Vec<DVec3> = cs.map(|c| pts[c as usize]).collect();
+    if ring.len() < 5 {
+        return true;
+    }
+    let o = ring.iter().sum::<DVec3>() / ring.len() as f64;
+    let tol = 1e-9 * n.length_squared();
+    (0..ring.len()).all(|i| {
+        let b = ring[(i + 1) % ring.len()];
+        (ring[i] - o).cross(b - o).dot(n) >= -tol
+    })
 }
 
 /// Moves to Doo–Sabin the faces of `mesh` whose cut points would fold a new face, rewriting
@@ -114,7 +133,7 @@ pub(crate) fn unfold(
                 continue;
             }
             let n = newell(pts, ring.clone());
-            if n.dot(vsum[v]) < 0.0 {
+            if n.dot(vsum[v]) < 0.0 || !star_shaped(pts, ring.clone(), n) {
                 for c in ring {
                     mark(
                         topo.corner_face[c as usize] as usize,
@@ -137,4 +156,39 @@ pub(crate) fn unfold(
     }
     moved.sort_unstable();
     moved
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The hexagon Catmull–Clark's tripod gave the first combination step (level 2, around
+    /// the bottom's vertex 44, projected on z = 0): two spikes 0.48 long. It is not flipped
+    /// but not star-shaped; a regular hexagon is.
+    #[test]
+    fn a_spiked_vertex_face_is_not_star_shaped() {
+        let spiked: Vec<DVec3> = [
+            (1.31921, 1.31921),
+            (1.27115, 1.35581),
+            (1.14227, 1.79732),
+            (1.33541, 1.33541),
+            (1.79732, 1.14227),
+            (1.35581, 1.27115),
+        ]
+        .iter()
+        .map(|&(x, y)| DVec3::new(x, y, 0.0))
+        .collect();
+        let cs = 0..6u32;
+        let n = newell(&spiked, cs.clone());
+        assert!(n.length() > 0.0);
+        assert!(!star_shaped(&spiked, cs.clone(), n));
+        let regular: Vec<DVec3> = (0..6)
+            .map(|k| {
+                let a = k as f64 * std::f64::consts::PI / 3.0;
+                DVec3::new(a.cos(), a.sin(), 0.0)
+            })
+            .collect();
+        let n = newell(&regular, cs.clone());
+        assert!(star_shaped(&regular, cs, n));
+    }
 }
