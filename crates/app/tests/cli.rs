@@ -831,6 +831,77 @@ fn skin_builds_the_bundled_sections_and_names_bad_ones() {
     assert_eq!(o.status.code(), Some(1));
 }
 
+/// `prism envelope` on the bundled scenes: the summary's counts, a closed mesh, the curve
+/// network as polylines, the scene kept in a .prism.json and read back; bad scenes exit 1
+/// naming the primitive, a bad resolution exits 2.
+#[test]
+fn envelope_builds_the_bundled_scenes_and_names_bad_ones() {
+    let (out, so, _) = succeeds_to("cube-env.obj", "envelope assets/cube.envelope.json -o {}");
+    assert!(
+        so.contains("primitives=1 regions=6 patches=6 removed=0 time_ms="),
+        "{so}"
+    );
+    assert!(
+        so.contains("largest normal jump across patch borders"),
+        "{so}"
+    );
+    let (doc, _) = prism_geom::io::load(&out).unwrap();
+    let topo = prism_geom::Topology::build(&doc.mesh).unwrap();
+    topo.require_closed(&doc.mesh).unwrap();
+    assert_eq!(doc.mesh.num_faces(), 6 * 64);
+    assert_finite(&out);
+    let curves = tmp("hex-curves.obj");
+    let out = tmp("hex.stl");
+    let (so, _) = succeeds(run_with(
+        "envelope assets/hexagonal-prism.envelope.json -o {} --curves {} --resolution 4",
+        &[&out, &curves],
+    ));
+    // 8 faces: 6 quads, 2 hexagons split into 6 quads each.
+    assert!(so.contains("regions=8 patches=18"), "{so}");
+    let polylines = std::fs::read_to_string(&curves).unwrap();
+    // 18 edges and 12 insertion curves, 33 points each.
+    assert_eq!(
+        polylines.lines().filter(|l| l.starts_with("l ")).count(),
+        30
+    );
+    assert_eq!(
+        polylines.lines().filter(|l| l.starts_with("v ")).count(),
+        30 * 33
+    );
+    // A .prism.json keeps the scene as its "envelope" block, and envelope reads it.
+    let (doc, _, _) = succeeds_to(
+        "cube.prism.json",
+        "envelope assets/cube.envelope.json -o {} --t 0.5",
+    );
+    let again = tmp("again-env.obj");
+    let (so, _) = succeeds(run_with("envelope {} -o {}", &[&doc, &again]));
+    assert!(so.contains("primitives=1 regions=6"), "{so}");
+    let (d, _) = prism_geom::io::load(&doc).unwrap();
+    assert_eq!(d.envelope.unwrap().t, 0.5);
+
+    let bad = tmp("bad-scene.json");
+    let cube = r#"{"vertices": [[-1,-1,-1],[1,-1,-1],[-1,1,-1],[1,1,-1],[-1,-1,1],[1,-1,1],[-1,1,1],[1,1,1.2]], "faces": [[0,2,3,1],[4,5,7,6],[0,1,5,4],[2,6,7,3],[0,4,6,2],[1,3,7,5]]}"#;
+    std::fs::write(&bad, format!(r#"{{"primitives": [{cube}]}}"#)).unwrap();
+    let o = run_with("envelope {} -o {}", &[&bad, &tmp("bad.obj")]);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(
+        text(&o).1.contains("primitive 0: vertex") && text(&o).1.contains("off the sphere"),
+        "{:?}",
+        text(&o)
+    );
+    let o = run("envelope assets/cube.envelope.json -o out.obj --t 0");
+    assert_eq!(o.status.code(), Some(1));
+    assert!(
+        text(&o).1.contains("t must be finite and > 0"),
+        "{:?}",
+        text(&o)
+    );
+    let o = run("envelope assets/cube.envelope.json -o out.obj --resolution 0");
+    assert_eq!(o.status.code(), Some(2));
+    let o = run("envelope assets/missing.envelope.json -o /tmp/x.obj");
+    assert_eq!(o.status.code(), Some(1));
+}
+
 /// Counts from the file or the command line that overflow are errors, never a panic: a tag
 /// announcing u64::MAX integers (it panicked the reader, exit 101), and --levels past what
 /// any machine holds (it asked for 16 GB before reading, or panicked with a capacity

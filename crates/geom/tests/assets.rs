@@ -24,9 +24,7 @@ fn bundled_assets_are_the_builders_and_are_closed() {
             mesh: mesh.clone(),
             edge_attrs: EdgeAttrs::new(),
             tags: Default::default(),
-            pipeline: None,
-            curve: None,
-            skin: None,
+            ..Default::default()
         };
         if std::env::var_os("PRISM_WRITE_ASSETS").is_some() {
             io::save(&path, &doc).unwrap();

@@ -3,6 +3,7 @@
 mod bench;
 mod curve;
 mod curve_plot;
+mod envelope;
 mod limit;
 mod new;
 mod render;
@@ -102,6 +103,9 @@ pub enum Command {
     /// Skin a smooth solid through planar cross-sections (seed 003): Gregory patches, G1
     /// across every inner border, tessellated K×K quads a patch, with planar caps.
     Skin(skin::SkinArgs),
+    /// Envelope convex primitives with a smooth surface (seed 004): curved edges of end
+    /// curvature 1/(t·r), Coons patches with variable twist, G1 across every border.
+    Envelope(envelope::EnvelopeArgs),
     /// List the subdivision schemes: name, family, parameter with its range and default,
     /// paper, equation and the docs page with the formula.
     Schemes,
@@ -202,6 +206,7 @@ pub fn run(cli: Cli) -> Result<(), CliError> {
         Some(Command::Curve(a)) => curve::run(a),
         Some(Command::New(a)) => new::run(a),
         Some(Command::Skin(a)) => skin::run(a),
+        Some(Command::Envelope(a)) => envelope::run(a),
         Some(Command::Schemes) => {
             print!("{}", prism_geom::scheme::table());
             Ok(())

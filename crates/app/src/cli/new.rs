@@ -103,9 +103,7 @@ pub fn run(a: NewArgs) -> Result<(), CliError> {
         mesh,
         edge_attrs: Default::default(),
         tags: Default::default(),
-        pipeline: None,
-        curve: None,
-        skin: None,
+        ..Document::default()
     };
     let c = prism_geom::analysis::counts(&doc.mesh);
     io::save(&a.output, &doc).map_err(CliError::input)?;

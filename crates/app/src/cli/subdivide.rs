@@ -459,9 +459,7 @@ pub fn run(a: SubdivideArgs) -> Result<(), CliError> {
         mesh: last.mesh.clone(),
         edge_attrs: last.edge_attrs.clone(),
         tags: last.tags.clone(),
-        pipeline: None,
-        curve: None,
-        skin: None,
+        ..Document::default()
     };
     let warnings = super::saving(&a.output, a.force, || io::save(&a.output, &out))?;
     for w in warnings {

@@ -13,6 +13,7 @@ use super::command::{CoalesceKey, Edit};
 use super::edits::apply_to;
 use prism_geom::curve::CurveSketch;
 use prism_geom::freeform::SkinSpec;
+use prism_geom::freeform::envelope::EnvelopeSpec;
 use prism_geom::io::{self, Document as FileDocument};
 use prism_geom::{EdgeAttrs, PolyMesh, Scheme, SubdivTags};
 use std::path::{Path, PathBuf};
@@ -29,6 +30,8 @@ pub struct DocState {
     pub curve: CurveSketch,
     /// The Skin tab's sections (none until a sample or a first section is placed).
     pub skin: Option<SkinSpec>,
+    /// The Envelope tab's scene (none until a primitive is added or a sample opened).
+    pub envelope: Option<EnvelopeSpec>,
 }
 
 impl DocState {
@@ -40,6 +43,7 @@ impl DocState {
             pipelines: vec![doc.pipeline.unwrap_or_default()],
             curve: doc.curve.unwrap_or_default(),
             skin: doc.skin,
+            envelope: doc.envelope,
         }
     }
 
@@ -53,6 +57,7 @@ impl DocState {
             pipeline: self.pipelines.first().filter(|p| !p.is_empty()).cloned(),
             curve: (self.curve != CurveSketch::default()).then(|| self.curve.clone()),
             skin: self.skin.clone(),
+            envelope: self.envelope.clone(),
         }
     }
 }

@@ -335,9 +335,7 @@ impl PrismApp {
                     mesh,
                     edge_attrs: Default::default(),
                     tags: Default::default(),
-                    pipelines: old.pipelines.clone(),
-                    curve: old.curve.clone(),
-                    skin: old.skin.clone(),
+                    ..old.clone()
                 };
                 let name = match solid {
                     prism_geom::solid::Solid::Box { .. } => "a new box",

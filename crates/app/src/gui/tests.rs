@@ -480,9 +480,7 @@ fn a_big_level_gets_its_scene_on_a_thread_and_the_old_one_stays_meanwhile() {
         mesh: prism_geom::primitives::torus(320, 320, 3.0, 1.0),
         edge_attrs: Default::default(),
         tags: Default::default(),
-        pipeline: None,
-        curve: None,
-        skin: None,
+        ..Default::default()
     };
     prism_geom::io::save(&path, &doc).unwrap();
     let mut a = opened(&path);

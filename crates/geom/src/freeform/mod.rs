@@ -1,10 +1,12 @@
 //! The free-form family: curves and patches evaluated exactly rather than refined — rational
 //! Bézier curves ([`bezier`]), C2 cubic splines ([`spline`]), bicubic Gregory patches
-//! ([`gregory`]) and skinning through cross-sections ([`skin`], seed 003); envelopes of
-//! primitives (seed 004) land beside them (docs/architecture.md, "Where the
-//! free-form family goes").
+//! ([`gregory`]), skinning through cross-sections ([`skin`], seed 003) and envelopes of
+//! primitives ([`envelope`], seed 004), whose G1 borders share [`g1`]
+//! (docs/architecture.md, "Where the free-form family goes").
 
 pub mod bezier;
+pub mod envelope;
+pub mod g1;
 pub mod gregory;
 pub mod skin;
 pub mod spline;

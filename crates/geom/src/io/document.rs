@@ -14,13 +14,17 @@
 //! ```
 //! The optional `"curve"` block is the Curves tab's sketch ([`CurveSketch`]), the optional
 //! `"skin"` block the Skin tab's sections ([`SkinSpec`]: `{"sections": [{"points": [[x, y, z],
-//! ...], "corners": [...], "polygon": false}, ...], "resolution": 8, "caps": true}`).
+//! ...], "corners": [...], "polygon": false}, ...], "resolution": 8, "caps": true}`), the
+//! optional `"envelope"` block the Envelope tab's scene ([`EnvelopeSpec`]: `{"t": 1.0,
+//! "primitives": [{"vertices": [[x, y, z], ...], "faces": [[i, ...], ...], "t": optional,
+//! "vertex_t": optional}], "resolution": 8}`).
 //! A face is a list of loops, the outer loop first; indices are 0-based.
 
 use super::{IoError, write_atomically};
 use crate::curve::CurveSketch;
 use crate::edge_attrs::{EdgeAttr, EdgeAttrs, EdgeKey};
 use crate::freeform::SkinSpec;
+use crate::freeform::envelope::EnvelopeSpec;
 use crate::mesh::PolyMesh;
 use crate::scheme::{Scheme, format_pipeline, parse_pipeline};
 use crate::tags::SubdivTags;
@@ -43,6 +47,8 @@ pub struct Document {
     pub curve: Option<CurveSketch>,
     /// The Skin tab's sections, when the document has them.
     pub skin: Option<SkinSpec>,
+    /// The Envelope tab's scene, when the document has one.
+    pub envelope: Option<EnvelopeSpec>,
 }
 
 #[derive(Serialize, Deserialize)]
@@ -68,6 +74,8 @@ struct FileV1 {
     curve: Option<CurveSketch>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     skin: Option<SkinSpec>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    envelope: Option<EnvelopeSpec>,
 }
 
 #[derive(Deserialize)]
@@ -129,6 +137,7 @@ pub fn document_from_str(path: &Path, text: &str) -> Result<Document, IoError> {
         pipeline,
         curve: f.curve,
         skin: f.skin,
+        envelope: f.envelope,
     })
 }
 
@@ -163,6 +172,7 @@ pub fn document_to_string(doc: &Document) -> String {
         pipeline: doc.pipeline.as_deref().map(format_pipeline),
         curve: doc.curve.clone(),
         skin: doc.skin.clone(),
+        envelope: doc.envelope.clone(),
     };
     // Compact: one vertex or face per line would be nicer to diff, but serde_json's pretty
     // printer puts every number on its own line; plain is smaller and as exact.
@@ -224,6 +234,13 @@ mod tests {
                 resolution: 5,
                 caps: false,
                 basis: crate::freeform::Basis::OneSided,
+            }),
+            envelope: Some(EnvelopeSpec {
+                t: 0.5,
+                primitives: vec![
+                    crate::freeform::envelope::Shape::Cube.placed(&Default::default()),
+                ],
+                resolution: 6,
             }),
         };
         let text = document_to_string(&doc);

@@ -108,9 +108,7 @@ fn load_unchecked(path: &Path, text: &str) -> Result<(Document, Option<Vec<usize
                     mesh: m.mesh,
                     edge_attrs: m.edge_attrs,
                     tags: m.tags,
-                    pipeline: None,
-                    curve: None,
-                    skin: None,
+                    ..Document::default()
                 },
                 Some(m.face_lines),
             ))

@@ -13,20 +13,10 @@
 //! take the basis construction, `a₁ = (2a₀ + a₃)/3`, `a₂ = (a₀ + 2a₃)/3`.
 
 use super::sections::Section;
+use crate::freeform::g1::fit;
 use crate::freeform::gregory::Gregory;
 use crate::freeform::spline::{self, Cubic};
 use glam::DVec3;
-
-/// Least-squares `a ≈ k g + h l` (g, l span the tangent plane).
-fn fit(a: DVec3, g: DVec3, l: DVec3) -> (f64, f64) {
-    let (gg, gl, ll) = (g.dot(g), g.dot(l), l.dot(l));
-    let (ag, al) = (a.dot(g), a.dot(l));
-    let det = gg * ll - gl * gl;
-    if det.abs() <= 1e-24 * gg * ll {
-        return (ag / gg, 0.0);
-    }
-    ((ag * ll - al * gl) / det, (al * gg - ag * gl) / det)
-}
 
 /// The two interior cross vectors of a border `c` whose cell has end legs `a0` (at c₀) and `a3`
 /// (at c₃) into the cell: linear (`basis = None`) or from the virtual basis `(g₀, g₃)`.

@@ -1,0 +1,122 @@
+//! Free-form surfaces that envelope primitives (seed 004, Ogasawara & Kobori; ALGORITHMS §6.3,
+//! §8, §9, §11; docs/algorithms/envelope.md).
+//!
+//! A primitive's straight edges become rational cubics with end curvature 1/(t·r)
+//! ([`edges`]); the network of curves ([`network`]) is filled with Coons patches with
+//! variable twist ([`coons`]), G1 across every border through the numbering-independent
+//! virtual basis, n-sided regions split into quads around an inserted point ([`patches`]);
+//! [`tessellate`] welds them into a closed outward mesh.
+//!
+//! This version builds the envelope of **one** primitive; the network between several
+//! (silhouettes, vertex pairs, fusion edges; §11.2–11.5) is the next increment, and a scene
+//! with more is refused with that said.
+
+pub mod coons;
+pub mod edges;
+pub mod network;
+pub mod patches;
+pub mod primitive;
+pub mod tessellate;
+
+pub use network::{CurveKind, Network};
+pub use patches::EnvelopePatch;
+pub use primitive::{Placement, Primitive, PrimitiveInput, Shape};
+
+use crate::mesh::PolyMesh;
+use serde::{Deserialize, Serialize};
+use thiserror::Error;
+
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum EnvelopeError {
+    #[error("the scene has no primitive")]
+    Empty,
+    #[error("primitive {index}: {why}")]
+    Primitive { index: usize, why: String },
+    #[error("t of {what} is {t}: t must be finite and > 0 (ρ = t·r)")]
+    BadT { what: String, t: f64 },
+    #[error(
+        "{count} primitives: this version builds the envelope of one primitive; the curve network between several (silhouettes, vertex pairs, fusion edges, seed 004 §5) is not built yet"
+    )]
+    Several { count: usize },
+    #[error("resolution {0} is out of range: 1 to 256")]
+    Resolution(usize),
+}
+
+/// A scene: the default t, the primitives and the tessellation's resolution.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct EnvelopeSpec {
+    #[serde(default = "one")]
+    pub t: f64,
+    pub primitives: Vec<PrimitiveInput>,
+    /// Quads along each side of a patch.
+    #[serde(default = "eight")]
+    pub resolution: usize,
+}
+
+fn one() -> f64 {
+    1.0
+}
+
+fn eight() -> usize {
+    8
+}
+
+/// The envelope: checked primitives, the curve network (with the insertion curves of the
+/// n-sided split) and the patches.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Envelope {
+    pub primitives: Vec<Primitive>,
+    pub network: Network,
+    /// Faces of the network before the n-sided split.
+    pub regions: usize,
+    pub patches: Vec<EnvelopePatch>,
+    /// Primitives swallowed by the others (indices in the scene).
+    pub removed: Vec<usize>,
+}
+
+/// Builds the envelope of a scene.
+pub fn envelope(spec: &EnvelopeSpec) -> Result<Envelope, EnvelopeError> {
+    if !(spec.t.is_finite() && spec.t > 0.0) {
+        return Err(EnvelopeError::BadT {
+            what: "the scene".into(),
+            t: spec.t,
+        });
+    }
+    let primitives = spec
+        .primitives
+        .iter()
+        .enumerate()
+        .map(|(i, p)| Primitive::new(i, p, spec.t))
+        .collect::<Result<Vec<_>, _>>()?;
+    match primitives.len() {
+        0 => return Err(EnvelopeError::Empty),
+        1 => {}
+        count => return Err(EnvelopeError::Several { count }),
+    }
+    let mut network = Network::of_primitive(&primitives[0], 0)?;
+    let regions = network.regions.len();
+    let patches = patches::build(&mut network, &primitives);
+    Ok(Envelope {
+        primitives,
+        network,
+        regions,
+        patches,
+        removed: Vec::new(),
+    })
+}
+
+impl Envelope {
+    /// The welded tessellation, `k` × `k` quads a patch.
+    pub fn tessellate(&self, k: usize) -> Result<PolyMesh, EnvelopeError> {
+        if k == 0 || k > 256 {
+            return Err(EnvelopeError::Resolution(k));
+        }
+        Ok(tessellate::tessellate(&self.network, &self.patches, k))
+    }
+
+    /// The largest angle in degrees between the two sides' normals along the patch borders
+    /// (analytic, 16 samples a side).
+    pub fn largest_border_jump(&self) -> f64 {
+        patches::largest_border_jump(&self.network, &self.patches, 16)
+    }
+}

@@ -1,0 +1,322 @@
+//! Patches over the envelope's network (seed 004 §6; ALGORITHMS §8.2–8.3, §9, §11.6–11.7;
+//! docs/algorithms/envelope.md).
+//!
+//! **G1.** Every border takes the virtual basis of its curve, `g(τ) = (1 − τ)g₀ + τg₁`, on
+//! both sides; each side's cross derivative is `X(s) = k(s)g(s) + h(s)C′(s)` with k, h linear
+//! and fitted at the corners to the neighbouring sides' legs. Both sides' X lie in
+//! span(g, C′): one tangent plane along the whole border, whatever the numbering. A side that
+//! is part of a curve takes the restriction of the curve's g (linear in τ is linear in s).
+//!
+//! **Four-sided regions** are one Coons patch with variable twist (§9). **Other regions** are
+//! split into n quads around an inserted point P_i (§11.7):
+//! 1. `P_d(k)` = boundary k at τ = ½, `b_k = X_k(½)/3`;
+//! 2. `P_i` = mean of `P_d(k) + (3/2)b_k`;
+//! 3. moved along G → P_i to the distance `max(ρ̄, d_face)` from the primitive's centre G (ρ̄ =
+//!    mean curvature radius t·r at the region's corners; d_face = distance to the face's plane
+//!    along that ray), so P_i never lies inside the primitive; where ρ̄ > r (t > 1), to where
+//!    virtual edges from the corners across the ray cross it (the paper's ρ̄ would put P_i at
+//!    t·r, far beyond edges that bulge a few per cent);
+//! 4. tangent plane at P_i normal to `P_i − G`, or the face normal when the clamp acted;
+//! 5. insertion curve k, with `λ_k = ((P_i − P_d)·n)/(b_k·n)`, `λ̂ = max(λ_k, ¼)` and Π the
+//!    projection onto that plane: `P_i, P_i + ⅔Π(P_d + λ̂b_k − P_i), P_d + ⅔λ̂b_k, P_d` — the
+//!    paper's elevated quadratic whenever λ_k ≥ ¼, and always leaving P_d into the region;
+//! 6. sub-quad k = insertion k, the second half of boundary k, the first half of boundary
+//!    k + 1, insertion k + 1 backwards. The insertion curve's basis is rule (a) at P_d (the
+//!    boundary runs on through P_d) and rule (b) at P_i.
+
+use super::coons::{Coons, Side};
+use super::edges::curved_edge;
+use super::network::{CurveKind, NetVertex, Network};
+use super::primitive::Primitive;
+use crate::freeform::bezier::RationalBezier;
+use glam::DVec3;
+
+/// λ₀ of §11.7 step 5: the least leg an insertion curve leaves P_d with, in units of b_k.
+const LAMBDA_MIN: f64 = 0.25;
+
+/// A patch side: curve `curve` from τ = t0 to τ = t1 (t0 > t1: backwards).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PatchSide {
+    pub curve: usize,
+    pub t0: f64,
+    pub t1: f64,
+}
+
+impl PatchSide {
+    fn whole((curve, forward): (usize, bool)) -> PatchSide {
+        let (t0, t1) = if forward { (0.0, 1.0) } else { (1.0, 0.0) };
+        PatchSide { curve, t0, t1 }
+    }
+
+    fn half(&self, second: bool) -> PatchSide {
+        let mid = 0.5 * (self.t0 + self.t1);
+        if second {
+            PatchSide { t0: mid, ..*self }
+        } else {
+            PatchSide { t1: mid, ..*self }
+        }
+    }
+
+    /// The curve parameter at side parameter s.
+    pub fn tau(&self, s: f64) -> f64 {
+        self.t0 + (self.t1 - self.t0) * s
+    }
+}
+
+/// One four-sided patch: its sides in the network and its Coons patch.
+#[derive(Debug, Clone, PartialEq)]
+pub struct EnvelopePatch {
+    pub sides: [PatchSide; 4],
+    pub coons: Coons,
+    /// The region it lies in.
+    pub region: usize,
+}
+
+/// The part of `c` from t0 to t1 (backwards when t0 > t1), parametrised on [0, 1].
+pub fn piece(c: &RationalBezier, t0: f64, t1: f64) -> RationalBezier {
+    let (lo, hi) = (t0.min(t1), t0.max(t1));
+    let right = if lo > 0.0 { c.split(lo).1 } else { c.clone() };
+    let mut p = if hi < 1.0 {
+        right.split((hi - lo) / (1.0 - lo)).0
+    } else {
+        right
+    };
+    if t0 > t1 {
+        p.points.reverse();
+        p.weights.reverse();
+    }
+    p
+}
+
+/// The curves of `sides` as pieces, and each side's fitted cross derivative.
+fn fitted_sides(net: &Network, sides: &[PatchSide]) -> Vec<Side> {
+    let curves: Vec<RationalBezier> = sides
+        .iter()
+        .map(|s| piece(&net.curves[s.curve].bezier, s.t0, s.t1))
+        .collect();
+    let n = sides.len();
+    (0..n)
+        .map(|k| {
+            let prev = &curves[(k + n - 1) % n];
+            let next = &curves[(k + 1) % n];
+            let a0 = -prev.derivatives(1.0).d1;
+            let a1 = next.derivatives(0.0).d1;
+            let c = &net.curves[sides[k].curve];
+            let g = (c.basis_at(sides[k].t0), c.basis_at(sides[k].t1));
+            Side::fitted(curves[k].clone(), g, a0, a1)
+        })
+        .collect()
+}
+
+fn patch(net: &Network, sides: [PatchSide; 4], region: usize) -> EnvelopePatch {
+    let fitted = fitted_sides(net, &sides);
+    EnvelopePatch {
+        sides,
+        coons: Coons {
+            sides: fitted.try_into().expect("four sides"),
+        },
+        region,
+    }
+}
+
+/// Where a virtual edge (§6.3, curvature parameter `t` at both ends) from corner `c` to its
+/// image under the half-turn about the ray G + λu crosses the ray: its distance from G. On
+/// the sphere for t = 1, the corner's projection on the ray as t → 0.
+fn virtual_crossing(g: DVec3, c: DVec3, u: DVec3, t: f64) -> f64 {
+    let v = c - g;
+    let axial = v.dot(u) * u;
+    let image = g + 2.0 * axial - v;
+    match curved_edge(g, c, image, t, t) {
+        Some(e) => e.eval(0.5).distance(g),
+        None => v.length(),
+    }
+}
+
+/// Adds the pin of network vertex `v` at τ on `curve`.
+fn pin(net: &mut Network, curve: usize, tau: f64, v: usize) {
+    let pins = &mut net.curves[curve].pins;
+    let at = pins.partition_point(|&(t, _)| t < tau);
+    pins.insert(at, (tau, v));
+}
+
+/// Splits region `r` (not four-sided) into quads around an inserted point (§11.7), adding the
+/// new vertices and insertion curves to `net`.
+fn split(net: &mut Network, r: usize, prims: &[Primitive]) -> Vec<EnvelopePatch> {
+    let region = net.regions[r].clone();
+    let sides: Vec<PatchSide> = region.sides.iter().map(|&s| PatchSide::whole(s)).collect();
+    let fitted = fitted_sides(net, &sides);
+    let n = sides.len();
+    let mut pd = Vec::with_capacity(n);
+    let mut b = Vec::with_capacity(n);
+    let mut tangent_d = Vec::with_capacity(n);
+    for s in &fitted {
+        let d = s.curve.derivatives(0.5);
+        let bk = s.cross(0.5).0 / 3.0;
+        pd.push(d.point);
+        b.push(bk);
+        tangent_d.push(d.d1);
+    }
+    let mean = (0..n).map(|k| pd[k] + 1.5 * b[k]).sum::<DVec3>() / n as f64;
+    let (pi_, normal) = {
+        let (pidx, f) = region.face;
+        let p = &prims[pidx];
+        let g = p.centre;
+        let u = (mean - g).normalize();
+        let corners = &p.faces[f];
+        let rho = corners
+            .iter()
+            .map(|&v| p.t[v] * p.vertices[v].distance(g))
+            .sum::<f64>()
+            / corners.len() as f64;
+        let nf = p.normals[f];
+        let d_face = nf.dot(p.vertices[corners[0]] - g) / nf.dot(u);
+        if rho > p.radius {
+            // t > 1: the paper's ρ̄ would put P_i at t·r, far beyond edges that bulge a few
+            // per cent; take where virtual edges cross the ray instead (envelope.md).
+            let d = corners
+                .iter()
+                .map(|&v| virtual_crossing(p.centre, p.vertices[v], u, p.t[v]))
+                .sum::<f64>()
+                / corners.len() as f64;
+            (g + d * u, u)
+        } else if rho < d_face {
+            (g + d_face * u, nf)
+        } else {
+            (g + rho * u, u)
+        }
+    };
+    let vi = net.vertices.len();
+    net.vertices.push(NetVertex {
+        position: pi_,
+        normal,
+    });
+    let mut ins = Vec::with_capacity(n);
+    for k in 0..n {
+        let nd = tangent_d[k].cross(b[k]).normalize();
+        // The region across may have split this curve already: share its P_d.
+        let tau = sides[k].tau(0.5);
+        let known = net.curves[sides[k].curve]
+            .pins
+            .iter()
+            .find(|&&(t, _)| (t - tau).abs() <= 1e-12)
+            .map(|&(_, v)| v);
+        let vd = match known {
+            Some(v) => v,
+            None => {
+                net.vertices.push(NetVertex {
+                    position: pd[k],
+                    normal: nd,
+                });
+                let v = net.vertices.len() - 1;
+                pin(net, sides[k].curve, tau, v);
+                v
+            }
+        };
+        let bn = b[k].dot(normal);
+        let lambda = if bn.abs() < 1e-12 * b[k].length() {
+            LAMBDA_MIN
+        } else {
+            ((pi_ - pd[k]).dot(normal) / bn).max(LAMBDA_MIN)
+        };
+        let proj = |x: DVec3| x - x.dot(normal) * normal;
+        let bez = RationalBezier::polynomial(vec![
+            pi_,
+            pi_ + 2.0 / 3.0 * proj(pd[k] + lambda * b[k] - pi_),
+            pd[k] + 2.0 / 3.0 * lambda * b[k],
+            pd[k],
+        ])
+        .expect("finite points");
+        let end = bez.derivatives(1.0).d1;
+        let c = net.add_curve(bez, vi, vd, CurveKind::Insertion);
+        // Rule (a) at P_d: the boundary runs on through it.
+        let along = tangent_d[k].normalize();
+        let g1 = if along.dot(nd.cross(end)) >= 0.0 {
+            along
+        } else {
+            -along
+        };
+        net.curves[c].basis.1 = g1;
+        ins.push(c);
+    }
+    (0..n)
+        .map(|k| {
+            let j = (k + 1) % n;
+            let quad = [
+                PatchSide {
+                    curve: ins[k],
+                    t0: 0.0,
+                    t1: 1.0,
+                },
+                sides[k].half(true),
+                sides[j].half(false),
+                PatchSide {
+                    curve: ins[j],
+                    t0: 1.0,
+                    t1: 0.0,
+                },
+            ];
+            patch(net, quad, r)
+        })
+        .collect()
+}
+
+/// The patches of every region of `net`, splitting those that are not four-sided.
+pub fn build(net: &mut Network, prims: &[Primitive]) -> Vec<EnvelopePatch> {
+    let mut out = Vec::new();
+    for r in 0..net.regions.len() {
+        let sides = &net.regions[r].sides;
+        if sides.len() == 4 {
+            let quad: Vec<PatchSide> = sides.iter().map(|&s| PatchSide::whole(s)).collect();
+            out.push(patch(net, quad.try_into().expect("four"), r));
+        } else {
+            out.extend(split(net, r, prims));
+        }
+    }
+    out
+}
+
+/// The largest angle (degrees) between the two sides' normals along every border, sampled at
+/// `samples` + 1 points per patch side: `C′ × X` on each side (analytic, outward).
+pub fn largest_border_jump(net: &Network, patches: &[EnvelopePatch], samples: usize) -> f64 {
+    // Per curve, the (side range, normal function) of every patch side on it.
+    let mut on: Vec<Vec<(usize, usize)>> = vec![Vec::new(); net.curves.len()];
+    for (p, patch) in patches.iter().enumerate() {
+        for (k, s) in patch.sides.iter().enumerate() {
+            on[s.curve].push((p, k));
+        }
+    }
+    let normal = |p: usize, k: usize, tau: f64| -> Option<DVec3> {
+        let s = &patches[p].sides[k];
+        let (lo, hi) = (s.t0.min(s.t1), s.t0.max(s.t1));
+        if tau < lo - 1e-12 || tau > hi + 1e-12 {
+            return None;
+        }
+        let sp = (tau - s.t0) / (s.t1 - s.t0);
+        let side = &patches[p].coons.sides[k];
+        let d = side.curve.derivatives(sp).d1;
+        Some(d.cross(side.cross(sp).0).normalize_or_zero())
+    };
+    let mut worst = 0.0f64;
+    for users in &on {
+        for &(p, k) in users {
+            let s = patches[p].sides[k];
+            for j in 0..=samples {
+                let tau = s.tau(j as f64 / samples as f64);
+                let n0 = normal(p, k, tau).unwrap_or(DVec3::ZERO);
+                for &(q, l) in users {
+                    if q == p {
+                        continue;
+                    }
+                    if let Some(n1) = normal(q, l, tau)
+                        && n0 != DVec3::ZERO
+                        && n1 != DVec3::ZERO
+                    {
+                        let angle = n0.cross(n1).length().atan2(n0.dot(n1));
+                        worst = worst.max(angle.to_degrees());
+                    }
+                }
+            }
+        }
+    }
+    worst
+}

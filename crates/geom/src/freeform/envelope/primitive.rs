@@ -1,0 +1,350 @@
+//! Primitives of an envelope (seed 004 §4; docs/algorithms/envelope.md): convex polyhedra whose
+//! vertices lie on a sphere around their centre, checked and oriented, with a curvature
+//! parameter t per vertex (ρ = t·r).
+//!
+//! The centre G is the circumcentre — the least-squares sphere through the vertices,
+//! `2P·G + c = |P|²` solved for (G, c), `r² = c + |G|²` — which equals the vertex centroid for
+//! the symmetric primitives the paper uses and is the only centre with every vertex at one
+//! distance in general (ALGORITHMS §6.3).
+
+use super::EnvelopeError;
+use glam::{DMat3, DVec3};
+use serde::{Deserialize, Serialize};
+
+/// Relative tolerance (of r) for "on the sphere", "planar face", "convex" and "centre inside".
+pub const TOLERANCE: f64 = 1e-6;
+
+/// A primitive as a scene file lists it.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct PrimitiveInput {
+    pub vertices: Vec<[f64; 3]>,
+    pub faces: Vec<Vec<usize>>,
+    /// The primitive's t (default: the scene's).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub t: Option<f64>,
+    /// Per-vertex t (default: the primitive's).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub vertex_t: Option<Vec<f64>>,
+}
+
+/// A checked primitive: faces counter-clockwise seen from outside.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Primitive {
+    pub centre: DVec3,
+    pub radius: f64,
+    pub vertices: Vec<DVec3>,
+    pub faces: Vec<Vec<usize>>,
+    /// Unit outward face normals.
+    pub normals: Vec<DVec3>,
+    /// t per vertex.
+    pub t: Vec<f64>,
+}
+
+fn check_t(t: f64, what: impl Fn() -> String) -> Result<f64, EnvelopeError> {
+    if t.is_finite() && t > 0.0 {
+        Ok(t)
+    } else {
+        Err(EnvelopeError::BadT { what: what(), t })
+    }
+}
+
+/// The least-squares sphere through `pts`: centre and radius.
+fn circumsphere(pts: &[DVec3]) -> Option<(DVec3, f64)> {
+    // Normal equations of rows (2x, 2y, 2z, 1) · (G, c) = |P|², centred for conditioning.
+    let o = pts.iter().sum::<DVec3>() / pts.len() as f64;
+    let mut a = [[0.0; 4]; 4];
+    let mut b = [0.0; 4];
+    for p in pts {
+        let q = *p - o;
+        let row = [2.0 * q.x, 2.0 * q.y, 2.0 * q.z, 1.0];
+        for i in 0..4 {
+            for j in 0..4 {
+                a[i][j] += row[i] * row[j];
+            }
+            b[i] += row[i] * q.length_squared();
+        }
+    }
+    let m = glam::DMat4::from_cols_array_2d(&a);
+    if m.determinant().abs() <= 1e-300 {
+        return None;
+    }
+    let x = m.inverse() * glam::DVec4::from_array(b);
+    let g = x.truncate();
+    let r2 = x.w + g.length_squared();
+    (r2 > 0.0).then(|| (g + o, r2.sqrt()))
+}
+
+impl Primitive {
+    /// Checks primitive `index` of a scene whose default t is `scene_t`: at least four
+    /// vertices, finite, distinct, on one sphere; a closed surface of planar convex faces
+    /// with the centre strictly inside; every t finite and > 0. Faces are turned to face
+    /// outwards.
+    pub fn new(index: usize, p: &PrimitiveInput, scene_t: f64) -> Result<Primitive, EnvelopeError> {
+        let bad = |why: String| EnvelopeError::Primitive { index, why };
+        let n = p.vertices.len();
+        if n < 4 || p.faces.len() < 4 {
+            return Err(bad(format!(
+                "{n} vertices and {} faces: a solid needs at least 4 of each",
+                p.faces.len()
+            )));
+        }
+        let vertices: Vec<DVec3> = p.vertices.iter().map(|v| DVec3::from_array(*v)).collect();
+        if let Some(i) = vertices.iter().position(|v| !v.is_finite()) {
+            return Err(bad(format!("vertex {i} is not a finite point")));
+        }
+        let t0 = check_t(p.t.unwrap_or(scene_t), || format!("primitive {index}"))?;
+        let t = match &p.vertex_t {
+            None => vec![t0; n],
+            Some(vt) if vt.len() != n => {
+                return Err(bad(format!(
+                    "{} vertex_t values for {n} vertices",
+                    vt.len()
+                )));
+            }
+            Some(vt) => vt
+                .iter()
+                .enumerate()
+                .map(|(i, &t)| check_t(t, || format!("vertex {i} of primitive {index}")))
+                .collect::<Result<_, _>>()?,
+        };
+        let (centre, radius) =
+            circumsphere(&vertices).ok_or_else(|| bad("its vertices span no sphere".into()))?;
+        let tol = TOLERANCE * radius;
+        for (i, v) in vertices.iter().enumerate() {
+            let off = (v.distance(centre) - radius).abs();
+            if off > tol {
+                return Err(bad(format!(
+                    "vertex {i} is {off:.3e} off the sphere through the vertices (centre {centre:.4}, r = {radius:.4}; tolerance {TOLERANCE:e} r)"
+                )));
+            }
+            if let Some(j) = vertices[..i].iter().position(|w| w.distance(*v) <= tol) {
+                return Err(bad(format!("vertices {j} and {i} coincide")));
+            }
+        }
+        // Closed and consistently oriented: every directed edge once, its reverse once.
+        let mut directed = std::collections::HashMap::new();
+        for (f, face) in p.faces.iter().enumerate() {
+            if face.len() < 3 {
+                return Err(bad(format!("face {f} has {} vertices", face.len())));
+            }
+            if let Some(&v) = face.iter().find(|&&v| v >= n) {
+                return Err(bad(format!("face {f} names vertex {v}; there are {n}")));
+            }
+            for k in 0..face.len() {
+                let e = (face[k], face[(k + 1) % face.len()]);
+                if directed.insert(e, f).is_some() {
+                    return Err(bad(format!(
+                        "edge {}-{} is used twice in one direction (faces not consistently oriented, or more than two faces at the edge)",
+                        e.0, e.1
+                    )));
+                }
+            }
+        }
+        if let Some((&(a, b), &f)) = directed
+            .iter()
+            .find(|(e, _)| !directed.contains_key(&(e.1, e.0)))
+        {
+            return Err(bad(format!(
+                "edge {a}-{b} of face {f} has no second face: not closed"
+            )));
+        }
+        let newell = |face: &[usize]| {
+            (0..face.len())
+                .map(|k| vertices[face[k]].cross(vertices[face[(k + 1) % face.len()]]))
+                .sum::<DVec3>()
+        };
+        let outward = p.faces.iter().map(|f| {
+            let c = f.iter().map(|&v| vertices[v]).sum::<DVec3>() / f.len() as f64;
+            newell(f).dot(c - centre)
+        });
+        let sum: f64 = outward.sum();
+        let faces: Vec<Vec<usize>> = if sum >= 0.0 {
+            p.faces.clone()
+        } else {
+            p.faces
+                .iter()
+                .map(|f| f.iter().rev().copied().collect())
+                .collect()
+        };
+        let mut normals = Vec::with_capacity(faces.len());
+        for (f, face) in faces.iter().enumerate() {
+            let nf = newell(face).normalize_or_zero();
+            if nf == DVec3::ZERO {
+                return Err(bad(format!("face {f} has no area")));
+            }
+            let d = nf.dot(vertices[face[0]]);
+            if let Some(&v) = face
+                .iter()
+                .find(|&&v| (nf.dot(vertices[v]) - d).abs() > tol)
+            {
+                return Err(bad(format!(
+                    "face {f} is not planar: vertex {v} is {:.3e} off its plane (tolerance {TOLERANCE:e} r)",
+                    (nf.dot(vertices[v]) - d).abs()
+                )));
+            }
+            if let Some(v) = (0..n).find(|&v| nf.dot(vertices[v]) - d > tol) {
+                return Err(bad(format!(
+                    "not convex: vertex {v} lies {:.3e} outside the plane of face {f}",
+                    nf.dot(vertices[v]) - d
+                )));
+            }
+            if d - nf.dot(centre) <= tol {
+                return Err(bad(format!(
+                    "its centre {centre:.4} is not inside it (on or beyond the plane of face {f})"
+                )));
+            }
+            normals.push(nf);
+        }
+        Ok(Primitive {
+            centre,
+            radius,
+            vertices,
+            faces,
+            normals,
+            t,
+        })
+    }
+}
+
+/// The shapes of the primitive library, each inscribed in its sphere of radius 1 about the
+/// origin before placement.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case", tag = "shape")]
+pub enum Shape {
+    Cube,
+    /// Half-extents a, b, c (scaled to the unit sphere).
+    Box {
+        a: f64,
+        b: f64,
+        c: f64,
+    },
+    Tetrahedron,
+    Octahedron,
+    /// Regular triangular prism whose height is `height` × the base's circumradius.
+    TriangularPrism {
+        height: f64,
+    },
+    /// Regular hexagonal prism whose height is `height` × the base's circumradius.
+    HexagonalPrism {
+        height: f64,
+    },
+}
+
+/// Where a library shape goes: centre, uniform scale (the sphere's radius) and rotation
+/// (degrees about x, then y, then z).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct Placement {
+    pub centre: [f64; 3],
+    pub scale: f64,
+    #[serde(default)]
+    pub rotation: [f64; 3],
+}
+
+impl Default for Placement {
+    fn default() -> Self {
+        Placement {
+            centre: [0.0; 3],
+            scale: 1.0,
+            rotation: [0.0; 3],
+        }
+    }
+}
+
+fn prism(n: usize, height: f64) -> (Vec<DVec3>, Vec<Vec<usize>>) {
+    let h = 0.5 * height;
+    let mut v = Vec::with_capacity(2 * n);
+    for z in [-h, h] {
+        for k in 0..n {
+            let a = std::f64::consts::TAU * k as f64 / n as f64;
+            v.push(DVec3::new(a.cos(), a.sin(), z));
+        }
+    }
+    let mut f = vec![(0..n).rev().collect::<Vec<_>>(), (n..2 * n).collect()];
+    for k in 0..n {
+        let j = (k + 1) % n;
+        f.push(vec![k, j, n + j, n + k]);
+    }
+    (v, f)
+}
+
+impl Shape {
+    /// Vertices (on the unit sphere) and outward counter-clockwise faces.
+    pub fn unit(&self) -> (Vec<DVec3>, Vec<Vec<usize>>) {
+        let (v, f) = match *self {
+            Shape::Cube => Shape::Box {
+                a: 1.0,
+                b: 1.0,
+                c: 1.0,
+            }
+            .unit(),
+            Shape::Box { a, b, c } => {
+                let v = (0..8)
+                    .map(|i| {
+                        let s = |bit: usize| if i >> bit & 1 == 1 { 1.0 } else { -1.0 };
+                        DVec3::new(s(0) * a, s(1) * b, s(2) * c)
+                    })
+                    .collect();
+                let f = vec![
+                    vec![0, 2, 3, 1],
+                    vec![4, 5, 7, 6],
+                    vec![0, 1, 5, 4],
+                    vec![2, 6, 7, 3],
+                    vec![0, 4, 6, 2],
+                    vec![1, 3, 7, 5],
+                ];
+                (v, f)
+            }
+            Shape::Tetrahedron => (
+                vec![
+                    DVec3::new(1.0, 1.0, 1.0),
+                    DVec3::new(1.0, -1.0, -1.0),
+                    DVec3::new(-1.0, 1.0, -1.0),
+                    DVec3::new(-1.0, -1.0, 1.0),
+                ],
+                vec![vec![0, 1, 2], vec![0, 3, 1], vec![0, 2, 3], vec![1, 3, 2]],
+            ),
+            Shape::Octahedron => (
+                vec![
+                    DVec3::X,
+                    -DVec3::X,
+                    DVec3::Y,
+                    -DVec3::Y,
+                    DVec3::Z,
+                    -DVec3::Z,
+                ],
+                vec![
+                    vec![0, 2, 4],
+                    vec![2, 1, 4],
+                    vec![1, 3, 4],
+                    vec![3, 0, 4],
+                    vec![2, 0, 5],
+                    vec![1, 2, 5],
+                    vec![3, 1, 5],
+                    vec![0, 3, 5],
+                ],
+            ),
+            Shape::TriangularPrism { height } => prism(3, height),
+            Shape::HexagonalPrism { height } => prism(6, height),
+        };
+        let v = v.iter().map(|p| p.normalize()).collect();
+        (v, f)
+    }
+
+    /// The shape placed, as a scene lists a primitive.
+    pub fn placed(&self, at: &Placement) -> PrimitiveInput {
+        let (v, f) = self.unit();
+        let [rx, ry, rz] = at.rotation.map(f64::to_radians);
+        let rot =
+            DMat3::from_rotation_z(rz) * DMat3::from_rotation_y(ry) * DMat3::from_rotation_x(rx);
+        let c = DVec3::from_array(at.centre);
+        PrimitiveInput {
+            vertices: v
+                .iter()
+                .map(|p| (c + rot * (*p * at.scale)).to_array())
+                .collect(),
+            faces: f,
+            t: None,
+            vertex_t: None,
+        }
+    }
+}

@@ -1,0 +1,135 @@
+//! The envelope's welded tessellation (ALGORITHMS §7.4, §11.7 step 6;
+//! docs/algorithms/envelope.md): K × K quads a patch, conforming where an unsplit region
+//! meets split halves.
+//!
+//! The mesh vertices along a network curve are the union of the K + 1 uniform samples of
+//! every patch side on it (parameters equal to 1e-12 merged), evaluated once on the curve
+//! itself; network vertices are shared by every curve through them. Each patch keeps its own
+//! K + 1 samples as its grid's border row and puts the other side's extra samples into its
+//! border cells, which become polygons: every mesh edge is in exactly two faces, so the mesh
+//! is closed with no T-junction crack.
+
+use super::network::Network;
+use super::patches::EnvelopePatch;
+use crate::mesh::PolyMesh;
+use glam::DVec3;
+
+const SAME: f64 = 1e-12;
+
+/// Per curve, its mesh vertices by parameter, ascending.
+struct CurveSamples {
+    params: Vec<Vec<(f64, u32)>>,
+}
+
+impl CurveSamples {
+    fn id(&self, curve: usize, tau: f64) -> u32 {
+        let p = &self.params[curve];
+        let i = p.partition_point(|&(t, _)| t < tau - SAME);
+        debug_assert!(i < p.len() && (p[i].0 - tau).abs() <= SAME);
+        p[i.min(p.len() - 1)].1
+    }
+
+    /// The vertices strictly between τ = a and τ = b, in order from a to b.
+    fn between(&self, curve: usize, a: f64, b: f64) -> Vec<u32> {
+        let (lo, hi) = (a.min(b), a.max(b));
+        let mut v: Vec<u32> = self.params[curve]
+            .iter()
+            .filter(|&&(t, _)| t > lo + SAME && t < hi - SAME)
+            .map(|&(_, id)| id)
+            .collect();
+        if a > b {
+            v.reverse();
+        }
+        v
+    }
+}
+
+/// The tessellation of `patches` over `net` with `k` quads along each side of a patch.
+pub fn tessellate(net: &Network, patches: &[EnvelopePatch], k: usize) -> PolyMesh {
+    let kf = k as f64;
+    let mut positions: Vec<DVec3> = net.vertices.iter().map(|v| v.position).collect();
+    let mut wanted: Vec<Vec<f64>> = vec![Vec::new(); net.curves.len()];
+    for p in patches {
+        for s in &p.sides {
+            wanted[s.curve].extend((0..=k).map(|j| s.tau(j as f64 / kf)));
+        }
+    }
+    let mut params = Vec::with_capacity(net.curves.len());
+    for (c, mut w) in wanted.into_iter().enumerate() {
+        let curve = &net.curves[c];
+        w.extend(curve.pins.iter().map(|&(t, _)| t));
+        w.sort_by(f64::total_cmp);
+        w.dedup_by(|a, b| (*a - *b).abs() <= SAME);
+        let list: Vec<(f64, u32)> = w
+            .into_iter()
+            .map(|t| {
+                let id = match curve.pins.iter().find(|&&(pt, _)| (pt - t).abs() <= SAME) {
+                    Some(&(_, v)) => v as u32,
+                    None => {
+                        positions.push(curve.bezier.eval(t));
+                        (positions.len() - 1) as u32
+                    }
+                };
+                (t, id)
+            })
+            .collect();
+        params.push(list);
+    }
+    let samples = CurveSamples { params };
+    let mut faces: Vec<Vec<u32>> = Vec::with_capacity(patches.len() * k * k);
+    for p in patches {
+        let n = k + 1;
+        let mut grid = vec![0u32; n * n];
+        let at = |i: usize, j: usize| i + n * j;
+        for i in 0..n {
+            for j in 0..n {
+                let side_s = if j == 0 {
+                    Some((0, i as f64 / kf))
+                } else if i == k {
+                    Some((1, j as f64 / kf))
+                } else if j == k {
+                    Some((2, (k - i) as f64 / kf))
+                } else if i == 0 {
+                    Some((3, (k - j) as f64 / kf))
+                } else {
+                    None
+                };
+                grid[at(i, j)] = match side_s {
+                    Some((side, s)) => {
+                        let ps = &p.sides[side];
+                        samples.id(ps.curve, ps.tau(s))
+                    }
+                    None => {
+                        positions.push(p.coons.eval(i as f64 / kf, j as f64 / kf));
+                        (positions.len() - 1) as u32
+                    }
+                };
+            }
+        }
+        for j in 0..k {
+            for i in 0..k {
+                let corners = [(i, j), (i + 1, j), (i + 1, j + 1), (i, j + 1)];
+                // The border each cell edge lies on, with its side parameters from → to.
+                let on_border = |e: usize| -> Option<(usize, f64, f64)> {
+                    match e {
+                        0 if j == 0 => Some((0, i as f64 / kf, (i + 1) as f64 / kf)),
+                        1 if i + 1 == k => Some((1, j as f64 / kf, (j + 1) as f64 / kf)),
+                        2 if j + 1 == k => Some((2, (k - i - 1) as f64 / kf, (k - i) as f64 / kf)),
+                        3 if i == 0 => Some((3, (k - j - 1) as f64 / kf, (k - j) as f64 / kf)),
+                        _ => None,
+                    }
+                };
+                let mut poly = Vec::with_capacity(4);
+                for (e, &(ci, cj)) in corners.iter().enumerate() {
+                    poly.push(grid[at(ci, cj)]);
+                    if let Some((side, a, b)) = on_border(e) {
+                        let ps = &p.sides[side];
+                        poly.extend(samples.between(ps.curve, ps.tau(a), ps.tau(b)));
+                    }
+                }
+                faces.push(poly);
+            }
+        }
+    }
+    PolyMesh::from_polygons(positions, &faces)
+}
