@@ -140,3 +140,35 @@ fn the_skin_tab_draws_the_skin_and_its_sections() {
         "only {yellow} yellow pixels: no section curves"
     );
 }
+
+/// The Envelope tab on a document with an envelope block (the hexagonal prism, written by
+/// `prism envelope`): the shaded envelope fills the view, the yellow curved edges and the
+/// blue insertion curves of the split caps are drawn over it.
+#[test]
+fn the_envelope_tab_draws_the_envelope_and_its_curves() {
+    let doc = std::env::temp_dir().join(format!("prism-gui-{}-hex.prism.json", std::process::id()));
+    let o = Command::new(env!("CARGO_BIN_EXE_prism"))
+        .args([
+            "envelope",
+            "assets/hexagonal-prism.envelope.json",
+            "-o",
+            doc.to_str().unwrap(),
+        ])
+        .current_dir(Path::new(env!("CARGO_MANIFEST_DIR")).join("../.."))
+        .output()
+        .unwrap();
+    assert!(o.status.success());
+    let img = screenshot("envelope", &[doc.to_str().unwrap(), "--tab", "envelope"]);
+    let n = shades(&img, 500..1100, 250..600);
+    assert!(n > 20, "only {n} shades in the view");
+    let count = |f: &dyn Fn([u8; 4]) -> bool| {
+        (310..1270)
+            .flat_map(|x| (40..780).map(move |y| (x, y)))
+            .filter(|&(x, y)| f(img.get_pixel(x, y).0))
+            .count()
+    };
+    let yellow = count(&|p| p[0] > 200 && p[1] > 170 && p[2] < 100);
+    let blue = count(&|p| p[0] < 120 && p[1] > 150 && p[2] > 200);
+    assert!(yellow > 300, "only {yellow} yellow pixels: no curved edges");
+    assert!(blue > 100, "only {blue} blue pixels: no insertion curves");
+}

@@ -10,6 +10,7 @@ use super::document::{DocState, Origin};
 use glam::{DVec2, DVec3};
 use prism_geom::curve::{CurveScheme, Polyline};
 use prism_geom::freeform::SkinSpec;
+use prism_geom::freeform::envelope::EnvelopeSpec;
 use prism_geom::{EdgeKey, Scheme};
 use std::path::PathBuf;
 
@@ -81,6 +82,12 @@ pub enum Edit {
         spec: Option<SkinSpec>,
         gesture: Option<u64>,
     },
+    /// The Envelope tab's scene as it is after a change (a primitive, a move, t); edits of
+    /// one gesture coalesce.
+    SetEnvelope {
+        spec: Option<EnvelopeSpec>,
+        gesture: Option<u64>,
+    },
     /// A whole new document with its name and save target (File ▸ Open, a sample,
     /// drag-and-drop); undoable.
     Replace {
@@ -126,6 +133,7 @@ pub enum CoalesceKey {
     VertexDrag(u64),
     CurveDrag(u64),
     SkinGesture(u64),
+    EnvelopeGesture(u64),
     Step { view: usize, index: usize },
 }
 
@@ -138,6 +146,9 @@ impl Edit {
             Edit::SetSkin {
                 gesture: Some(g), ..
             } => Some(CoalesceKey::SkinGesture(*g)),
+            Edit::SetEnvelope {
+                gesture: Some(g), ..
+            } => Some(CoalesceKey::EnvelopeGesture(*g)),
             Edit::SetStep { view, index, .. } => Some(CoalesceKey::Step {
                 view: *view,
                 index: *index,
@@ -167,6 +178,8 @@ pub enum Command {
     OpenSample(usize),
     /// Puts bundled skin sample k into the Skin tab (undoable) and shows the tab.
     OpenSkinSample(usize),
+    /// Puts bundled envelope scene k into the Envelope tab (undoable) and shows the tab.
+    OpenEnvelopeSample(usize),
     /// Asks where, then opens.
     OpenDialog,
     /// Saves to the document's file, or asks where (`as_new`: always asks).

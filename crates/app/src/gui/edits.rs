@@ -132,6 +132,17 @@ pub(super) fn apply_to(d: &mut DocState, origin: &mut Origin, edit: Edit) -> Res
             }
             d.skin = spec;
         }
+        Edit::SetEnvelope { spec, .. } => {
+            if let Some(s) = &spec
+                && !(1..=256).contains(&s.resolution)
+            {
+                return Err(format!(
+                    "resolution {} is out of range: 1 to 256 quads a patch side",
+                    s.resolution
+                ));
+            }
+            d.envelope = spec;
+        }
         Edit::Replace { state, origin: o } => {
             *d = *state;
             *origin = o;

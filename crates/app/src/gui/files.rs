@@ -56,9 +56,29 @@ impl PrismApp {
 
     /// Exports the level shown in the active view (OBJ with its creases, STL, glTF).
     pub fn export_to(&mut self, path: &Path) -> Result<(), String> {
-        if self.tab == super::Tab::Skin {
-            let Some(Ok((_, mesh))) = self.skin.built().map(|b| &b.result) else {
-                return Err("there is no skin to export (see the Skin tab's message)".into());
+        if matches!(self.tab, super::Tab::Skin | super::Tab::Envelope) {
+            let (what, mesh) = if self.tab == super::Tab::Skin {
+                (
+                    "skin",
+                    self.skin
+                        .built()
+                        .and_then(|b| b.result.as_ref().ok())
+                        .map(|r| &r.1),
+                )
+            } else {
+                (
+                    "envelope",
+                    self.envelope
+                        .built()
+                        .and_then(|b| b.result.as_ref().ok())
+                        .map(|r| &r.1),
+                )
+            };
+            let Some(mesh) = mesh else {
+                return Err(format!(
+                    "there is no {what} to export (see the {} tab's message)",
+                    if what == "skin" { "Skin" } else { "Envelope" }
+                ));
             };
             if io::ExportFormat::of(path).is_some() {
                 io::export(path, mesh, &|_| false).map_err(|e| e.to_string())?;
@@ -66,7 +86,7 @@ impl PrismApp {
                 io::write_obj(path, mesh, &Default::default(), &Default::default())
                     .map_err(|e| e.to_string())?;
             }
-            self.say(format!("exported the skin to {}", path.display()));
+            self.say(format!("exported the {what} to {}", path.display()));
             return Ok(());
         }
         let (k, lv) = self.model.shown_level();
@@ -134,6 +154,8 @@ impl PrismApp {
             .add_filter(ext, &[ext])
             .set_file_name(if self.tab == super::Tab::Skin {
                 format!("skin.{ext}")
+            } else if self.tab == super::Tab::Envelope {
+                format!("envelope.{ext}")
             } else {
                 format!("level.{ext}")
             })

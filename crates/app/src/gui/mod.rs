@@ -17,7 +17,9 @@ pub mod command;
 mod curves;
 pub mod document;
 mod edits;
+pub(crate) mod envelope;
 mod files;
+mod gestures;
 pub mod model;
 mod new_solid;
 pub(crate) mod skin;
@@ -25,6 +27,8 @@ mod viewport;
 
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod tests_envelope;
 #[cfg(test)]
 mod tests_new_solid;
 #[cfg(test)]
@@ -56,13 +60,14 @@ pub enum Show {
     Limit,
 }
 
-/// The app's two tabs.
+/// The app's tabs.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, clap::ValueEnum)]
 pub enum Tab {
     #[default]
     Model,
     Curves,
     Skin,
+    Envelope,
 }
 
 /// How the app was started.
@@ -147,6 +152,7 @@ pub struct PrismApp {
     pub model: ModelTab,
     pub curves: curves::CurvesTab,
     pub skin: skin::SkinTab,
+    pub envelope: envelope::EnvelopeTab,
     /// A message for the status bar (what the last action did, or why it did nothing);
     /// cleared by the next change of the document.
     pub note: Option<String>,
@@ -206,6 +212,7 @@ impl PrismApp {
             model,
             curves: curves::CurvesTab::default(),
             skin: skin::SkinTab::default(),
+            envelope: envelope::EnvelopeTab::default(),
             new_solid: Default::default(),
             note: None,
             note_at: 0,
@@ -232,6 +239,7 @@ impl PrismApp {
         let mut app = PrismApp::headless(launch, settings)?;
         app.model.has_gpu = true;
         app.skin.has_gpu = true;
+        app.envelope.has_gpu = true;
         let ctx = cc.egui_ctx.clone();
         app.model.waker = Arc::new(move || ctx.request_repaint());
         Ok(app)
@@ -284,6 +292,21 @@ impl PrismApp {
                         gesture: None,
                     }));
                     self.say(format!("skin sample: {}", skin::SKIN_SAMPLES[k].0));
+                }
+                Err(e) => self.say(e),
+            },
+            Command::OpenEnvelopeSample(k) => match envelope::sample(k) {
+                Ok(spec) => {
+                    self.tab = Tab::Envelope;
+                    self.envelope.reframe();
+                    self.run(Command::Edit(command::Edit::SetEnvelope {
+                        spec: Some(spec),
+                        gesture: None,
+                    }));
+                    self.say(format!(
+                        "envelope sample: {}",
+                        envelope::ENVELOPE_SAMPLES[k].0
+                    ));
                 }
                 Err(e) => self.say(e),
             },
@@ -434,6 +457,13 @@ impl PrismApp {
                             out.push(Command::OpenSkinSample(k));
                         }
                     }
+                    ui.separator();
+                    ui.label("Envelopes (the Envelope tab)");
+                    for (k, (name, _, _)) in envelope::ENVELOPE_SAMPLES.iter().enumerate() {
+                        if ui.button(*name).clicked() {
+                            out.push(Command::OpenEnvelopeSample(k));
+                        }
+                    }
                 });
                 ui.separator();
                 if ui.button("Save (Ctrl+S)").clicked() {
@@ -464,6 +494,7 @@ impl PrismApp {
             ui.selectable_value(&mut self.tab, Tab::Model, "Model");
             ui.selectable_value(&mut self.tab, Tab::Curves, "Curves");
             ui.selectable_value(&mut self.tab, Tab::Skin, "Skin");
+            ui.selectable_value(&mut self.tab, Tab::Envelope, "Envelope");
         });
         out
     }
@@ -506,6 +537,10 @@ impl PrismApp {
             Tab::Skin => {
                 let spec = self.doc.state().skin.as_ref();
                 commands.extend(self.skin.ui(ui, spec));
+            }
+            Tab::Envelope => {
+                let spec = self.doc.state().envelope.as_ref();
+                commands.extend(self.envelope.ui(ui, spec));
             }
             Tab::Curves => {
                 let sketch = &self.doc.state().curve;

@@ -6,6 +6,7 @@
 use super::command::{CurveEdit, EdgeMark, Edit};
 use super::model::pick::{self, Projector};
 use super::*;
+use egui_kittest::Harness;
 use prism_geom::scheme::parse_pipeline;
 
 pub(super) fn app() -> PrismApp {
@@ -508,4 +509,34 @@ fn a_big_level_gets_its_scene_on_a_thread_and_the_old_one_stays_meanwhile() {
         prism_viewport::Shading::Smooth
     );
     std::fs::remove_file(&path).ok();
+}
+
+/// A few frames with the background work finished between them (the harness tests).
+pub(super) fn settle(h: &mut Harness<'_, PrismApp>) {
+    for _ in 0..3 {
+        h.step();
+        h.state_mut().wait_idle();
+    }
+}
+
+/// A primary-button drag from `at` to the right by `steps` (one frame each), then settled.
+pub(super) fn drag_right(h: &mut Harness<'_, PrismApp>, at: egui::Pos2, steps: &[f32]) {
+    let button = |pos, pressed| egui::Event::PointerButton {
+        pos,
+        button: egui::PointerButton::Primary,
+        pressed,
+        modifiers: egui::Modifiers::NONE,
+    };
+    h.event(egui::Event::PointerMoved(at));
+    h.step();
+    h.event(button(at, true));
+    h.step();
+    let mut end = at;
+    for &x in steps {
+        end = at + egui::vec2(x, 0.0);
+        h.event(egui::Event::PointerMoved(end));
+        h.step();
+    }
+    h.event(button(end, false));
+    settle(h);
 }

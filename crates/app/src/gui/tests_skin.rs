@@ -4,17 +4,10 @@
 //! with the document and reopened, and exported.
 
 use super::command::Edit;
-use super::tests::app;
+use super::tests::{app, drag_right, settle};
 use super::*;
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
-
-fn settle(h: &mut Harness<'_, PrismApp>) {
-    for _ in 0..3 {
-        h.step();
-        h.state_mut().wait_idle();
-    }
-}
 
 fn sections(h: &Harness<'_, PrismApp>) -> usize {
     h.state()
@@ -38,28 +31,6 @@ fn spout_in_the_skin_tab() -> Harness<'static, PrismApp> {
     settle(&mut h);
     assert_eq!(sections(&h), 6);
     h
-}
-
-/// A primary-button drag from `at` to the right by `steps` (one frame each), then settled.
-fn drag_right(h: &mut Harness<'_, PrismApp>, at: egui::Pos2, steps: &[f32]) {
-    let button = |pos, pressed| egui::Event::PointerButton {
-        pos,
-        button: egui::PointerButton::Primary,
-        pressed,
-        modifiers: egui::Modifiers::NONE,
-    };
-    h.event(egui::Event::PointerMoved(at));
-    h.step();
-    h.event(button(at, true));
-    h.step();
-    let mut end = at;
-    for &x in steps {
-        end = at + egui::vec2(x, 0.0);
-        h.event(egui::Event::PointerMoved(end));
-        h.step();
-    }
-    h.event(button(end, false));
-    settle(h);
 }
 
 #[test]

@@ -7,6 +7,7 @@
 mod build;
 
 use super::command::{Command, Edit};
+use super::gestures::Gestures;
 use super::viewport;
 use build::{Built, Overlays};
 use glam::{DQuat, DVec3};
@@ -85,10 +86,8 @@ pub struct SkinTab {
     overlay: Arc<Scene>,
     version: u64,
     shown: Option<(usize, Overlays)>,
-    gestures: u64,
+    gestures: Gestures,
     gesture: Gesture,
-    /// The gesture a field drag belongs to, while it lasts.
-    active: Option<(egui::Id, u64)>,
     out: Vec<Command>,
 }
 
@@ -107,12 +106,11 @@ impl Default for SkinTab {
             overlay: Arc::new(Scene::default()),
             version: 0,
             shown: None,
-            gestures: 0,
+            gestures: Gestures::default(),
             gesture: Gesture {
                 scale: 100.0,
                 ..Gesture::default()
             },
-            active: None,
             out: Vec::new(),
         }
     }
@@ -177,49 +175,6 @@ impl SkinTab {
     fn set(&mut self, spec: Option<SkinSpec>, gesture: Option<u64>) {
         self.out
             .push(Command::Edit(Edit::SetSkin { spec, gesture }));
-    }
-
-    /// A number field that acts by difference (turn, tilt, scale): returns its value before
-    /// and after this frame's change and the change's gesture; when let go it falls back to
-    /// `rest`.
-    fn delta_field(
-        &mut self,
-        ui: &mut egui::Ui,
-        value: &mut f64,
-        rest: f64,
-        prefix: &str,
-        range: Option<std::ops::RangeInclusive<f64>>,
-    ) -> Option<(f64, f64, Option<u64>)> {
-        let before = *value;
-        let mut field = egui::DragValue::new(value).speed(0.5).prefix(prefix);
-        if let Some(range) = range {
-            field = field.range(range);
-        }
-        let r = ui.add(field);
-        let g = self.gesture_of(&r);
-        let out = r.changed().then_some((before, *value, g));
-        if !r.dragged() && !r.has_focus() {
-            *value = rest;
-        }
-        out
-    }
-
-    /// The gesture id of a number field being dragged (a new one when the drag starts).
-    /// Keyed by the field, so that the fields drawn after the dragged one in the same frame do
-    /// not end its gesture.
-    fn gesture_of(&mut self, r: &egui::Response) -> Option<u64> {
-        let mine = self.active.filter(|(id, _)| *id == r.id).map(|(_, g)| g);
-        let gesture = if r.drag_started() || (r.changed() && mine.is_none()) {
-            self.gestures += 1;
-            self.active = Some((r.id, self.gestures));
-            Some(self.gestures)
-        } else {
-            mine
-        };
-        if gesture.is_some() && (r.drag_stopped() || (!r.dragged() && !r.has_focus())) {
-            self.active = None;
-        }
-        gesture
     }
 
     pub fn ui(&mut self, ui: &mut egui::Ui, spec: Option<&SkinSpec>) -> Vec<Command> {
@@ -355,7 +310,7 @@ impl SkinTab {
         ui.label("Surface");
         let mut res = spec.resolution;
         let r = ui.add(egui::Slider::new(&mut res, 1..=32).text("quads a patch side"));
-        let g = self.gesture_of(&r);
+        let g = self.gestures.of(&r);
         if res != spec.resolution {
             let mut s = spec.clone();
             s.resolution = res;
@@ -448,7 +403,7 @@ impl SkinTab {
                         .speed(0.01)
                         .max_decimals(4),
                 );
-                let g = self.gesture_of(&r);
+                let g = self.gestures.of(&r);
                 if r.changed() {
                     changed = Some(g);
                 }
@@ -473,18 +428,24 @@ impl SkinTab {
         };
         ui.horizontal(|ui| {
             ui.label("turn in plane °");
-            if let Some((b, a, g)) = self.delta_field(ui, &mut gst.turn, 0.0, "", None) {
+            if let Some((b, a, g)) = self.gestures.delta_field(ui, &mut gst.turn, 0.0, "", None) {
                 let (q, f) = turn(normal, b, a);
                 act = Some((q, f, g));
             }
         });
         ui.horizontal(|ui| {
             ui.label("tilt °");
-            if let Some((b, a, g)) = self.delta_field(ui, &mut gst.tilt_x, 0.0, "about x: ", None) {
+            if let Some((b, a, g)) =
+                self.gestures
+                    .delta_field(ui, &mut gst.tilt_x, 0.0, "about x: ", None)
+            {
                 let (q, f) = turn(x, b, a);
                 act = Some((q, f, g));
             }
-            if let Some((b, a, g)) = self.delta_field(ui, &mut gst.tilt_y, 0.0, "about y: ", None) {
+            if let Some((b, a, g)) =
+                self.gestures
+                    .delta_field(ui, &mut gst.tilt_y, 0.0, "about y: ", None)
+            {
                 let (q, f) = turn(y, b, a);
                 act = Some((q, f, g));
             }
@@ -492,7 +453,8 @@ impl SkinTab {
         ui.horizontal(|ui| {
             ui.label("scale %");
             if let Some((b, a, g)) =
-                self.delta_field(ui, &mut gst.scale, 100.0, "", Some(1.0..=1000.0))
+                self.gestures
+                    .delta_field(ui, &mut gst.scale, 100.0, "", Some(1.0..=1000.0))
                 && b > 0.0
                 && a > 0.0
             {
@@ -530,9 +492,9 @@ impl SkinTab {
                     ui.horizontal(|ui| {
                         ui.label(format!("{i}"));
                         let r1 = ui.add(egui::DragValue::new(&mut u).speed(0.005).max_decimals(4));
-                        let g1 = self.gesture_of(&r1);
+                        let g1 = self.gestures.of(&r1);
                         let r2 = ui.add(egui::DragValue::new(&mut v).speed(0.005).max_decimals(4));
-                        let g2 = self.gesture_of(&r2);
+                        let g2 = self.gestures.of(&r2);
                         let c = ui.checkbox(&mut corner, "corner");
                         if r1.changed() || r2.changed() || c.changed() {
                             let g = if r1.changed() { g1 } else { g2 };
@@ -566,9 +528,8 @@ impl SkinTab {
     ) {
         let k = self.selected;
         if resp.drag_started_by(egui::PointerButton::Primary) && k < spec.sections.len() {
-            self.gestures += 1;
             self.drag = Some(SectionDrag {
-                gesture: self.gestures,
+                gesture: self.gestures.start(),
                 section: k,
                 start: spec.sections[k].points.clone(),
             });

@@ -1,0 +1,186 @@
+//! The Envelope tab's surface, rebuilt from the document's scene when it changes (one
+//! primitive builds in well under a millisecond, so a drag or the t slider rebuilds it every
+//! frame), with the scene and the overlays drawn from it: the primitive, the curve network
+//! (primitive edges and insertion curves in their own colours), the picked vertex.
+
+use glam::DVec3;
+use prism_geom::freeform::envelope::{CurveKind, Envelope, EnvelopeSpec, envelope};
+use prism_geom::{EdgeAttrs, PolyMesh};
+use prism_viewport::{ColorBy, Scene, SceneOptions, Shading};
+use std::sync::Arc;
+use std::time::Instant;
+
+/// What the view shows.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Overlays {
+    pub primitives: bool,
+    pub edges: bool,
+    pub insertions: bool,
+    pub surface: bool,
+    pub wireframe: bool,
+    pub smooth: bool,
+    /// Mean-curvature colours.
+    pub curvature: bool,
+}
+
+impl Default for Overlays {
+    fn default() -> Self {
+        Overlays {
+            primitives: true,
+            edges: true,
+            insertions: true,
+            surface: true,
+            wireframe: false,
+            smooth: true,
+            curvature: false,
+        }
+    }
+}
+
+pub const PRIMITIVE: [f32; 3] = [0.75, 0.75, 0.8];
+pub const EDGE: [f32; 3] = [1.0, 0.85, 0.2];
+pub const INSERTION: [f32; 3] = [0.3, 0.8, 1.0];
+pub const PICKED: [f32; 3] = [1.0, 0.35, 0.2];
+
+/// One build of the envelope.
+pub struct Built {
+    pub spec: EnvelopeSpec,
+    pub result: Result<(Envelope, PolyMesh), String>,
+    /// Network and patches, milliseconds (no tessellation).
+    pub millis: f64,
+    /// Largest analytic normal jump across patch borders, degrees.
+    pub jump: f64,
+}
+
+impl Built {
+    pub fn new(spec: &EnvelopeSpec) -> Built {
+        let start = Instant::now();
+        let e = envelope(spec);
+        let millis = start.elapsed().as_secs_f64() * 1e3;
+        let result = e.map_err(|e| e.to_string()).and_then(|e| {
+            let m = e.tessellate(spec.resolution).map_err(|e| e.to_string())?;
+            Ok((e, m))
+        });
+        let jump = match &result {
+            Ok((e, _)) => e.largest_border_jump(),
+            Err(_) => 0.0,
+        };
+        Built {
+            spec: spec.clone(),
+            result,
+            millis,
+            jump,
+        }
+    }
+}
+
+fn primitive_edges(spec: &EnvelopeSpec) -> Vec<(DVec3, DVec3)> {
+    let mut out = Vec::new();
+    for p in &spec.primitives {
+        let v = |i: usize| p.vertices.get(i).map(|x| DVec3::from_array(*x));
+        for f in &p.faces {
+            for k in 0..f.len() {
+                let (a, b) = (f[k], f[(k + 1) % f.len()]);
+                if a < b
+                    && let (Some(pa), Some(pb)) = (v(a), v(b))
+                    && pa.is_finite()
+                    && pb.is_finite()
+                {
+                    out.push((pa, pb));
+                }
+            }
+        }
+    }
+    out
+}
+
+/// The surface and its overlay for the view; `picked` is the vertex (primitive, vertex)
+/// whose t is being edited. The primitives are drawn even when the envelope cannot be built.
+pub fn scenes(
+    built: &Built,
+    picked: Option<(usize, usize)>,
+    o: &Overlays,
+) -> (Arc<Scene>, Arc<Scene>) {
+    let opts = SceneOptions {
+        shading: if o.smooth {
+            Shading::Smooth
+        } else {
+            Shading::Flat
+        },
+        wireframe: o.wireframe,
+        color_by: if o.curvature {
+            ColorBy::Curvature
+        } else {
+            ColorBy::Uniform
+        },
+        ..SceneOptions::default()
+    };
+    let all: Vec<DVec3> = built
+        .spec
+        .primitives
+        .iter()
+        .flat_map(|p| p.vertices.iter().map(|x| DVec3::from_array(*x)))
+        .filter(|p| p.is_finite())
+        .collect();
+    let scene = match &built.result {
+        Ok((_, mesh)) if o.surface => {
+            Scene::build(mesh, &EdgeAttrs::new(), None, &|_| false, &opts)
+        }
+        result => {
+            let mut m = PolyMesh::new();
+            m.positions = match result {
+                Ok((_, mesh)) => mesh.positions.clone(),
+                Err(_) => all.clone(),
+            };
+            let mut s = Scene::plain(&PolyMesh::new());
+            if !m.positions.is_empty() {
+                let (lo, hi) = m.bbox();
+                s.origin = 0.5 * (lo + hi);
+                s.bbox = (lo, hi);
+            }
+            s
+        }
+    };
+    let mut overlay = Scene {
+        origin: scene.origin,
+        bbox: scene.bbox,
+        ..Scene::default()
+    };
+    let size = (overlay.bbox.1 - overlay.bbox.0).length().max(1e-9);
+    if o.primitives {
+        overlay.add_segments(&primitive_edges(&built.spec), PRIMITIVE);
+        overlay.add_points(&all, 0.006 * size, PRIMITIVE);
+    }
+    if let Ok((e, _)) = &built.result {
+        for kind in [CurveKind::Edge, CurveKind::Insertion] {
+            let (show, color) = match kind {
+                CurveKind::Edge => (o.edges, EDGE),
+                CurveKind::Insertion => (o.insertions, INSERTION),
+            };
+            if !show {
+                continue;
+            }
+            let segs: Vec<(DVec3, DVec3)> = e
+                .network
+                .curves
+                .iter()
+                .filter(|c| c.kind == kind)
+                .flat_map(|c| {
+                    (0..24).map(|j| {
+                        (
+                            c.bezier.eval(j as f64 / 24.0),
+                            c.bezier.eval((j + 1) as f64 / 24.0),
+                        )
+                    })
+                })
+                .collect();
+            overlay.add_segments(&segs, color);
+        }
+    }
+    if let Some((p, v)) = picked
+        && let Some(x) = built.spec.primitives.get(p).and_then(|p| p.vertices.get(v))
+    {
+        overlay.add_points(&[DVec3::from_array(*x)], 0.015 * size, PICKED);
+    }
+    (Arc::new(scene), Arc::new(overlay))
+}

@@ -1,0 +1,589 @@
+//! The Envelope tab (seed 004; docs/algorithms/envelope.md, docs/user-guide.md "The Envelope
+//! tab"): a primitive from the library, moved, turned and scaled by typed or dragged numbers or
+//! by dragging in the view; the global t and a picked vertex's own t; the envelope rebuilt
+//! live with its curve network. Every change is one [`Edit::SetEnvelope`]; a drag is one undo
+//! step.
+//!
+//! This version envelopes one primitive (the library's "Replace with" swaps it); scenes of
+//! several primitives are refused by the kernel, saying so, and the message shows here.
+
+mod build;
+
+use super::command::{Command, Edit};
+use super::gestures::Gestures;
+use super::model::pick::{Projector, pick_vertex};
+use super::viewport;
+use build::{Built, Overlays};
+use glam::{DQuat, DVec3};
+use prism_geom::freeform::envelope::{EnvelopeSpec, Placement, PrimitiveInput, Shape};
+use prism_viewport::{Camera, Scene, View};
+use std::sync::Arc;
+
+/// The bundled scenes: name, file name, contents.
+pub const ENVELOPE_SAMPLES: [(&str, &str, &str); 2] = [
+    (
+        "One cube (t = 1, Table 1)",
+        "cube.envelope.json",
+        include_str!("../../../../../assets/cube.envelope.json"),
+    ),
+    (
+        "Hexagonal prism (t = 0.5)",
+        "hexagonal-prism.envelope.json",
+        include_str!("../../../../../assets/hexagonal-prism.envelope.json"),
+    ),
+];
+
+/// The primitive library.
+pub const LIBRARY: [(&str, Shape); 6] = [
+    ("Cube", Shape::Cube),
+    (
+        "Box",
+        Shape::Box {
+            a: 1.0,
+            b: 0.6,
+            c: 0.4,
+        },
+    ),
+    ("Tetrahedron", Shape::Tetrahedron),
+    ("Octahedron", Shape::Octahedron),
+    ("Triangular prism", Shape::TriangularPrism { height: 1.0 }),
+    ("Hexagonal prism", Shape::HexagonalPrism { height: 1.0 }),
+];
+
+/// The scene of bundled sample `k`.
+pub fn sample(k: usize) -> Result<EnvelopeSpec, String> {
+    let (name, _, text) = ENVELOPE_SAMPLES.get(k).ok_or("no such sample")?;
+    serde_json::from_str(text).map_err(|e| format!("{name}: {e}"))
+}
+
+/// A scene of one library shape of radius 1 at the origin.
+pub fn of_shape(shape: Shape) -> EnvelopeSpec {
+    EnvelopeSpec {
+        t: 1.0,
+        primitives: vec![shape.placed(&Placement::default())],
+        resolution: 8,
+    }
+}
+
+/// The view slot of the Envelope tab's 3D view (the Model tab uses 0–3, the Skin tab 16).
+const VIEW_SLOT: usize = 17;
+
+/// What a primary drag in the view does.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Mouse {
+    #[default]
+    Orbit,
+    /// Moves the primitive in the view plane.
+    Move,
+    /// Scales the primitive about its centre.
+    Scale,
+}
+
+/// Transient values of the number fields that act by difference (rotation, scale).
+#[derive(Debug, Default, Clone, Copy)]
+struct Gesture {
+    rotate: [f64; 3],
+    scale: f64,
+}
+
+pub struct EnvelopeTab {
+    /// The vertex (primitive, vertex) whose t the panel edits: clicked in the view.
+    pub picked: Option<(usize, usize)>,
+    pub mouse: Mouse,
+    drag: Option<(u64, Vec<[f64; 3]>)>,
+    pub overlays: Overlays,
+    pub has_gpu: bool,
+    camera: Camera,
+    framed: bool,
+    built: Option<Built>,
+    scene: Arc<Scene>,
+    overlay: Arc<Scene>,
+    version: u64,
+    shown: Option<(Option<(usize, usize)>, Overlays)>,
+    gestures: Gestures,
+    gesture: Gesture,
+    out: Vec<Command>,
+}
+
+impl Default for EnvelopeTab {
+    fn default() -> Self {
+        EnvelopeTab {
+            picked: None,
+            mouse: Mouse::Orbit,
+            drag: None,
+            overlays: Overlays::default(),
+            has_gpu: false,
+            camera: Camera::default(),
+            framed: false,
+            built: None,
+            scene: Arc::new(Scene::default()),
+            overlay: Arc::new(Scene::default()),
+            version: 0,
+            shown: None,
+            gestures: Gestures::default(),
+            gesture: Gesture {
+                scale: 100.0,
+                ..Gesture::default()
+            },
+            out: Vec::new(),
+        }
+    }
+}
+
+fn centre_of(p: &PrimitiveInput) -> DVec3 {
+    let n = p.vertices.len().max(1) as f64;
+    p.vertices
+        .iter()
+        .map(|v| DVec3::from_array(*v))
+        .sum::<DVec3>()
+        / n
+}
+
+/// `p`'s vertices mapped by `f`.
+fn mapped(p: &PrimitiveInput, f: impl Fn(DVec3) -> DVec3) -> PrimitiveInput {
+    PrimitiveInput {
+        vertices: p
+            .vertices
+            .iter()
+            .map(|v| f(DVec3::from_array(*v)).to_array())
+            .collect(),
+        ..p.clone()
+    }
+}
+
+impl EnvelopeTab {
+    /// The last build (for the tests and the export).
+    pub fn built(&self) -> Option<&Built> {
+        self.built.as_ref()
+    }
+
+    /// Rebuilds the envelope and the scenes when the scene or the overlays changed.
+    pub fn sync(&mut self, spec: Option<&EnvelopeSpec>) {
+        let Some(spec) = spec else {
+            self.built = None;
+            self.scene = Arc::new(Scene::default());
+            self.overlay = Arc::new(Scene::default());
+            self.shown = None;
+            self.picked = None;
+            return;
+        };
+        let fresh = self.built.as_ref().is_none_or(|b| &b.spec != spec);
+        if fresh {
+            self.built = Some(Built::new(spec));
+        }
+        if let Some((p, v)) = self.picked
+            && spec.primitives.get(p).is_none_or(|x| v >= x.vertices.len())
+        {
+            self.picked = None;
+        }
+        if fresh || self.shown != Some((self.picked, self.overlays)) {
+            let b = self.built.as_ref().expect("built above");
+            (self.scene, self.overlay) = build::scenes(b, self.picked, &self.overlays);
+            self.version += 1;
+            self.shown = Some((self.picked, self.overlays));
+        }
+    }
+
+    /// The screen mapping of the view in `rect` (clicks pick vertices with it).
+    pub fn projector(&self, rect: egui::Rect) -> Projector {
+        Projector {
+            view_proj: self.camera.view_proj(rect.width() / rect.height().max(1.0)),
+            rect,
+            origin: self.scene.origin,
+        }
+    }
+
+    /// Frames the envelope again on the next frame (a new sample).
+    pub fn reframe(&mut self) {
+        self.framed = false;
+    }
+
+    fn frame_view(&mut self) {
+        let (lo, hi) = self.scene.bbox;
+        let r = (0.5 * (hi - lo).length()).max(1e-6) as f32;
+        let c = self.scene.to_local(0.5 * (lo + hi));
+        self.camera = Camera::looking(View::Iso, c, r * 1.1);
+        self.framed = true;
+    }
+
+    fn set(&mut self, spec: Option<EnvelopeSpec>, gesture: Option<u64>) {
+        self.out
+            .push(Command::Edit(Edit::SetEnvelope { spec, gesture }));
+    }
+
+    pub fn ui(&mut self, ui: &mut egui::Ui, spec: Option<&EnvelopeSpec>) -> Vec<Command> {
+        self.sync(spec);
+        egui::Panel::left("envelope_panel")
+            .resizable(true)
+            .default_size(300.0)
+            .show(ui, |ui| {
+                egui::ScrollArea::vertical().show(ui, |ui| self.panel(ui, spec));
+            });
+        egui::CentralPanel::default().show(ui, |ui| self.view(ui, spec));
+        std::mem::take(&mut self.out)
+    }
+
+    fn panel(&mut self, ui: &mut egui::Ui, spec: Option<&EnvelopeSpec>) {
+        ui.heading("Envelope of a primitive");
+        let Some(spec) = spec else {
+            ui.label("No primitive yet. Start from one of the library:");
+            ui.horizontal_wrapped(|ui| {
+                for (name, shape) in LIBRARY {
+                    if ui.button(name).clicked() {
+                        self.framed = false;
+                        self.set(Some(of_shape(shape)), None);
+                    }
+                }
+            });
+            ui.label("or a bundled scene (also in File > Samples):");
+            for (k, (name, _, _)) in ENVELOPE_SAMPLES.iter().enumerate() {
+                if ui.button(*name).clicked() {
+                    match sample(k) {
+                        Ok(s) => {
+                            self.framed = false;
+                            self.set(Some(s), None);
+                        }
+                        Err(e) => self.out.push(Command::Say(e)),
+                    }
+                }
+            }
+            return;
+        };
+        self.summary(ui);
+        ui.separator();
+        ui.horizontal_wrapped(|ui| {
+            ui.label("Replace with");
+            for (name, shape) in LIBRARY {
+                if ui.small_button(name).clicked() {
+                    let mut s = spec.clone();
+                    let at = spec.primitives.first().map(centre_of).unwrap_or_default();
+                    let mut p = shape.placed(&Placement::default());
+                    p = mapped(&p, |v| v + at);
+                    s.primitives = vec![p];
+                    self.picked = None;
+                    self.set(Some(s), None);
+                }
+            }
+        });
+        if let Some(p) = spec.primitives.first() {
+            self.placement(ui, spec, p);
+        }
+        ui.separator();
+        self.curvature(ui, spec);
+        ui.separator();
+        ui.label("Surface");
+        let mut res = spec.resolution;
+        let r = ui.add(egui::Slider::new(&mut res, 1..=32).text("quads a patch side"));
+        let g = self.gestures.of(&r);
+        if res != spec.resolution {
+            let mut s = spec.clone();
+            s.resolution = res;
+            self.set(Some(s), g);
+        }
+        ui.horizontal_wrapped(|ui| {
+            ui.label("Drag in the view:");
+            ui.radio_value(&mut self.mouse, Mouse::Orbit, "orbit");
+            ui.radio_value(&mut self.mouse, Mouse::Move, "move");
+            ui.radio_value(&mut self.mouse, Mouse::Scale, "scale");
+        })
+        .response
+        .on_hover_text("Move and scale act on the primitive; right drag orbits then. A click picks a vertex for its own t");
+        ui.separator();
+        ui.label("Show");
+        let o = &mut self.overlays;
+        ui.checkbox(&mut o.primitives, "Primitive (grey)");
+        ui.checkbox(&mut o.edges, "Curved edges (yellow)");
+        ui.checkbox(&mut o.insertions, "Insertion curves of split faces (blue)");
+        ui.checkbox(&mut o.surface, "Surface");
+        ui.checkbox(&mut o.wireframe, "Iso-parameter lines");
+        ui.checkbox(&mut o.curvature, "Mean-curvature colours");
+        ui.checkbox(&mut o.smooth, "Smooth shading");
+        ui.horizontal(|ui| {
+            if ui.button("Frame the envelope").clicked() {
+                self.frame_view();
+            }
+            if ui.button("Clear").clicked() {
+                self.set(None, None);
+            }
+        });
+    }
+
+    fn summary(&self, ui: &mut egui::Ui) {
+        let Some(b) = &self.built else { return };
+        match &b.result {
+            Ok((e, m)) => {
+                ui.label(format!(
+                    "{} primitive, {} regions, {} patches, {} quads",
+                    e.primitives.len(),
+                    e.regions,
+                    e.patches.len(),
+                    m.num_faces()
+                ));
+                if let Some(p) = e.primitives.first() {
+                    ui.label(format!(
+                        "centre ({:.3}, {:.3}, {:.3}), sphere radius r = {:.4}",
+                        p.centre.x, p.centre.y, p.centre.z, p.radius
+                    ));
+                }
+                ui.label(format!(
+                    "G1: largest normal jump across patch borders {:.1e}°; network and patches in {:.2} ms",
+                    b.jump, b.millis
+                ));
+            }
+            Err(e) => {
+                ui.colored_label(
+                    egui::Color32::from_rgb(255, 120, 100),
+                    format!("No envelope: {e}"),
+                );
+            }
+        }
+    }
+
+    fn placement(&mut self, ui: &mut egui::Ui, spec: &EnvelopeSpec, p: &PrimitiveInput) {
+        let centre = centre_of(p);
+        let mut moved = centre;
+        let mut changed = None;
+        ui.horizontal(|ui| {
+            ui.label("centre");
+            for a in 0..3 {
+                let r = ui.add(
+                    egui::DragValue::new(&mut moved[a])
+                        .speed(0.01)
+                        .max_decimals(4),
+                );
+                let g = self.gestures.of(&r);
+                if r.changed() {
+                    changed = Some(g);
+                }
+            }
+        });
+        if let Some(g) = changed {
+            let mut s = spec.clone();
+            s.primitives[0] = mapped(p, |v| v + moved - centre);
+            self.set(Some(s), g);
+        }
+        let mut gst = self.gesture;
+        let mut act: Option<(DQuat, f64, Option<u64>)> = None;
+        ui.horizontal(|ui| {
+            ui.label("turn °");
+            for (a, (axis, name)) in [(DVec3::X, "x: "), (DVec3::Y, "y: "), (DVec3::Z, "z: ")]
+                .into_iter()
+                .enumerate()
+            {
+                if let Some((b, after, g)) =
+                    self.gestures
+                        .delta_field(ui, &mut gst.rotate[a], 0.0, name, None)
+                {
+                    act = Some((
+                        DQuat::from_axis_angle(axis, (after - b).to_radians()),
+                        1.0,
+                        g,
+                    ));
+                }
+            }
+        });
+        ui.horizontal(|ui| {
+            ui.label("scale %");
+            if let Some((b, a, g)) =
+                self.gestures
+                    .delta_field(ui, &mut gst.scale, 100.0, "", Some(1.0..=1000.0))
+                && b > 0.0
+                && a > 0.0
+            {
+                act = Some((DQuat::IDENTITY, a / b, g));
+            }
+        });
+        self.gesture = gst;
+        if let Some((q, f, g)) = act {
+            let mut s = spec.clone();
+            s.primitives[0] = mapped(p, |v| centre + q * ((v - centre) * f));
+            self.set(Some(s), g);
+        }
+    }
+
+    fn curvature(&mut self, ui: &mut egui::Ui, spec: &EnvelopeSpec) {
+        ui.label("Curvature parameter t (ρ = t·r at every vertex)");
+        let mut t = spec.t;
+        let r = ui
+            .add(
+                egui::Slider::new(&mut t, 0.1..=3.0)
+                    .logarithmic(true)
+                    .text("t"),
+            )
+            .on_hover_text("1: edges are arcs on the primitive's sphere; towards 0 the surface tends to the flat faces; above 1 the edges bulge outside the sphere (polynomial cubics at 3/(1 + 2cos θ), 1.14 on a cube)");
+        let g = self.gestures.of(&r);
+        if t != spec.t {
+            let mut s = spec.clone();
+            s.t = t;
+            for p in &mut s.primitives {
+                p.t = None;
+            }
+            self.set(Some(s), g);
+        }
+        let Some((pi, v)) = self.picked else {
+            ui.label("Click a vertex in the view to give it its own t.");
+            return;
+        };
+        let Some(p) = spec.primitives.get(pi) else {
+            return;
+        };
+        let base = p.t.unwrap_or(spec.t);
+        let mut own = p
+            .vertex_t
+            .as_ref()
+            .and_then(|vt| vt.get(v).copied())
+            .unwrap_or(base);
+        ui.horizontal(|ui| {
+            ui.label(format!("vertex {v}"));
+            let r = ui.add(
+                egui::DragValue::new(&mut own)
+                    .prefix("own t: ")
+                    .speed(0.01)
+                    .range(0.1..=3.0)
+                    .min_decimals(2)
+                    .max_decimals(3),
+            );
+            let g = self.gestures.of(&r);
+            if r.changed() {
+                let mut s = spec.clone();
+                let q = &mut s.primitives[pi];
+                let mut vt = q
+                    .vertex_t
+                    .clone()
+                    .unwrap_or_else(|| vec![base; q.vertices.len()]);
+                vt[v] = own;
+                q.vertex_t = Some(vt);
+                self.set(Some(s), g);
+            }
+            if ui
+                .add_enabled(p.vertex_t.is_some(), egui::Button::new("All vertices to t"))
+                .on_disabled_hover_text("No vertex has its own t")
+                .clicked()
+            {
+                let mut s = spec.clone();
+                s.primitives[pi].vertex_t = None;
+                self.set(Some(s), None);
+            }
+        });
+    }
+
+    /// A primary drag that moves or scales the primitive (one undo step).
+    fn primitive_drag(
+        &mut self,
+        ui: &egui::Ui,
+        resp: &egui::Response,
+        rect: egui::Rect,
+        spec: &EnvelopeSpec,
+    ) {
+        if resp.drag_started_by(egui::PointerButton::Primary)
+            && let Some(p) = spec.primitives.first()
+        {
+            self.drag = Some((self.gestures.start(), p.vertices.clone()));
+        }
+        if resp.dragged_by(egui::PointerButton::Primary)
+            && let Some((g, start)) = &self.drag
+            && let Some(p) = spec.primitives.first()
+        {
+            let total = ui
+                .input(|i| i.pointer.press_origin().zip(i.pointer.latest_pos()))
+                .map_or(egui::Vec2::ZERO, |(a, b)| b - a);
+            let from = PrimitiveInput {
+                vertices: start.clone(),
+                ..p.clone()
+            };
+            let centre = centre_of(&from);
+            let q = match self.mouse {
+                Mouse::Move => {
+                    let by = self
+                        .camera
+                        .drag_in_view_plane(total.x, total.y, rect.height())
+                        .as_dvec3();
+                    mapped(&from, |v| v + by)
+                }
+                Mouse::Scale => {
+                    let f = (-total.y as f64 * 0.005).exp();
+                    mapped(&from, |v| centre + (v - centre) * f)
+                }
+                Mouse::Orbit => return,
+            };
+            let mut s = spec.clone();
+            s.primitives[0] = q;
+            let g = *g;
+            self.set(Some(s), Some(g));
+        }
+        if resp.drag_stopped() {
+            self.drag = None;
+        }
+    }
+
+    fn view(&mut self, ui: &mut egui::Ui, spec: Option<&EnvelopeSpec>) {
+        let rect = ui.available_rect_before_wrap();
+        let Some(spec) = spec else {
+            ui.centered_and_justified(|ui| {
+                ui.label("Pick a primitive on the left; its envelope appears here.");
+            });
+            return;
+        };
+        if !self.framed && self.scene.bbox.0 != self.scene.bbox.1 {
+            self.frame_view();
+        }
+        let resp = ui.interact(
+            rect,
+            ui.scope_id().with("envelope_view"),
+            egui::Sense::click_and_drag(),
+        );
+        let (orbit, pan) = if self.mouse == Mouse::Orbit {
+            (
+                egui::PointerButton::Primary,
+                [egui::PointerButton::Secondary, egui::PointerButton::Middle],
+            )
+        } else {
+            (
+                egui::PointerButton::Secondary,
+                [egui::PointerButton::Middle, egui::PointerButton::Middle],
+            )
+        };
+        viewport::camera_input(&mut self.camera, ui, &resp, rect, orbit, &pan);
+        if self.mouse != Mouse::Orbit {
+            self.primitive_drag(ui, &resp, rect, spec);
+        }
+        if resp.clicked()
+            && let Some(at) = resp.interact_pointer_pos()
+        {
+            let proj = self.projector(rect);
+            let positions: Vec<DVec3> = spec
+                .primitives
+                .first()
+                .map(|p| p.vertices.iter().map(|v| DVec3::from_array(*v)).collect())
+                .unwrap_or_default();
+            self.picked = pick_vertex(&proj, None, &positions, at, 14.0).map(|v| (0, v as usize));
+        }
+        viewport::paint_background(ui, rect);
+        if self.has_gpu {
+            ui.painter().add(egui_wgpu::Callback::new_paint_callback(
+                rect,
+                viewport::ViewCallback {
+                    view: VIEW_SLOT,
+                    scene: self.scene.clone(),
+                    overlay: self.overlay.clone(),
+                    version: self.version,
+                    camera: self.camera,
+                    aspect: rect.width() / rect.height().max(1.0),
+                },
+            ));
+        }
+        ui.painter().text(
+            rect.left_bottom() + egui::vec2(8.0, -8.0),
+            egui::Align2::LEFT_BOTTOM,
+            match self.mouse {
+                Mouse::Orbit => {
+                    "drag: orbit · right drag: pan · wheel: zoom · click: pick a vertex"
+                }
+                Mouse::Move => "drag: move the primitive in the view plane · right drag: orbit",
+                Mouse::Scale => "drag up or down: scale the primitive · right drag: orbit",
+            },
+            egui::FontId::proportional(12.0),
+            egui::Color32::from_gray(170),
+        );
+    }
+}

@@ -1,0 +1,149 @@
+//! The Envelope tab driven through its real panels (egui_kittest): a primitive placed from
+//! the library, the envelope built closed and G1, t moved as one undo step, a vertex picked
+//! by a click and given its own t, the primitive dragged in the view as one undo step, the
+//! scene saved with the document and reopened, exported, and undone across tabs.
+
+use super::command::Edit;
+use super::tests::{app, drag_right, settle};
+use super::*;
+use egui_kittest::Harness;
+use egui_kittest::kittest::Queryable;
+
+fn scene(h: &Harness<'_, PrismApp>) -> Option<prism_geom::freeform::envelope::EnvelopeSpec> {
+    h.state().doc.state().envelope.clone()
+}
+
+#[test]
+fn the_envelope_tab_places_edits_undoes_saves_and_exports_an_envelope() {
+    let mut h = Harness::builder()
+        .with_size(egui::vec2(1280.0, 800.0))
+        .build_ui_state(|ui, app: &mut PrismApp| app.frame_ui(ui), app());
+    settle(&mut h);
+    h.get_by_label("Envelope").click();
+    settle(&mut h);
+    assert_eq!(h.state().tab, Tab::Envelope);
+    h.get_by_label("Tetrahedron").click();
+    settle(&mut h);
+    let start = scene(&h).expect("a scene");
+    {
+        let b = h.state().envelope.built().expect("built");
+        let (e, mesh) = b.result.as_ref().expect("an envelope");
+        assert_eq!((e.regions, e.patches.len()), (4, 12));
+        let topo = prism_geom::Topology::build(mesh).unwrap();
+        topo.require_closed(mesh).unwrap();
+        assert!(b.jump < 1e-9, "{}", b.jump);
+    }
+
+    // t through the model as one gesture: one undo step.
+    for t in [0.9, 0.7, 0.5] {
+        let mut s = scene(&h).unwrap();
+        s.t = t;
+        h.state_mut().run(Command::Edit(Edit::SetEnvelope {
+            spec: Some(s),
+            gesture: Some(700),
+        }));
+    }
+    settle(&mut h);
+    assert_eq!(scene(&h).unwrap().t, 0.5);
+    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::Z);
+    settle(&mut h);
+    assert_eq!(scene(&h).unwrap(), start);
+
+    // A click on a vertex picks it; its own t goes into vertex_t.
+    let rect = egui::Rect::from_min_max(egui::pos2(300.0, 24.0), egui::pos2(1280.0, 800.0));
+    let proj = h.state().envelope.projector(rect);
+    let v0 = glam::DVec3::from_array(start.primitives[0].vertices[0]);
+    let (at, _) = proj.project(v0).expect("vertex 0 in front");
+    h.event(egui::Event::PointerMoved(at));
+    h.step();
+    for pressed in [true, false] {
+        h.event(egui::Event::PointerButton {
+            pos: at,
+            button: egui::PointerButton::Primary,
+            pressed,
+            modifiers: egui::Modifiers::NONE,
+        });
+        h.step();
+    }
+    settle(&mut h);
+    assert_eq!(h.state().envelope.picked, Some((0, 0)));
+    let field = h.get_by_value("own t: 1.00").rect().center();
+    drag_right(&mut h, field, &[-10.0, -20.0, -30.0]);
+    let own = scene(&h).unwrap().primitives[0]
+        .vertex_t
+        .clone()
+        .expect("own t");
+    assert!(
+        own[0] < 1.0 && own[1..].iter().all(|&t| t == 1.0),
+        "{own:?}"
+    );
+    assert!(h.state().envelope.built().unwrap().result.is_ok());
+    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::Z);
+    settle(&mut h);
+    assert_eq!(scene(&h).unwrap(), start);
+
+    // A drag in the view with the move tool moves the primitive: one undo step.
+    h.state_mut().envelope.mouse = envelope::Mouse::Move;
+    drag_right(&mut h, egui::pos2(800.0, 400.0), &[30.0, 60.0, 90.0]);
+    let moved = scene(&h).unwrap();
+    let d = glam::DVec3::from_array(moved.primitives[0].vertices[0]) - v0;
+    assert!(d.length() > 0.05, "{d}");
+    for (a, b) in moved.primitives[0]
+        .vertices
+        .iter()
+        .zip(&start.primitives[0].vertices)
+    {
+        let e = glam::DVec3::from_array(*a) - glam::DVec3::from_array(*b);
+        assert!((e - d).length() < 1e-12, "a move moves every vertex alike");
+    }
+    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::Z);
+    settle(&mut h);
+    assert_eq!(scene(&h).unwrap(), start);
+    h.state_mut().envelope.mouse = envelope::Mouse::Orbit;
+
+    // Saved with the document and reopened; exported as STL from the tab.
+    let dir = std::env::temp_dir().join(format!("prism-envelope-tab-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let doc = dir.join("tet.prism.json");
+    h.state_mut().save_to(&doc).unwrap();
+    let stl = dir.join("tet.stl");
+    h.state_mut().export_to(&stl).unwrap();
+    assert_eq!(
+        std::fs::metadata(&stl).unwrap().len(),
+        84 + 50 * 2 * 12 * 64
+    );
+    let (state, _) = document::open(&doc).unwrap();
+    assert_eq!(state.envelope.as_ref(), Some(&start));
+
+    // Undo across tabs: back to no scene at all.
+    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::Z);
+    settle(&mut h);
+    assert!(scene(&h).is_none());
+    assert!(h.state().envelope.built().is_none());
+}
+
+#[test]
+fn a_bad_scene_shows_its_message_and_keeps_the_scene() {
+    let mut a = app();
+    let mut spec = envelope::sample(0).unwrap();
+    spec.primitives[0].vertices[7][2] = 1.3;
+    a.run(Command::Edit(Edit::SetEnvelope {
+        spec: Some(spec.clone()),
+        gesture: None,
+    }));
+    a.envelope.sync(a.doc.state().envelope.as_ref());
+    let b = a.envelope.built().unwrap();
+    let e = b.result.as_ref().map(|_| ()).expect_err("refused");
+    assert!(e.contains("primitive 0: vertex"), "{e}");
+    assert_eq!(a.doc.state().envelope.as_ref(), Some(&spec));
+    spec.resolution = 0;
+    a.run(Command::Edit(Edit::SetEnvelope {
+        spec: Some(spec),
+        gesture: None,
+    }));
+    assert!(
+        a.note.as_ref().unwrap().contains("resolution 0"),
+        "{:?}",
+        a.note
+    );
+}
