@@ -14,7 +14,21 @@ use std::process::ExitCode;
 #[global_allocator]
 static ALLOC: mimalloc::MiMalloc = mimalloc::MiMalloc;
 
+/// A command whose output is cut short (`prism subdivide … | head -1`) ends quietly, as Unix
+/// tools do, instead of panicking on the next print: SIGPIPE goes back to its default action,
+/// which Rust's runtime sets to "ignore" so that writes fail with EPIPE.
+#[cfg(unix)]
+fn end_quietly_on_broken_pipes() {
+    // SAFETY: called first thing in main, before any thread exists; `signal` with SIG_DFL
+    // installs no handler code.
+    unsafe {
+        libc::signal(libc::SIGPIPE, libc::SIG_DFL);
+    }
+}
+
 fn main() -> ExitCode {
+    #[cfg(unix)]
+    end_quietly_on_broken_pipes();
     let args = match cli::Cli::try_parse() {
         Ok(a) => a,
         Err(e) => {

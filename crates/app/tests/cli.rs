@@ -1052,3 +1052,21 @@ fn a_killed_save_leaves_the_old_file_or_the_whole_new_one() {
         }
     }
 }
+
+/// Output cut short (`prism schemes | head -1`) ends the command quietly, as Unix tools do; it
+/// panicked on the next print (exit 101).
+#[cfg(unix)]
+#[test]
+fn a_closed_output_pipe_is_not_a_panic() {
+    let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_prism"))
+        .arg("schemes")
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    drop(child.stdout.take());
+    let o = child.wait_with_output().unwrap();
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(!err.contains("panicked"), "{err}");
+    assert_ne!(o.status.code(), Some(101));
+}
