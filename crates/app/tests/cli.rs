@@ -889,6 +889,18 @@ fn envelope_builds_the_bundled_scenes_and_names_bad_ones() {
         "{:?}",
         text(&o)
     );
+    // Two primitives: two cubes side by side (14 regions), on a body diagonal (18 regions, each
+    // cube's 3 triangles and 3 pentagons split: 54 patches).
+    let (_, so, _) = succeeds_to("two.obj", "envelope assets/two-cubes.envelope.json -o {}");
+    assert!(
+        so.contains("primitives=2 regions=14 patches=14 removed=0"),
+        "{so}"
+    );
+    let (_, so, _) = succeeds_to(
+        "diag.glb",
+        "envelope assets/diagonal-cubes.envelope.json -o {} --resolution 4",
+    );
+    assert!(so.contains("primitives=2 regions=18 patches=54"), "{so}");
     let o = run("envelope assets/cube.envelope.json -o out.obj --t 0");
     assert_eq!(o.status.code(), Some(1));
     assert!(

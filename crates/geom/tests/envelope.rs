@@ -2,6 +2,7 @@
 //! sphere, the surface between the primitive and its sphere, symmetric, independent of the
 //! listing order, closed and outward for every t, enclosing the primitive, G1.
 
+use prism_geom::freeform::envelope::network::RegionKind;
 use prism_geom::freeform::envelope::{
     Envelope, EnvelopeError, EnvelopeSpec, Placement, PrimitiveInput, Shape, envelope,
 };
@@ -337,4 +338,158 @@ fn bad_primitives_are_named() {
         }),
         Err(EnvelopeError::Empty)
     ));
+}
+
+fn cube_at(centre: [f64; 3], rotation: [f64; 3]) -> PrimitiveInput {
+    // Half-size 1: the unit-sphere cube scaled by √3.
+    Shape::Cube.placed(&Placement {
+        centre,
+        scale: 3f64.sqrt(),
+        rotation,
+    })
+}
+
+fn pair(a: PrimitiveInput, b: PrimitiveInput, t: f64) -> Envelope {
+    envelope(&EnvelopeSpec {
+        t,
+        primitives: vec![a, b],
+        resolution: 8,
+    })
+    .unwrap()
+}
+
+/// Closed, and every face turned away from the segment between the two centres.
+fn assert_closed_outward_from(m: &PolyMesh, ga: DVec3, gb: DVec3, what: &str) {
+    let t = Topology::build(m).unwrap_or_else(|e| panic!("{what}: not a manifold: {e}"));
+    t.require_closed(m)
+        .unwrap_or_else(|e| panic!("{what}: not closed: {e}"));
+    let d = (gb - ga).normalize();
+    let len = (gb - ga).length();
+    for f in 0..m.num_faces() {
+        let (n, c) = face_normal(m, f);
+        let axis = ga + (c - ga).dot(d).clamp(0.0, len) * d;
+        assert!(n.dot(c - axis) > 0.0, "{what}: face {f} faces inward");
+    }
+}
+
+/// Two equal cubes of one orientation on an axis (ALGORITHMS §11.8): 14 regions; the fusion
+/// surface is the silhouette loop translated along d for every t, and at t = 1 the circular
+/// cylinder of radius √3 (half-size 1) about the centre line.
+#[test]
+fn two_aligned_cubes_fuse_by_translation() {
+    let gb = DVec3::new(3.0, 0.0, 0.0);
+    for t in [1.0, 0.7, 0.5, 0.3, 0.1, 2.0] {
+        let e = pair(
+            cube_at([0.0; 3], [0.0; 3]),
+            cube_at(gb.to_array(), [0.0; 3]),
+            t,
+        );
+        assert_eq!((e.regions, e.patches.len()), (14, 14));
+        assert!(e.largest_border_jump() < 1e-9);
+        let m = e.tessellate(8).unwrap();
+        assert_closed_outward_from(&m, DVec3::ZERO, gb, &format!("t = {t}"));
+        for p in &e.patches {
+            if e.network.regions[p.region].kind != RegionKind::Fusion {
+                continue;
+            }
+            for i in 0..=8 {
+                let u = i as f64 / 8.0;
+                // The fusion quad runs along d from A's loop (v = 0) to B's (v = 1).
+                let base = p.coons.eval(u, 0.0);
+                for j in 0..=8 {
+                    let q = p.coons.eval(u, j as f64 / 8.0);
+                    assert!((q - base).cross(DVec3::X).length() < 1e-12, "t = {t}: {q}");
+                    if t == 1.0 {
+                        let r = (q.y * q.y + q.z * q.z).sqrt();
+                        assert!((r - 3f64.sqrt()).abs() < 1e-12, "{r}");
+                    }
+                }
+            }
+        }
+    }
+}
+
+/// Two cubes on the body diagonal: 18 regions (each cube's 3 triangles and 3 pentagons, 6 fusion
+/// quads), 54 patches; closed, outward and G1 for t from 0.1 to 1; at t = 1 both cubes enclosed.
+/// (The literal P_i and insertion rules folded at t = 0.7, 0.5, 0.3: 96, 96, 48 of 3456 faces.)
+#[test]
+fn two_diagonal_cubes_are_closed_outward_and_g1() {
+    let gb = DVec3::new(3.0, 3.0, 3.0);
+    for t in [1.0, 0.7, 0.5, 0.3, 0.1] {
+        let e = pair(
+            cube_at([0.0; 3], [0.0; 3]),
+            cube_at(gb.to_array(), [0.0; 3]),
+            t,
+        );
+        assert_eq!((e.regions, e.patches.len()), (18, 54));
+        let jump = e.largest_border_jump();
+        assert!(jump < 1e-9, "t = {t}: {jump}°");
+        let m = e.tessellate(8).unwrap();
+        assert_closed_outward_from(&m, DVec3::ZERO, gb, &format!("t = {t}"));
+        if t == 1.0 {
+            for p in &e.primitives {
+                for face in &p.faces {
+                    let c = face.iter().map(|&v| p.vertices[v]).sum::<DVec3>() / face.len() as f64;
+                    for &v in face {
+                        for s in [0.0, 0.5, 0.9] {
+                            let q = p.centre + (c.lerp(p.vertices[v], s) - p.centre) * (1.0 - 1e-3);
+                            let w = winding(&m, q);
+                            assert!(w > 0.5, "{q} has winding {w}");
+                        }
+                    }
+                }
+            }
+        }
+    }
+}
+
+/// A cube turned against the other (T-points on the silhouette edges): closed, outward, G1 at
+/// t = 1, and the same surface when the two are listed the other way round.
+#[test]
+fn skew_cubes_and_the_order_of_the_pair() {
+    let (ca, cb) = ([0.0; 3], [2.5, 1.0, 0.5]);
+    let rot = [20.0, 35.0, 10.0];
+    let e = pair(cube_at(ca, [0.0; 3]), cube_at(cb, rot), 1.0);
+    assert!(e.patches.len() > e.regions, "some regions are split");
+    assert!(e.largest_border_jump() < 1e-9);
+    let m = e.tessellate(6).unwrap();
+    assert_closed_outward_from(&m, DVec3::ZERO, DVec3::from_array(cb), "skew");
+    let swapped = pair(cube_at(cb, rot), cube_at(ca, [0.0; 3]), 1.0)
+        .tessellate(6)
+        .unwrap();
+    let h = hausdorff(&m.positions, &swapped.positions);
+    assert!(h < 1e-9, "{h}");
+    for (a, b) in [
+        (cube_at(ca, [0.0; 3]), cube_at([3.0, 3.0, 3.0], [0.0; 3])),
+        (cube_at(ca, [0.0; 3]), cube_at([3.0, 0.0, 0.0], [0.0; 3])),
+    ] {
+        let one = pair(a.clone(), b.clone(), 0.5).tessellate(4).unwrap();
+        let two = pair(b, a, 0.5).tessellate(4).unwrap();
+        assert!(hausdorff(&one.positions, &two.positions) < 1e-9);
+    }
+}
+
+#[test]
+fn two_primitives_with_one_centre_or_three_are_refused() {
+    let e = envelope(&EnvelopeSpec {
+        t: 1.0,
+        primitives: vec![
+            cube_at([0.0; 3], [0.0; 3]),
+            cube_at([0.0; 3], [10.0, 0.0, 0.0]),
+        ],
+        resolution: 8,
+    })
+    .unwrap_err();
+    assert_eq!(e, EnvelopeError::SameCentre { a: 0, b: 1 });
+    let e = envelope(&EnvelopeSpec {
+        t: 1.0,
+        primitives: vec![
+            cube_at([0.0; 3], [0.0; 3]),
+            cube_at([3.0, 0.0, 0.0], [0.0; 3]),
+            cube_at([0.0, 3.0, 0.0], [0.0; 3]),
+        ],
+        resolution: 8,
+    })
+    .unwrap_err();
+    assert!(e.to_string().contains("3 primitives"), "{e}");
 }

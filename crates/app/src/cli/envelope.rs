@@ -67,6 +67,8 @@ fn curves_obj(e: &Envelope, segments: usize) -> String {
     for (i, c) in e.network.curves.iter().enumerate() {
         let kind = match c.kind {
             CurveKind::Edge => "primitive edge",
+            CurveKind::Silhouette => "silhouette edge",
+            CurveKind::Fusion => "fusion edge",
             CurveKind::Insertion => "insertion curve",
         };
         let _ = writeln!(out, "# curve {i}: {kind}");

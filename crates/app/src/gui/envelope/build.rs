@@ -1,7 +1,8 @@
 //! The Envelope tab's surface, rebuilt from the document's scene when it changes (one
 //! primitive builds in well under a millisecond, so a drag or the t slider rebuilds it every
-//! frame), with the scene and the overlays drawn from it: the primitive, the curve network
-//! (primitive edges and insertion curves in their own colours), the picked vertex.
+//! frame), with the scene and the overlays drawn from it: the primitives, the curve network
+//! (primitive edges, silhouette edges, fusion edges and insertion curves in their own
+//! colours), the picked vertex.
 
 use glam::DVec3;
 use prism_geom::freeform::envelope::{CurveKind, Envelope, EnvelopeSpec, envelope};
@@ -15,6 +16,8 @@ use std::time::Instant;
 pub struct Overlays {
     pub primitives: bool,
     pub edges: bool,
+    pub silhouettes: bool,
+    pub fusion: bool,
     pub insertions: bool,
     pub surface: bool,
     pub wireframe: bool,
@@ -28,6 +31,8 @@ impl Default for Overlays {
         Overlays {
             primitives: true,
             edges: true,
+            silhouettes: true,
+            fusion: true,
             insertions: true,
             surface: true,
             wireframe: false,
@@ -39,6 +44,8 @@ impl Default for Overlays {
 
 pub const PRIMITIVE: [f32; 3] = [0.75, 0.75, 0.8];
 pub const EDGE: [f32; 3] = [1.0, 0.85, 0.2];
+pub const SILHOUETTE: [f32; 3] = [1.0, 0.5, 0.15];
+pub const FUSION: [f32; 3] = [0.35, 0.9, 0.4];
 pub const INSERTION: [f32; 3] = [0.3, 0.8, 1.0];
 pub const PICKED: [f32; 3] = [1.0, 0.35, 0.2];
 
@@ -152,9 +159,16 @@ pub fn scenes(
         overlay.add_points(&all, 0.006 * size, PRIMITIVE);
     }
     if let Ok((e, _)) = &built.result {
-        for kind in [CurveKind::Edge, CurveKind::Insertion] {
+        for kind in [
+            CurveKind::Edge,
+            CurveKind::Silhouette,
+            CurveKind::Fusion,
+            CurveKind::Insertion,
+        ] {
             let (show, color) = match kind {
                 CurveKind::Edge => (o.edges, EDGE),
+                CurveKind::Silhouette => (o.silhouettes, SILHOUETTE),
+                CurveKind::Fusion => (o.fusion, FUSION),
                 CurveKind::Insertion => (o.insertions, INSERTION),
             };
             if !show {

@@ -4,8 +4,8 @@
 //! live with its curve network. Every change is one [`Edit::SetEnvelope`]; a drag is one undo
 //! step.
 //!
-//! This version envelopes one primitive (the library's "Replace with" swaps it); scenes of
-//! several primitives are refused by the kernel, saying so, and the message shows here.
+//! This version envelopes one or two primitives; the kernel refuses three or more, saying
+//! so, and the tab offers "Add" only while there is one.
 
 mod build;
 
@@ -20,7 +20,7 @@ use prism_viewport::{Camera, Scene, View};
 use std::sync::Arc;
 
 /// The bundled scenes: name, file name, contents.
-pub const ENVELOPE_SAMPLES: [(&str, &str, &str); 2] = [
+pub const ENVELOPE_SAMPLES: [(&str, &str, &str); 4] = [
     (
         "One cube (t = 1, Table 1)",
         "cube.envelope.json",
@@ -30,6 +30,16 @@ pub const ENVELOPE_SAMPLES: [(&str, &str, &str); 2] = [
         "Hexagonal prism (t = 0.5)",
         "hexagonal-prism.envelope.json",
         include_str!("../../../../../assets/hexagonal-prism.envelope.json"),
+    ),
+    (
+        "Two cubes side by side (t = 1)",
+        "two-cubes.envelope.json",
+        include_str!("../../../../../assets/two-cubes.envelope.json"),
+    ),
+    (
+        "Two cubes on a diagonal (t = 0.7)",
+        "diagonal-cubes.envelope.json",
+        include_str!("../../../../../assets/diagonal-cubes.envelope.json"),
     ),
 ];
 
@@ -87,6 +97,8 @@ struct Gesture {
 }
 
 pub struct EnvelopeTab {
+    /// The primitive the placement fields and view drags act on.
+    pub selected: usize,
     /// The vertex (primitive, vertex) whose t the panel edits: clicked in the view.
     pub picked: Option<(usize, usize)>,
     pub mouse: Mouse,
@@ -108,6 +120,7 @@ pub struct EnvelopeTab {
 impl Default for EnvelopeTab {
     fn default() -> Self {
         EnvelopeTab {
+            selected: 0,
             picked: None,
             mouse: Mouse::Orbit,
             drag: None,
@@ -176,6 +189,7 @@ impl EnvelopeTab {
         {
             self.picked = None;
         }
+        self.selected = self.selected.min(spec.primitives.len().saturating_sub(1));
         if fresh || self.shown != Some((self.picked, self.overlays)) {
             let b = self.built.as_ref().expect("built above");
             (self.scene, self.overlay) = build::scenes(b, self.picked, &self.overlays);
@@ -224,7 +238,7 @@ impl EnvelopeTab {
     }
 
     fn panel(&mut self, ui: &mut egui::Ui, spec: Option<&EnvelopeSpec>) {
-        ui.heading("Envelope of a primitive");
+        ui.heading("Envelope of primitives");
         let Some(spec) = spec else {
             ui.label("No primitive yet. Start from one of the library:");
             ui.horizontal_wrapped(|ui| {
@@ -251,22 +265,70 @@ impl EnvelopeTab {
         };
         self.summary(ui);
         ui.separator();
+        ui.label("Primitives");
+        for (k, p) in spec.primitives.iter().enumerate() {
+            let c = centre_of(p);
+            let text = format!(
+                "{k}: {} vertices, {} faces at ({:.2}, {:.2}, {:.2})",
+                p.vertices.len(),
+                p.faces.len(),
+                c.x,
+                c.y,
+                c.z
+            );
+            if ui.selectable_label(k == self.selected, text).clicked() {
+                self.selected = k;
+            }
+        }
+        let k = self.selected;
         ui.horizontal_wrapped(|ui| {
             ui.label("Replace with");
             for (name, shape) in LIBRARY {
                 if ui.small_button(name).clicked() {
                     let mut s = spec.clone();
-                    let at = spec.primitives.first().map(centre_of).unwrap_or_default();
-                    let mut p = shape.placed(&Placement::default());
-                    p = mapped(&p, |v| v + at);
-                    s.primitives = vec![p];
+                    let at = spec.primitives.get(k).map(centre_of).unwrap_or_default();
+                    s.primitives[k] = mapped(&shape.placed(&Placement::default()), |v| v + at);
                     self.picked = None;
                     self.set(Some(s), None);
                 }
             }
         });
-        if let Some(p) = spec.primitives.first() {
-            self.placement(ui, spec, p);
+        ui.horizontal_wrapped(|ui| {
+            let can_add = spec.primitives.len() < 2;
+            ui.add_enabled_ui(can_add, |ui| {
+                ui.menu_button("Add", |ui| {
+                    for (name, shape) in LIBRARY {
+                        if ui.button(name).clicked() {
+                            let mut s = spec.clone();
+                            let at = spec.primitives.get(k).map(centre_of).unwrap_or_default();
+                            let step = DVec3::new(2.5, 0.8, 0.4);
+                            s.primitives
+                                .push(mapped(&shape.placed(&Placement::default()), |v| {
+                                    v + at + step
+                                }));
+                            self.selected = s.primitives.len() - 1;
+                            self.set(Some(s), None);
+                        }
+                    }
+                });
+            })
+            .response
+            .on_disabled_hover_text(
+                "This version envelopes one or two primitives (three or more come next)",
+            );
+            let delete = ui.add_enabled(spec.primitives.len() > 1, egui::Button::new("Delete"));
+            if delete
+                .on_disabled_hover_text("The scene needs a primitive; Clear removes the scene")
+                .clicked()
+            {
+                let mut s = spec.clone();
+                s.primitives.remove(k);
+                self.picked = None;
+                self.set(Some(s), None);
+            }
+        });
+        if let Some(p) = spec.primitives.get(k) {
+            self.placement(ui, spec, k, p);
         }
         ui.separator();
         self.curvature(ui, spec);
@@ -293,6 +355,8 @@ impl EnvelopeTab {
         let o = &mut self.overlays;
         ui.checkbox(&mut o.primitives, "Primitive (grey)");
         ui.checkbox(&mut o.edges, "Curved edges (yellow)");
+        ui.checkbox(&mut o.silhouettes, "Silhouette edges (orange)");
+        ui.checkbox(&mut o.fusion, "Fusion edges between primitives (green)");
         ui.checkbox(&mut o.insertions, "Insertion curves of split faces (blue)");
         ui.checkbox(&mut o.surface, "Surface");
         ui.checkbox(&mut o.wireframe, "Iso-parameter lines");
@@ -313,16 +377,16 @@ impl EnvelopeTab {
         match &b.result {
             Ok((e, m)) => {
                 ui.label(format!(
-                    "{} primitive, {} regions, {} patches, {} quads",
+                    "{} primitive(s), {} regions, {} patches, {} quads",
                     e.primitives.len(),
                     e.regions,
                     e.patches.len(),
                     m.num_faces()
                 ));
-                if let Some(p) = e.primitives.first() {
+                if let Some(p) = e.primitives.get(self.selected) {
                     ui.label(format!(
-                        "centre ({:.3}, {:.3}, {:.3}), sphere radius r = {:.4}",
-                        p.centre.x, p.centre.y, p.centre.z, p.radius
+                        "primitive {}: centre ({:.3}, {:.3}, {:.3}), sphere radius r = {:.4}",
+                        self.selected, p.centre.x, p.centre.y, p.centre.z, p.radius
                     ));
                 }
                 ui.label(format!(
@@ -339,7 +403,7 @@ impl EnvelopeTab {
         }
     }
 
-    fn placement(&mut self, ui: &mut egui::Ui, spec: &EnvelopeSpec, p: &PrimitiveInput) {
+    fn placement(&mut self, ui: &mut egui::Ui, spec: &EnvelopeSpec, k: usize, p: &PrimitiveInput) {
         let centre = centre_of(p);
         let mut moved = centre;
         let mut changed = None;
@@ -359,7 +423,7 @@ impl EnvelopeTab {
         });
         if let Some(g) = changed {
             let mut s = spec.clone();
-            s.primitives[0] = mapped(p, |v| v + moved - centre);
+            s.primitives[k] = mapped(p, |v| v + moved - centre);
             self.set(Some(s), g);
         }
         let mut gst = self.gesture;
@@ -396,7 +460,7 @@ impl EnvelopeTab {
         self.gesture = gst;
         if let Some((q, f, g)) = act {
             let mut s = spec.clone();
-            s.primitives[0] = mapped(p, |v| centre + q * ((v - centre) * f));
+            s.primitives[k] = mapped(p, |v| centre + q * ((v - centre) * f));
             self.set(Some(s), g);
         }
     }
@@ -475,14 +539,16 @@ impl EnvelopeTab {
         rect: egui::Rect,
         spec: &EnvelopeSpec,
     ) {
+        let k = self.selected;
         if resp.drag_started_by(egui::PointerButton::Primary)
-            && let Some(p) = spec.primitives.first()
+            && let Some(p) = spec.primitives.get(k)
         {
             self.drag = Some((self.gestures.start(), p.vertices.clone()));
         }
         if resp.dragged_by(egui::PointerButton::Primary)
             && let Some((g, start)) = &self.drag
-            && let Some(p) = spec.primitives.first()
+            && let Some(p) = spec.primitives.get(k)
+            && p.vertices.len() == start.len()
         {
             let total = ui
                 .input(|i| i.pointer.press_origin().zip(i.pointer.latest_pos()))
@@ -507,7 +573,7 @@ impl EnvelopeTab {
                 Mouse::Orbit => return,
             };
             let mut s = spec.clone();
-            s.primitives[0] = q;
+            s.primitives[k] = q;
             let g = *g;
             self.set(Some(s), Some(g));
         }
@@ -551,12 +617,21 @@ impl EnvelopeTab {
             && let Some(at) = resp.interact_pointer_pos()
         {
             let proj = self.projector(rect);
+            let owner: Vec<(usize, usize)> = spec
+                .primitives
+                .iter()
+                .enumerate()
+                .flat_map(|(p, x)| (0..x.vertices.len()).map(move |v| (p, v)))
+                .collect();
             let positions: Vec<DVec3> = spec
                 .primitives
-                .first()
-                .map(|p| p.vertices.iter().map(|v| DVec3::from_array(*v)).collect())
-                .unwrap_or_default();
-            self.picked = pick_vertex(&proj, None, &positions, at, 14.0).map(|v| (0, v as usize));
+                .iter()
+                .flat_map(|p| p.vertices.iter().map(|v| DVec3::from_array(*v)))
+                .collect();
+            self.picked = pick_vertex(&proj, None, &positions, at, 14.0).map(|i| owner[i as usize]);
+            if let Some((p, _)) = self.picked {
+                self.selected = p;
+            }
         }
         viewport::paint_background(ui, rect);
         if self.has_gpu {
@@ -579,8 +654,10 @@ impl EnvelopeTab {
                 Mouse::Orbit => {
                     "drag: orbit · right drag: pan · wheel: zoom · click: pick a vertex"
                 }
-                Mouse::Move => "drag: move the primitive in the view plane · right drag: orbit",
-                Mouse::Scale => "drag up or down: scale the primitive · right drag: orbit",
+                Mouse::Move => {
+                    "drag: move the selected primitive in the view plane · right drag: orbit"
+                }
+                Mouse::Scale => "drag up or down: scale the selected primitive · right drag: orbit",
             },
             egui::FontId::proportional(12.0),
             egui::Color32::from_gray(170),

@@ -7,16 +7,19 @@
 //! virtual basis, n-sided regions split into quads around an inserted point ([`patches`]);
 //! [`tessellate`] welds them into a closed outward mesh.
 //!
-//! This version builds the envelope of **one** primitive; the network between several
-//! (silhouettes, vertex pairs, fusion edges; §11.2–11.5) is the next increment, and a scene
-//! with more is refused with that said.
+//! This version envelopes one or two primitives: each of a pair is trimmed by its silhouette
+//! plane ([`trim`]) and the two silhouette loops are joined by fusion edges and quads
+//! ([`fusion`]). Three or more (sections cut again, straight edges, swallowed primitives) are
+//! the next increment, and such a scene is refused with that said.
 
 pub mod coons;
 pub mod edges;
+pub mod fusion;
 pub mod network;
 pub mod patches;
 pub mod primitive;
 pub mod tessellate;
+pub mod trim;
 
 pub use network::{CurveKind, Network};
 pub use patches::EnvelopePatch;
@@ -35,9 +38,11 @@ pub enum EnvelopeError {
     #[error("t of {what} is {t}: t must be finite and > 0 (ρ = t·r)")]
     BadT { what: String, t: f64 },
     #[error(
-        "{count} primitives: this version builds the envelope of one primitive; the curve network between several (silhouettes, vertex pairs, fusion edges, seed 004 §5) is not built yet"
+        "{count} primitives: this version envelopes one or two primitives; the network of three or more (sections cut again, straight edges, swallowed primitives, seed 004 §5.1.3 and §5.2 b) is not built yet"
     )]
     Several { count: usize },
+    #[error("primitives {a} and {b} have the same centre: there is no view vector between them")]
+    SameCentre { a: usize, b: usize },
     #[error("resolution {0} is out of range: 1 to 256")]
     Resolution(usize),
 }
@@ -88,12 +93,25 @@ pub fn envelope(spec: &EnvelopeSpec) -> Result<Envelope, EnvelopeError> {
         .enumerate()
         .map(|(i, p)| Primitive::new(i, p, spec.t))
         .collect::<Result<Vec<_>, _>>()?;
-    match primitives.len() {
-        0 => return Err(EnvelopeError::Empty),
-        1 => {}
-        count => return Err(EnvelopeError::Several { count }),
+    let mut network = Network::default();
+    match primitives.as_slice() {
+        [] => return Err(EnvelopeError::Empty),
+        [p] => {
+            trim::add_primitive(&mut network, p, 0, None)?;
+        }
+        [a, b] => {
+            let between = b.centre - a.centre;
+            if between.length() <= 1e-9 * a.radius.max(b.radius) {
+                return Err(EnvelopeError::SameCentre { a: 0, b: 1 });
+            }
+            let d = between.normalize();
+            let la = trim::add_primitive(&mut network, a, 0, Some(d))?;
+            let lb = trim::add_primitive(&mut network, b, 1, Some(-d))?;
+            fusion::fuse(&mut network, (a.centre, &la), (b.centre, &lb), d);
+        }
+        more => return Err(EnvelopeError::Several { count: more.len() }),
     }
-    let mut network = Network::of_primitive(&primitives[0], 0)?;
+    network.assign_bases();
     let regions = network.regions.len();
     let patches = patches::build(&mut network, &primitives);
     Ok(Envelope {

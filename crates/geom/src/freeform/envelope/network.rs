@@ -1,33 +1,39 @@
 //! The curve network of an envelope (seed 004 §4–§5; ALGORITHMS §11.1–11.5;
 //! docs/algorithms/envelope.md): network vertices with their tangent planes, rational cubic
-//! curves with their virtual bases (ALGORITHMS §8.2), and regions bounded by curves.
+//! curves with their virtual bases (ALGORITHMS §8.2), and regions bounded by curves or parts
+//! of curves.
 //!
-//! For one primitive the network is the primitive itself with curved edges (§6.3): every
-//! vertex's tangent plane is normal to `P − G`, which every edge curve touches there (§8.1),
-//! and every curve's basis follows rule (b) at both ends, `g = n × unit(C′)` (three or more
-//! curves meet at each vertex, none continuing another).
+//! Every curve of a primitive touches, at each of its ends, the plane normal to `P − G`
+//! there (§6.3), so that plane is the vertex's tangent plane (§8.1). A curve's basis is chosen
+//! per end once all regions exist ([`Network::assign_bases`]): rule (a), the crossing curves'
+//! common direction, where the two regions beside the curve leave that end along one line in
+//! opposite senses (the halves of a split border, a silhouette loop through a fusion edge's
+//! end); rule (b), `g = n × unit(C′)`, elsewhere (primitive corners, where three or more
+//! curves meet).
 
-use super::EnvelopeError;
-use super::edges::curved_edge;
-use super::primitive::Primitive;
 use crate::freeform::bezier::RationalBezier;
 use glam::DVec3;
-use std::collections::HashMap;
 
 /// What a network curve is, for display.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum CurveKind {
-    /// A curved edge of a primitive.
+    /// A curved edge of a primitive, or the kept part of one.
     Edge,
+    /// A silhouette edge: where a primitive is cut by its silhouette plane (§5.1).
+    Silhouette,
+    /// A fusion edge between two primitives' silhouette loops (§5.2).
+    Fusion,
     /// A curve inserted to split an n-sided region into quads (§6.3 of the paper).
     Insertion,
 }
 
-/// A network vertex and the unit normal of its tangent plane (outward).
+/// A network vertex: its position, the unit normal of its tangent plane (outward) and its
+/// curvature radius ρ = t·|P − G| (for the n-sided split's ρ̄).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct NetVertex {
     pub position: DVec3,
     pub normal: DVec3,
+    pub rho: f64,
 }
 
 /// A network curve from `ends[0]` (τ = 0) to `ends[1]` (τ = 1).
@@ -39,8 +45,8 @@ pub struct NetCurve {
     /// outside.
     pub basis: (DVec3, DVec3),
     pub kind: CurveKind,
-    /// Network vertices on the curve, by parameter (its ends and the points where an
-    /// n-sided region split it), ascending.
+    /// Network vertices on the curve, by parameter (its ends, the T-points where a fusion
+    /// quad's corner lies on it, the points where an n-sided region split it), ascending.
     pub pins: Vec<(f64, usize)>,
 }
 
@@ -51,13 +57,60 @@ impl NetCurve {
     }
 }
 
-/// A face of the network: its sides counter-clockwise seen from outside, each a curve and
-/// whether it runs forwards (τ 0 → 1).
+/// A side of a region or patch: curve `curve` from τ = t0 to τ = t1 (t0 > t1: backwards).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PatchSide {
+    pub curve: usize,
+    pub t0: f64,
+    pub t1: f64,
+}
+
+impl PatchSide {
+    /// The whole curve, forwards or backwards.
+    pub fn whole(curve: usize, forward: bool) -> PatchSide {
+        let (t0, t1) = if forward { (0.0, 1.0) } else { (1.0, 0.0) };
+        PatchSide { curve, t0, t1 }
+    }
+
+    /// Its first or second half.
+    pub fn half(&self, second: bool) -> PatchSide {
+        let mid = 0.5 * (self.t0 + self.t1);
+        if second {
+            PatchSide { t0: mid, ..*self }
+        } else {
+            PatchSide { t1: mid, ..*self }
+        }
+    }
+
+    /// The curve parameter at side parameter s.
+    pub fn tau(&self, s: f64) -> f64 {
+        self.t0 + (self.t1 - self.t0) * s
+    }
+
+    /// The same piece the other way.
+    pub fn reversed(&self) -> PatchSide {
+        PatchSide {
+            curve: self.curve,
+            t0: self.t1,
+            t1: self.t0,
+        }
+    }
+}
+
+/// What a region lies on.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum RegionKind {
+    /// (The kept part of) face `face` of primitive `primitive`.
+    Primitive { primitive: usize, face: usize },
+    /// A fusion quad between two primitives' silhouette loops.
+    Fusion,
+}
+
+/// A face of the network: its sides counter-clockwise seen from outside.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Region {
-    pub sides: Vec<(usize, bool)>,
-    /// The primitive and face it lies on.
-    pub face: (usize, usize),
+    pub sides: Vec<PatchSide>,
+    pub kind: RegionKind,
 }
 
 /// The network.
@@ -73,9 +126,22 @@ pub(crate) fn perpendicular(n: DVec3, tangent: DVec3) -> DVec3 {
     n.cross(tangent.normalize_or_zero())
 }
 
+/// Legs closer to antiparallel than this (radians) continue each other: rule (a).
+const STRAIGHT: f64 = 1e-9;
+
 impl Network {
+    /// Adds a vertex.
+    pub(crate) fn add_vertex(&mut self, position: DVec3, normal: DVec3, rho: f64) -> usize {
+        self.vertices.push(NetVertex {
+            position,
+            normal,
+            rho,
+        });
+        self.vertices.len() - 1
+    }
+
     /// Adds a curve between network vertices `a` and `b` with the basis from rule (b) at
-    /// both ends (callers override it where rule (a) applies).
+    /// both ends ([`Network::assign_bases`] revisits it once the regions exist).
     pub(crate) fn add_curve(
         &mut self,
         bezier: RationalBezier,
@@ -99,46 +165,71 @@ impl Network {
         self.curves.len() - 1
     }
 
-    /// The network of one primitive (index `index` in the scene): its vertices, curved
-    /// edges and faces.
-    pub fn of_primitive(p: &Primitive, index: usize) -> Result<Network, EnvelopeError> {
-        let mut net = Network {
-            vertices: p
-                .vertices
-                .iter()
-                .map(|&v| NetVertex {
-                    position: v,
-                    normal: (v - p.centre).normalize(),
-                })
-                .collect(),
-            ..Network::default()
-        };
-        let mut edge_curve: HashMap<(usize, usize), usize> = HashMap::new();
-        for (f, face) in p.faces.iter().enumerate() {
-            let mut sides = Vec::with_capacity(face.len());
-            for k in 0..face.len() {
-                let (a, b) = (face[k], face[(k + 1) % face.len()]);
-                let side = if let Some(&c) = edge_curve.get(&(b, a)) {
-                    (c, false)
-                } else {
-                    let bez = curved_edge(p.centre, p.vertices[a], p.vertices[b], p.t[a], p.t[b])
-                        .ok_or_else(|| EnvelopeError::Primitive {
-                        index,
-                        why: format!(
-                            "edge {a}-{b} cannot be curved (through or opposite the centre)"
-                        ),
-                    })?;
-                    let c = net.add_curve(bez, a, b, CurveKind::Edge);
-                    edge_curve.insert((a, b), c);
-                    (c, true)
-                };
-                sides.push(side);
+    /// The network vertex at τ on `curve` (an end or a pin), if any.
+    pub fn vertex_at(&self, curve: usize, tau: f64) -> Option<usize> {
+        self.curves[curve]
+            .pins
+            .iter()
+            .find(|&&(t, _)| (t - tau).abs() <= 1e-12)
+            .map(|&(_, v)| v)
+    }
+
+    /// Adds network vertex `v` at τ on `curve` (a T-point or a split point).
+    pub(crate) fn pin(&mut self, curve: usize, tau: f64, v: usize) {
+        let pins = &mut self.curves[curve].pins;
+        let at = pins.partition_point(|&(t, _)| t < tau);
+        pins.insert(at, (tau, v));
+    }
+
+    /// The derivative of a side's curve piece at its start (`end = false`) or end, in the
+    /// piece's own parameter.
+    pub(crate) fn side_derivative(&self, s: &PatchSide, end: bool) -> DVec3 {
+        let tau = if end { s.t1 } else { s.t0 };
+        self.curves[s.curve].bezier.derivatives(tau).d1 * (s.t1 - s.t0)
+    }
+
+    /// Chooses every curve's basis per end from the regions beside it (§8.2): rule (a) where
+    /// the two regions' legs at that end are antiparallel (the curves crossing there continue
+    /// each other), rule (b) elsewhere; oriented so that `g·(n × C′) > 0` at both ends.
+    pub fn assign_bases(&mut self) {
+        // Per (curve, end): the legs the regions beside it leave that end with.
+        let mut legs: Vec<[Vec<DVec3>; 2]> = vec![[Vec::new(), Vec::new()]; self.curves.len()];
+        for r in &self.regions {
+            let n = r.sides.len();
+            for k in 0..n {
+                let s = r.sides[k];
+                let (prev, next) = (&r.sides[(k + n - 1) % n], &r.sides[(k + 1) % n]);
+                for (tau, leg) in [
+                    (s.t0, -self.side_derivative(prev, true)),
+                    (s.t1, self.side_derivative(next, false)),
+                ] {
+                    if tau == 0.0 {
+                        legs[s.curve][0].push(leg);
+                    } else if tau == 1.0 {
+                        legs[s.curve][1].push(leg);
+                    }
+                }
             }
-            net.regions.push(Region {
-                sides,
-                face: (index, f),
-            });
         }
-        Ok(net)
+        for (c, legs) in legs.iter().enumerate() {
+            let curve = &self.curves[c];
+            let mut g = [DVec3::ZERO; 2];
+            for end in 0..2 {
+                let v = &self.vertices[curve.ends[end]];
+                let d = curve.bezier.derivatives(end as f64).d1.normalize_or_zero();
+                let side = v.normal.cross(d);
+                g[end] = match legs[end].as_slice() {
+                    [a, b]
+                        if a.cross(*b).length().atan2(a.dot(*b))
+                            > std::f64::consts::PI - STRAIGHT =>
+                    {
+                        let u = a.normalize_or_zero();
+                        if u.dot(side) >= 0.0 { u } else { -u }
+                    }
+                    _ => side,
+                };
+            }
+            self.curves[c].basis = (g[0], g[1]);
+        }
     }
 }

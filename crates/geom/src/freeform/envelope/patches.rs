@@ -26,7 +26,7 @@
 
 use super::coons::{Coons, Side};
 use super::edges::curved_edge;
-use super::network::{CurveKind, NetVertex, Network};
+use super::network::{CurveKind, Network, PatchSide, RegionKind};
 use super::primitive::Primitive;
 use crate::freeform::bezier::RationalBezier;
 use glam::DVec3;
@@ -34,34 +34,10 @@ use glam::DVec3;
 /// λ₀ of §11.7 step 5: the least leg an insertion curve leaves P_d with, in units of b_k.
 const LAMBDA_MIN: f64 = 0.25;
 
-/// A patch side: curve `curve` from τ = t0 to τ = t1 (t0 > t1: backwards).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct PatchSide {
-    pub curve: usize,
-    pub t0: f64,
-    pub t1: f64,
-}
-
-impl PatchSide {
-    fn whole((curve, forward): (usize, bool)) -> PatchSide {
-        let (t0, t1) = if forward { (0.0, 1.0) } else { (1.0, 0.0) };
-        PatchSide { curve, t0, t1 }
-    }
-
-    fn half(&self, second: bool) -> PatchSide {
-        let mid = 0.5 * (self.t0 + self.t1);
-        if second {
-            PatchSide { t0: mid, ..*self }
-        } else {
-            PatchSide { t1: mid, ..*self }
-        }
-    }
-
-    /// The curve parameter at side parameter s.
-    pub fn tau(&self, s: f64) -> f64 {
-        self.t0 + (self.t1 - self.t0) * s
-    }
-}
+/// The least share of the way from P_i to P_d (projected) that an insertion curve's middle
+/// control point P_m keeps: larger λ would put P_m past P_i, and the curve would leave P_i
+/// away from its P_d (a sub-quad with a negative angle at P_i: a fold).
+const LEAVE: f64 = 0.3;
 
 /// One four-sided patch: its sides in the network and its Coons patch.
 #[derive(Debug, Clone, PartialEq)]
@@ -132,18 +108,11 @@ fn virtual_crossing(g: DVec3, c: DVec3, u: DVec3, t: f64) -> f64 {
     }
 }
 
-/// Adds the pin of network vertex `v` at τ on `curve`.
-fn pin(net: &mut Network, curve: usize, tau: f64, v: usize) {
-    let pins = &mut net.curves[curve].pins;
-    let at = pins.partition_point(|&(t, _)| t < tau);
-    pins.insert(at, (tau, v));
-}
-
 /// Splits region `r` (not four-sided) into quads around an inserted point (§11.7), adding the
 /// new vertices and insertion curves to `net`.
 fn split(net: &mut Network, r: usize, prims: &[Primitive]) -> Vec<EnvelopePatch> {
     let region = net.regions[r].clone();
-    let sides: Vec<PatchSide> = region.sides.iter().map(|&s| PatchSide::whole(s)).collect();
+    let sides = region.sides.clone();
     let fitted = fitted_sides(net, &sides);
     let n = sides.len();
     let mut pd = Vec::with_capacity(n);
@@ -157,39 +126,59 @@ fn split(net: &mut Network, r: usize, prims: &[Primitive]) -> Vec<EnvelopePatch>
         tangent_d.push(d.d1);
     }
     let mean = (0..n).map(|k| pd[k] + 1.5 * b[k]).sum::<DVec3>() / n as f64;
-    let (pi_, normal) = {
-        let (pidx, f) = region.face;
-        let p = &prims[pidx];
-        let g = p.centre;
-        let u = (mean - g).normalize();
-        let corners = &p.faces[f];
-        let rho = corners
-            .iter()
-            .map(|&v| p.t[v] * p.vertices[v].distance(g))
-            .sum::<f64>()
-            / corners.len() as f64;
-        let nf = p.normals[f];
-        let d_face = nf.dot(p.vertices[corners[0]] - g) / nf.dot(u);
-        if rho > p.radius {
-            // t > 1: the paper's ρ̄ would put P_i at t·r, far beyond edges that bulge a few
-            // per cent; take where virtual edges cross the ray instead (envelope.md).
-            let d = corners
+    let (pi_, normal) = match region.kind {
+        RegionKind::Primitive { primitive, face } => {
+            let p = &prims[primitive];
+            let g = p.centre;
+            let u = (mean - g).normalize();
+            let corners: Vec<usize> = sides
                 .iter()
-                .map(|&v| virtual_crossing(p.centre, p.vertices[v], u, p.t[v]))
-                .sum::<f64>()
-                / corners.len() as f64;
-            (g + d * u, u)
-        } else if rho < d_face {
-            (g + d_face * u, nf)
-        } else {
-            (g + rho * u, u)
+                .map(|s| {
+                    net.vertex_at(s.curve, s.t0)
+                        .expect("a region corner is a vertex")
+                })
+                .collect();
+            let rho =
+                corners.iter().map(|&v| net.vertices[v].rho).sum::<f64>() / corners.len() as f64;
+            let nf = p.normals[face];
+            let d_face = nf.dot(p.vertices[p.faces[face][0]] - g) / nf.dot(u);
+            if rho > p.radius {
+                // t > 1: the paper's ρ̄ would put P_i at t·r, far beyond edges that bulge a
+                // few per cent; take where virtual edges cross the ray instead (envelope.md).
+                let d = corners
+                    .iter()
+                    .map(|&v| {
+                        let c = net.vertices[v].position;
+                        let t = net.vertices[v].rho / c.distance(g);
+                        virtual_crossing(g, c, u, t)
+                    })
+                    .sum::<f64>()
+                    / corners.len() as f64;
+                (g + d * u, u)
+            } else if rho < d_face {
+                // Clamped: on the face plane, at the centroid of the P_d projected onto it
+                // (the face centre for a regular face; inside a cut face's part, envelope.md).
+                let f0 = p.vertices[p.faces[face][0]];
+                let c = pd
+                    .iter()
+                    .map(|q| *q - (*q - f0).dot(nf) * nf)
+                    .sum::<DVec3>()
+                    / n as f64;
+                (c, nf)
+            } else {
+                (g + rho * u, u)
+            }
+        }
+        RegionKind::Fusion => {
+            let m = (0..n).map(|k| tangent_d[k].cross(b[k])).sum::<DVec3>();
+            (mean, m.normalize())
         }
     };
-    let vi = net.vertices.len();
-    net.vertices.push(NetVertex {
-        position: pi_,
-        normal,
-    });
+    let rho_i = match region.kind {
+        RegionKind::Primitive { primitive, .. } => pi_.distance(prims[primitive].centre),
+        RegionKind::Fusion => 0.0,
+    };
+    let vi = net.add_vertex(pi_, normal, rho_i);
     let mut ins = Vec::with_capacity(n);
     for k in 0..n {
         let nd = tangent_d[k].cross(b[k]).normalize();
@@ -203,12 +192,8 @@ fn split(net: &mut Network, r: usize, prims: &[Primitive]) -> Vec<EnvelopePatch>
         let vd = match known {
             Some(v) => v,
             None => {
-                net.vertices.push(NetVertex {
-                    position: pd[k],
-                    normal: nd,
-                });
-                let v = net.vertices.len() - 1;
-                pin(net, sides[k].curve, tau, v);
+                let v = net.add_vertex(pd[k], nd, 0.0);
+                net.pin(sides[k].curve, tau, v);
                 v
             }
         };
@@ -219,6 +204,15 @@ fn split(net: &mut Network, r: usize, prims: &[Primitive]) -> Vec<EnvelopePatch>
             ((pi_ - pd[k]).dot(normal) / bn).max(LAMBDA_MIN)
         };
         let proj = |x: DVec3| x - x.dot(normal) * normal;
+        // The curve must leave P_i towards its P_d: P_m's projection at least LEAVE of the
+        // way from P_i to P_d's (envelope.md, "The star condition at P_i").
+        let w = proj(pd[k] - pi_);
+        let beta = proj(b[k]).dot(w);
+        let lambda = if beta < 0.0 {
+            lambda.min(((1.0 - LEAVE) * w.length_squared() / -beta).max(LAMBDA_MIN))
+        } else {
+            lambda
+        };
         let bez = RationalBezier::polynomial(vec![
             pi_,
             pi_ + 2.0 / 3.0 * proj(pd[k] + lambda * b[k] - pi_),
@@ -266,8 +260,8 @@ pub fn build(net: &mut Network, prims: &[Primitive]) -> Vec<EnvelopePatch> {
     for r in 0..net.regions.len() {
         let sides = &net.regions[r].sides;
         if sides.len() == 4 {
-            let quad: Vec<PatchSide> = sides.iter().map(|&s| PatchSide::whole(s)).collect();
-            out.push(patch(net, quad.try_into().expect("four"), r));
+            let quad: [PatchSide; 4] = sides.clone().try_into().expect("four");
+            out.push(patch(net, quad, r));
         } else {
             out.extend(split(net, r, prims));
         }
