@@ -493,3 +493,30 @@ fn two_primitives_with_one_centre_or_three_are_refused() {
     .unwrap_err();
     assert!(e.to_string().contains("3 primitives"), "{e}");
 }
+
+/// Two cubes off every symmetry axis: at t = 0.3 the rebuilt kept pieces of two edges hooked
+/// (no convex arc leaves the corner and reaches the silhouette point normal to both radii) and
+/// the surface folded (analytic border jump 180°, 10 of 896 faces inwards); with the edge's own
+/// piece kept there, closed, outward and G1 for t from 0.3 to 1.
+#[test]
+fn an_off_axis_pair_keeps_the_edge_where_the_rebuilt_piece_would_hook() {
+    let gb = DVec3::new(3.0, 1.2, 0.6);
+    for t in [1.0, 0.7, 0.5, 0.3] {
+        let e = pair(
+            cube_at([0.0; 3], [0.0; 3]),
+            cube_at(gb.to_array(), [0.0; 3]),
+            t,
+        );
+        for c in &e.network.curves {
+            let chord = c.bezier.eval(1.0) - c.bezier.eval(0.0);
+            assert!(
+                c.bezier.derivatives(0.0).d1.dot(chord) > 0.0,
+                "t = {t}: a hook"
+            );
+        }
+        let jump = e.largest_border_jump();
+        assert!(jump < 1e-9, "t = {t}: {jump}°");
+        let m = e.tessellate(8).unwrap();
+        assert_closed_outward_from(&m, DVec3::ZERO, gb, &format!("t = {t}"));
+    }
+}

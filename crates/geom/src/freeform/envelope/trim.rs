@@ -8,7 +8,10 @@
 //! of `(C(τ) − G)·k` (bisection to 1e-15), and the kept piece from the kept vertex to S is
 //! **rebuilt** with §6.3 so that at S too its tangent is normal to S − G, with t at S
 //! interpolated between the edge's ends by central angle (for t = 1 the pieces are arcs of the
-//! same great circle and nothing changes). A face cut by Π keeps its part on the kept side,
+//! same great circle and nothing changes). Where no such arc exists — the rebuilt piece would
+//! leave A or reach S backwards (a hook), as when S is much nearer G than A at a small central
+//! angle (small t) — the edge's own piece up to S is kept, and S's tangent plane is the one
+//! through that piece's tangent and the silhouette loop's. A face cut by Π keeps its part on the kept side,
 //! closed by a **silhouette edge** from where its boundary leaves the kept side to where it
 //! comes back, built in Π with §6.3 (centre G, ρ = t·|S − G| at each end). A kept face's edge
 //! that lies in Π beside a removed face is a silhouette edge as it is. The silhouette edges
@@ -101,8 +104,29 @@ pub fn add_primitive(
             let angle = |x: DVec3, y: DVec3| x.cross(y).length().atan2(x.dot(y));
             let share = angle(va, s - g) / angle(va, vb).max(f64::MIN_POSITIVE);
             let ts = p.t[a] + (p.t[b] - p.t[a]) * share;
-            let vs = net.add_vertex(s, (s - g).normalize(), ts * s.distance(g));
-            let bez = curved_edge(g, p.vertices[a], s, p.t[a], ts).ok_or_else(|| bad_edge(a, b))?;
+            let tau = 0.5 * (lo + hi);
+            let rebuilt =
+                curved_edge(g, p.vertices[a], s, p.t[a], ts).ok_or_else(|| bad_edge(a, b))?;
+            let chord = s - p.vertices[a];
+            let hooks = |c: &crate::freeform::bezier::RationalBezier| {
+                c.derivatives(0.0).d1.dot(chord) <= 0.0 || c.derivatives(1.0).d1.dot(chord) <= 0.0
+            };
+            let (bez, normal) = if hooks(&rebuilt) {
+                // No convex arc leaves A and reaches S normal to both radii (|A − G|cos γ >
+                // |S − G|): the edge's own piece up to S instead. Its tangent at S is not
+                // normal to S − G, so S's tangent plane is the one through it and the loop's.
+                let piece = full.split(tau).0;
+                let along = piece.derivatives(1.0).d1;
+                let loop_dir = k.cross(s - g);
+                let mut n = loop_dir.cross(along).normalize();
+                if n.dot(s - g) < 0.0 {
+                    n = -n;
+                }
+                (piece, n)
+            } else {
+                (rebuilt, (s - g).normalize())
+            };
+            let vs = net.add_vertex(s, normal, ts * s.distance(g));
             let c = net.add_curve(bez, vid[a].expect("kept"), vs, CurveKind::Edge);
             crossed.insert(key, (c, vs));
             Ok((c, vs))
