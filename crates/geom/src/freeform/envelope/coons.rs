@@ -105,24 +105,23 @@ fn blend(wa: f64, a: DVec3, wb: f64, b: DVec3) -> DVec3 {
     }
 }
 
+/// What the patch needs of its corners: positions, cross derivatives and their derivatives
+/// along the sides (for the twists).
+struct Corners {
+    /// Positions and e (S_v) at the corners: rows H₀(u), H₁(u), G₀… of the Hermite tensor.
+    m: [[DVec3; 2]; 4],
+    /// f (S_u) at (0, 0), (0, 1), (1, 0), (1, 1).
+    cross: [DVec3; 4],
+    /// Twist pairs per corner (00, 01, 10, 11): (f′, e′).
+    twists: [(DVec3, DVec3); 4],
+}
+
+/// The boundary data of the line u = const (c₀, c₁, e₀, e₁) or v = const (d₀, d₁, f₀, f₁).
+type Line = [DVec3; 4];
+
 impl Coons {
-    /// The point at (u, v).
-    pub fn eval(&self, u: f64, v: f64) -> DVec3 {
+    fn corners(&self) -> Corners {
         let [s0, s1, s2, s3] = &self.sides;
-        let c0 = s0.curve.eval(u);
-        let c1 = s2.curve.eval(1.0 - u);
-        let d0 = s3.curve.eval(1.0 - v);
-        let d1 = s1.curve.eval(v);
-        let (x0u, _) = s0.cross(u);
-        let (x2u, _) = s2.cross(1.0 - u);
-        let (x3v, _) = s3.cross(1.0 - v);
-        let (x1v, _) = s1.cross(v);
-        let (e0, e1, f0, f1) = (x0u, -x2u, x3v, -x1v);
-        let hu = hermite(u);
-        let hv = hermite(v);
-        let lu = hu[0] * d0 + hu[1] * d1 + hu[2] * f0 + hu[3] * f1;
-        let lv = hv[0] * c0 + hv[1] * c1 + hv[2] * e0 + hv[3] * e1;
-        // Corner data.
         let p00 = s0.curve.eval(0.0);
         let p10 = s1.curve.eval(0.0);
         let p11 = s2.curve.eval(0.0);
@@ -139,25 +138,85 @@ impl Coons {
         // e₀′ = X₀′(u), e₁′ = X₂′(1−u), f₀′ = −X₃′(1−v), f₁′ = −X₁′(v).
         let (e0_0, e0_1, e1_0, e1_1) = (x0a, x0b, -x2b, -x2a);
         let (f0_0, f0_1, f1_0, f1_1) = (x3b, x3a, -x1a, -x1b);
-        let (de0_0, de0_1, de1_0, de1_1) = (dx0a, dx0b, dx2b, dx2a);
-        let (df0_0, df0_1, df1_0, df1_1) = (-dx3b, -dx3a, -dx1a, -dx1b);
-        let t00 = blend(u, df0_0, v, de0_0);
-        let t01 = blend(u, df0_1, 1.0 - v, de1_0);
-        let t10 = blend(1.0 - u, df1_0, v, de0_1);
-        let t11 = blend(1.0 - u, df1_1, 1.0 - v, de1_1);
-        let m = [
-            [p00, p01, e0_0, e1_0],
-            [p10, p11, e0_1, e1_1],
-            [f0_0, f0_1, t00, t01],
-            [f1_0, f1_1, t10, t11],
+        Corners {
+            m: [[p00, p01], [p10, p11], [e0_0, e1_0], [e0_1, e1_1]],
+            cross: [f0_0, f0_1, f1_0, f1_1],
+            twists: [(-dx3b, dx0a), (-dx3a, dx2b), (-dx1a, dx0b), (-dx1b, dx2a)],
+        }
+    }
+
+    /// The data along the line u = const.
+    fn u_line(&self, u: f64) -> Line {
+        let [s0, _, s2, _] = &self.sides;
+        [
+            s0.curve.eval(u),
+            s2.curve.eval(1.0 - u),
+            s0.cross(u).0,
+            -s2.cross(1.0 - u).0,
+        ]
+    }
+
+    /// The data along the line v = const.
+    fn v_line(&self, v: f64) -> Line {
+        let [_, s1, _, s3] = &self.sides;
+        [
+            s3.curve.eval(1.0 - v),
+            s1.curve.eval(v),
+            s3.cross(1.0 - v).0,
+            -s1.cross(v).0,
+        ]
+    }
+
+    fn combine(c: &Corners, u: f64, v: f64, ul: &Line, vl: &Line) -> DVec3 {
+        let hu = hermite(u);
+        let hv = hermite(v);
+        let lu = hu[0] * vl[0] + hu[1] * vl[1] + hu[2] * vl[2] + hu[3] * vl[3];
+        let lv = hv[0] * ul[0] + hv[1] * ul[1] + hv[2] * ul[2] + hv[3] * ul[3];
+        let [(f00, e00), (f01, e01), (f10, e10), (f11, e11)] = c.twists;
+        let t00 = blend(u, f00, v, e00);
+        let t01 = blend(u, f01, 1.0 - v, e01);
+        let t10 = blend(1.0 - u, f10, v, e10);
+        let t11 = blend(1.0 - u, f11, 1.0 - v, e11);
+        // Rows: H₀(u), H₁(u), G₀(u), G₁(u); columns H₀(v), H₁(v), G₀(v), G₁(v).
+        let rows = [
+            [c.m[0][0], c.m[0][1], c.m[2][0], c.m[2][1]],
+            [c.m[1][0], c.m[1][1], c.m[3][0], c.m[3][1]],
+            [c.cross[0], c.cross[1], t00, t01],
+            [c.cross[2], c.cross[3], t10, t11],
         ];
         let mut t = DVec3::ZERO;
         for a in 0..4 {
             for b in 0..4 {
-                t += hu[a] * hv[b] * m[a][b];
+                t += hu[a] * hv[b] * rows[a][b];
             }
         }
         lu + lv - t
+    }
+
+    /// The point at (u, v).
+    pub fn eval(&self, u: f64, v: f64) -> DVec3 {
+        Coons::combine(&self.corners(), u, v, &self.u_line(u), &self.v_line(v))
+    }
+
+    /// The points at (i/k, j/k), i + (k + 1)j: the boundary data computed once per line.
+    pub fn grid(&self, k: usize) -> Vec<DVec3> {
+        let kf = k as f64;
+        let c = self.corners();
+        let ul: Vec<Line> = (0..=k).map(|i| self.u_line(i as f64 / kf)).collect();
+        let vl: Vec<Line> = (0..=k).map(|j| self.v_line(j as f64 / kf)).collect();
+        let mut out = Vec::with_capacity((k + 1) * (k + 1));
+        for (j, vline) in vl.iter().enumerate() {
+            for (i, uline) in ul.iter().enumerate() {
+                out.push(Coons::combine(
+                    &c,
+                    i as f64 / kf,
+                    j as f64 / kf,
+                    uline,
+                    vline,
+                ));
+            }
+        }
+        out
     }
 
     /// The unit normal at (u, v) by central differences (one-sided at the borders).

@@ -79,6 +79,7 @@ pub fn tessellate(net: &Network, patches: &[EnvelopePatch], k: usize) -> PolyMes
     let mut faces: Vec<Vec<u32>> = Vec::with_capacity(patches.len() * k * k);
     for p in patches {
         let n = k + 1;
+        let inner = p.coons.grid(k);
         let mut grid = vec![0u32; n * n];
         let at = |i: usize, j: usize| i + n * j;
         for i in 0..n {
@@ -100,7 +101,7 @@ pub fn tessellate(net: &Network, patches: &[EnvelopePatch], k: usize) -> PolyMes
                         samples.id(ps.curve, ps.tau(s))
                     }
                     None => {
-                        positions.push(p.coons.eval(i as f64 / kf, j as f64 / kf));
+                        positions.push(inner[at(i, j)]);
                         (positions.len() - 1) as u32
                     }
                 };
