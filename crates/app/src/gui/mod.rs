@@ -58,6 +58,8 @@ pub enum Show {
     Cage,
     Corners,
     Limit,
+    /// The Envelope tab's t sweep (t = 1, 0.5, 0.1 side by side).
+    TSweep,
 }
 
 /// The app's tabs.
@@ -190,6 +192,7 @@ impl PrismApp {
                 Show::Cage => display.cage = true,
                 Show::Corners => display.corners = true,
                 Show::Limit => display.limit = true,
+                Show::TSweep => {}
             }
         }
         let next = prism_geom::parse_pipeline(&settings.next)
@@ -206,13 +209,15 @@ impl PrismApp {
         let last_file = origin.path.clone().or(settings.last_file);
         let doc = Document::new(state, origin);
         model.sync(&doc);
+        let mut envelope = envelope::EnvelopeTab::default();
+        envelope.sweep = launch.show.contains(&Show::TSweep);
         Ok(PrismApp {
             doc,
             tab: launch.tab.unwrap_or_default(),
             model,
             curves: curves::CurvesTab::default(),
             skin: skin::SkinTab::default(),
-            envelope: envelope::EnvelopeTab::default(),
+            envelope,
             new_solid: Default::default(),
             note: None,
             note_at: 0,

@@ -147,3 +147,34 @@ fn a_bad_scene_shows_its_message_and_keeps_the_scene() {
         a.note
     );
 }
+
+/// The t sweep builds the scene at t = 1, 0.5, 0.1 with the own values of vertices dropped,
+/// and follows the scene when it changes.
+#[test]
+fn the_t_sweep_shows_the_three_t() {
+    let mut a = app();
+    let mut spec = envelope::sample(2).unwrap();
+    spec.primitives[0].vertex_t = Some(vec![0.3; 8]);
+    a.run(Command::Edit(Edit::SetEnvelope {
+        spec: Some(spec.clone()),
+        gesture: None,
+    }));
+    a.envelope.sweep = true;
+    a.envelope.sync(a.doc.state().envelope.as_ref());
+    assert_eq!(
+        a.envelope.sweep_summary(),
+        vec![(1.0, Some(14)), (0.5, Some(14)), (0.1, Some(14))]
+    );
+    let one = envelope::with_uniform_t(&spec, 1.0);
+    assert!(one.primitives.iter().all(|p| p.vertex_t.is_none()));
+    spec.primitives.pop();
+    a.run(Command::Edit(Edit::SetEnvelope {
+        spec: Some(spec),
+        gesture: None,
+    }));
+    a.envelope.sync(a.doc.state().envelope.as_ref());
+    assert_eq!(
+        a.envelope.sweep_summary(),
+        vec![(1.0, Some(6)), (0.5, Some(6)), (0.1, Some(6))]
+    );
+}

@@ -75,8 +75,31 @@ pub fn of_shape(shape: Shape) -> EnvelopeSpec {
     }
 }
 
-/// The view slot of the Envelope tab's 3D view (the Model tab uses 0–3, the Skin tab 16).
+/// The view slot of the Envelope tab's 3D view (the Model tab uses 0–3, the Skin tab 16); the
+/// t sweep's three views use the next three.
 const VIEW_SLOT: usize = 17;
+
+/// The t of the sweep's views (the paper's Table 1).
+pub const SWEEP: [f64; 3] = [1.0, 0.5, 0.1];
+
+/// One view of the t sweep: its t, build and scenes.
+struct SweepView {
+    t: f64,
+    built: Built,
+    scene: Arc<Scene>,
+    overlay: Arc<Scene>,
+}
+
+/// The scene with one uniform t (own values of primitives and vertices dropped).
+pub fn with_uniform_t(spec: &EnvelopeSpec, t: f64) -> EnvelopeSpec {
+    let mut s = spec.clone();
+    s.t = t;
+    for p in &mut s.primitives {
+        p.t = None;
+        p.vertex_t = None;
+    }
+    s
+}
 
 /// What a primary drag in the view does.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -104,6 +127,9 @@ pub struct EnvelopeTab {
     pub mouse: Mouse,
     drag: Option<(u64, Vec<[f64; 3]>)>,
     pub overlays: Overlays,
+    /// Shows t = 1, 0.5, 0.1 side by side instead of the one view (Table 1).
+    pub sweep: bool,
+    sweep_views: Vec<SweepView>,
     pub has_gpu: bool,
     camera: Camera,
     framed: bool,
@@ -125,6 +151,8 @@ impl Default for EnvelopeTab {
             mouse: Mouse::Orbit,
             drag: None,
             overlays: Overlays::default(),
+            sweep: false,
+            sweep_views: Vec::new(),
             has_gpu: false,
             camera: Camera::default(),
             framed: false,
@@ -195,6 +223,22 @@ impl EnvelopeTab {
             (self.scene, self.overlay) = build::scenes(b, self.picked, &self.overlays);
             self.version += 1;
             self.shown = Some((self.picked, self.overlays));
+            self.sweep_views.clear();
+        }
+        if self.sweep && self.sweep_views.is_empty() {
+            self.sweep_views = SWEEP
+                .iter()
+                .map(|&t| {
+                    let built = Built::new(&with_uniform_t(spec, t));
+                    let (scene, overlay) = build::scenes(&built, None, &self.overlays);
+                    SweepView {
+                        t,
+                        built,
+                        scene,
+                        overlay,
+                    }
+                })
+                .collect();
         }
     }
 
@@ -362,6 +406,8 @@ impl EnvelopeTab {
         ui.checkbox(&mut o.wireframe, "Iso-parameter lines");
         ui.checkbox(&mut o.curvature, "Mean-curvature colours");
         ui.checkbox(&mut o.smooth, "Smooth shading");
+        ui.checkbox(&mut self.sweep, "t sweep: t = 1, 0.5, 0.1 side by side")
+            .on_hover_text("The paper's Table 1: the same scene with one t everywhere, three views sharing the camera");
         ui.horizontal(|ui| {
             if ui.button("Frame the envelope").clicked() {
                 self.frame_view();
@@ -582,6 +628,70 @@ impl EnvelopeTab {
         }
     }
 
+    /// The sweep's views: t and the number of patches (none when the envelope failed).
+    pub fn sweep_summary(&self) -> Vec<(f64, Option<usize>)> {
+        self.sweep_views
+            .iter()
+            .map(|v| {
+                (
+                    v.t,
+                    v.built.result.as_ref().ok().map(|(e, _)| e.patches.len()),
+                )
+            })
+            .collect()
+    }
+
+    /// The t sweep: three views side by side, one camera, each labelled with its t and its
+    /// patches (or why it has none).
+    fn paint_sweep(&self, ui: &egui::Ui, rect: egui::Rect) {
+        let w = rect.width() / self.sweep_views.len() as f32;
+        // A cell is narrower than the view the camera was framed for: move back so that the
+        // same width shows (the model's width fills a cell as its height filled the view).
+        let mut camera = self.camera;
+        let cell_aspect = w / rect.height().max(1.0);
+        let aspect = rect.width() / rect.height().max(1.0);
+        camera.zoom((0.8 * aspect.min(1.0) / cell_aspect).max(1.0));
+        let summary = self.sweep_summary();
+        for (i, v) in self.sweep_views.iter().enumerate() {
+            let cell = egui::Rect::from_min_size(
+                rect.left_top() + egui::vec2(i as f32 * w, 0.0),
+                egui::vec2(w, rect.height()),
+            );
+            if self.has_gpu {
+                ui.painter().add(egui_wgpu::Callback::new_paint_callback(
+                    cell,
+                    viewport::ViewCallback {
+                        view: VIEW_SLOT + 1 + i,
+                        scene: v.scene.clone(),
+                        overlay: v.overlay.clone(),
+                        version: self.version,
+                        camera,
+                        aspect: cell.width() / cell.height().max(1.0),
+                    },
+                ));
+            }
+            if i > 0 {
+                ui.painter().vline(
+                    cell.left(),
+                    cell.y_range(),
+                    egui::Stroke::new(1.0, egui::Color32::from_gray(90)),
+                );
+            }
+            let text = match (summary[i].1, &v.built.result) {
+                (Some(n), _) => format!("t = {}: {n} patches", v.t),
+                (None, Err(e)) => format!("t = {}: {e}", v.t),
+                (None, Ok(_)) => format!("t = {}", v.t),
+            };
+            ui.painter().text(
+                cell.left_top() + egui::vec2(8.0, 8.0),
+                egui::Align2::LEFT_TOP,
+                text,
+                egui::FontId::proportional(14.0),
+                egui::Color32::from_gray(220),
+            );
+        }
+    }
+
     fn view(&mut self, ui: &mut egui::Ui, spec: Option<&EnvelopeSpec>) {
         let rect = ui.available_rect_before_wrap();
         let Some(spec) = spec else {
@@ -634,7 +744,9 @@ impl EnvelopeTab {
             }
         }
         viewport::paint_background(ui, rect);
-        if self.has_gpu {
+        if self.sweep && !self.sweep_views.is_empty() {
+            self.paint_sweep(ui, rect);
+        } else if self.has_gpu {
             ui.painter().add(egui_wgpu::Callback::new_paint_callback(
                 rect,
                 viewport::ViewCallback {
