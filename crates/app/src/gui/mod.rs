@@ -23,6 +23,7 @@ mod gestures;
 pub mod model;
 mod new_solid;
 pub(crate) mod skin;
+mod view3d;
 mod viewport;
 
 #[cfg(test)]
@@ -243,8 +244,8 @@ impl PrismApp {
         };
         let mut app = PrismApp::headless(launch, settings)?;
         app.model.has_gpu = true;
-        app.skin.has_gpu = true;
-        app.envelope.has_gpu = true;
+        app.skin.view.has_gpu = true;
+        app.envelope.view.has_gpu = true;
         let ctx = cc.egui_ctx.clone();
         app.model.waker = Arc::new(move || ctx.request_repaint());
         Ok(app)

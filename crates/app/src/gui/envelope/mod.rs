@@ -12,11 +12,12 @@ mod build;
 use super::command::{Command, Edit};
 use super::gestures::Gestures;
 use super::model::pick::{Projector, pick_vertex};
+use super::view3d::View3d;
 use super::viewport;
 use build::{Built, Overlays};
 use glam::{DQuat, DVec3};
 use prism_geom::freeform::envelope::{EnvelopeSpec, Placement, PrimitiveInput, Shape};
-use prism_viewport::{Camera, Scene, View};
+use prism_viewport::Scene;
 use std::sync::Arc;
 
 /// The bundled scenes: name, file name, contents.
@@ -130,13 +131,8 @@ pub struct EnvelopeTab {
     /// Shows t = 1, 0.5, 0.1 side by side instead of the one view (Table 1).
     pub sweep: bool,
     sweep_views: Vec<SweepView>,
-    pub has_gpu: bool,
-    camera: Camera,
-    framed: bool,
+    pub view: View3d,
     built: Option<Built>,
-    scene: Arc<Scene>,
-    overlay: Arc<Scene>,
-    version: u64,
     shown: Option<(Option<(usize, usize)>, Overlays)>,
     gestures: Gestures,
     gesture: Gesture,
@@ -153,13 +149,8 @@ impl Default for EnvelopeTab {
             overlays: Overlays::default(),
             sweep: false,
             sweep_views: Vec::new(),
-            has_gpu: false,
-            camera: Camera::default(),
-            framed: false,
+            view: View3d::new(VIEW_SLOT),
             built: None,
-            scene: Arc::new(Scene::default()),
-            overlay: Arc::new(Scene::default()),
-            version: 0,
             shown: None,
             gestures: Gestures::default(),
             gesture: Gesture {
@@ -202,8 +193,7 @@ impl EnvelopeTab {
     pub fn sync(&mut self, spec: Option<&EnvelopeSpec>) {
         let Some(spec) = spec else {
             self.built = None;
-            self.scene = Arc::new(Scene::default());
-            self.overlay = Arc::new(Scene::default());
+            self.view.clear();
             self.shown = None;
             self.picked = None;
             return;
@@ -220,8 +210,8 @@ impl EnvelopeTab {
         self.selected = self.selected.min(spec.primitives.len().saturating_sub(1));
         if fresh || self.shown != Some((self.picked, self.overlays)) {
             let b = self.built.as_ref().expect("built above");
-            (self.scene, self.overlay) = build::scenes(b, self.picked, &self.overlays);
-            self.version += 1;
+            self.view
+                .show(build::scenes(b, self.picked, &self.overlays));
             self.shown = Some((self.picked, self.overlays));
             self.sweep_views.clear();
         }
@@ -245,23 +235,18 @@ impl EnvelopeTab {
     /// The screen mapping of the view in `rect` (clicks pick vertices with it).
     pub fn projector(&self, rect: egui::Rect) -> Projector {
         Projector {
-            view_proj: self.camera.view_proj(rect.width() / rect.height().max(1.0)),
+            view_proj: self
+                .view
+                .camera
+                .view_proj(rect.width() / rect.height().max(1.0)),
             rect,
-            origin: self.scene.origin,
+            origin: self.view.scene.origin,
         }
     }
 
     /// Frames the envelope again on the next frame (a new sample).
     pub fn reframe(&mut self) {
-        self.framed = false;
-    }
-
-    fn frame_view(&mut self) {
-        let (lo, hi) = self.scene.bbox;
-        let r = (0.5 * (hi - lo).length()).max(1e-6) as f32;
-        let c = self.scene.to_local(0.5 * (lo + hi));
-        self.camera = Camera::looking(View::Iso, c, r * 1.1);
-        self.framed = true;
+        self.view.reframe();
     }
 
     fn set(&mut self, spec: Option<EnvelopeSpec>, gesture: Option<u64>) {
@@ -288,7 +273,7 @@ impl EnvelopeTab {
             ui.horizontal_wrapped(|ui| {
                 for (name, shape) in LIBRARY {
                     if ui.button(name).clicked() {
-                        self.framed = false;
+                        self.view.reframe();
                         self.set(Some(of_shape(shape)), None);
                     }
                 }
@@ -298,7 +283,7 @@ impl EnvelopeTab {
                 if ui.button(*name).clicked() {
                     match sample(k) {
                         Ok(s) => {
-                            self.framed = false;
+                            self.view.reframe();
                             self.set(Some(s), None);
                         }
                         Err(e) => self.out.push(Command::Say(e)),
@@ -410,7 +395,7 @@ impl EnvelopeTab {
             .on_hover_text("The paper's Table 1: the same scene with one t everywhere, three views sharing the camera");
         ui.horizontal(|ui| {
             if ui.button("Frame the envelope").clicked() {
-                self.frame_view();
+                self.view.frame();
             }
             if ui.button("Clear").clicked() {
                 self.set(None, None);
@@ -607,6 +592,7 @@ impl EnvelopeTab {
             let q = match self.mouse {
                 Mouse::Move => {
                     let by = self
+                        .view
                         .camera
                         .drag_in_view_plane(total.x, total.y, rect.height())
                         .as_dvec3();
@@ -647,7 +633,7 @@ impl EnvelopeTab {
         let w = rect.width() / self.sweep_views.len() as f32;
         // A cell is narrower than the view the camera was framed for: move back so that the
         // same width shows (the model's width fills a cell as its height filled the view).
-        let mut camera = self.camera;
+        let mut camera = self.view.camera;
         let cell_aspect = w / rect.height().max(1.0);
         let aspect = rect.width() / rect.height().max(1.0);
         camera.zoom((0.8 * aspect.min(1.0) / cell_aspect).max(1.0));
@@ -657,19 +643,8 @@ impl EnvelopeTab {
                 rect.left_top() + egui::vec2(i as f32 * w, 0.0),
                 egui::vec2(w, rect.height()),
             );
-            if self.has_gpu {
-                ui.painter().add(egui_wgpu::Callback::new_paint_callback(
-                    cell,
-                    viewport::ViewCallback {
-                        view: VIEW_SLOT + 1 + i,
-                        scene: v.scene.clone(),
-                        overlay: v.overlay.clone(),
-                        version: self.version,
-                        camera,
-                        aspect: cell.width() / cell.height().max(1.0),
-                    },
-                ));
-            }
+            self.view
+                .paint_scene(ui, cell, 1 + i, (&v.scene, &v.overlay), camera);
             if i > 0 {
                 ui.painter().vline(
                     cell.left(),
@@ -700,26 +675,9 @@ impl EnvelopeTab {
             });
             return;
         };
-        if !self.framed && self.scene.bbox.0 != self.scene.bbox.1 {
-            self.frame_view();
-        }
-        let resp = ui.interact(
-            rect,
-            ui.scope_id().with("envelope_view"),
-            egui::Sense::click_and_drag(),
-        );
-        let (orbit, pan) = if self.mouse == Mouse::Orbit {
-            (
-                egui::PointerButton::Primary,
-                [egui::PointerButton::Secondary, egui::PointerButton::Middle],
-            )
-        } else {
-            (
-                egui::PointerButton::Secondary,
-                [egui::PointerButton::Middle, egui::PointerButton::Middle],
-            )
-        };
-        viewport::camera_input(&mut self.camera, ui, &resp, rect, orbit, &pan);
+        let resp = self
+            .view
+            .interact(ui, rect, "envelope_view", self.mouse == Mouse::Orbit);
         if self.mouse != Mouse::Orbit {
             self.primitive_drag(ui, &resp, rect, spec);
         }
@@ -743,25 +701,15 @@ impl EnvelopeTab {
                 self.selected = p;
             }
         }
-        viewport::paint_background(ui, rect);
         if self.sweep && !self.sweep_views.is_empty() {
+            viewport::paint_background(ui, rect);
             self.paint_sweep(ui, rect);
-        } else if self.has_gpu {
-            ui.painter().add(egui_wgpu::Callback::new_paint_callback(
-                rect,
-                viewport::ViewCallback {
-                    view: VIEW_SLOT,
-                    scene: self.scene.clone(),
-                    overlay: self.overlay.clone(),
-                    version: self.version,
-                    camera: self.camera,
-                    aspect: rect.width() / rect.height().max(1.0),
-                },
-            ));
+        } else {
+            self.view.paint(ui, rect);
         }
-        ui.painter().text(
-            rect.left_bottom() + egui::vec2(8.0, -8.0),
-            egui::Align2::LEFT_BOTTOM,
+        View3d::hint(
+            ui,
+            rect,
             match self.mouse {
                 Mouse::Orbit => {
                     "drag: orbit · right drag: pan · wheel: zoom · click: pick a vertex"
@@ -771,8 +719,6 @@ impl EnvelopeTab {
                 }
                 Mouse::Scale => "drag up or down: scale the selected primitive · right drag: orbit",
             },
-            egui::FontId::proportional(12.0),
-            egui::Color32::from_gray(170),
         );
     }
 }

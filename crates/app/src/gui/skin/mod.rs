@@ -8,12 +8,10 @@ mod build;
 
 use super::command::{Command, Edit};
 use super::gestures::Gestures;
-use super::viewport;
+use super::view3d::View3d;
 use build::{Built, Overlays};
 use glam::{DQuat, DVec3};
 use prism_geom::freeform::{Basis, SectionInput, SkinSpec};
-use prism_viewport::{Camera, Scene, View};
-use std::sync::Arc;
 
 /// The bundled section sets: name, file name, contents.
 pub const SKIN_SAMPLES: [(&str, &str, &str); 3] = [
@@ -78,13 +76,8 @@ pub struct SkinTab {
     pub mouse: Mouse,
     drag: Option<SectionDrag>,
     pub overlays: Overlays,
-    pub has_gpu: bool,
-    camera: Camera,
-    framed: bool,
+    pub view: View3d,
     built: Option<Built>,
-    scene: Arc<Scene>,
-    overlay: Arc<Scene>,
-    version: u64,
     shown: Option<(usize, Overlays)>,
     gestures: Gestures,
     gesture: Gesture,
@@ -98,13 +91,8 @@ impl Default for SkinTab {
             mouse: Mouse::Orbit,
             drag: None,
             overlays: Overlays::default(),
-            has_gpu: false,
-            camera: Camera::default(),
-            framed: false,
+            view: View3d::new(VIEW_SLOT),
             built: None,
-            scene: Arc::new(Scene::default()),
-            overlay: Arc::new(Scene::default()),
-            version: 0,
             shown: None,
             gestures: Gestures::default(),
             gesture: Gesture {
@@ -141,8 +129,7 @@ impl SkinTab {
     pub fn sync(&mut self, spec: Option<&SkinSpec>) {
         let Some(spec) = spec else {
             self.built = None;
-            self.scene = Arc::new(Scene::default());
-            self.overlay = Arc::new(Scene::default());
+            self.view.clear();
             self.shown = None;
             return;
         };
@@ -153,23 +140,15 @@ impl SkinTab {
         self.selected = self.selected.min(spec.sections.len().saturating_sub(1));
         if fresh || self.shown != Some((self.selected, self.overlays)) {
             let b = self.built.as_ref().expect("built above");
-            (self.scene, self.overlay) = build::scenes(b, self.selected, &self.overlays);
-            self.version += 1;
+            self.view
+                .show(build::scenes(b, self.selected, &self.overlays));
             self.shown = Some((self.selected, self.overlays));
         }
     }
 
     /// Frames the skin again on the next frame (a new sample).
     pub fn reframe(&mut self) {
-        self.framed = false;
-    }
-
-    fn frame_view(&mut self) {
-        let (lo, hi) = self.scene.bbox;
-        let r = (0.5 * (hi - lo).length()).max(1e-6) as f32;
-        let c = self.scene.to_local(0.5 * (lo + hi));
-        self.camera = Camera::looking(View::Iso, c, r * 1.1);
-        self.framed = true;
+        self.view.reframe();
     }
 
     fn set(&mut self, spec: Option<SkinSpec>, gesture: Option<u64>) {
@@ -197,7 +176,7 @@ impl SkinTab {
                 if ui.button(*name).clicked() {
                     match sample(k) {
                         Ok(s) => {
-                            self.framed = false;
+                            self.view.reframe();
                             self.set(Some(s), None);
                         }
                         Err(e) => self.out.push(Command::Say(e)),
@@ -214,7 +193,7 @@ impl SkinTab {
                         .collect(),
                     ..SectionInput::default()
                 };
-                self.framed = false;
+                self.view.reframe();
                 self.set(
                     Some(SkinSpec::new(vec![circle(0.0, 1.0), circle(2.0, 0.6)])),
                     None,
@@ -353,7 +332,7 @@ impl SkinTab {
         ui.checkbox(&mut o.curvature, "Mean-curvature colours");
         ui.checkbox(&mut o.smooth, "Smooth shading");
         if ui.button("Frame the skin").clicked() {
-            self.frame_view();
+            self.view.frame();
         }
     }
 
@@ -545,6 +524,7 @@ impl SkinTab {
             let points: Vec<DVec3> = match self.mouse {
                 Mouse::Move => {
                     let by = self
+                        .view
                         .camera
                         .drag_in_view_plane(total.x, total.y, rect.height())
                         .as_dvec3();
@@ -579,48 +559,18 @@ impl SkinTab {
             });
             return;
         }
-        if !self.framed && !self.scene.vertices.is_empty() {
-            self.frame_view();
-        }
-        let resp = ui.interact(
-            rect,
-            ui.scope_id().with("skin_view"),
-            egui::Sense::click_and_drag(),
-        );
-        let (orbit, pan) = if self.mouse == Mouse::Orbit {
-            (
-                egui::PointerButton::Primary,
-                [egui::PointerButton::Secondary, egui::PointerButton::Middle],
-            )
-        } else {
-            (
-                egui::PointerButton::Secondary,
-                [egui::PointerButton::Middle, egui::PointerButton::Middle],
-            )
-        };
-        viewport::camera_input(&mut self.camera, ui, &resp, rect, orbit, &pan);
+        let resp = self
+            .view
+            .interact(ui, rect, "skin_view", self.mouse == Mouse::Orbit);
         if self.mouse != Mouse::Orbit
             && let Some(spec) = spec
         {
             self.section_drag(ui, &resp, rect, spec);
         }
-        viewport::paint_background(ui, rect);
-        if self.has_gpu {
-            ui.painter().add(egui_wgpu::Callback::new_paint_callback(
-                rect,
-                viewport::ViewCallback {
-                    view: VIEW_SLOT,
-                    scene: self.scene.clone(),
-                    overlay: self.overlay.clone(),
-                    version: self.version,
-                    camera: self.camera,
-                    aspect: rect.width() / rect.height().max(1.0),
-                },
-            ));
-        }
-        ui.painter().text(
-            rect.left_bottom() + egui::vec2(8.0, -8.0),
-            egui::Align2::LEFT_BOTTOM,
+        self.view.paint(ui, rect);
+        View3d::hint(
+            ui,
+            rect,
             match self.mouse {
                 Mouse::Orbit => "drag: orbit · right drag: pan · wheel: zoom",
                 Mouse::Move => {
@@ -631,8 +581,6 @@ impl SkinTab {
                 }
                 Mouse::Scale => "drag up or down: scale the selected section · right drag: orbit",
             },
-            egui::FontId::proportional(12.0),
-            egui::Color32::from_gray(170),
         );
     }
 }

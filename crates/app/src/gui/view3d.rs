@@ -1,0 +1,130 @@
+//! The 3D view the Skin and Envelope tabs share: its camera, scene and overlay, framing, the
+//! mouse (orbit with the primary button, or with the secondary while the primary edits), the
+//! paint callback and the hint line at its foot.
+
+use super::viewport;
+use prism_viewport::{Camera, Scene, View};
+use std::sync::Arc;
+
+pub struct View3d {
+    pub camera: Camera,
+    framed: bool,
+    pub scene: Arc<Scene>,
+    pub overlay: Arc<Scene>,
+    /// Bumped whenever the scenes change, so the upload happens once per change.
+    pub version: u64,
+    pub has_gpu: bool,
+    /// The view slot of its camera and GPU buffers (the Model tab's views use 0–3).
+    slot: usize,
+}
+
+impl View3d {
+    pub fn new(slot: usize) -> View3d {
+        View3d {
+            camera: Camera::default(),
+            framed: false,
+            scene: Arc::new(Scene::default()),
+            overlay: Arc::new(Scene::default()),
+            version: 0,
+            has_gpu: false,
+            slot,
+        }
+    }
+
+    /// New scenes to draw.
+    pub fn show(&mut self, (scene, overlay): (Arc<Scene>, Arc<Scene>)) {
+        self.scene = scene;
+        self.overlay = overlay;
+        self.version += 1;
+    }
+
+    /// Nothing to draw.
+    pub fn clear(&mut self) {
+        self.show((Arc::new(Scene::default()), Arc::new(Scene::default())));
+    }
+
+    /// Frames the scene again on the next frame (a new sample).
+    pub fn reframe(&mut self) {
+        self.framed = false;
+    }
+
+    /// Frames the scene's box from the iso direction now.
+    pub fn frame(&mut self) {
+        let (lo, hi) = self.scene.bbox;
+        let r = (0.5 * (hi - lo).length()).max(1e-6) as f32;
+        let c = self.scene.to_local(0.5 * (lo + hi));
+        self.camera = Camera::looking(View::Iso, c, r * 1.1);
+        self.framed = true;
+    }
+
+    /// The view's response in `rect` after the camera's mouse: orbit with the primary button
+    /// when `primary_orbits`, else with the secondary (the primary then edits); pan with the
+    /// others; wheel zooms. Frames a scene seen for the first time.
+    pub fn interact(
+        &mut self,
+        ui: &mut egui::Ui,
+        rect: egui::Rect,
+        id: &str,
+        primary_orbits: bool,
+    ) -> egui::Response {
+        if !self.framed && self.scene.bbox.0 != self.scene.bbox.1 {
+            self.frame();
+        }
+        let resp = ui.interact(rect, ui.scope_id().with(id), egui::Sense::click_and_drag());
+        let (orbit, pan) = if primary_orbits {
+            (
+                egui::PointerButton::Primary,
+                [egui::PointerButton::Secondary, egui::PointerButton::Middle],
+            )
+        } else {
+            (
+                egui::PointerButton::Secondary,
+                [egui::PointerButton::Middle, egui::PointerButton::Middle],
+            )
+        };
+        viewport::camera_input(&mut self.camera, ui, &resp, rect, orbit, &pan);
+        resp
+    }
+
+    /// Paints `scene` and `overlay` into `rect` with `camera`, in slot `slot` (the view's own
+    /// or one beside it).
+    pub fn paint_scene(
+        &self,
+        ui: &egui::Ui,
+        rect: egui::Rect,
+        slot_offset: usize,
+        scenes: (&Arc<Scene>, &Arc<Scene>),
+        camera: Camera,
+    ) {
+        if self.has_gpu {
+            ui.painter().add(egui_wgpu::Callback::new_paint_callback(
+                rect,
+                viewport::ViewCallback {
+                    view: self.slot + slot_offset,
+                    scene: scenes.0.clone(),
+                    overlay: scenes.1.clone(),
+                    version: self.version,
+                    camera,
+                    aspect: rect.width() / rect.height().max(1.0),
+                },
+            ));
+        }
+    }
+
+    /// The background and the view's own scenes.
+    pub fn paint(&self, ui: &egui::Ui, rect: egui::Rect) {
+        viewport::paint_background(ui, rect);
+        self.paint_scene(ui, rect, 0, (&self.scene, &self.overlay), self.camera);
+    }
+
+    /// The line of help at the view's foot.
+    pub fn hint(ui: &egui::Ui, rect: egui::Rect, text: &str) {
+        ui.painter().text(
+            rect.left_bottom() + egui::vec2(8.0, -8.0),
+            egui::Align2::LEFT_BOTTOM,
+            text,
+            egui::FontId::proportional(12.0),
+            egui::Color32::from_gray(170),
+        );
+    }
+}
