@@ -273,11 +273,19 @@ fn normals_converge_with_the_resolution() {
         ),
         (
             "two cubes side by side, t = 0.5".into(),
-            pair(cube_at([0.0; 3], [0.0; 3]), cube_at([3.0, 0.0, 0.0], [0.0; 3]), 0.5),
+            pair(
+                cube_at([0.0; 3], [0.0; 3]),
+                cube_at([3.0, 0.0, 0.0], [0.0; 3]),
+                0.5,
+            ),
         ),
         (
             "two diagonal cubes".into(),
-            pair(cube_at([0.0; 3], [0.0; 3]), cube_at([3.0, 3.0, 3.0], [0.0; 3]), 1.0),
+            pair(
+                cube_at([0.0; 3], [0.0; 3]),
+                cube_at([3.0, 3.0, 3.0], [0.0; 3]),
+                1.0,
+            ),
         ),
     ];
     for (name, e) in &scenes {

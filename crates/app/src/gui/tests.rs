@@ -540,3 +540,29 @@ pub(super) fn drag_right(h: &mut Harness<'_, PrismApp>, at: egui::Pos2, steps: &
     h.event(button(end, false));
     settle(h);
 }
+
+/// The Curves tab names each scheme as `prism curve --scheme` does, and choosing another does
+/// not move the controls after the menu (its width is fixed).
+#[test]
+fn the_curve_scheme_menu_uses_the_cli_names_and_keeps_its_place() {
+    use egui_kittest::kittest::Queryable;
+    let mut h = Harness::builder()
+        .with_size(egui::vec2(1280.0, 800.0))
+        .build_ui_state(|ui, app: &mut PrismApp| app.frame_ui(ui), app());
+    settle(&mut h);
+    h.get_by_label("Curves").click();
+    settle(&mut h);
+    let mut places = Vec::new();
+    for s in prism_geom::curve::CurveScheme::ALL {
+        h.state_mut().run(CurveEdit::SetScheme(s));
+        settle(&mut h);
+        let name = s.name();
+        let label = format!("{name}: ");
+        assert!(h.get_by_label_contains(&label).rect().width() > 100.0);
+        places.push(h.get_by_label("closed").rect().left());
+    }
+    assert!(
+        places.windows(2).all(|w| (w[0] - w[1]).abs() < 0.5),
+        "{places:?}"
+    );
+}

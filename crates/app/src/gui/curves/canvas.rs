@@ -2,7 +2,7 @@
 //! comb and evolute of the chosen scheme, the control points) and the curvature plot.
 
 use super::{CurvesTab, Refined, SCHEME_COLORS, bounds, polyline, scheme_label};
-use egui::{Color32, Stroke, Vec2};
+use egui::{Color32, Pos2, Stroke, Vec2};
 use glam::DVec2;
 use prism_geom::curve::{CurveScheme, CurveSketch};
 
@@ -70,31 +70,44 @@ impl CurvesTab {
         }
     }
 
-    /// Teeth along the outward normal, of length `scale·|k|` relative to the control size.
-    fn paint_comb(&self, painter: &egui::Painter, rect: egui::Rect, r: &Refined, color: Color32) {
+    /// The tips of the comb's teeth (sketch coordinates): along the outward normal, at
+    /// `scale·|k|` relative to the curve's size. Empty below three points.
+    pub(super) fn comb_tips(&self, r: &Refined) -> Vec<DVec2> {
         let p = &r.curve.points;
         let n = p.len();
         if n < 3 {
-            return;
+            return Vec::new();
         }
         let size = {
             let (lo, hi) = bounds(p);
             (hi - lo).length()
         };
-        let mut tips = Vec::with_capacity(n);
-        for i in 0..n {
-            let (a, b) = if r.curve.closed {
-                (p[(i + n - 1) % n], p[(i + 1) % n])
-            } else {
-                (p[i.saturating_sub(1)], p[(i + 1).min(n - 1)])
-            };
-            let t = (b - a).normalize_or_zero();
-            let left = DVec2::new(-t.y, t.x);
-            let tip = p[i] - self.comb_scale * size * r.curvature[i] * left;
-            let (s0, s1) = (self.to_screen(rect, p[i]), self.to_screen(rect, tip));
-            painter.line_segment([s0, s1], Stroke::new(1.0, color));
-            tips.push(s1);
-        }
+        (0..n)
+            .map(|i| {
+                let (a, b) = if r.curve.closed {
+                    (p[(i + n - 1) % n], p[(i + 1) % n])
+                } else {
+                    (p[i.saturating_sub(1)], p[(i + 1).min(n - 1)])
+                };
+                let t = (b - a).normalize_or_zero();
+                let left = DVec2::new(-t.y, t.x);
+                p[i] - self.comb_scale * size * r.curvature[i] * left
+            })
+            .collect()
+    }
+
+    /// The comb: a tooth from each curve point to its tip, and the line through the tips.
+    fn paint_comb(&self, painter: &egui::Painter, rect: egui::Rect, r: &Refined, color: Color32) {
+        let tips: Vec<Pos2> = self
+            .comb_tips(r)
+            .iter()
+            .zip(&r.curve.points)
+            .map(|(tip, p)| {
+                let (s0, s1) = (self.to_screen(rect, *p), self.to_screen(rect, *tip));
+                painter.line_segment([s0, s1], Stroke::new(1.0, color));
+                s1
+            })
+            .collect();
         painter.add(polyline(tips, r.curve.closed, Stroke::new(1.0, color)));
     }
 

@@ -22,12 +22,15 @@ const SCHEME_COLORS: [Color32; 3] = [
     Color32::from_rgb(120, 220, 120),
 ];
 
-fn scheme_label(s: CurveScheme) -> &'static str {
-    match s {
-        CurveScheme::CatmullClark => "Catmull–Clark (cubic B-spline)",
-        CurveScheme::Circle => "method 1: keeps circles",
-        CurveScheme::LogSpiral => "method 2: keeps log spirals",
-    }
+/// The scheme as the menu and the legend show it: the name `prism curve --scheme` takes, then
+/// what it is (one name across the app and the command line).
+fn scheme_label(s: CurveScheme) -> String {
+    let what = match s {
+        CurveScheme::CatmullClark => "cubic B-spline",
+        CurveScheme::Circle => "method 1, keeps circles",
+        CurveScheme::LogSpiral => "method 2, keeps log spirals",
+    };
+    format!("{}: {what}", s.name())
 }
 
 /// The smallest box around some points.
@@ -161,7 +164,10 @@ impl CurvesTab {
     pub fn ui(&mut self, ui: &mut egui::Ui, sketch: &CurveSketch) -> Vec<Command> {
         ui.horizontal_wrapped(|ui| {
             let mut scheme = sketch.scheme;
-            egui::ComboBox::from_label("scheme")
+            ui.label("Scheme");
+            // A fixed width: choosing another scheme does not move the controls after it.
+            egui::ComboBox::from_id_salt("curve_scheme")
+                .width(250.0)
                 .selected_text(scheme_label(scheme))
                 .show_ui(ui, |ui| {
                     for s in CurveScheme::ALL {
@@ -246,7 +252,15 @@ impl CurvesTab {
             egui::Sense::click_and_drag(),
         );
         if self.fit_next {
-            self.fit(rect, &sketch.control.points);
+            // The control points, the chosen curve and, when shown, its comb all in view.
+            let mut pts = sketch.control.points.clone();
+            if let Some((_, Ok(r))) = results.iter().find(|(s, _)| *s == sketch.scheme) {
+                pts.extend_from_slice(&r.curve.points);
+                if self.comb {
+                    pts.extend(self.comb_tips(r));
+                }
+            }
+            self.fit(rect, &pts);
             self.fit_next = false;
         }
         self.canvas_input(rect, &resp, ui, &sketch.control);
@@ -348,6 +362,24 @@ impl CurvesTab {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Fit brings the whole comb into the canvas (it framed the control points only, and the
+    /// teeth of fig. 6's sharp turn ran off the canvas).
+    #[test]
+    fn fit_keeps_the_comb_inside_the_canvas() {
+        let mut tab = CurvesTab::default();
+        let sketch = CurveSketch::default();
+        let r = CurvesTab::refined(&sketch, sketch.scheme).unwrap();
+        let rect = egui::Rect::from_min_size(egui::pos2(0.0, 100.0), egui::vec2(1264.0, 460.0));
+        let mut pts = sketch.control.points.clone();
+        pts.extend_from_slice(&r.curve.points);
+        pts.extend(tab.comb_tips(&r));
+        tab.fit(rect, &pts);
+        for tip in tab.comb_tips(&r) {
+            let s = tab.to_screen(rect, tip);
+            assert!(rect.contains(s), "{tip} at {s:?} outside {rect:?}");
+        }
+    }
 
     fn sketch(control: Polyline) -> CurveSketch {
         CurveSketch {
