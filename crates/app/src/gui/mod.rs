@@ -488,11 +488,19 @@ impl PrismApp {
             });
             ui.menu_button("Edit", |ui| {
                 let undo = egui::Button::new("Undo (Ctrl+Z)");
-                if ui.add_enabled(self.doc.can_undo(), undo).clicked() {
+                if ui
+                    .add_enabled(self.doc.can_undo(), undo)
+                    .on_disabled_hover_text("Nothing to undo")
+                    .clicked()
+                {
                     out.push(Command::Undo);
                 }
                 let redo = egui::Button::new("Redo (Ctrl+Shift+Z)");
-                if ui.add_enabled(self.doc.can_redo(), redo).clicked() {
+                if ui
+                    .add_enabled(self.doc.can_redo(), redo)
+                    .on_disabled_hover_text("Nothing to redo")
+                    .clicked()
+                {
                     out.push(Command::Redo);
                 }
             });

@@ -168,7 +168,8 @@ impl NewSolid {
                                 egui::DragValue::new(&mut self.hole_scale)
                                     .speed(0.01)
                                     .range(0.01..=0.99),
-                            );
+                            )
+                            .on_disabled_hover_text("Tick hole to cut one");
                         });
                     }
                 }

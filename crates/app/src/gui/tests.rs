@@ -566,3 +566,39 @@ fn the_curve_scheme_menu_uses_the_cli_names_and_keeps_its_place() {
         "{places:?}"
     );
 }
+
+/// Every control the app can disable says why when hovered: each `add_enabled` in the GUI's
+/// sources is followed, within its statement, by `on_disabled_hover_text` (Loop's and the step
+/// arrows' greyed-out buttons said nothing).
+#[test]
+fn every_disabled_control_says_why() {
+    let sources = [
+        ("mod.rs", include_str!("mod.rs")),
+        ("new_solid.rs", include_str!("new_solid.rs")),
+        ("model/panels.rs", include_str!("model/panels.rs")),
+        ("model/views.rs", include_str!("model/views.rs")),
+        ("model/compare.rs", include_str!("model/compare.rs")),
+        (
+            "model/scheme_editor.rs",
+            include_str!("model/scheme_editor.rs"),
+        ),
+        ("curves/mod.rs", include_str!("curves/mod.rs")),
+        ("skin/mod.rs", include_str!("skin/mod.rs")),
+        ("envelope/mod.rs", include_str!("envelope/mod.rs")),
+    ];
+    let mut found = 0;
+    for (name, text) in sources {
+        for (at, _) in text.match_indices("add_enabled") {
+            found += 1;
+            // The statement: up to the next `;` or `{` that opens the branch it guards, but
+            // far enough to hold a multi-line button.
+            let rest = &text[at..(at + 700).min(text.len())];
+            let line = text[..at].lines().count();
+            assert!(
+                rest.contains("on_disabled_hover_text"),
+                "{name}:{line}: a control that can be disabled without saying why"
+            );
+        }
+    }
+    assert!(found >= 9, "{found}");
+}

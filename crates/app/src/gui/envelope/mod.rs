@@ -323,8 +323,7 @@ impl EnvelopeTab {
             }
         });
         ui.horizontal_wrapped(|ui| {
-            let can_add = spec.primitives.len() < 2;
-            ui.add_enabled_ui(can_add, |ui| {
+            if spec.primitives.len() < 2 {
                 ui.menu_button("Add", |ui| {
                     for (name, shape) in LIBRARY {
                         if ui.button(name).clicked() {
@@ -340,11 +339,12 @@ impl EnvelopeTab {
                         }
                     }
                 });
-            })
-            .response
-            .on_disabled_hover_text(
-                "This version envelopes one or two primitives (three or more come next)",
-            );
+            } else {
+                ui.add_enabled(false, egui::Button::new("Add"))
+                    .on_disabled_hover_text(
+                        "This version envelopes one or two primitives (three or more come next)",
+                    );
+            }
             let delete = ui.add_enabled(spec.primitives.len() > 1, egui::Button::new("Delete"));
             if delete
                 .on_disabled_hover_text("The scene needs a primitive; Clear removes the scene")

@@ -67,6 +67,7 @@ impl ModelTab {
                         egui::Button::new(egui::RichText::new("▲").monospace()).small(),
                     )
                     .on_hover_text("move up")
+                    .on_disabled_hover_text("the first step cannot move up")
                     .clicked()
                 {
                     edit = Some(Edit::SwapSteps { view, index: k - 1 });
@@ -77,6 +78,7 @@ impl ModelTab {
                         egui::Button::new(egui::RichText::new("▼").monospace()).small(),
                     )
                     .on_hover_text("move down")
+                    .on_disabled_hover_text("the last step cannot move down")
                     .clicked()
                 {
                     edit = Some(Edit::SwapSteps { view, index: k });

@@ -254,7 +254,11 @@ impl SkinTab {
                 s.sections.remove(k);
                 self.set(Some(s), None);
             }
-            if ui.add_enabled(k > 0, egui::Button::new("Up")).clicked() {
+            if ui
+                .add_enabled(k > 0, egui::Button::new("Up"))
+                .on_disabled_hover_text("The first section cannot move up")
+                .clicked()
+            {
                 let mut s = spec.clone();
                 s.sections.swap(k, k - 1);
                 self.selected = k - 1;
@@ -262,6 +266,7 @@ impl SkinTab {
             }
             if ui
                 .add_enabled(k + 1 < n, egui::Button::new("Down"))
+                .on_disabled_hover_text("The last section cannot move down")
                 .clicked()
             {
                 let mut s = spec.clone();
