@@ -343,6 +343,19 @@ fn bench_prints_the_median_and_peak_memory() {
     assert!(out.contains("peak_memory_mb="), "{out}");
     let o = prism(&["bench", "assets/tripod.obj", "--scheme", "loop"]);
     assert_eq!(o.status.code(), Some(1));
+    // The parameter as subdivide takes it, or in the step's text, not both.
+    let o = run("bench assets/cube.obj --scheme combination --radius 0.2 --levels 2 --runs 1");
+    assert!(o.status.success(), "{:?}", text(&o));
+    assert!(text(&o).0.contains("combination:r=0.2"), "{:?}", text(&o));
+    let o = run("bench assets/cube.obj --scheme combination:r=0.2 --radius 0.3");
+    assert_eq!(o.status.code(), Some(2));
+    let o = run("bench assets/cube.obj --scheme doo-sabin --radius 0.3");
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        text(&o)
+            .1
+            .contains("--radius is not a parameter of doo-sabin")
+    );
 }
 
 #[test]

@@ -1,4 +1,4 @@
-//! `prism bench IN --scheme S --levels N [--runs 5]`: loads the file once, then times the
+//! `prism bench IN --scheme S [--radius R …] --levels N [--runs 5]`: loads the file once, then times the
 //! refinement from the face lists as read (the half-edge topology is built inside the timed
 //! region, as OpenSubdiv's `TopologyRefinerFactory::Create` is inside its) and prints the
 //! median as `time_ms=<median>`, every run, and the peak resident memory of the process.
@@ -14,10 +14,13 @@ use std::time::Instant;
 pub struct BenchArgs {
     /// Input mesh (.obj or .prism.json).
     pub input: PathBuf,
-    /// The step repeated --levels times, in the pipeline's text form with its parameter:
-    /// `combination:r=0.2`, `cut-width:d=0.1`, `doo-sabin`, `catmull-clark`.
+    /// The step repeated --levels times: a scheme's name with its parameter flag, as
+    /// `subdivide` takes it (`--scheme combination --radius 0.2`), or the pipeline's text form
+    /// (`combination:r=0.2`, `cut-width:d=0.1`, `doo-sabin`, `catmull-clark`).
     #[arg(long)]
     pub scheme: String,
+    #[command(flatten)]
+    pub params: super::subdivide::ParamArgs,
     /// Number of levels.
     #[arg(long, default_value_t = 1)]
     pub levels: usize,
@@ -35,7 +38,21 @@ fn peak_rss() -> Option<u64> {
 }
 
 pub fn run(a: BenchArgs) -> Result<(), CliError> {
-    let step = parse_pipeline(&a.scheme).map_err(CliError::usage)?;
+    let p = &a.params;
+    let flags = [p.alpha, p.radius, p.distance, p.width]
+        .iter()
+        .any(Option::is_some);
+    let step = if a.scheme.contains([':', ',']) {
+        if flags || p.reflex_inward {
+            return Err(CliError::usage(format!(
+                "--scheme {} already has its parameter: give it there or as a flag, not both",
+                a.scheme
+            )));
+        }
+        parse_pipeline(&a.scheme).map_err(CliError::usage)?
+    } else {
+        vec![super::subdivide::scheme_from_flags(&a.scheme, &a.params)?]
+    };
     if step.len() != 1 {
         return Err(CliError::usage(
             "--scheme takes one scheme (use it with --levels)",

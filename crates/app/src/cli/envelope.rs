@@ -22,7 +22,7 @@ pub struct EnvelopeArgs {
     pub output: PathBuf,
     /// Curvature parameter t of every vertex (ρ = t·r), replacing the scene's: 1 gives arcs on
     /// each primitive's sphere, smaller values tend to the flat faces.
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     pub t: Option<f64>,
     /// Quads along each side of a patch (1 to 256; default: the scene's, else 8).
     #[arg(long)]

@@ -12,18 +12,9 @@ use prism_geom::scheme::{Scheme, SchemeError, SchemeKind, parse_pipeline};
 use prism_geom::{CornerRule, Pipeline, ReflexMode, StepReport, Topology};
 use std::path::PathBuf;
 
-/// The steps to run: one scheme repeated, or a pipeline (shared by `subdivide` and
-/// `render`).
+/// The parameter of a scheme given by name (shared by `subdivide`, `render` and `bench`).
 #[derive(Debug, Args)]
-pub struct StepArgs {
-    /// Scheme repeated --levels times (`prism schemes` lists them: the biquadratic ones
-    /// need closed solids, the primal ones take open meshes too, with the file's creases,
-    /// corners and holes).
-    #[arg(long, conflicts_with = "pipeline")]
-    pub scheme: Option<String>,
-    /// Number of levels for --scheme.
-    #[arg(long, default_value_t = 1)]
-    pub levels: usize,
+pub struct ParamArgs {
     /// α of vector-sum (0 < α < 0.5).
     #[arg(long, allow_negative_numbers = true)]
     pub alpha: Option<f64>,
@@ -39,6 +30,22 @@ pub struct StepArgs {
     /// vector-sum: reverse the displacement at reflex corners (the paper's remark).
     #[arg(long)]
     pub reflex_inward: bool,
+}
+
+/// The steps to run: one scheme repeated, or a pipeline (shared by `subdivide` and
+/// `render`).
+#[derive(Debug, Args)]
+pub struct StepArgs {
+    /// Scheme repeated --levels times (`prism schemes` lists them: the biquadratic ones
+    /// need closed solids, the primal ones take open meshes too, with the file's creases,
+    /// corners and holes).
+    #[arg(long, conflicts_with = "pipeline")]
+    pub scheme: Option<String>,
+    /// Number of levels for --scheme.
+    #[arg(long, default_value_t = 1)]
+    pub levels: usize,
+    #[command(flatten)]
+    pub params: ParamArgs,
     /// Steps separated by commas, e.g. "vector-sum:alpha=0.2,doo-sabin,doo-sabin".
     #[arg(long)]
     pub pipeline: Option<String>,
@@ -96,7 +103,7 @@ pub fn steps_from(
     }
     let steps: Vec<Scheme> = match (&a.scheme, &a.pipeline) {
         (Some(name), None) => {
-            let s = scheme_from_flags(name, a)?;
+            let s = scheme_from_flags(name, &a.params)?;
             match a.shrink {
                 None => vec![s; a.levels],
                 Some(k) if !(k.is_finite() && k >= 1.0) => {
@@ -138,7 +145,7 @@ pub fn steps_from(
 
 /// The scheme `--scheme NAME` names, with its parameter from the flag the catalogue gives
 /// it; a parameter flag the scheme does not use is refused.
-fn scheme_from_flags(name: &str, a: &StepArgs) -> Result<Scheme, CliError> {
+pub fn scheme_from_flags(name: &str, a: &ParamArgs) -> Result<Scheme, CliError> {
     let kind = SchemeKind::from_name(name)
         .ok_or_else(|| CliError::usage(SchemeError::Unknown(name.to_string())))?;
     let entry = kind.entry();
