@@ -243,6 +243,11 @@ pub fn run(cli: Cli) -> Result<(), CliError> {
                 tool: cli.tool,
                 select_edges,
                 tab: cli.tab,
+                autosave: if cli.screenshot.is_some() {
+                    None
+                } else {
+                    crate::gui::autosave_dir()
+                },
                 screenshot: cli.screenshot,
             })
             .map_err(CliError::input)

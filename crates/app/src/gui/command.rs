@@ -180,6 +180,10 @@ pub enum Command {
     OpenSkinSample(usize),
     /// Puts bundled envelope scene k into the Envelope tab (undoable) and shows the tab.
     OpenEnvelopeSample(usize),
+    /// Makes the copy of unsaved work an earlier run left the document (undoable).
+    RestoreAutosave,
+    /// Drops that copy.
+    DiscardAutosave,
     /// Asks where, then opens.
     OpenDialog,
     /// Saves to the document's file, or asks where (`as_new`: always asks).

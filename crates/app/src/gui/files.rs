@@ -46,6 +46,9 @@ impl PrismApp {
             self.last_file = Some(path.to_path_buf());
         }
         self.doc.saved_as(path, native);
+        if native {
+            self.autosave.saved(self.doc.generation());
+        }
         self.say(if warnings.is_empty() {
             format!("saved {}", path.display())
         } else {

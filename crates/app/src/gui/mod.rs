@@ -13,6 +13,7 @@
 //! computation, saves a picture of the whole window (egui's screenshot command) and exits:
 //! the test under Xvfb and the pictures in docs/ use it.
 
+mod autosave;
 pub mod command;
 mod curves;
 pub mod document;
@@ -28,6 +29,8 @@ mod viewport;
 
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod tests_autosave;
 #[cfg(test)]
 mod tests_envelope;
 #[cfg(test)]
@@ -85,6 +88,8 @@ pub struct Launch {
     pub select_edges: Vec<EdgeKey>,
     pub tab: Option<Tab>,
     pub screenshot: Option<PathBuf>,
+    /// Where unsaved work is copied (none: no autosave).
+    pub autosave: Option<PathBuf>,
 }
 
 /// Where the screenshot callback leaves the picture for the next frame.
@@ -164,6 +169,7 @@ pub struct PrismApp {
     screenshot: Option<(PathBuf, u32, ScreenshotSlot)>,
     last_file: Option<PathBuf>,
     pub new_solid: new_solid::NewSolid,
+    pub autosave: autosave::Autosave,
 }
 
 impl PrismApp {
@@ -212,7 +218,9 @@ impl PrismApp {
         model.sync(&doc);
         let mut envelope = envelope::EnvelopeTab::default();
         envelope.sweep = launch.show.contains(&Show::TSweep);
+        let autosave = autosave::Autosave::new(launch.autosave.clone(), doc.generation());
         Ok(PrismApp {
+            autosave,
             doc,
             tab: launch.tab.unwrap_or_default(),
             model,
@@ -316,6 +324,11 @@ impl PrismApp {
                 }
                 Err(e) => self.say(e),
             },
+            Command::RestoreAutosave => self.restore_autosave(),
+            Command::DiscardAutosave => {
+                self.autosave.discard();
+                self.say("discarded the unsaved work of the last session");
+            }
             Command::OpenDialog => self.open_dialog(),
             Command::SaveDialog { as_new } => self.save_dialog(as_new),
             Command::ExportDialog(ext) => self.export_dialog(ext),
@@ -387,9 +400,60 @@ impl PrismApp {
     /// Opens a file as the document (undoable: the previous document is one Ctrl+Z away).
     pub fn open_path(&mut self, path: &std::path::Path) {
         match document::open(path) {
-            Ok((state, origin)) => self.replace_document(state, origin),
+            Ok((state, origin)) => {
+                self.replace_document(state, origin);
+                self.autosave.opened(self.doc.generation());
+            }
             Err(e) => self.say(format!("could not open: {e}")),
         }
+    }
+
+    /// The copy of unsaved work an earlier run left, as the document (undoable); it is then
+    /// the work in progress, unsaved, until saved.
+    fn restore_autosave(&mut self) {
+        let Some(path) = self.autosave.path() else {
+            return;
+        };
+        match document::open(&path) {
+            Ok((state, _)) => {
+                self.autosave.offer = None;
+                let origin = Origin {
+                    path: None,
+                    name: "recovered work".into(),
+                };
+                self.replace_document(state, origin);
+                self.say("restored the unsaved work of the last session (save it to keep it)");
+            }
+            Err(e) => {
+                self.autosave.discard();
+                self.say(format!("the unsaved work could not be restored: {e}"));
+            }
+        }
+    }
+
+    /// Offers the copy of unsaved work an earlier run left (none once answered).
+    fn restore_window(&mut self, ctx: &egui::Context) -> Option<Command> {
+        let when = self.autosave.offer?;
+        let ago = when.elapsed().map_or(0, |d| d.as_secs() / 60);
+        let mut out = None;
+        egui::Window::new("Unsaved work")
+            .collapsible(false)
+            .resizable(false)
+            .anchor(egui::Align2::CENTER_CENTER, egui::vec2(0.0, 0.0))
+            .show(ctx, |ui| {
+                ui.label(format!(
+                    "The last session left work that was not saved ({ago} min ago)."
+                ));
+                ui.horizontal(|ui| {
+                    if ui.button("Restore it").clicked() {
+                        out = Some(Command::RestoreAutosave);
+                    }
+                    if ui.button("Discard it").clicked() {
+                        out = Some(Command::DiscardAutosave);
+                    }
+                });
+            });
+        out
     }
 
     fn replace_document(&mut self, state: DocState, origin: Origin) {
@@ -519,6 +583,13 @@ impl eframe::App for PrismApp {
         self.frame_ui(ui);
     }
 
+    fn on_exit(&mut self) {
+        // Unsaved changes are copied for the next start (autosave.rs).
+        if let Err(e) = self.autosave.tick(&self.doc, true) {
+            eprintln!("{e}");
+        }
+    }
+
     fn save(&mut self, storage: &mut dyn eframe::Storage) {
         if self.screenshot.is_none() {
             eframe::set_value(storage, SETTINGS_KEY, &self.settings());
@@ -569,11 +640,23 @@ impl PrismApp {
         {
             commands.push(c);
         }
+        if let Some(c) = self.restore_window(&ctx) {
+            commands.push(c);
+        }
         for c in commands {
             self.run(c);
         }
+        match self.autosave.tick(&self.doc, false) {
+            Ok(_) => {}
+            Err(e) => self.say(e),
+        }
         self.screenshot(&ctx);
     }
+}
+
+/// Where the window copies unsaved work (autosave.rs).
+pub fn autosave_dir() -> Option<PathBuf> {
+    autosave::Autosave::default_dir()
 }
 
 /// Opens the window; returns when it is closed.
