@@ -74,3 +74,25 @@ fn a_discarded_copy_is_gone() {
     assert!(c.autosave.offer.is_none());
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// The offer is a window with two buttons; clicking "Restore it" restores.
+#[test]
+fn the_offer_window_restores_on_click() {
+    use egui_kittest::Harness;
+    use egui_kittest::kittest::Queryable;
+    let dir = scratch("window");
+    let mut a = app_in(&dir);
+    a.run(CurveEdit::SetLevels(2));
+    a.autosave.tick(&a.doc, true).unwrap();
+    let work = a.doc.state().curve.clone();
+    drop(a);
+    let mut h = Harness::builder()
+        .with_size(egui::vec2(1280.0, 800.0))
+        .build_ui_state(|ui, app: &mut PrismApp| app.frame_ui(ui), app_in(&dir));
+    super::tests::settle(&mut h);
+    h.get_by_label("Restore it").click();
+    super::tests::settle(&mut h);
+    assert_eq!(h.state().doc.state().curve, work);
+    assert!(h.query_by_label("Restore it").is_none());
+    std::fs::remove_dir_all(&dir).ok();
+}
