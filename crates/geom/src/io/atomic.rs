@@ -111,11 +111,22 @@ pub fn forced<T>(path: &Path, f: impl FnOnce() -> Result<T, IoError>) -> Result<
 
 /// Writes `bytes` to `path` atomically; a read-only target is refused (see [`forced`]).
 pub fn write_atomically(path: &Path, bytes: &[u8]) -> Result<(), IoError> {
+    write_atomically_with(path, |w| w.write_all(bytes))
+}
+
+/// [`write_atomically`] with the contents streamed by `write` through a buffer into the
+/// temporary file: nothing is built whole in memory.
+pub fn write_atomically_with(
+    path: &Path,
+    write: impl FnOnce(&mut dyn Write) -> std::io::Result<()>,
+) -> Result<(), IoError> {
     let (target, old) = target_of(path, false)?;
     let tmp = temp_path(&target);
     let result = (|| {
-        let mut f = std::fs::File::create(&tmp)?;
-        f.write_all(bytes)?;
+        let file = std::fs::File::create(&tmp)?;
+        let mut w = std::io::BufWriter::with_capacity(1 << 20, file);
+        write(&mut w)?;
+        let f = w.into_inner().map_err(|e| e.into_error())?;
         if let Some(m) = &old {
             // The old file's bits (a read-only file never gets here: `forced` makes it
             // writable for the save and gives it its bits back after).

@@ -20,7 +20,7 @@
 //! "vertex_t": optional}], "resolution": 8}`).
 //! A face is a list of loops, the outer loop first; indices are 0-based.
 
-use super::{IoError, write_atomically};
+use super::{IoError, write_atomically_with};
 use crate::curve::CurveSketch;
 use crate::edge_attrs::{EdgeAttr, EdgeAttrs, EdgeKey};
 use crate::freeform::SkinSpec;
@@ -150,10 +150,10 @@ pub fn read_document(path: &Path) -> Result<Document, IoError> {
     document_from_str(path, &text)
 }
 
-/// The document as JSON text.
-pub fn document_to_string(doc: &Document) -> String {
+/// The document in its file form.
+fn file_of(doc: &Document) -> FileV1 {
     let m = &doc.mesh;
-    let f = FileV1 {
+    FileV1 {
         version: DOCUMENT_VERSION,
         vertices: m.positions.iter().map(|p| p.to_array()).collect(),
         faces: (0..m.num_faces())
@@ -173,15 +173,23 @@ pub fn document_to_string(doc: &Document) -> String {
         curve: doc.curve.clone(),
         skin: doc.skin.clone(),
         envelope: doc.envelope.clone(),
-    };
-    // Compact: one vertex or face per line would be nicer to diff, but serde_json's pretty
-    // printer puts every number on its own line; plain is smaller and as exact.
-    serde_json::to_string(&f).expect("a document always serialises")
+    }
+}
+
+/// The document as JSON text (the tests read it back). Compact: one vertex or face per line
+/// would be nicer to diff, but serde_json's pretty printer puts every number on its own line;
+/// plain is smaller and as exact.
+#[cfg(test)]
+fn document_to_string(doc: &Document) -> String {
+    serde_json::to_string(&file_of(doc)).expect("a document always serialises")
 }
 
 /// Writes a `.prism.json` document atomically.
 pub fn write_document(path: &Path, doc: &Document) -> Result<(), IoError> {
-    write_atomically(path, document_to_string(doc).as_bytes())
+    let f = file_of(doc);
+    write_atomically_with(path, |w| {
+        serde_json::to_writer(w, &f).map_err(std::io::Error::other)
+    })
 }
 
 #[cfg(test)]

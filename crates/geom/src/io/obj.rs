@@ -14,13 +14,14 @@
 //! `earcutr` in the face's plane and reported as a warning. Creases are written as `t crease`
 //! lines, corners, holes and options as their `t` lines.
 
-use super::{IoError, write_atomically};
+use super::{IoError, write_atomically_with};
 use crate::edge_attrs::EdgeAttrs;
 use crate::mesh::PolyMesh;
 use crate::tags::SubdivTags;
 use crate::triangulate::face_vertex_triangles;
 use glam::DVec3;
 use std::fmt::Write as _;
+use std::io::Write as IoWrite;
 use std::path::Path;
 
 /// A mesh read from OBJ, with the line of every face and vertex for error messages.
@@ -217,30 +218,54 @@ pub fn read_obj_str(path: &Path, text: &str) -> Result<ObjModel, IoError> {
     })
 }
 
-/// The mesh as OBJ text, plus warnings.
-pub fn obj_to_string(m: &PolyMesh, attrs: &EdgeAttrs, tags: &SubdivTags) -> (String, Vec<String>) {
-    let mut s = String::with_capacity(m.num_vertices() * 40 + m.num_corners() * 8);
+/// `x` as the shortest decimal that reads back to the same double, without a trailing `.0`
+/// (`1`, `0.25`, `-1.3760693973186022e-15`).
+fn number(buf: &mut zmij::Buffer, x: f64) -> &str {
+    let s = buf.format(x);
+    s.strip_suffix(".0").unwrap_or(s)
+}
+
+/// Writes the mesh as OBJ into `w`, streamed; returns the warnings.
+pub fn write_obj_to(
+    w: &mut dyn IoWrite,
+    m: &PolyMesh,
+    attrs: &EdgeAttrs,
+    tags: &SubdivTags,
+) -> std::io::Result<Vec<String>> {
     let mut warnings = Vec::new();
-    s.push_str("# written by Prism\n");
+    w.write_all(b"# written by Prism\n")?;
+    let mut buf = zmij::Buffer::new();
+    let mut line = String::with_capacity(96);
     for p in &m.positions {
-        let _ = writeln!(s, "v {} {} {}", p.x, p.y, p.z);
+        line.clear();
+        line.push('v');
+        for x in [p.x, p.y, p.z] {
+            line.push(' ');
+            line.push_str(number(&mut buf, x));
+        }
+        line.push('\n');
+        w.write_all(line.as_bytes())?;
     }
     let mut holed = 0;
     for f in 0..m.num_faces() {
+        line.clear();
         if m.face_has_holes(f) {
             holed += 1;
             for t in face_vertex_triangles(m, f) {
-                let _ = writeln!(s, "f {} {} {}", t[0] + 1, t[1] + 1, t[2] + 1);
+                let _ = writeln!(line, "f {} {} {}", t[0] + 1, t[1] + 1, t[2] + 1);
             }
-            continue;
+        } else {
+            line.push('f');
+            for &v in m.loop_verts(m.face_loops(f).start) {
+                let _ = write!(line, " {}", v + 1);
+            }
+            line.push('\n');
         }
-        s.push('f');
-        for &v in m.loop_verts(m.face_loops(f).start) {
-            let _ = write!(s, " {}", v + 1);
-        }
-        s.push('\n');
+        w.write_all(line.as_bytes())?;
     }
-    super::obj_tags::write_tags(&mut s, attrs, tags);
+    let mut tail = String::new();
+    super::obj_tags::write_tags(&mut tail, attrs, tags);
+    w.write_all(tail.as_bytes())?;
     if holed > 0 && !tags.holes.is_empty() {
         warnings.push(
             "hole tags refer to faces before triangulation; faces with holes and hole tags do not mix in OBJ".into(),
@@ -254,19 +279,32 @@ pub fn obj_to_string(m: &PolyMesh, attrs: &EdgeAttrs, tags: &SubdivTags) -> (Str
     if attrs.values().any(|a| a.radius.is_some()) {
         warnings.push("OBJ cannot hold per-edge radii: they were not written (save as .prism.json to keep them)".into());
     }
-    (s, warnings)
+    Ok(warnings)
 }
 
-/// Writes OBJ atomically; returns warnings.
+/// The mesh as OBJ text, plus warnings.
+pub fn obj_to_string(m: &PolyMesh, attrs: &EdgeAttrs, tags: &SubdivTags) -> (String, Vec<String>) {
+    let mut bytes = Vec::with_capacity(m.num_vertices() * 40 + m.num_corners() * 8);
+    let warnings = write_obj_to(&mut bytes, m, attrs, tags).expect("writing to memory");
+    (
+        String::from_utf8(bytes).expect("OBJ text is UTF-8"),
+        warnings,
+    )
+}
+
+/// Writes OBJ atomically, streamed; returns warnings.
 pub fn write_obj(
     path: &Path,
     m: &PolyMesh,
     attrs: &EdgeAttrs,
     tags: &SubdivTags,
 ) -> Result<Vec<String>, IoError> {
-    let (s, w) = obj_to_string(m, attrs, tags);
-    write_atomically(path, s.as_bytes())?;
-    Ok(w)
+    let mut warnings = Vec::new();
+    write_atomically_with(path, |w| {
+        warnings = write_obj_to(w, m, attrs, tags)?;
+        Ok(())
+    })?;
+    Ok(warnings)
 }
 
 #[cfg(test)]
@@ -274,6 +312,29 @@ mod tests {
     use super::*;
     use crate::edge_attrs::EdgeKey;
     use crate::primitives;
+
+    /// Coordinates are written as the shortest decimal that reads back to the same double:
+    /// tiny values with an exponent (they were printed positionally, 33 characters for
+    /// -1.3760693973186022e-15), whole numbers without ".0"; read back bit for bit.
+    #[test]
+    fn numbers_are_shortest_and_exact() {
+        let mut m = primitives::cube3();
+        m.positions[0] = DVec3::new(-1.3760693973186022e-15, 1.0 / 3.0, 2.0);
+        m.positions[1].x = 1e300;
+        m.positions[2].y = -0.1 - 0.2;
+        let (s, _) = obj_to_string(&m, &EdgeAttrs::new(), &SubdivTags::default());
+        assert!(
+            s.contains("v -1.3760693973186022e-15 0.3333333333333333 2\n"),
+            "{s}"
+        );
+        let back = read_obj_str(Path::new("t.obj"), &s).unwrap();
+        for (a, b) in back.mesh.positions.iter().zip(&m.positions) {
+            assert_eq!(
+                a.to_array().map(f64::to_bits),
+                b.to_array().map(f64::to_bits)
+            );
+        }
+    }
 
     #[test]
     fn round_trip_keeps_vertex_order_and_polygons() {
