@@ -107,6 +107,43 @@ pub fn pyramid(n: u32, radius: f64, height: f64) -> PolyMesh {
     PolyMesh::from_polygons(positions, &faces)
 }
 
+/// The regular tetrahedron with vertices at alternate corners of the cube [−1, 1]³.
+pub fn tetrahedron() -> PolyMesh {
+    let p = vec![
+        DVec3::new(1.0, 1.0, 1.0),
+        DVec3::new(1.0, -1.0, -1.0),
+        DVec3::new(-1.0, 1.0, -1.0),
+        DVec3::new(-1.0, -1.0, 1.0),
+    ];
+    PolyMesh::from_polygons(
+        p,
+        &[vec![0, 1, 2], vec![0, 3, 1], vec![0, 2, 3], vec![1, 3, 2]],
+    )
+}
+
+/// The regular octahedron with vertices ±x, ±y, ±z.
+pub fn octahedron() -> PolyMesh {
+    let p = vec![
+        DVec3::X,
+        -DVec3::X,
+        DVec3::Y,
+        -DVec3::Y,
+        DVec3::Z,
+        -DVec3::Z,
+    ];
+    let f = [
+        [0, 2, 4],
+        [2, 1, 4],
+        [1, 3, 4],
+        [3, 0, 4],
+        [2, 0, 5],
+        [1, 2, 5],
+        [3, 1, 5],
+        [0, 3, 5],
+    ];
+    PolyMesh::from_polygons(p, &f.map(|t| t.to_vec()))
+}
+
 /// The cube of side 3 used throughout the measurements of docs/algorithms/cylindrical.md.
 pub fn cube3() -> PolyMesh {
     cuboid(DVec3::ZERO, DVec3::splat(3.0))

@@ -15,25 +15,7 @@ fn unit_cube() -> PolyMesh {
 }
 
 fn octahedron() -> PolyMesh {
-    let p = vec![
-        DVec3::X,
-        -DVec3::X,
-        DVec3::Y,
-        -DVec3::Y,
-        DVec3::Z,
-        -DVec3::Z,
-    ];
-    let f = [
-        [0, 2, 4],
-        [2, 1, 4],
-        [1, 3, 4],
-        [3, 0, 4],
-        [2, 0, 5],
-        [1, 2, 5],
-        [3, 1, 5],
-        [0, 3, 5],
-    ];
-    PolyMesh::from_polygons(p, &f.map(|t| t.to_vec()))
+    prism_geom::primitives::octahedron()
 }
 
 fn refine(m: &PolyMesh, attrs: &EdgeAttrs, s: PrimalScheme) -> prism_geom::PrimalOutput {

@@ -36,25 +36,20 @@ pub struct EnvelopeArgs {
     pub force: bool,
 }
 
-#[derive(serde::Deserialize)]
-#[serde(untagged)]
-enum SceneFile {
-    Document { envelope: EnvelopeSpec },
-    Scene(EnvelopeSpec),
-}
-
-/// The scene of a file.
+/// The scene of a file: the file itself, or its `"envelope"` block (a `.prism.json`).
 pub fn read_scene(path: &Path) -> Result<EnvelopeSpec, CliError> {
-    let text = std::fs::read_to_string(path)
-        .map_err(|e| CliError::input(format!("{}: cannot read it: {e}", path.display())))?;
-    let f: SceneFile = serde_json::from_str(&text).map_err(|e| {
+    const SHAPE: &str =
+        r#"{"t": 1.0, "primitives": [{"vertices": [[x, y, z], ...], "faces": [[i, ...], ...]}]}"#;
+    let mut v: serde_json::Value = super::read_json(path, "JSON", SHAPE)?;
+    let scene = match v.get_mut("envelope") {
+        Some(block) => block.take(),
+        None => v,
+    };
+    serde_json::from_value(scene).map_err(|e| {
         CliError::input(format!(
-            "{}: not a scene ({e}); expected {{\"t\": 1.0, \"primitives\": [{{\"vertices\": [[x, y, z], ...], \"faces\": [[i, ...], ...]}}]}}",
+            "{}: not a scene ({e}); expected {SHAPE}",
             path.display()
         ))
-    })?;
-    Ok(match f {
-        SceneFile::Document { envelope } | SceneFile::Scene(envelope) => envelope,
     })
 }
 

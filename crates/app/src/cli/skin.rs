@@ -53,14 +53,11 @@ enum SectionsOrBlock {
 
 /// The sections of a file.
 pub fn read_sections(path: &Path) -> Result<Vec<SectionInput>, CliError> {
-    let text = std::fs::read_to_string(path)
-        .map_err(|e| CliError::input(format!("{}: cannot read it: {e}", path.display())))?;
-    let f: SectionsFile = serde_json::from_str(&text).map_err(|e| {
-        CliError::input(format!(
-            "{}: not a sections file ({e}); expected {{\"sections\": [{{\"points\": [[x, y, z], ...]}}, ...]}}",
-            path.display()
-        ))
-    })?;
+    let f: SectionsFile = super::read_json(
+        path,
+        "a sections file",
+        r#"{"sections": [{"points": [[x, y, z], ...]}, ...]}"#,
+    )?;
     Ok(match f.sections {
         SectionsOrBlock::List(s) | SectionsOrBlock::Block { sections: s } => s,
     })

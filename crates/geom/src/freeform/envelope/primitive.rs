@@ -8,6 +8,7 @@
 //! distance in general (ALGORITHMS §6.3).
 
 use super::EnvelopeError;
+use crate::primitives;
 use glam::{DMat3, DVec3};
 use serde::{Deserialize, Serialize};
 
@@ -250,83 +251,37 @@ impl Default for Placement {
     }
 }
 
-fn prism(n: usize, height: f64) -> (Vec<DVec3>, Vec<Vec<usize>>) {
-    let h = 0.5 * height;
-    let mut v = Vec::with_capacity(2 * n);
-    for z in [-h, h] {
-        for k in 0..n {
-            let a = std::f64::consts::TAU * k as f64 / n as f64;
-            v.push(DVec3::new(a.cos(), a.sin(), z));
-        }
-    }
-    let mut f = vec![(0..n).rev().collect::<Vec<_>>(), (n..2 * n).collect()];
-    for k in 0..n {
-        let j = (k + 1) % n;
-        f.push(vec![k, j, n + j, n + k]);
-    }
-    (v, f)
-}
-
 impl Shape {
     /// Vertices (on the unit sphere) and outward counter-clockwise faces.
     pub fn unit(&self) -> (Vec<DVec3>, Vec<Vec<usize>>) {
-        let (v, f) = match *self {
-            Shape::Cube => Shape::Box {
-                a: 1.0,
-                b: 1.0,
-                c: 1.0,
-            }
-            .unit(),
+        let prism = |n: u32, height: f64| {
+            primitives::extrude(
+                &primitives::regular_polygon(n, 1.0),
+                &[],
+                -0.5 * height,
+                0.5 * height,
+            )
+        };
+        let m = match *self {
+            Shape::Cube => primitives::cuboid(-DVec3::ONE, DVec3::ONE),
             Shape::Box { a, b, c } => {
-                let v = (0..8)
-                    .map(|i| {
-                        let s = |bit: usize| if i >> bit & 1 == 1 { 1.0 } else { -1.0 };
-                        DVec3::new(s(0) * a, s(1) * b, s(2) * c)
-                    })
-                    .collect();
-                let f = vec![
-                    vec![0, 2, 3, 1],
-                    vec![4, 5, 7, 6],
-                    vec![0, 1, 5, 4],
-                    vec![2, 6, 7, 3],
-                    vec![0, 4, 6, 2],
-                    vec![1, 3, 7, 5],
-                ];
-                (v, f)
+                let h = DVec3::new(a, b, c);
+                primitives::cuboid(-h, h)
             }
-            Shape::Tetrahedron => (
-                vec![
-                    DVec3::new(1.0, 1.0, 1.0),
-                    DVec3::new(1.0, -1.0, -1.0),
-                    DVec3::new(-1.0, 1.0, -1.0),
-                    DVec3::new(-1.0, -1.0, 1.0),
-                ],
-                vec![vec![0, 1, 2], vec![0, 3, 1], vec![0, 2, 3], vec![1, 3, 2]],
-            ),
-            Shape::Octahedron => (
-                vec![
-                    DVec3::X,
-                    -DVec3::X,
-                    DVec3::Y,
-                    -DVec3::Y,
-                    DVec3::Z,
-                    -DVec3::Z,
-                ],
-                vec![
-                    vec![0, 2, 4],
-                    vec![2, 1, 4],
-                    vec![1, 3, 4],
-                    vec![3, 0, 4],
-                    vec![2, 0, 5],
-                    vec![1, 2, 5],
-                    vec![3, 1, 5],
-                    vec![0, 3, 5],
-                ],
-            ),
+            Shape::Tetrahedron => primitives::tetrahedron(),
+            Shape::Octahedron => primitives::octahedron(),
             Shape::TriangularPrism { height } => prism(3, height),
             Shape::HexagonalPrism { height } => prism(6, height),
         };
-        let v = v.iter().map(|p| p.normalize()).collect();
+        let v = m.positions.iter().map(|p| p.normalize()).collect();
+        let f = (0..m.num_faces())
+            .map(|f| {
+                m.loop_verts(m.face_loops(f).start)
+                    .iter()
+                    .map(|&v| v as usize)
+                    .collect()
+            })
+            .collect();
         (v, f)
     }
 
