@@ -108,23 +108,27 @@ fn the_curves_tab_draws_curves_and_the_curvature_plot() {
     assert!(orange(0..1280, 570..790) > 50, "no curvature plot");
 }
 
+/// A `.prism.json` written by `prism COMMAND INPUT -o …` (a skin or envelope block with its
+/// mesh), in the temporary folder.
+fn document_by(command: &str, input: &str, name: &str) -> std::path::PathBuf {
+    let doc = std::env::temp_dir().join(format!(
+        "prism-gui-{}-{name}.prism.json",
+        std::process::id()
+    ));
+    let o = Command::new(env!("CARGO_BIN_EXE_prism"))
+        .args([command, input, "-o", doc.to_str().unwrap()])
+        .current_dir(Path::new(env!("CARGO_MANIFEST_DIR")).join("../.."))
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{o:?}");
+    doc
+}
+
 /// The Skin tab on a document with a skin block (the spout, written by `prism skin`): the
 /// shaded skin fills the view and the yellow section curves are drawn over it.
 #[test]
 fn the_skin_tab_draws_the_skin_and_its_sections() {
-    let doc =
-        std::env::temp_dir().join(format!("prism-gui-{}-spout.prism.json", std::process::id()));
-    let o = Command::new(env!("CARGO_BIN_EXE_prism"))
-        .args([
-            "skin",
-            "assets/spout.skin.json",
-            "-o",
-            doc.to_str().unwrap(),
-        ])
-        .current_dir(Path::new(env!("CARGO_MANIFEST_DIR")).join("../.."))
-        .output()
-        .unwrap();
-    assert!(o.status.success());
+    let doc = document_by("skin", "assets/spout.skin.json", "spout");
     let img = screenshot("skin", &[doc.to_str().unwrap(), "--tab", "skin"]);
     let n = shades(&img, 450..1200, 150..700);
     assert!(n > 20, "only {n} shades in the view");
@@ -146,18 +150,7 @@ fn the_skin_tab_draws_the_skin_and_its_sections() {
 /// blue insertion curves of the split caps are drawn over it.
 #[test]
 fn the_envelope_tab_draws_the_envelope_and_its_curves() {
-    let doc = std::env::temp_dir().join(format!("prism-gui-{}-hex.prism.json", std::process::id()));
-    let o = Command::new(env!("CARGO_BIN_EXE_prism"))
-        .args([
-            "envelope",
-            "assets/hexagonal-prism.envelope.json",
-            "-o",
-            doc.to_str().unwrap(),
-        ])
-        .current_dir(Path::new(env!("CARGO_MANIFEST_DIR")).join("../.."))
-        .output()
-        .unwrap();
-    assert!(o.status.success());
+    let doc = document_by("envelope", "assets/hexagonal-prism.envelope.json", "hex");
     let img = screenshot("envelope", &[doc.to_str().unwrap(), "--tab", "envelope"]);
     let n = shades(&img, 500..1100, 250..600);
     assert!(n > 20, "only {n} shades in the view");
