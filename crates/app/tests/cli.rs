@@ -891,6 +891,17 @@ fn envelope_builds_the_bundled_scenes_and_names_bad_ones() {
     assert!(so.contains("primitives=1 regions=6"), "{so}");
     let (d, _) = prism_geom::io::load(&doc).unwrap();
     assert_eq!(d.envelope.unwrap().t, 0.5);
+    // The paper's one-sided basis, kept in the document's block.
+    let (doc, so, _) = succeeds_to(
+        "one-sided.prism.json",
+        "envelope assets/cube.envelope.json -o {} --basis one-sided",
+    );
+    assert!(so.contains("regions=6"), "{so}");
+    let (d, _) = prism_geom::io::load(&doc).unwrap();
+    assert_eq!(
+        d.envelope.unwrap().basis,
+        prism_geom::freeform::Basis::OneSided
+    );
 
     let bad = tmp("bad-scene.json");
     let cube = r#"{"vertices": [[-1,-1,-1],[1,-1,-1],[-1,1,-1],[1,1,-1],[-1,-1,1],[1,-1,1],[-1,1,1],[1,1,1.2]], "faces": [[0,2,3,1],[4,5,7,6],[0,1,5,4],[2,6,7,3],[0,4,6,2],[1,3,7,5]]}"#;

@@ -31,6 +31,7 @@ fn scene(name: &str) -> EnvelopeSpec {
         t: 0.7,
         primitives,
         resolution: 8,
+        basis: Default::default(),
     }
 }
 

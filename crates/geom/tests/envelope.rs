@@ -13,6 +13,7 @@ fn scene(shape: Shape, t: f64) -> EnvelopeSpec {
         t,
         primitives: vec![shape.placed(&Placement::default())],
         resolution: 8,
+        basis: Default::default(),
     }
 }
 
@@ -207,6 +208,7 @@ fn the_listing_order_does_not_matter() {
                 t,
                 primitives: vec![q],
                 resolution: 8,
+                basis: Default::default(),
             })
             .unwrap()
             .tessellate(4)
@@ -317,6 +319,7 @@ fn bad_primitives_are_named() {
             t,
             primitives: vec![p],
             resolution: 8,
+            basis: Default::default(),
         })
         .unwrap_err()
         .to_string()
@@ -353,7 +356,8 @@ fn bad_primitives_are_named() {
         envelope(&EnvelopeSpec {
             t: 1.0,
             primitives: vec![],
-            resolution: 8
+            resolution: 8,
+            basis: Default::default(),
         }),
         Err(EnvelopeError::Empty)
     ));
@@ -373,6 +377,7 @@ fn pair(a: PrimitiveInput, b: PrimitiveInput, t: f64) -> Envelope {
         t,
         primitives: vec![a, b],
         resolution: 8,
+        basis: Default::default(),
     })
     .unwrap()
 }
@@ -497,6 +502,7 @@ fn two_primitives_with_one_centre_or_three_are_refused() {
             cube_at([0.0; 3], [10.0, 0.0, 0.0]),
         ],
         resolution: 8,
+        basis: Default::default(),
     })
     .unwrap_err();
     assert_eq!(e, EnvelopeError::SameCentre { a: 0, b: 1 });
@@ -508,6 +514,7 @@ fn two_primitives_with_one_centre_or_three_are_refused() {
             cube_at([0.0, 3.0, 0.0], [0.0; 3]),
         ],
         resolution: 8,
+        basis: Default::default(),
     })
     .unwrap_err();
     assert!(e.to_string().contains("3 primitives"), "{e}");
@@ -538,4 +545,42 @@ fn an_off_axis_pair_keeps_the_edge_where_the_rebuilt_piece_would_hook() {
         let m = e.tessellate(8).unwrap();
         assert_closed_outward_from(&m, DVec3::ZERO, gb, &format!("t = {t}"));
     }
+}
+
+/// The paper's one-sided basis as an option (ALGORITHMS §8.2 (c)): G1 too, but on one cube at
+/// t = 1 the basis side's cross direction at the middle of every edge arc points 18.4° into
+/// the sphere (the mean of the corner legs), where the virtual basis keeps the sphere's tangent
+/// plane (0°); and the surface depends on the order the faces are listed in.
+#[test]
+fn the_one_sided_basis_tilts_the_cube_and_depends_on_the_listing() {
+    use prism_geom::freeform::Basis;
+    let tilt = |basis: Basis| {
+        let mut s = scene(Shape::Cube, 1.0);
+        s.basis = basis;
+        let e = envelope(&s).unwrap();
+        assert!(e.largest_border_jump() < 1e-9, "{basis:?}");
+        let mut worst = 0.0f64;
+        for p in &e.patches {
+            for side in &p.coons.sides {
+                let c = side.curve.eval(0.5);
+                let x = side.cross(0.5).0.normalize();
+                worst = worst.max(x.dot(c.normalize()).abs().asin().to_degrees());
+            }
+        }
+        (worst, e.tessellate(4).unwrap())
+    };
+    let (virtual_tilt, _) = tilt(Basis::Virtual);
+    let (one_sided_tilt, m) = tilt(Basis::OneSided);
+    assert!(virtual_tilt < 1e-9, "{virtual_tilt}");
+    assert!((one_sided_tilt - 18.43).abs() < 0.01, "{one_sided_tilt}");
+    // Listed the other way round, the one-sided surface changes; the virtual one does not.
+    let reversed = |basis: Basis| {
+        let mut s = scene(Shape::Cube, 1.0);
+        s.primitives[0].faces.reverse();
+        s.basis = basis;
+        envelope(&s).unwrap().tessellate(4).unwrap()
+    };
+    assert!(hausdorff(&m.positions, &reversed(Basis::OneSided).positions) > 1e-4);
+    let (_, v) = tilt(Basis::Virtual);
+    assert!(hausdorff(&v.positions, &reversed(Basis::Virtual).positions) < 1e-9);
 }

@@ -1,5 +1,5 @@
 //! `prism envelope SCENE.json -o OUT.obj|.prism.json|.stl|.glb [--t T] [--resolution K]
-//! [--curves CURVES.obj]`: a smooth surface enveloping convex primitives (seed 004;
+//! [--basis virtual|one-sided] [--curves CURVES.obj]`: a smooth surface enveloping convex primitives (seed 004;
 //! docs/algorithms/envelope.md). SCENE is `{"t": 1.0, "primitives": [{"vertices": [[x, y, z],
 //! ...], "faces": [[i, ...], ...], "t": optional, "vertex_t": [optional, per vertex]}]}`, or a
 //! `.prism.json` with an `"envelope"` block of that form. Primitives, vertices and faces are
@@ -27,6 +27,11 @@ pub struct EnvelopeArgs {
     /// Quads along each side of a patch (1 to 256; default: the scene's, else 8).
     #[arg(long)]
     pub resolution: Option<usize>,
+    /// G1 construction of the borders: `virtual` (both sides from the crossing curves;
+    /// independent of the listing) or `one-sided` (the paper's: the region listed first leads
+    /// each border; default: the scene's, else virtual).
+    #[arg(long, value_parser = ["virtual", "one-sided"])]
+    pub basis: Option<String>,
     /// Also write the curve network as OBJ polylines (32 segments uniform in each curve's
     /// parameter).
     #[arg(long)]
@@ -91,6 +96,11 @@ pub fn run(a: EnvelopeArgs) -> Result<(), CliError> {
     }
     if let Some(k) = a.resolution {
         spec.resolution = k;
+    }
+    match a.basis.as_deref() {
+        Some("one-sided") => spec.basis = prism_geom::freeform::Basis::OneSided,
+        Some(_) => spec.basis = prism_geom::freeform::Basis::Virtual,
+        None => {}
     }
     if spec.resolution == 0 || spec.resolution > 256 {
         return Err(CliError::usage(format!(

@@ -249,6 +249,7 @@ mod tests {
                     crate::freeform::envelope::Shape::Cube.placed(&Default::default()),
                 ],
                 resolution: 6,
+                basis: Default::default(),
             }),
         };
         let text = document_to_string(&doc);

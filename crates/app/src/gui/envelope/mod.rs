@@ -16,6 +16,7 @@ use super::view3d::View3d;
 use super::viewport;
 use build::{Built, Overlays};
 use glam::{DQuat, DVec3};
+use prism_geom::freeform::Basis;
 use prism_geom::freeform::envelope::{EnvelopeSpec, Placement, PrimitiveInput, Shape};
 use prism_viewport::Scene;
 use std::sync::Arc;
@@ -73,6 +74,7 @@ pub fn of_shape(shape: Shape) -> EnvelopeSpec {
         t: 1.0,
         primitives: vec![shape.placed(&Placement::default())],
         resolution: 8,
+        basis: Default::default(),
     }
 }
 
@@ -370,6 +372,19 @@ impl EnvelopeTab {
             let mut s = spec.clone();
             s.resolution = res;
             self.set(Some(s), g);
+        }
+        let mut basis = spec.basis;
+        ui.horizontal(|ui| {
+            ui.label("G1 basis");
+            ui.radio_value(&mut basis, Basis::Virtual, "virtual")
+                .on_hover_text("Both sides of a border from the crossing curves: the surface does not depend on how faces and primitives are listed (the default)");
+            ui.radio_value(&mut basis, Basis::OneSided, "one-sided (paper)")
+                .on_hover_text("The region listed first leads each border and the other follows: G1 too, but a cube's tangent planes tilt 18° into the sphere at mid-edge and the shape depends on the listing");
+        });
+        if basis != spec.basis {
+            let mut s = spec.clone();
+            s.basis = basis;
+            self.set(Some(s), None);
         }
         ui.horizontal_wrapped(|ui| {
             ui.label("Drag in the view:");

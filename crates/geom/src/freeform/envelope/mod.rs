@@ -25,6 +25,7 @@ pub use network::{CurveKind, Network};
 pub use patches::EnvelopePatch;
 pub use primitive::{Placement, Primitive, PrimitiveInput, Shape};
 
+use crate::freeform::skin::Basis;
 use crate::mesh::PolyMesh;
 use serde::{Deserialize, Serialize};
 use thiserror::Error;
@@ -56,6 +57,14 @@ pub struct EnvelopeSpec {
     /// Quads along each side of a patch.
     #[serde(default = "eight")]
     pub resolution: usize,
+    /// The G1 construction of the borders: `virtual` (default: independent of the listing) or
+    /// the paper's `one-sided` (the region listed first leads each border).
+    #[serde(default, skip_serializing_if = "is_virtual")]
+    pub basis: Basis,
+}
+
+fn is_virtual(b: &Basis) -> bool {
+    *b == Basis::Virtual
 }
 
 fn one() -> f64 {
@@ -111,7 +120,7 @@ pub fn envelope(spec: &EnvelopeSpec) -> Result<Envelope, EnvelopeError> {
         }
         more => return Err(EnvelopeError::Several { count: more.len() }),
     }
-    network.assign_bases();
+    network.assign_bases(spec.basis);
     let regions = network.regions.len();
     let patches = patches::build(&mut network, &primitives);
     Ok(Envelope {

@@ -12,6 +12,7 @@
 //! curves meet).
 
 use crate::freeform::bezier::RationalBezier;
+use crate::freeform::skin::Basis;
 use glam::DVec3;
 
 /// What a network curve is, for display.
@@ -190,35 +191,56 @@ impl Network {
 
     /// Chooses every curve's basis per end from the regions beside it (§8.2): rule (a) where
     /// the two regions' legs at that end are antiparallel (the curves crossing there continue
-    /// each other), rule (b) elsewhere; oriented so that `g·(n × C′) > 0` at both ends.
-    pub fn assign_bases(&mut self) {
-        // Per (curve, end): the legs the regions beside it leave that end with.
-        let mut legs: Vec<[Vec<DVec3>; 2]> = vec![[Vec::new(), Vec::new()]; self.curves.len()];
-        for r in &self.regions {
+    /// each other), rule (b) elsewhere; oriented so that `g·(n × C′) > 0` at both ends. With
+    /// [`Basis::OneSided`] (the paper's reading, an option) the first region listed that runs
+    /// along the whole curve is its basis: g is that region's own legs at the curve's ends, so
+    /// its cross derivative is their linear blend (k = 1, h = 0) and the other side follows it.
+    pub fn assign_bases(&mut self, basis: Basis) {
+        // Per (curve, end): (region, whether it has the whole curve, the leg it leaves with).
+        type Legs = Vec<(usize, bool, DVec3)>;
+        let mut legs: Vec<[Legs; 2]> = vec![[Vec::new(), Vec::new()]; self.curves.len()];
+        for (ri, r) in self.regions.iter().enumerate() {
             let n = r.sides.len();
             for k in 0..n {
                 let s = r.sides[k];
+                let whole = (s.t0 - s.t1).abs() == 1.0;
                 let (prev, next) = (&r.sides[(k + n - 1) % n], &r.sides[(k + 1) % n]);
                 for (tau, leg) in [
                     (s.t0, -self.side_derivative(prev, true)),
                     (s.t1, self.side_derivative(next, false)),
                 ] {
                     if tau == 0.0 {
-                        legs[s.curve][0].push(leg);
+                        legs[s.curve][0].push((ri, whole, leg));
                     } else if tau == 1.0 {
-                        legs[s.curve][1].push(leg);
+                        legs[s.curve][1].push((ri, whole, leg));
                     }
                 }
             }
         }
         for (c, legs) in legs.iter().enumerate() {
             let curve = &self.curves[c];
+            if basis == Basis::OneSided {
+                let first = legs[0]
+                    .iter()
+                    .filter(|l| l.1)
+                    .map(|l| l.0)
+                    .min()
+                    .filter(|&r| legs[1].iter().any(|l| l.0 == r));
+                let of = |end: usize, r: usize| legs[end].iter().find(|l| l.0 == r).map(|l| l.2);
+                if let Some(r) = first
+                    && legs[0].len() == 2
+                    && let (Some(a0), Some(a1)) = (of(0, r), of(1, r))
+                {
+                    self.curves[c].basis = (a0, a1);
+                    continue;
+                }
+            }
             let mut g = [DVec3::ZERO; 2];
             for end in 0..2 {
                 let v = &self.vertices[curve.ends[end]];
                 let d = curve.bezier.derivatives(end as f64).d1.normalize_or_zero();
                 let side = v.normal.cross(d);
-                g[end] = match legs[end].as_slice() {
+                g[end] = match legs[end].iter().map(|l| l.2).collect::<Vec<_>>().as_slice() {
                     [a, b]
                         if a.cross(*b).length().atan2(a.dot(*b))
                             > std::f64::consts::PI - STRAIGHT =>
