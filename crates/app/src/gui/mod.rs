@@ -283,12 +283,16 @@ impl PrismApp {
                 }
             }
             Command::Undo => {
+                let before = self.doc.origin().clone();
                 if self.doc.undo() {
+                    self.follow_document_switch(&before);
                     self.say("undone");
                 }
             }
             Command::Redo => {
+                let before = self.doc.origin().clone();
                 if self.doc.redo() {
+                    self.follow_document_switch(&before);
                     self.say("redone");
                 }
             }
@@ -454,6 +458,14 @@ impl PrismApp {
                 });
             });
         out
+    }
+
+    /// After undo or redo: when that brought back another document (an Open, a sample, a new
+    /// solid undone), the views frame it and drop the other one's selection, as opening it did.
+    fn follow_document_switch(&mut self, before: &Origin) {
+        if self.doc.origin() != before {
+            self.model.reset_for_new_document();
+        }
     }
 
     fn replace_document(&mut self, state: DocState, origin: Origin) {

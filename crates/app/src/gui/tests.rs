@@ -602,3 +602,33 @@ fn every_disabled_control_says_why() {
     }
     assert!(found >= 9, "{found}");
 }
+
+/// Undoing an Open brings back the other document framed as it was: the camera stayed on the
+/// opened one (the Computer room's framing around the small tripod).
+#[test]
+fn undoing_an_open_frames_the_document_it_brings_back() {
+    let mut h = Harness::builder()
+        .with_size(egui::vec2(1280.0, 800.0))
+        .build_ui_state(|ui, app: &mut PrismApp| app.frame_ui(ui), app());
+    settle(&mut h);
+    let tripod = h.state().model.camera.distance;
+    let room = SAMPLES_FILES
+        .iter()
+        .position(|s| s.0 == "Computer room")
+        .unwrap();
+    h.state_mut().run(Command::OpenSample(room));
+    settle(&mut h);
+    let far = h.state().model.camera.distance;
+    assert!(far > 2.0 * tripod, "{far} vs {tripod}");
+    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::Z);
+    settle(&mut h);
+    let back = h.state().model.camera.distance;
+    assert!((back / tripod - 1.0).abs() < 0.01, "{back} vs {tripod}");
+    // And redo frames the room again.
+    h.key_press_modifiers(
+        egui::Modifiers::COMMAND | egui::Modifiers::SHIFT,
+        egui::Key::Z,
+    );
+    settle(&mut h);
+    assert!((h.state().model.camera.distance / far - 1.0).abs() < 0.01);
+}
