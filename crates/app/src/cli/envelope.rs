@@ -129,18 +129,12 @@ pub fn run(a: EnvelopeArgs) -> Result<(), CliError> {
             e.network.curves.len()
         );
     }
-    if io::ExportFormat::of(&a.output).is_some() {
-        super::saving(&a.output, a.force, || {
-            io::export(&a.output, &mesh, &|_| false)
-        })?;
-    } else {
-        let doc = Document {
-            mesh,
-            envelope: Some(spec.clone()),
-            ..Document::default()
-        };
-        super::saving(&a.output, a.force, || io::save(&a.output, &doc))?;
-    }
+    let doc = Document {
+        mesh,
+        envelope: Some(spec.clone()),
+        ..Document::default()
+    };
+    super::write_surface(&a.output, a.force, &doc)?;
     println!(
         "{} vertices, {} faces ({}×{} quads a patch); wrote {}",
         counts.vertices,

@@ -192,6 +192,21 @@ pub fn saving<T>(
     .map_err(CliError::input)
 }
 
+/// Writes a free-form result (a skin, an envelope): its triangles as STL or glTF, or the whole
+/// document — its mesh with the block that made it — as OBJ or `.prism.json`.
+pub fn write_surface(
+    path: &std::path::Path,
+    force: bool,
+    doc: &prism_geom::io::Document,
+) -> Result<(), CliError> {
+    use prism_geom::io;
+    if io::ExportFormat::of(path).is_some() {
+        saving(path, force, || io::export(path, &doc.mesh, &|_| false))
+    } else {
+        saving(path, force, || io::save(path, doc)).map(|_| ())
+    }
+}
+
 /// An error for the user: one line, and the exit code (1 bad input, 2 bad usage).
 #[derive(Debug)]
 pub struct CliError {

@@ -128,23 +128,17 @@ pub fn run(a: SkinArgs) -> Result<(), CliError> {
         io::write_atomically(pp, text.as_bytes()).map_err(CliError::input)?;
         println!("wrote {}", pp.display());
     }
-    if io::ExportFormat::of(&a.output).is_some() {
-        super::saving(&a.output, a.force, || {
-            io::export(&a.output, &mesh, &|_| false)
-        })?;
-    } else {
-        let doc = Document {
-            mesh,
-            skin: Some(SkinSpec {
-                sections: sections.clone(),
-                resolution: a.resolution,
-                caps: !a.no_caps,
-                basis,
-            }),
-            ..Document::default()
-        };
-        super::saving(&a.output, a.force, || io::save(&a.output, &doc))?;
-    }
+    let doc = Document {
+        mesh,
+        skin: Some(SkinSpec {
+            sections: sections.clone(),
+            resolution: a.resolution,
+            caps: !a.no_caps,
+            basis,
+        }),
+        ..Document::default()
+    };
+    super::write_surface(&a.output, a.force, &doc)?;
     println!(
         "{} vertices, {} faces ({}×{} quads a patch{}); wrote {}",
         counts.vertices,

@@ -7,6 +7,17 @@ use super::document::{DocState, Origin};
 use prism_geom::Scheme;
 use prism_geom::curve::{CurveSketch, MAX_SKETCH_LEVELS};
 
+/// The tessellation resolution of a free-form block (skin, envelope): 1 to 256 quads along a
+/// patch side.
+fn check_resolution(resolution: Option<usize>) -> Result<(), String> {
+    match resolution {
+        Some(k) if !(1..=256).contains(&k) => Err(format!(
+            "resolution {k} is out of range: 1 to 256 quads a patch side"
+        )),
+        _ => Ok(()),
+    }
+}
+
 /// The effect of one edit on a copy of the state.
 pub(super) fn apply_to(d: &mut DocState, origin: &mut Origin, edit: Edit) -> Result<(), String> {
     let views = d.pipelines.len();
@@ -122,25 +133,11 @@ pub(super) fn apply_to(d: &mut DocState, origin: &mut Origin, edit: Edit) -> Res
         }
         Edit::Curve(c) => apply_curve(&mut d.curve, c)?,
         Edit::SetSkin { spec, .. } => {
-            if let Some(s) = &spec
-                && !(1..=256).contains(&s.resolution)
-            {
-                return Err(format!(
-                    "resolution {} is out of range: 1 to 256 quads a patch side",
-                    s.resolution
-                ));
-            }
+            check_resolution(spec.as_ref().map(|s| s.resolution))?;
             d.skin = spec;
         }
         Edit::SetEnvelope { spec, .. } => {
-            if let Some(s) = &spec
-                && !(1..=256).contains(&s.resolution)
-            {
-                return Err(format!(
-                    "resolution {} is out of range: 1 to 256 quads a patch side",
-                    s.resolution
-                ));
-            }
+            check_resolution(spec.as_ref().map(|s| s.resolution))?;
             d.envelope = spec;
         }
         Edit::Replace { state, origin: o } => {

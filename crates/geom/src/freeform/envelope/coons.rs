@@ -27,6 +27,8 @@ pub struct Side {
     pub g: (DVec3, DVec3),
     pub k: (f64, f64),
     pub h: (f64, f64),
+    /// |C′| at s = 0 and s = 1, which T interpolates.
+    pub speed: (f64, f64),
 }
 
 impl Side {
@@ -38,11 +40,13 @@ impl Side {
         let d1 = curve.derivatives(1.0).d1;
         let (k0, h0) = fit(a0, g.0, d0);
         let (k1, h1) = fit(a1, g.1, d1);
+        let speed = (d0.length(), d1.length());
         Side {
             curve,
             g,
             k: (k0, k1),
             h: (h0, h1),
+            speed,
         }
     }
 
@@ -54,8 +58,7 @@ impl Side {
     /// patch until it folds).
     pub fn tangent(&self, s: f64) -> (DVec3, DVec3) {
         let d = self.curve.derivatives(s);
-        let m0 = self.curve.derivatives(0.0).d1.length();
-        let m1 = self.curve.derivatives(1.0).d1.length();
+        let (m0, m1) = self.speed;
         let speed = d.d1.length();
         if speed == 0.0 {
             return (DVec3::ZERO, DVec3::ZERO);
@@ -217,16 +220,6 @@ impl Coons {
             }
         }
         out
-    }
-
-    /// The unit normal at (u, v) by central differences (one-sided at the borders).
-    pub fn normal(&self, u: f64, v: f64) -> DVec3 {
-        let h = 1e-6;
-        let (ua, ub) = ((u - h).max(0.0), (u + h).min(1.0));
-        let (va, vb) = ((v - h).max(0.0), (v + h).min(1.0));
-        let su = (self.eval(ub, v) - self.eval(ua, v)) / (ub - ua);
-        let sv = (self.eval(u, vb) - self.eval(u, va)) / (vb - va);
-        su.cross(sv).normalize_or_zero()
     }
 }
 

@@ -184,12 +184,7 @@ fn split(net: &mut Network, r: usize, prims: &[Primitive]) -> Vec<EnvelopePatch>
         let nd = tangent_d[k].cross(b[k]).normalize();
         // The region across may have split this curve already: share its P_d.
         let tau = sides[k].tau(0.5);
-        let known = net.curves[sides[k].curve]
-            .pins
-            .iter()
-            .find(|&&(t, _)| (t - tau).abs() <= 1e-12)
-            .map(|&(_, v)| v);
-        let vd = match known {
+        let vd = match net.vertex_at(sides[k].curve, tau) {
             Some(v) => v,
             None => {
                 let v = net.add_vertex(pd[k], nd, 0.0);

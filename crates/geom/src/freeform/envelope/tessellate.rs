@@ -63,8 +63,8 @@ pub fn tessellate(net: &Network, patches: &[EnvelopePatch], k: usize) -> PolyMes
         let list: Vec<(f64, u32)> = w
             .into_iter()
             .map(|t| {
-                let id = match curve.pins.iter().find(|&&(pt, _)| (pt - t).abs() <= SAME) {
-                    Some(&(_, v)) => v as u32,
+                let id = match net.vertex_at(c, t) {
+                    Some(v) => v as u32,
                     None => {
                         positions.push(curve.bezier.eval(t));
                         (positions.len() - 1) as u32
