@@ -174,7 +174,7 @@ fn bad_input_exits_1_and_names_the_element() {
         (
             "nan.obj",
             "v 0 0 0\nv 1 0 0\nv 0 nan 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 3 1 4\n",
-            "vertex 2",
+            "vertex 3 (line 3)",
         ),
         (
             "flip.obj",
@@ -1105,4 +1105,61 @@ fn a_closed_output_pipe_is_not_a_panic() {
     let err = String::from_utf8_lossy(&o.stderr);
     assert!(!err.contains("panicked"), "{err}");
     assert_ne!(o.status.code(), Some(101));
+}
+
+/// Messages about an OBJ input count its vertices and faces as the file does: from 1, with
+/// the line; a `.prism.json`'s, from 0 as its arrays do.
+#[test]
+fn messages_number_elements_as_the_input_file_does() {
+    let tet = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n";
+    let cases = [
+        (
+            "twice.obj",
+            format!("{tet}f 1 2 3\nf 1 2 4\nf 2 3 4\nf 3 1 4\n"),
+            "edge 1-2 is traversed 1→2 by both face 1 (line 5) and face 2 (line 6)",
+        ),
+        (
+            "nan.obj",
+            "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 nan\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 3 1 4\n".into(),
+            "vertex 4 (line 4) has a coordinate that is not a finite number",
+        ),
+        (
+            "open.obj",
+            format!("{tet}f 1 3 2\nf 1 2 4\nf 2 3 4\n"),
+            "edge 1-3 of face 1 (line 5) has no face on its other side",
+        ),
+        (
+            "unused.obj",
+            format!("{tet}v 5 5 5\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 3 1 4\n"),
+            "the first is vertex 5 (line 5)",
+        ),
+    ];
+    for (name, obj, says) in cases {
+        let input = tmp(name);
+        std::fs::write(&input, obj).unwrap();
+        let o = run_with(
+            "subdivide {} --scheme doo-sabin -o {}",
+            &[&input, &tmp("numbered.obj")],
+        );
+        assert!(text(&o).1.contains(says), "{name}: {:?}", text(&o));
+    }
+    // The same tetrahedron as a document: its faces array counts from 0.
+    let doc = tmp("twice.prism.json");
+    std::fs::write(
+        &doc,
+        r#"{"version": 1, "vertices": [[0,0,0],[1,0,0],[0,1,0],[0,0,1]],
+            "faces": [[[0,1,2]],[[0,1,3]],[[1,2,3]],[[2,0,3]]]}"#,
+    )
+    .unwrap();
+    let o = run_with(
+        "subdivide {} --scheme doo-sabin -o {}",
+        &[&doc, &tmp("n.obj")],
+    );
+    assert!(
+        text(&o)
+            .1
+            .contains("edge 0-1 is traversed 0→1 by both face 0 and face 1"),
+        "{:?}",
+        text(&o)
+    );
 }

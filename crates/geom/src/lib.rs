@@ -31,6 +31,7 @@ pub mod geometry;
 pub mod io;
 pub mod mesh;
 pub mod normals;
+pub mod numbering;
 pub mod pipeline;
 pub mod primal;
 pub mod primitives;

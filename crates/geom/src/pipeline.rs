@@ -45,6 +45,25 @@ pub struct PipelineError {
     pub source: StepError,
 }
 
+impl PipelineError {
+    /// The message, with a mesh error of step 1 (one about the input) naming vertices and
+    /// faces as `input` says its file counts them.
+    pub fn describe(&self, input: &crate::numbering::Numbering) -> String {
+        use crate::primal::PrimalError;
+        match &self.source {
+            StepError::Mesh(m) | StepError::Primal(PrimalError::Mesh(m)) if self.step == 1 => {
+                format!(
+                    "step {} ({}): {}",
+                    self.step,
+                    self.scheme,
+                    input.describe(m)
+                )
+            }
+            _ => self.to_string(),
+        }
+    }
+}
+
 /// A run of cylindrical-family steps: the level it started from, its (last) rule and the
 /// radii its first step clamped (edges in that level's numbering).
 #[derive(Debug, Clone, PartialEq)]

@@ -6,7 +6,7 @@
 //! left out) as `f a//a …`. Across a crease the normal is one-sided (docs/schemes.md); a
 //! vertex with no normal (no faces, or vanishing tangents) gets `vn 0 0 0`.
 
-use super::{CliError, with_line};
+use super::CliError;
 use clap::Args;
 use prism_geom::io::write_atomically;
 use prism_geom::{PrimalScheme, StepOptions, limit_points_ordered, refine_primal_ordered};
@@ -44,10 +44,12 @@ pub fn run(a: LimitArgs) -> Result<(), CliError> {
                 known.join(", ")
             ))
         })?;
-    let (doc, face_lines) = super::load_input(&a.input)?;
-    let input_error = |e: prism_geom::PrimalError| {
+    let (doc, numbering) = super::load_input(&a.input)?;
+    // Mesh errors of the input name its elements as the file counts them; those of a
+    // refined level, Prism's numbers.
+    let input_error = |e: prism_geom::PrimalError, input: bool| {
         let msg = match &e {
-            prism_geom::PrimalError::Mesh(m) => with_line(m, face_lines.as_deref()),
+            prism_geom::PrimalError::Mesh(m) if input => numbering.describe(m),
             other => other.to_string(),
         };
         CliError::input(format!("{}: {msg}", a.input.display()))
@@ -57,15 +59,17 @@ pub fn run(a: LimitArgs) -> Result<(), CliError> {
     let mut order = None;
     for k in 1..=a.levels {
         let (out, o) = refine_primal_ordered(&mesh, &attrs, &tags, scheme, budget, order.as_ref())
-            .map_err(|e| CliError::input(format!("level {k}: {}", input_error(e).message)))?;
+            .map_err(|e| {
+                CliError::input(format!("level {k}: {}", input_error(e, k == 1).message))
+            })?;
         println!(
             "level {k}: {} vertices, {} faces, {:.2} ms",
             out.report.vertices, out.report.faces, out.report.millis
         );
         (mesh, attrs, tags, order) = (out.mesh, out.edge_attrs, out.tags, Some(o));
     }
-    let lim =
-        limit_points_ordered(&mesh, &attrs, &tags, scheme, order.as_ref()).map_err(input_error)?;
+    let lim = limit_points_ordered(&mesh, &attrs, &tags, scheme, order.as_ref())
+        .map_err(|e| input_error(e, a.levels == 0))?;
     let mut s = String::with_capacity(mesh.num_vertices() * 80);
     let _ = writeln!(
         s,

@@ -11,7 +11,6 @@ mod skin;
 mod subdivide;
 
 use clap::{Parser, Subcommand};
-use prism_geom::MeshError;
 
 /// Prism — interactive polyhedral subdivision: chamfer and round the edges of solids.
 #[derive(Debug, Parser)]
@@ -147,7 +146,7 @@ pub fn check_levels(levels: usize) -> Result<(), CliError> {
 /// unknown output kind), anything wrong inside the file bad input (exit 1).
 pub fn load_input(
     path: &std::path::Path,
-) -> Result<(prism_geom::io::Document, Option<Vec<usize>>), CliError> {
+) -> Result<(prism_geom::io::Document, prism_geom::io::Numbering), CliError> {
     prism_geom::io::FileKind::of(path).map_err(CliError::usage)?;
     prism_geom::io::load(path).map_err(CliError::input)
 }
@@ -284,24 +283,5 @@ pub fn run(cli: Cli) -> Result<(), CliError> {
             })
             .map_err(CliError::input)
         }
-    }
-}
-
-/// Adds the OBJ line of the face a mesh error names, when known.
-pub(crate) fn with_line(e: &MeshError, face_lines: Option<&[usize]>) -> String {
-    let face = match e {
-        MeshError::IndexOutOfRange { face, .. }
-        | MeshError::EmptyFace { face }
-        | MeshError::DegenerateLoop { face, .. }
-        | MeshError::RepeatedVertex { face, .. }
-        | MeshError::BoundaryEdge { face, .. } => Some(*face),
-        MeshError::InconsistentOrientation { f2, .. } => Some(*f2),
-        _ => None,
-    };
-    match (face, face_lines) {
-        (Some(f), Some(lines)) if (f as usize) < lines.len() => {
-            format!("{e} (face {f} is on line {})", lines[f as usize])
-        }
-        _ => e.to_string(),
     }
 }

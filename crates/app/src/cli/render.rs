@@ -227,9 +227,10 @@ pub fn run(a: RenderArgs) -> Result<(), CliError> {
             "--frames 0: a turntable needs at least one frame",
         ));
     }
-    let (doc, _) = super::load_input(&a.input)?;
-    let topo = Topology::build(&doc.mesh)
-        .map_err(|e| CliError::input(format!("{}: {e}", a.input.display())))?;
+    let (doc, numbering) = super::load_input(&a.input)?;
+    let topo = Topology::build(&doc.mesh).map_err(|e| {
+        CliError::input(format!("{}: {}", a.input.display(), numbering.describe(&e)))
+    })?;
     let steps = steps_from(&a.steps, doc.pipeline.as_deref(), true)?;
     let mut pipeline = Pipeline::with_tags(doc.mesh, doc.edge_attrs, doc.tags, steps);
     pipeline.options = a.steps.options();
@@ -240,7 +241,7 @@ pub fn run(a: RenderArgs) -> Result<(), CliError> {
             let r = level.report.as_ref();
             warnings.level(k, r.expect("computed levels have a report"));
         })
-        .map_err(CliError::input)?
+        .map_err(|e| CliError::input(e.describe(&numbering)))?
         .clone();
     let levels = pipeline.levels();
     let prev = (levels.len() > 1).then(|| &levels[levels.len() - 2].mesh);

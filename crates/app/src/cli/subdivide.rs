@@ -4,7 +4,7 @@
 //! and every warning in words: flipped or degenerate faces, a solid turned inside out,
 //! dissolved flat edges, the minimum type's stall.
 
-use super::{CliError, with_line};
+use super::CliError;
 use clap::Args;
 use prism_geom::analysis::measure_fillet;
 use prism_geom::io::{self, Document};
@@ -382,20 +382,17 @@ pub fn run(a: SubdivideArgs) -> Result<(), CliError> {
     let parsed = steps_from(&a.steps, None, true)?;
     super::check_solid_output_kind(&a.output)?;
     super::check_output(&a.output, Some(a.force))?;
-    let (doc, face_lines) = super::load_input(&a.input)?;
+    let (doc, numbering) = super::load_input(&a.input)?;
     let steps = if parsed.is_empty() {
         steps_from(&a.steps, doc.pipeline.as_deref(), false)?
     } else {
         parsed
     };
     let topo = Topology::build(&doc.mesh).map_err(|e| {
-        CliError::input(format!(
-            "{}: {}",
-            a.input.display(),
-            with_line(&e, face_lines.as_deref())
-        ))
+        CliError::input(format!("{}: {}", a.input.display(), numbering.describe(&e)))
     })?;
     for w in &topo.warnings {
+        let w = numbering.describe_warning(w);
         eprintln!("warning: {}: {w}", a.input.display());
     }
     let needs_closed = matches!(steps.first(), Some(Scheme::Biquadratic(_)));
@@ -405,11 +402,7 @@ pub fn run(a: SubdivideArgs) -> Result<(), CliError> {
         topo.require_single_fans(&doc.mesh)
     };
     check.map_err(|e| {
-        CliError::input(format!(
-            "{}: {}",
-            a.input.display(),
-            with_line(&e, face_lines.as_deref())
-        ))
+        CliError::input(format!("{}: {}", a.input.display(), numbering.describe(&e)))
     })?;
 
     let c0 = prism_geom::analysis::counts(&doc.mesh);
@@ -451,7 +444,7 @@ pub fn run(a: SubdivideArgs) -> Result<(), CliError> {
             "note: the minimum type never flips faces but does not converge to r: its fillets stall near 0.2 % of r (use combination for true radii)"
         );
     }
-    result.map_err(CliError::input)?;
+    result.map_err(|e| CliError::input(e.describe(&numbering)))?;
     report_fillets(&pipeline, a.measure_edge.as_deref())?;
     let last = &pipeline.levels()[n];
     if io::ExportFormat::of(&a.output).is_some() {

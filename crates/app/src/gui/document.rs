@@ -70,23 +70,21 @@ pub struct Origin {
     pub path: Option<PathBuf>,
     /// What the title bar and panel show.
     pub name: String,
+    /// How the file counts its vertices and faces: messages about the control mesh say
+    /// them so (an OBJ's from 1, with lines).
+    pub numbering: std::sync::Arc<io::Numbering>,
 }
 
 /// Loads a file as a document.
 pub fn open(path: &Path) -> Result<(DocState, Origin), String> {
-    let (doc, _) = io::load(path).map_err(|e| e.to_string())?;
-    if !doc.mesh.all_finite() {
-        return Err(format!(
-            "{}: a vertex has a coordinate that is not a number",
-            path.display()
-        ));
-    }
+    let (doc, numbering) = io::load(path).map_err(|e| e.to_string())?;
     let native = io::FileKind::of(path).ok() == Some(io::FileKind::Document);
     Ok((
         DocState::from_document(doc),
         Origin {
             path: native.then(|| path.to_path_buf()),
             name: path.display().to_string(),
+            numbering: std::sync::Arc::new(numbering),
         },
     ))
 }
@@ -225,6 +223,12 @@ impl Document {
             self.origin.path = Some(path.to_path_buf());
         }
         self.origin.name = path.display().to_string();
+        // Messages now count as the saved file does: a document's arrays from 0, an OBJ's
+        // records from 1 (its lines are not known until it is read).
+        self.origin.numbering = std::sync::Arc::new(io::Numbering {
+            base: u32::from(!native),
+            ..Default::default()
+        });
         self.generation += 1;
     }
 
@@ -394,6 +398,7 @@ mod tests {
             origin: Origin {
                 path: Some("t.prism.json".into()),
                 name: "t.prism.json".into(),
+                ..Default::default()
             },
         })
         .unwrap();

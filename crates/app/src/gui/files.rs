@@ -25,12 +25,13 @@ pub fn sample(k: usize) -> Result<(DocState, Origin), String> {
     let (name, file, text) = *SAMPLES_FILES
         .get(k)
         .ok_or(format!("there is no sample {k}"))?;
-    let (doc, _) = io::load_str(Path::new(file), text).map_err(|e| e.to_string())?;
+    let (doc, numbering) = io::load_str(Path::new(file), text).map_err(|e| e.to_string())?;
     Ok((
         DocState::from_document(doc),
         Origin {
             path: None,
             name: format!("{} (bundled sample)", name.to_lowercase()),
+            numbering: std::sync::Arc::new(numbering),
         },
     ))
 }
@@ -104,12 +105,39 @@ impl PrismApp {
         Ok(())
     }
 
+    /// The native file dialogs block the frame loop, and keys typed while one is open (where
+    /// the window manager lets the main window keep the keyboard, or none decides) wait in
+    /// the window's queue and reach it when the dialog closes. They were meant for the
+    /// dialog: the two frames after it, and any frame within 300 ms of it, drop every key and
+    /// text event, so S, B or W typed into a file name never change the model.
+    pub fn drop_keys_typed_in_dialog(&mut self, ctx: &egui::Context) {
+        let Some((at, frames)) = &mut self.after_dialog else {
+            return;
+        };
+        *frames += 1;
+        if *frames > 2 && at.elapsed() > std::time::Duration::from_millis(300) {
+            self.after_dialog = None;
+            return;
+        }
+        ctx.input_mut(|i| {
+            i.events
+                .retain(|e| !matches!(e, egui::Event::Key { .. } | egui::Event::Text(_)));
+            i.keys_down.clear();
+        });
+    }
+
+    /// Marks that a file dialog has just returned ([`PrismApp::drop_keys_typed_in_dialog`]).
+    pub(super) fn dialog_returned(&mut self) {
+        self.after_dialog = Some((std::time::Instant::now(), 0));
+    }
+
     pub(super) fn open_dialog(&mut self) {
         let asked = std::time::Instant::now();
-        match rfd::FileDialog::new()
+        let picked = rfd::FileDialog::new()
             .add_filter("Prism documents and OBJ", &["json", "obj"])
-            .pick_file()
-        {
+            .pick_file();
+        self.dialog_returned();
+        match picked {
             Some(p) => self.open_path(&p),
             None => self.no_dialog(asked),
         }
@@ -135,11 +163,15 @@ impl PrismApp {
         let asked = std::time::Instant::now();
         let path = match (&self.doc.origin().path, as_new) {
             (Some(p), false) => Some(p.clone()),
-            _ => rfd::FileDialog::new()
-                .add_filter("Prism document", &["prism.json"])
-                .add_filter("OBJ", &["obj"])
-                .set_file_name("model.prism.json")
-                .save_file(),
+            _ => {
+                let picked = rfd::FileDialog::new()
+                    .add_filter("Prism document", &["prism.json"])
+                    .add_filter("OBJ", &["obj"])
+                    .set_file_name("model.prism.json")
+                    .save_file();
+                self.dialog_returned();
+                picked
+            }
         };
         if path.is_none() {
             self.no_dialog(asked);
@@ -153,7 +185,7 @@ impl PrismApp {
 
     pub(super) fn export_dialog(&mut self, ext: &str) {
         let asked = std::time::Instant::now();
-        match rfd::FileDialog::new()
+        let picked = rfd::FileDialog::new()
             .add_filter(ext, &[ext])
             .set_file_name(if self.tab == super::Tab::Skin {
                 format!("skin.{ext}")
@@ -162,8 +194,9 @@ impl PrismApp {
             } else {
                 format!("level.{ext}")
             })
-            .save_file()
-        {
+            .save_file();
+        self.dialog_returned();
+        match picked {
             Some(p) => {
                 if let Err(e) = self.export_to(&p) {
                     self.say(format!("could not export: {e}"));

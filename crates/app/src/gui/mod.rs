@@ -167,6 +167,10 @@ pub struct PrismApp {
     /// The document generation the note was written at.
     note_at: u64,
     screenshot: Option<(PathBuf, u32, ScreenshotSlot)>,
+    /// When the last file dialog returned, and the frames drawn since ([`PrismApp::drop_keys_typed_in_dialog`]).
+    after_dialog: Option<(std::time::Instant, u32)>,
+    /// The camera before the last edit, and the document generation that edit made.
+    camera_before_edit: Option<(u64, prism_viewport::Camera)>,
     last_file: Option<PathBuf>,
     pub new_solid: new_solid::NewSolid,
     pub autosave: autosave::Autosave,
@@ -233,6 +237,8 @@ impl PrismApp {
             screenshot: launch
                 .screenshot
                 .map(|p| (p, 0, Arc::new(Mutex::new(None)))),
+            after_dialog: None,
+            camera_before_edit: None,
             last_file,
         })
     }
@@ -278,13 +284,25 @@ impl PrismApp {
     pub fn run(&mut self, c: impl Into<Command>) {
         match c.into() {
             Command::Edit(e) => {
-                if let Err(msg) = self.doc.apply(e) {
-                    self.say(msg);
+                let camera = self.model.camera;
+                match self.doc.apply(e) {
+                    Ok(true) => self.camera_before_edit = Some((self.doc.generation(), camera)),
+                    Ok(false) => {}
+                    Err(msg) => self.say(msg),
                 }
             }
             Command::Undo => {
                 let before = self.doc.origin().clone();
+                // Undoing the edit that blew a level up (vertices thrown far out) brings back
+                // the camera from before it, not the one framed on the wreck.
+                let blown_up = self.model.views.iter().any(|v| v.frame_sphere().2 > 0);
+                let camera = self
+                    .camera_before_edit
+                    .filter(|(g, _)| blown_up && *g == self.doc.generation());
                 if self.doc.undo() {
+                    if let Some((_, c)) = camera {
+                        self.model.camera = c;
+                    }
                     self.follow_document_switch(&before);
                     self.say("undone");
                 }
@@ -393,6 +411,7 @@ impl PrismApp {
                 let origin = document::Origin {
                     path: None,
                     name: name.into(),
+                    ..Default::default()
                 };
                 self.replace_document(state, origin);
                 self.tab = Tab::Model;
@@ -424,6 +443,7 @@ impl PrismApp {
                 let origin = Origin {
                     path: None,
                     name: "recovered work".into(),
+                    ..Default::default()
                 };
                 self.replace_document(state, origin);
                 self.say("restored the unsaved work of the last session (save it to keep it)");
@@ -620,6 +640,7 @@ impl PrismApp {
         if self.busy() {
             ctx.request_repaint_after(std::time::Duration::from_millis(50));
         }
+        self.drop_keys_typed_in_dialog(&ctx);
         let mut commands = self.keys(&ctx);
         if let Some(f) = ctx.input(|i| i.raw.dropped_files.first().map(|f| f.path().to_path_buf()))
         {

@@ -303,10 +303,28 @@ fn bundled_samples_open_and_bad_files_say_why() {
         faces,
         "the document is kept"
     );
+    assert!(
+        a.note.as_ref().unwrap().contains("vertex 3 (line 3)"),
+        "as the OBJ counts: {:?}",
+        a.note
+    );
     // Opening is undoable.
     a.run(Command::Undo);
     a.wait_idle();
     assert!(a.doc.state().mesh.num_faces() > 0);
+    // A step's error about the opened OBJ names its faces as the file does.
+    let twice = std::env::temp_dir().join(format!("prism-twice-{}.obj", std::process::id()));
+    let tet = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n";
+    std::fs::write(&twice, format!("{tet}f 1 2 3\nf 1 2 4\nf 2 3 4\nf 3 1 4\n")).unwrap();
+    a.run(Command::Open(twice.clone()));
+    a.model.step();
+    a.wait_idle();
+    let error = a.model.views[0].error.clone().unwrap_or_default();
+    assert!(
+        error.contains("edge 1-2 is traversed 1→2 by both face 1 (line 5) and face 2 (line 6)"),
+        "{error}"
+    );
+    std::fs::remove_file(&twice).ok();
 }
 
 #[test]
@@ -631,4 +649,102 @@ fn undoing_an_open_frames_the_document_it_brings_back() {
     );
     settle(&mut h);
     assert!((h.state().model.camera.distance / far - 1.0).abs() < 0.01);
+}
+
+#[test]
+fn each_compare_view_frames_its_own_model() {
+    let mut a = app();
+    a.model.step();
+    a.model.step();
+    a.wait_idle();
+    a.run(Edit::SetViews(2));
+    a.wait_idle();
+    rebuild(&mut a);
+    // View 2 shows a level with a vertex thrown far out: its bounding box, and with it its
+    // scene's origin, lies thousands of units from view 1's.
+    let shown = |a: &PrismApp, i: usize| {
+        let v = &a.model.views[i];
+        v.pipeline.levels()[v.shown()].mesh.clone()
+    };
+    let mut m = shown(&a, 1);
+    m.positions[0] = glam::DVec3::new(1e4, 0.0, 0.0);
+    a.model.views[1].show_scene(prism_viewport::Scene::plain(&m));
+    a.model.active = 1;
+    a.model.frame(a.doc.state());
+    // Two views of the width / height the frame was fitted to (1.5 before a frame is drawn).
+    let cells = model::views::grid(
+        egui::Rect::from_min_size(egui::pos2(0.0, 0.0), egui::vec2(902.0, 300.0)),
+        2,
+    );
+    for (i, cell) in cells.iter().enumerate() {
+        let proj = a.model.projector(i, *cell);
+        let v = &a.model.views[i];
+        let (c, _, far) = v.frame_sphere();
+        assert_eq!(far > 0, i == 1);
+        let (s, _) = proj.project(v.scene.origin + c.as_dvec3()).unwrap();
+        assert!(
+            (s - cell.center()).length() < 1.0,
+            "view {}: framing centre at {s:?}, the view's middle is {:?}",
+            i + 1,
+            cell.center()
+        );
+        let mesh = shown(&a, i);
+        let positions: Vec<_> = if i == 1 {
+            m.positions[1..].to_vec()
+        } else {
+            mesh.positions.clone()
+        };
+        for p in positions {
+            let (s, _) = proj.project(p).unwrap();
+            assert!(
+                cell.contains(s),
+                "view {}: vertex at {p} drawn at {s:?}, outside {cell:?}",
+                i + 1
+            );
+        }
+    }
+}
+
+/// Keys typed into a file dialog reach the window when the dialog returns; they must not
+/// step, go back or toggle the display. Keys typed after that work again.
+#[test]
+fn keys_typed_while_a_file_dialog_was_open_are_dropped() {
+    let mut h = Harness::builder()
+        .with_size(egui::vec2(1280.0, 800.0))
+        .build_ui_state(|ui, app: &mut PrismApp| app.frame_ui(ui), app());
+    settle(&mut h);
+    let wire = h.state().model.display.wireframe;
+    // What the dialog functions mark when rfd returns (a real dialog needs a desktop).
+    h.state_mut().dialog_returned();
+    h.key_press(egui::Key::S);
+    h.key_press(egui::Key::W);
+    h.event(egui::Event::Text("sw".into()));
+    settle(&mut h);
+    assert_eq!(h.state().doc.state().pipelines[0].len(), 0);
+    assert_eq!(h.state().model.display.wireframe, wire);
+    std::thread::sleep(std::time::Duration::from_millis(350));
+    settle(&mut h);
+    h.key_press(egui::Key::S);
+    settle(&mut h);
+    assert_eq!(h.state().doc.state().pipelines[0].len(), 1);
+}
+
+/// A step that throws vertices far out, framed on: Ctrl+Z brings back the model and the
+/// camera it had before the step.
+#[test]
+fn undoing_a_blow_up_restores_the_camera_it_had() {
+    let mut a = app();
+    a.model.camera.orbit(0.3, 0.1);
+    let before = a.model.camera;
+    a.model.step();
+    a.wait_idle();
+    rebuild(&mut a);
+    let mut m = a.model.views[0].pipeline.levels()[1].mesh.clone();
+    m.positions[0] = glam::DVec3::new(1e4, 0.0, 0.0);
+    a.model.views[0].show_scene(prism_viewport::Scene::plain(&m));
+    a.model.camera.zoom(40.0);
+    assert_ne!(a.model.camera, before);
+    a.run(Command::Undo);
+    assert_eq!(a.doc.state().pipelines[0].len(), 0);
+    assert_eq!(a.model.camera, before);
 }

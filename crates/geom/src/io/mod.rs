@@ -15,6 +15,7 @@ pub use export::{ExportFormat, export, glb_bytes, stl_bytes};
 pub use obj::{ObjModel, obj_to_string, read_obj, read_obj_str, write_obj};
 pub use validate::validate_model;
 
+pub use crate::numbering::Numbering;
 use std::path::{Path, PathBuf};
 use thiserror::Error;
 
@@ -77,8 +78,8 @@ impl FileKind {
 }
 
 /// Loads an OBJ or a `.prism.json` as a document (an OBJ gives no pipeline); also returns
-/// the OBJ line of every face, for messages.
-pub fn load(path: &Path) -> Result<(Document, Option<Vec<usize>>), IoError> {
+/// how the file counts its vertices and faces, for messages about them.
+pub fn load(path: &Path) -> Result<(Document, Numbering), IoError> {
     FileKind::of(path)?;
     let text = std::fs::read_to_string(path).map_err(|source| IoError::Read {
         path: path.into(),
@@ -89,17 +90,19 @@ pub fn load(path: &Path) -> Result<(Document, Option<Vec<usize>>), IoError> {
 
 /// As [`load`], for text already in memory (the app's bundled samples); the kind comes
 /// from `path`'s name, which messages quote.
-pub fn load_str(path: &Path, text: &str) -> Result<(Document, Option<Vec<usize>>), IoError> {
+pub fn load_str(path: &Path, text: &str) -> Result<(Document, Numbering), IoError> {
     let loaded = load_unchecked(path, text)?;
     let d = &loaded.0;
-    validate_model(&d.mesh, &d.edge_attrs, &d.tags).map_err(|message| IoError::Invalid {
-        path: path.into(),
-        message,
+    validate_model(&d.mesh, &d.edge_attrs, &d.tags, &loaded.1).map_err(|message| {
+        IoError::Invalid {
+            path: path.into(),
+            message,
+        }
     })?;
     Ok(loaded)
 }
 
-fn load_unchecked(path: &Path, text: &str) -> Result<(Document, Option<Vec<usize>>), IoError> {
+fn load_unchecked(path: &Path, text: &str) -> Result<(Document, Numbering), IoError> {
     match FileKind::of(path)? {
         FileKind::Obj => {
             let m = read_obj_str(path, text)?;
@@ -110,10 +113,10 @@ fn load_unchecked(path: &Path, text: &str) -> Result<(Document, Option<Vec<usize
                     tags: m.tags,
                     ..Document::default()
                 },
-                Some(m.face_lines),
+                Numbering::obj(m.vertex_lines, m.face_lines),
             ))
         }
-        FileKind::Document => Ok((document_from_str(path, text)?, None)),
+        FileKind::Document => Ok((document_from_str(path, text)?, Numbering::default())),
     }
 }
 

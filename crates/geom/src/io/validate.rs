@@ -6,15 +6,24 @@
 
 use crate::edge_attrs::EdgeAttrs;
 use crate::mesh::PolyMesh;
+use crate::numbering::Numbering;
 use crate::tags::SubdivTags;
 use std::collections::HashSet;
 
-/// The first problem of the model, in words.
-pub fn validate_model(mesh: &PolyMesh, attrs: &EdgeAttrs, tags: &SubdivTags) -> Result<(), String> {
+/// The first problem of the model, in words; vertices and faces named as `numbering` says
+/// the file counts them (edges, corners and holes come from tags, which count from 0 in
+/// both formats; the OBJ reader has checked its tags with their lines already).
+pub fn validate_model(
+    mesh: &PolyMesh,
+    attrs: &EdgeAttrs,
+    tags: &SubdivTags,
+    numbering: &Numbering,
+) -> Result<(), String> {
     let n = mesh.num_vertices();
     if let Some(v) = mesh.positions.iter().position(|p| !p.is_finite()) {
         return Err(format!(
-            "vertex {v} has a coordinate that is not a finite number"
+            "{} has a coordinate that is not a finite number",
+            numbering.vertex(v as u32)
         ));
     }
     let mut edges = HashSet::new();
@@ -23,7 +32,9 @@ pub fn validate_model(mesh: &PolyMesh, attrs: &EdgeAttrs, tags: &SubdivTags) -> 
             let vs = mesh.loop_verts(l);
             if let Some(&v) = vs.iter().find(|&&v| v as usize >= n) {
                 return Err(format!(
-                    "face {f}, loop {k}: vertex index {v} is out of range (the model has {n} vertices)"
+                    "{}, loop {k}: vertex index {} is out of range (the model has {n} vertices)",
+                    numbering.face(f as u32),
+                    v as u64 + numbering.base as u64
                 ));
             }
             for i in 0..vs.len() {

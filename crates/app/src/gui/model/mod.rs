@@ -16,7 +16,7 @@ mod panels;
 pub mod pick;
 mod scheme_editor;
 pub mod view_pipe;
-mod views;
+pub mod views;
 pub mod worker;
 
 pub use scheme_editor::default_next;
@@ -154,6 +154,8 @@ pub struct ModelTab {
     pub sharper_deg: f64,
     /// The document generation the views were last brought in line with.
     synced: Option<u64>,
+    /// How the document's file counts its vertices and faces, for step errors about them.
+    numbering: std::sync::Arc<prism_geom::io::Numbering>,
     /// Commands decided outside `ui` (helpers the tests call too), taken by the next `ui`
     /// or [`ModelTab::take_commands`].
     pending: Vec<Command>,
@@ -187,6 +189,7 @@ impl ModelTab {
             radius_value: 0.1,
             sharper_deg: 60.0,
             synced: None,
+            numbering: Default::default(),
             pending: Vec::new(),
             waker: std::sync::Arc::new(|| {}),
             has_gpu: false,
@@ -212,6 +215,7 @@ impl ModelTab {
         }
         let first = self.synced.is_none();
         self.synced = Some(doc.generation());
+        self.numbering = doc.origin().numbering.clone();
         let d = doc.state();
         let live = doc.live();
         let n = d.pipelines.len();
@@ -268,7 +272,7 @@ impl ModelTab {
     pub fn poll_jobs(&mut self) -> bool {
         let mut any = false;
         for (i, v) in self.views.iter_mut().enumerate() {
-            match v.poll(&self.waker) {
+            match v.poll(&self.waker, &self.numbering) {
                 Outcome::Nothing => {}
                 Outcome::Updated => any = true,
                 Outcome::AskBudget(o) => {
@@ -382,22 +386,35 @@ impl ModelTab {
         self.framed = false;
     }
 
-    /// Frames the model of the active view.
+    /// The camera view `i` is drawn with: the linked camera, whose target is relative to
+    /// each view's framing centre, so every view of the split keeps its own model in the
+    /// middle (a view whose level threw vertices far away has its framing centre, and with
+    /// it the scene's origin, elsewhere than the others).
+    pub fn view_camera(&self, i: usize) -> Camera {
+        let mut c = self.camera;
+        c.target += self.views[i].frame_sphere().0;
+        c
+    }
+
+    /// Frames the models: the linked camera looks at each view's framing centre from a
+    /// distance that fits the largest of their framing spheres.
     pub fn frame(&mut self, doc: &DocState) {
-        let v = &mut self.views[self.active];
-        let (centre, r) = if v.scene.vertices.is_empty() {
+        let r = if self.views.iter().all(|v| v.scene.vertices.is_empty()) {
             let (lo, hi) = doc.mesh.bbox();
-            (Vec3::ZERO, (0.5 * (hi - lo).length()).max(1e-9) as f32)
+            (0.5 * (hi - lo).length()).max(1e-9) as f32
         } else {
-            // Most of the model, not the few vertices a broken step threw far away.
-            let (c, r, _) = v.frame_sphere();
-            (c, r)
+            // Most of each model, not the few vertices a broken step threw far away.
+            self.views
+                .iter()
+                .filter(|v| !v.scene.vertices.is_empty())
+                .map(|v| v.frame_sphere().1)
+                .fold(0.0, f32::max)
         };
         // A narrow view (the compare split) has the smaller horizontal field: fit that too.
         let half_y = 0.5 * Camera::default().fov_y;
         let half_x = (half_y.tan() * self.view_aspect.clamp(0.1, 10.0)).atan();
         let r = r * half_y.sin() / half_x.min(half_y).sin();
-        self.camera = Camera::looking(View::Iso, centre, r);
+        self.camera = Camera::looking(View::Iso, Vec3::ZERO, r);
         self.framed = true;
     }
 
@@ -425,6 +442,8 @@ impl ModelTab {
             self.camera = c;
         }
         self.camera.frame(centre, (3.0 * size) as f32);
+        // The linked camera's target is relative to the view's framing centre.
+        self.camera.target -= v.frame_sphere().0;
         self.framed = true;
     }
 

@@ -113,8 +113,8 @@ pub struct ViewPipe {
     origins: Option<(LevelKey, Arc<Origins>)>,
     /// Limit points of a level: computed on a thread, then kept.
     limits: Option<(LevelKey, LimitSlot)>,
-    /// The framing sphere of the scene with this serial ([`ViewPipe::frame_sphere`]).
-    sphere: Option<(u64, (glam::Vec3, f32, usize))>,
+    /// The framing sphere of the installed scene ([`ViewPipe::frame_sphere`]).
+    sphere: std::sync::OnceLock<(glam::Vec3, f32, usize)>,
     /// Cached fillet measure and what it was made from.
     pub fillet: Option<(FilletKey, String)>,
 }
@@ -142,7 +142,7 @@ impl ViewPipe {
             edges: None,
             origins: None,
             limits: None,
-            sphere: None,
+            sphere: std::sync::OnceLock::new(),
             fillet: None,
         }
     }
@@ -193,7 +193,7 @@ impl ViewPipe {
     }
 
     /// Takes a finished job's result.
-    pub fn poll(&mut self, wake: &Waker) -> Outcome {
+    pub fn poll(&mut self, wake: &Waker, input: &prism_geom::io::Numbering) -> Outcome {
         let Some(job) = &mut self.job else {
             return Outcome::Nothing;
         };
@@ -216,7 +216,7 @@ impl ViewPipe {
         if let Some(pipeline) = pipeline
             && !superseded
         {
-            self.error = error.as_ref().map(|e| e.to_string());
+            self.error = error.as_ref().map(|e| e.describe(input));
             if let Some(o) = error.as_ref().and_then(over_budget) {
                 out = Outcome::AskBudget(o.clone());
             }
@@ -289,7 +289,16 @@ impl ViewPipe {
         self.scene = Arc::new(scene);
         self.scene_key = Some(key);
         self.scene_serial += 1;
+        self.sphere = std::sync::OnceLock::new();
         self.version += 1;
+    }
+
+    /// Shows `scene` in place of the shown level's (tests: a level that threw vertices far
+    /// out without a scheme that does).
+    #[cfg(test)]
+    pub fn show_scene(&mut self, scene: Scene) {
+        let key = self.scene_key.clone().expect("a scene was built");
+        self.install_scene(scene, key);
     }
 
     /// The number of scenes installed so far, for overlay keys (the overlay uses the
@@ -301,20 +310,15 @@ impl ViewPipe {
     /// The sphere to frame the scene on screen with (the bounding sphere, or most of the
     /// model when a few corners lie far outside it) and how many corners lie far outside;
     /// computed once per scene.
-    pub fn frame_sphere(&mut self) -> (glam::Vec3, f32, usize) {
-        if let Some((serial, s)) = self.sphere
-            && serial == self.scene_serial
-        {
-            return s;
-        }
-        let (c, r, far) = self.scene.robust_sphere();
-        let s = if far == 0 {
-            (glam::Vec3::ZERO, self.scene.radius(), 0)
-        } else {
-            (c, r, far)
-        };
-        self.sphere = Some((self.scene_serial, s));
-        s
+    pub fn frame_sphere(&self) -> (glam::Vec3, f32, usize) {
+        *self.sphere.get_or_init(|| {
+            let (c, r, far) = self.scene.robust_sphere();
+            if far == 0 {
+                (glam::Vec3::ZERO, self.scene.radius(), 0)
+            } else {
+                (c, r, far)
+            }
+        })
     }
 
     /// Cancels the running job and forgets the queued one.

@@ -47,7 +47,9 @@ impl ModelTab {
     /// The projector of view rectangle `rect` for view `i`.
     pub fn projector(&self, i: usize, rect: egui::Rect) -> Projector {
         Projector {
-            view_proj: self.camera.view_proj(rect.width() / rect.height().max(1.0)),
+            view_proj: self
+                .view_camera(i)
+                .view_proj(rect.width() / rect.height().max(1.0)),
             rect,
             origin: self.views[i].scene.origin,
         }
@@ -106,7 +108,7 @@ impl ModelTab {
                         scene: v.scene.clone(),
                         overlay: v.overlay.clone(),
                         version: v.version,
-                        camera: self.camera,
+                        camera: self.view_camera(i),
                         aspect: rect.width() / rect.height().max(1.0),
                     },
                 ));
