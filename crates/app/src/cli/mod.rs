@@ -261,10 +261,16 @@ pub fn run(cli: Cli) -> Result<(), CliError> {
                 Some(s) => parse_edges(s).map_err(CliError::usage)?,
                 None => Vec::new(),
             };
-            // A file that cannot be opened is said before any window is tried, so the
-            // message is not mistaken for a graphics failure.
-            if let Some(f) = &cli.file {
-                crate::gui::document::open(f).map_err(CliError::input)?;
+            // A file that cannot be opened: the window opens on the bundled tripod with the
+            // error in its status bar, and the terminal says it too (never as a graphics
+            // failure). A screenshot is a script's job: it stops with the error instead.
+            if let Some(f) = &cli.file
+                && let Err(e) = crate::gui::document::open(f)
+            {
+                if cli.screenshot.is_some() {
+                    return Err(CliError::input(e));
+                }
+                eprintln!("warning: could not open {}: {e}", f.display());
             }
             crate::gui::run(crate::gui::Launch {
                 file: cli.file,

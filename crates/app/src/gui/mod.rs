@@ -181,8 +181,14 @@ impl PrismApp {
     pub fn headless(launch: Launch, settings: Option<Settings>) -> Result<PrismApp, String> {
         let settings = settings.unwrap_or_default();
         let remembered = settings.last_file.clone().filter(|p| p.exists());
+        // A file that cannot be opened (given, or remembered from the last run) leaves the
+        // window on the bundled tripod, its error in the status bar.
+        let mut note = None;
         let (mut state, origin) = match launch.file.as_ref().or(remembered.as_ref()) {
-            Some(p) => document::open(p)?,
+            Some(p) => document::open(p).or_else(|e| {
+                note = Some(format!("could not open {}: {e}", p.display()));
+                files::sample(0)
+            })?,
             None => files::sample(0)?,
         };
         if !launch.pipeline.is_empty() {
@@ -232,7 +238,7 @@ impl PrismApp {
             skin: skin::SkinTab::default(),
             envelope,
             new_solid: Default::default(),
-            note: None,
+            note,
             note_at: 0,
             screenshot: launch
                 .screenshot
@@ -605,6 +611,11 @@ impl PrismApp {
             ui.selectable_value(&mut self.tab, Tab::Curves, "Curves");
             ui.selectable_value(&mut self.tab, Tab::Skin, "Skin");
             ui.selectable_value(&mut self.tab, Tab::Envelope, "Envelope");
+            if self.tab == Tab::Model {
+                ui.separator();
+                self.model
+                    .views_picker(ui, self.doc.state().pipelines.len());
+            }
         });
         out
     }

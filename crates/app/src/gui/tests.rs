@@ -138,7 +138,7 @@ fn the_new_user_walk_through() {
     assert!(moved > 0, "the crease changes the Catmull–Clark surface");
     let doc = a.doc.state().clone();
     let fillet = a.model.fillet_text(0, &doc);
-    assert!(fillet.contains("r = 0.2"), "{fillet}");
+    assert!(fillet.contains("(r 0.2"), "{fillet}");
     assert_eq!(a.model.fillet_text(1, &doc), "—");
 
     // Undo: the second pipeline, the split, the crease.
@@ -747,4 +747,68 @@ fn undoing_a_blow_up_restores_the_camera_it_had() {
     a.run(Command::Undo);
     assert_eq!(a.doc.state().pipelines[0].len(), 0);
     assert_eq!(a.model.camera, before);
+}
+
+/// At the default window size, 1280×800, with four views of five-step pipelines and the
+/// Edges tool (the tallest side panel): the side panel's last control is inside the window
+/// and the compare table shows every column and every row.
+#[test]
+fn the_model_tab_fits_1280_by_800() {
+    use egui_kittest::kittest::Queryable;
+    let mut a = app();
+    let five = parse_pipeline(&["combination:r=0.2"; 5].join(",")).unwrap();
+    a.run(Edit::SetPipeline {
+        view: 0,
+        steps: five,
+    });
+    a.run(Edit::SetViews(4));
+    let mixed = parse_pipeline(
+        "cylindrical:r=0.2,cylindrical:r=0.2,vector-sum:alpha=0.2,doo-sabin,doo-sabin",
+    )
+    .unwrap();
+    for view in 1..4 {
+        a.run(Edit::SetPipeline {
+            view,
+            steps: mixed.clone(),
+        });
+    }
+    a.model.tool = Tool::Edges;
+    let mut h = Harness::builder()
+        .with_size(egui::vec2(1280.0, 800.0))
+        .build_ui_state(|ui, app: &mut PrismApp| app.frame_ui(ui), a);
+    settle(&mut h);
+    let window = egui::Rect::from_min_size(egui::Pos2::ZERO, egui::vec2(1280.0, 800.0));
+    let inside = |h: &Harness<'_, PrismApp>, label: &str| {
+        let r = h.get_by_label(label).rect();
+        assert!(window.contains_rect(r), "{label} at {r:?}");
+        r
+    };
+    inside(&h, "Frame the model");
+    inside(&h, "Clear crease");
+    inside(&h, "4 views");
+    let header = inside(&h, "ms per level");
+    inside(&h, "fillet radius reached");
+    // The fourth row is on screen, below the header.
+    let row = inside(&h, "4");
+    assert!(row.top() > header.bottom(), "{row:?}");
+}
+
+/// A file that cannot be opened at start opens the window anyway, on the bundled tripod,
+/// with the reason in the status bar.
+#[test]
+fn a_missing_file_at_start_opens_the_tripod_and_says_why() {
+    let a = PrismApp::headless(
+        Launch {
+            file: Some("no-such-file.obj".into()),
+            ..Launch::default()
+        },
+        None,
+    )
+    .unwrap();
+    assert!(a.doc.origin().name.contains("tripod"));
+    let note = a.note.clone().unwrap_or_default();
+    assert!(
+        note.contains("could not open no-such-file.obj") && note.contains("cannot read"),
+        "{note}"
+    );
 }

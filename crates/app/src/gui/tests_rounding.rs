@@ -72,7 +72,7 @@ fn the_selected_edge_reads_out_its_fillet() {
     let doc = a.doc.state().clone();
     let t4 = a.model.fillet_text(0, &doc);
     assert!(
-        t4.starts_with("0.300") && t4.contains("r = 0.3000, edge 0-9"),
+        t4.starts_with("0.300") && t4.contains("(r 0.3000,") && t4.ends_with("edge 0-9)"),
         "{t4}"
     );
     a.model.views[0].level = 1;

@@ -118,8 +118,24 @@ impl CurvesTab {
         chosen: CurveScheme,
         results: &[(CurveScheme, Result<Refined, String>)],
     ) {
-        egui_plot::Plot::new("curvature-plot")
-            .height(height)
+        // Headroom above the highest curvature: the legend (top right, one line a scheme)
+        // sits there instead of over the curve's end.
+        let (lo, hi) = results
+            .iter()
+            .filter_map(|(_, r)| r.as_ref().ok())
+            .flat_map(|r| r.curvature.iter().copied())
+            .filter(|c| c.is_finite())
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), c| {
+                (lo.min(c), hi.max(c))
+            });
+        let mut plot = egui_plot::Plot::new("curvature-plot");
+        if lo <= hi {
+            let rows = results.len() as f64;
+            plot = plot
+                .include_y(lo.min(0.0))
+                .include_y(hi + (hi - lo.min(0.0)).max(1e-9) * 0.15 * rows);
+        }
+        plot.height(height)
             .legend(egui_plot::Legend::default())
             .x_axis_label("arc length")
             .y_axis_label("curvature")

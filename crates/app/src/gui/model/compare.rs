@@ -12,6 +12,32 @@ use crate::gui::document::DocState;
 use prism_geom::EdgeKey;
 use prism_geom::analysis::measure_fillet;
 
+/// A pipeline for reading at a glance: runs of the same step written once with their count
+/// (`5 × combination:r=0.2, 2 × doo-sabin`); "no steps" for none.
+pub fn short_pipeline(steps: &[prism_geom::Scheme]) -> String {
+    let mut runs: Vec<(usize, String)> = Vec::new();
+    for s in steps {
+        let text = s.to_string();
+        match runs.last_mut() {
+            Some((n, t)) if *t == text => *n += 1,
+            _ => runs.push((1, text)),
+        }
+    }
+    if runs.is_empty() {
+        return "no steps".into();
+    }
+    runs.iter()
+        .map(|(n, t)| {
+            if *n > 1 {
+                format!("{n} × {t}")
+            } else {
+                t.clone()
+            }
+        })
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
 impl ModelTab {
     /// The fillet measure of view `i`'s shown level, as table text.
     pub fn fillet_text(&mut self, i: usize, doc: &DocState) -> String {
@@ -47,12 +73,12 @@ impl ModelTab {
                 });
                 match found {
                     Some((e, r, m)) => format!(
-                        "{:.4} (r = {:.4}, edge {}-{}, error {:+.2} %)",
+                        "{:.4} (r {:.4}, {:+.2} %, edge {}-{})",
                         m.fitted_radius,
                         r,
+                        100.0 * m.max_radial_error,
                         e.0,
                         e.1,
-                        100.0 * m.max_radial_error
                     ),
                     None => "no fillet yet".to_string(),
                 }
@@ -72,11 +98,18 @@ impl ModelTab {
                 let flipped = lv.report.as_ref().map_or(0, |r| r.flipped.len());
                 let times: Vec<String> = v.pipeline.levels()[1..]
                     .iter()
-                    .map(|l| format!("{:.1}", l.report.as_ref().map_or(0.0, |r| r.millis)))
+                    .map(|l| {
+                        let ms = l.report.as_ref().map_or(0.0, |r| r.millis);
+                        if ms >= 10.0 {
+                            format!("{ms:.0}")
+                        } else {
+                            format!("{ms:.1}")
+                        }
+                    })
                     .collect();
                 [
                     format!("{}", i + 1),
-                    prism_geom::scheme::format_pipeline(v.steps()),
+                    short_pipeline(v.steps()),
                     lv.mesh.num_vertices().to_string(),
                     lv.mesh.num_faces().to_string(),
                     flipped.to_string(),
@@ -108,6 +141,12 @@ impl ModelTab {
                                 if ui.selectable_label(i == self.active, cell).clicked() {
                                     self.active = i;
                                 }
+                            } else if c == 1 {
+                                // A long pipeline wraps, so the table fits 1280 px.
+                                ui.scope(|ui| {
+                                    ui.set_max_width(250.0);
+                                    ui.add(egui::Label::new(cell).wrap());
+                                });
                             } else if c == 4 && cell != "0" {
                                 ui.colored_label(egui::Color32::from_rgb(240, 110, 90), cell);
                             } else {

@@ -10,7 +10,7 @@
 //! Each view follows the document by its generation ([`ModelTab::sync`]): a changed pipeline
 //! is recomputed on a worker thread from the first step that changed.
 
-mod compare;
+pub mod compare;
 mod overlay;
 mod panels;
 pub mod pick;
@@ -483,6 +483,9 @@ impl ModelTab {
             .resizable(true)
             .default_size(300.0)
             .show(ui, |ui| {
+                // A solid scroll bar: at 1280×800 a long pipeline with the Edges tool is
+                // taller than the window, and the floating bar shows only on hover.
+                ui.spacing_mut().scroll = egui::style::ScrollStyle::solid();
                 egui::ScrollArea::vertical().show(ui, |ui| self.side_panel(ui, doc));
             });
         egui::Panel::bottom("status").show(ui, |ui| self.status(ui, note));
@@ -490,7 +493,7 @@ impl ModelTab {
         if n > 1 {
             egui::Panel::bottom(("compare", n))
                 .resizable(true)
-                .default_size(34.0 + 22.0 * n as f32)
+                .default_size(40.0 + 24.0 * n as f32)
                 .show(ui, |ui| self.compare_table(ui, d));
         }
         self.rebuild_scenes(d, doc.generation());

@@ -17,25 +17,28 @@ impl ModelTab {
         ui.separator();
         self.tool_section(ui, d);
         ui.separator();
-        self.display_section(ui, d);
-        ui.separator();
-        ui.heading("Compare");
-        let views = d.pipelines.len();
+        egui::CollapsingHeader::new(egui::RichText::new("Display").heading())
+            .default_open(true)
+            .show(ui, |ui| self.display_section(ui, d));
+    }
+
+    /// The compare split's view count (1, 2 or 4), shown in the menu bar.
+    pub fn views_picker(&mut self, ui: &mut egui::Ui, views: usize) {
         let mut n = views;
-        ui.horizontal(|ui| {
-            for k in [1, 2, 4] {
-                ui.radio_value(
-                    &mut n,
-                    k,
-                    format!("{k} view{}", if k > 1 { "s" } else { "" }),
-                );
-            }
-        });
+        ui.label("Compare:");
+        for k in [1, 2, 4] {
+            ui.selectable_value(
+                &mut n,
+                k,
+                format!("{k} view{}", if k > 1 { "s" } else { "" }),
+            )
+            .on_hover_text(
+                "each view has its own pipeline on the same solid; click a view to edit \
+                     its pipeline in the side panel; the cameras are linked",
+            );
+        }
         if n != views {
             self.push(Edit::SetViews(n));
-        }
-        if n > 1 {
-            ui.label("Click a view to edit its pipeline here; cameras are linked.");
         }
     }
 
@@ -92,10 +95,12 @@ impl ModelTab {
             self.push(e);
         }
         self.pipeline_text(ui, view, steps);
-        ui.label("Next step:");
-        if let Some(n) = scheme_editor(ui, "next", "scheme of the next step", &self.next) {
-            self.next = n;
-        }
+        ui.horizontal(|ui| {
+            ui.label("Next:");
+            if let Some(n) = scheme_editor(ui, "next", "scheme of the next step", &self.next) {
+                self.next = n;
+            }
+        });
         if self.next.shrinks_when_repeated() {
             ui.horizontal(|ui| {
                 ui.label("repeated, divide by");
@@ -267,7 +272,12 @@ impl ModelTab {
                     .suffix("°"),
             );
         });
-        ui.label(format!("{} control edge(s) selected", self.sel_edges.len()));
+        let marked = doc.edge_attrs.len();
+        ui.label(format!(
+            "{} control edge(s) selected (yellow), {marked} marked",
+            self.sel_edges.len()
+        ))
+        .on_hover_text("marked edges are drawn red (creased) or cyan (own radius)");
         // Sharpness is read by the primal steps only: say so rather than report a crease
         // that changes nothing.
         let primal = self.views[self.active]
@@ -289,34 +299,31 @@ impl ModelTab {
             );
         });
         ui.horizontal(|ui| {
-            if ui.button("Own radius").clicked() {
+            let own = ui.button("Own radius");
+            if own.clicked() {
                 self.mark(EdgeMark::Radius(Some(self.radius_value)));
             }
             ui.add(
                 egui::DragValue::new(&mut self.radius_value)
                     .speed(0.005)
                     .range(1e-4..=1e6),
-            );
+            )
+            .labelled_by(own.id);
             if ui.button("Step's radius").clicked() {
                 self.mark(EdgeMark::Radius(None));
             }
+            if ui.button("Clear crease").clicked() {
+                self.mark(EdgeMark::Crease(0.0));
+            }
         });
-        if ui.button("Clear crease").clicked() {
-            self.mark(EdgeMark::Crease(0.0));
-        }
         if self.sel_edges.len() == 1 {
             let e = *self.sel_edges.first().expect("one edge");
             let text = self.fillet_text(self.active, doc);
             ui.label(format!("fillet reached on {}-{}: {text}", e.0, e.1));
         }
-        let marked = doc.edge_attrs.len();
-        ui.label(format!(
-            "{marked} control edge(s) marked (red: crease, cyan: own radius, yellow: selected)"
-        ));
     }
 
     fn display_section(&mut self, ui: &mut egui::Ui, doc: &DocState) {
-        ui.heading("Display");
         let d = &mut self.display;
         ui.checkbox(&mut d.smooth, "smooth shading (F)");
         ui.checkbox(&mut d.wireframe, "wireframe (W)");

@@ -87,7 +87,7 @@ impl ModelTab {
                 let text = format!(
                     "View {}: {}",
                     i + 1,
-                    prism_geom::scheme::format_pipeline(&doc.pipelines[i])
+                    super::compare::short_pipeline(&doc.pipelines[i])
                 );
                 ui.painter().text(
                     header.left_center() + egui::vec2(6.0, 0.0),
