@@ -4,6 +4,7 @@
 
 mod counts;
 mod curvature;
+mod face_grid;
 mod fillet;
 
 pub use counts::{MeshCounts, counts};
