@@ -1165,3 +1165,145 @@ fn messages_number_elements_as_the_input_file_does() {
         text(&o)
     );
 }
+
+/// A torus of `n`×`n` quads as OBJ text.
+fn torus_obj(n: usize) -> String {
+    use std::fmt::Write as _;
+    let mut s = String::new();
+    for i in 0..n {
+        let u = std::f64::consts::TAU * i as f64 / n as f64;
+        for j in 0..n {
+            let v = std::f64::consts::TAU * j as f64 / n as f64;
+            let r = 3.0 + v.cos();
+            let _ = writeln!(s, "v {} {} {}", r * u.cos(), r * u.sin(), v.sin());
+        }
+    }
+    for i in 0..n {
+        for j in 0..n {
+            let at = |a: usize, b: usize| (a % n) * n + (b % n) + 1;
+            let _ = writeln!(
+                s,
+                "f {} {} {} {}",
+                at(i, j),
+                at(i + 1, j),
+                at(i + 1, j + 1),
+                at(i, j + 1)
+            );
+        }
+    }
+    s
+}
+
+/// The run's peak resident memory in bytes (the child's own `wait4` figure), with its output.
+#[cfg(unix)]
+fn run_measured(args: &[&str]) -> (Output, u64) {
+    let child = Command::new(env!("CARGO_BIN_EXE_prism"))
+        .args(args)
+        .current_dir(Path::new(env!("CARGO_MANIFEST_DIR")).join("../.."))
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    let pid = child.id() as i32;
+    // Read the pipes on threads so the child never blocks on a full pipe.
+    let mut child = child;
+    let (mut so, mut se) = (child.stdout.take().unwrap(), child.stderr.take().unwrap());
+    let out = std::thread::spawn(move || {
+        let mut v = Vec::new();
+        std::io::Read::read_to_end(&mut so, &mut v).unwrap();
+        v
+    });
+    let err = std::thread::spawn(move || {
+        let mut v = Vec::new();
+        std::io::Read::read_to_end(&mut se, &mut v).unwrap();
+        v
+    });
+    let mut status = 0;
+    let mut usage: libc::rusage = unsafe { std::mem::zeroed() };
+    // SAFETY: waits for our own child; `status` and `usage` are valid for writing.
+    let r = unsafe { libc::wait4(pid, &mut status, 0, &mut usage) };
+    assert_eq!(r, pid);
+    use std::os::unix::process::ExitStatusExt;
+    let o = Output {
+        status: std::process::ExitStatus::from_raw(status),
+        stdout: out.join().unwrap(),
+        stderr: err.join().unwrap(),
+    };
+    (o, usage.ru_maxrss as u64 * 1024)
+}
+
+/// The estimate in MiB a run printed (`memory: about N MiB at the peak`).
+fn printed_estimate(o: &Output) -> u64 {
+    let (so, se) = text(o);
+    so.lines()
+        .find_map(|l| l.strip_prefix("memory: about "))
+        .and_then(|l| l.split(' ').next())
+        .and_then(|n| n.parse().ok())
+        .unwrap_or_else(|| panic!("no estimate printed: {so}{se}"))
+}
+
+/// The memory guard (issue 15, item 2): a job over `--memory-budget` is refused before any
+/// work with the estimate and the budget; `--levels 20` is refused at once by the default
+/// budget; a run at 1.3 × the printed estimate stays within it, and the estimate is not
+/// more than 3 × the measured peak.
+#[cfg(unix)]
+#[test]
+fn the_memory_guard_is_honest_both_ways() {
+    let input = tmp("guard-torus.obj");
+    std::fs::write(&input, torus_obj(120)).unwrap();
+    let out = tmp("guard-out.obj");
+    std::fs::remove_file(&out).ok();
+    let o = run_with(
+        "subdivide {} --scheme catmull-clark --levels 2 --memory-budget 40M -o {}",
+        &[&input, &out],
+    );
+    assert_eq!(o.status.code(), Some(1), "{:?}", text(&o));
+    assert!(
+        text(&o).1.contains("more than the memory budget of 40 MiB"),
+        "{:?}",
+        text(&o)
+    );
+    assert!(!out.exists(), "refused before writing");
+    let o = run_with(
+        "subdivide assets/cube.obj --scheme doo-sabin --levels 20 -o {}",
+        &[&out],
+    );
+    assert_eq!(o.status.code(), Some(1), "{:?}", text(&o));
+    assert!(text(&o).1.contains("would need about"), "{:?}", text(&o));
+    for bad in ["12 parsecs", "-1G", "0"] {
+        let o = run_with(
+            &format!("subdivide {{}} --scheme doo-sabin --memory-budget {bad} -o {{}}"),
+            &[&input, &out],
+        );
+        assert_eq!(o.status.code(), Some(2), "{bad}: {:?}", text(&o));
+    }
+    for (scheme, extra) in [
+        ("catmull-clark", ""),
+        ("doo-sabin", ""),
+        ("cylindrical", " --radius 0.02 --clamp"),
+    ] {
+        let line = format!(
+            "subdivide {} --scheme {scheme} --levels 2{extra} -o {}",
+            input.display(),
+            out.display()
+        );
+        let args: Vec<&str> = line.split(' ').collect();
+        let (o, _) = run_measured(&args);
+        assert!(o.status.success(), "{:?}", text(&o));
+        let estimate = printed_estimate(&o);
+        let budget = format!("{}M", estimate * 13 / 10);
+        let mut with = args.clone();
+        with.extend(["--memory-budget", &budget]);
+        let (o, peak) = run_measured(&with);
+        assert!(o.status.success(), "{scheme}: {:?}", text(&o));
+        let peak_mib = peak >> 20;
+        assert!(
+            peak_mib <= estimate * 13 / 10,
+            "{scheme}: peak {peak_mib} MiB over the budget {budget}"
+        );
+        assert!(
+            estimate <= 3 * peak_mib.max(1),
+            "{scheme}: estimate {estimate} MiB, peak {peak_mib} MiB"
+        );
+    }
+}

@@ -45,7 +45,7 @@ impl OverBudget {
     pub fn check(needed: u64, budget: u64, faces: u64) -> Result<(), OverBudget> {
         if needed > budget {
             Err(OverBudget {
-                needed_mib: needed >> 20,
+                needed_mib: needed.div_ceil(1 << 20),
                 budget_mib: budget >> 20,
                 faces,
             })

@@ -29,6 +29,7 @@ pub mod error;
 pub mod freeform;
 pub mod geometry;
 pub mod io;
+pub mod memory;
 pub mod mesh;
 pub mod normals;
 pub mod numbering;

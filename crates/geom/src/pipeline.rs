@@ -8,7 +8,9 @@
 
 use crate::analysis::{FilletError, FilletSummary, measure_fillets};
 use crate::edge_attrs::{EdgeAttrs, EdgeKey};
+use crate::error::OverBudget;
 use crate::geometry::signed_volume;
+use crate::memory;
 use crate::mesh::PolyMesh;
 use crate::primal::refine_primal;
 use crate::refine::Provenance;
@@ -64,6 +66,17 @@ impl PipelineError {
     }
 }
 
+impl Level {
+    /// Frees the level's mesh, marks and provenance, keeping its report ([`Keep::Needed`]).
+    fn release(&mut self) {
+        self.mesh = PolyMesh::new();
+        self.edge_attrs = EdgeAttrs::new();
+        self.tags.corners.clear();
+        self.tags.holes.clear();
+        self.provenance = None;
+    }
+}
+
 /// A run of cylindrical-family steps: the level it started from, its (last) rule and the
 /// radii its first step clamped (edges in that level's numbering).
 #[derive(Debug, Clone, PartialEq)]
@@ -84,12 +97,25 @@ impl RoundingRun {
     }
 }
 
+/// Which levels a pipeline keeps once the level after them exists.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Keep {
+    /// Every level (the app shows any of them).
+    #[default]
+    All,
+    /// The input, the level each run of cylindrical-family steps starts from (its fillets
+    /// are measured against it) and the newest level; the others are released as soon as
+    /// the next level exists (the command line writes the last level only).
+    Needed,
+}
+
 /// Steps and the levels computed so far.
 #[derive(Debug, Clone)]
 pub struct Pipeline {
     steps: Vec<Scheme>,
     levels: Vec<Level>,
     pub options: StepOptions,
+    pub keep: Keep,
 }
 
 impl Pipeline {
@@ -115,6 +141,7 @@ impl Pipeline {
                 report: None,
             }],
             options: StepOptions::default(),
+            keep: Keep::All,
         }
     }
 
@@ -144,7 +171,81 @@ impl Pipeline {
             steps,
             levels: self.levels[..keep].to_vec(),
             options: self.options,
+            keep: self.keep,
         }
+    }
+
+    /// Whether level `k` stays once the level after it exists ([`Keep`]).
+    fn kept_after_next(&self, k: usize) -> bool {
+        let rounds = |i: usize| matches!(self.steps.get(i), Some(Scheme::Biquadratic(r)) if r.is_cylindrical_family());
+        self.keep == Keep::All || k == 0 || (rounds(k) && !rounds(k - 1))
+    }
+
+    /// Whether level `k` was released ([`Keep::Needed`]): its mesh is empty.
+    pub fn released(&self, k: usize) -> bool {
+        k + 1 < self.levels.len() && !self.kept_after_next(k)
+    }
+
+    /// Bytes the levels kept now hold ([`memory::level_bytes`]).
+    pub fn kept_bytes(&self) -> u64 {
+        self.levels.iter().map(memory::level_bytes).sum()
+    }
+
+    /// The most memory computing the remaining steps will hold at once, in bytes, estimated
+    /// from the counts of the last level before any work ([`crate::memory`]): the levels
+    /// kept plus each step's own, the largest over the steps, plus the process's baseline.
+    pub fn estimate_peak(&self) -> u64 {
+        self.estimate_peak_then(0)
+    }
+
+    /// [`Pipeline::estimate_peak`] when, after the last step, `after` more bytes are held
+    /// beside the levels still kept (an export assembled in memory, the fillet report).
+    pub fn estimate_peak_then(&self, after: u64) -> u64 {
+        let mut kept = self.kept_bytes();
+        let mut peak = kept;
+        let last = self.levels.len() - 1;
+        let mut counts = memory::Counts::of(&self.levels[last].mesh, None);
+        let mut cur_bytes = memory::level_bytes(&self.levels[last]);
+        for k in last..self.steps.len() {
+            let s = &self.steps[k];
+            let carried_in = k > last && self.carries(k - 1);
+            let step = memory::step_bytes(&counts, s, !carried_in, self.carries(k));
+            peak = peak.max(kept + step);
+            let next = counts.after(s);
+            let next_bytes = next.mesh_bytes() + next.provenance_bytes();
+            kept += next_bytes;
+            if !self.kept_after_next(k) {
+                kept -= cur_bytes.min(kept);
+            }
+            counts = next;
+            cur_bytes = next_bytes;
+        }
+        peak.max(kept + after) + memory::BASELINE
+    }
+
+    /// Whether some step rounds edges (a run of cylindrical-family steps: its fillets can
+    /// be measured).
+    pub fn rounds(&self) -> bool {
+        self.steps
+            .iter()
+            .any(|s| matches!(s, Scheme::Biquadratic(r) if r.is_cylindrical_family()))
+    }
+
+    /// The counts the last level will have once every step is computed ([`memory::Counts`]).
+    pub fn predicted_counts(&self) -> memory::Counts {
+        let last = self.levels.len() - 1;
+        self.steps[last..]
+            .iter()
+            .fold(memory::Counts::of(&self.levels[last].mesh, None), |c, s| {
+                c.after(s)
+            })
+    }
+
+    /// Whether step `k` (a biquadratic split) writes its level's topology down for step
+    /// `k + 1`.
+    fn carries(&self, k: usize) -> bool {
+        matches!(self.steps.get(k), Some(Scheme::Biquadratic(_)))
+            && matches!(self.steps.get(k + 1), Some(Scheme::Biquadratic(_)))
     }
 
     /// Computes levels up to `upto` (at most the number of steps), calling `each` after every
@@ -165,12 +266,24 @@ impl Pipeline {
             // A level kept after its step failed is not stepped from.
             self.check_inside_out(k)?;
             let scheme = self.steps[k];
-            let prev = &self.levels[k];
             let err = |source: StepError| PipelineError {
                 step: k + 1,
                 scheme: scheme.to_string(),
                 source,
             };
+            // The memory guard: the levels kept and what this step will hold, before any
+            // of it is built; the step's own check then sees what is left.
+            let kept = self.kept_bytes() + memory::BASELINE;
+            let counts = memory::Counts::of(&self.levels[k].mesh, None);
+            let step = memory::step_bytes(&counts, &scheme, carried.is_none(), self.carries(k));
+            OverBudget::check(
+                kept + step,
+                self.options.memory_budget,
+                counts.after(&scheme).faces,
+            )
+            .map_err(|o| err(StepError::TooLarge(o)))?;
+            let budget = self.options.memory_budget.saturating_sub(kept);
+            let prev = &self.levels[k];
             let level = match scheme {
                 Scheme::Biquadratic(rule) => {
                     let next_is_biquadratic =
@@ -185,6 +298,7 @@ impl Pipeline {
                         } else {
                             self.options.overlap
                         },
+                        memory_budget: budget,
                         ..self.options
                     };
                     let (out, topo) = biquadratic_step_carrying(
@@ -212,14 +326,8 @@ impl Pipeline {
                     }
                 }
                 Scheme::Primal(p) => {
-                    let out = refine_primal(
-                        &prev.mesh,
-                        &prev.edge_attrs,
-                        &prev.tags,
-                        p,
-                        self.options.memory_budget,
-                    )
-                    .map_err(|e| err(e.into()))?;
+                    let out = refine_primal(&prev.mesh, &prev.edge_attrs, &prev.tags, p, budget)
+                        .map_err(|e| err(e.into()))?;
                     let r = &out.report;
                     let report = StepReport {
                         vertices: r.vertices,
@@ -240,6 +348,9 @@ impl Pipeline {
                 }
             };
             self.levels.push(level);
+            if !self.kept_after_next(k) {
+                self.levels[k].release();
+            }
             each(k + 1, self.levels.last().expect("just pushed"));
             self.check_inside_out(k + 1)?;
         }
@@ -316,6 +427,11 @@ impl Pipeline {
             measure_fillets(&base.mesh, refined, &|e| run.radius(&base.edge_attrs, e))
                 .map(|s| (run, s)),
         )
+    }
+
+    /// The newest level, the pipeline given up (the command line writes it without a copy).
+    pub fn into_last(mut self) -> Level {
+        self.levels.pop().expect("a pipeline has its input level")
     }
 
     /// Whether every step has its level.

@@ -6,7 +6,8 @@
 
 use super::CliError;
 use clap::Args;
-use prism_geom::{Pipeline, Scheme, StepOptions, parse_pipeline, refine_primal_levels};
+use prism_geom::pipeline::Keep;
+use prism_geom::{Pipeline, Scheme, parse_pipeline, refine_primal_levels};
 use std::path::PathBuf;
 use std::time::Instant;
 
@@ -27,6 +28,8 @@ pub struct BenchArgs {
     /// Timed runs; the median is reported.
     #[arg(long, default_value_t = 5)]
     pub runs: usize,
+    #[command(flatten)]
+    pub memory: super::MemoryArgs,
 }
 
 /// Peak resident set size of this process in bytes (Linux `VmHWM`), if known.
@@ -73,7 +76,19 @@ pub fn run(a: BenchArgs) -> Result<(), CliError> {
     );
     let mut times = Vec::with_capacity(a.runs);
     let mut faces = 0;
-    let budget = StepOptions::default().memory_budget;
+    let budget = a.memory.bytes();
+    // A run holds a copy of the input, the level it steps from and the new one, beside the
+    // input loaded once.
+    let mut estimate = Pipeline::with_tags(
+        doc.mesh.clone(),
+        doc.edge_attrs.clone(),
+        doc.tags.clone(),
+        steps.clone(),
+    );
+    estimate.keep = Keep::Needed;
+    let peak = estimate.estimate_peak() + prism_geom::memory::level_bytes(estimate.input());
+    drop(estimate);
+    a.memory.check(peak, "this benchmark")?;
     for run in 1..=a.runs {
         let t = Instant::now();
         if let Scheme::Primal(scheme) = step[0] {
@@ -96,6 +111,8 @@ pub fn run(a: BenchArgs) -> Result<(), CliError> {
                 doc.tags.clone(),
                 steps.clone(),
             );
+            p.options.memory_budget = budget;
+            p.keep = Keep::Needed;
             faces = p.compute().map_err(CliError::input)?.mesh.num_faces();
         }
         let ms = t.elapsed().as_secs_f64() * 1e3;

@@ -39,6 +39,8 @@ pub struct EnvelopeArgs {
     /// Replace a read-only output file (it keeps its permission bits).
     #[arg(long)]
     pub force: bool,
+    #[command(flatten)]
+    pub memory: super::MemoryArgs,
 }
 
 /// The scene of a file: the file itself, or its `"envelope"` block (a `.prism.json`).
@@ -111,6 +113,13 @@ pub fn run(a: EnvelopeArgs) -> Result<(), CliError> {
     let start = Instant::now();
     let e = envelope(&spec).map_err(|e| CliError::input(format!("{}: {e}", a.input.display())))?;
     let millis = start.elapsed().as_secs_f64() * 1e3;
+    super::skin::check_tessellation(
+        &a.memory,
+        &a.output,
+        e.patches.len(),
+        spec.resolution,
+        "this envelope",
+    )?;
     let mesh = e.tessellate(spec.resolution).map_err(CliError::input)?;
     let counts = prism_geom::analysis::counts(&mesh);
     println!(

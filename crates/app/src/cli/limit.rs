@@ -8,9 +8,9 @@
 
 use super::CliError;
 use clap::Args;
-use prism_geom::io::write_atomically;
-use prism_geom::{PrimalScheme, StepOptions, limit_points_ordered, refine_primal_ordered};
-use std::fmt::Write as _;
+use prism_geom::io::write_atomically_with;
+use prism_geom::pipeline::Keep;
+use prism_geom::{Pipeline, PrimalScheme, limit_points_ordered, refine_primal_ordered};
 use std::path::PathBuf;
 
 #[derive(Debug, Args)]
@@ -26,6 +26,8 @@ pub struct LimitArgs {
     /// Levels to refine before evaluating the limit.
     #[arg(long, default_value_t = 1)]
     pub levels: usize,
+    #[command(flatten)]
+    pub memory: super::MemoryArgs,
 }
 
 pub fn run(a: LimitArgs) -> Result<(), CliError> {
@@ -54,8 +56,19 @@ pub fn run(a: LimitArgs) -> Result<(), CliError> {
         };
         CliError::input(format!("{}: {msg}", a.input.display()))
     };
-    let budget = StepOptions::default().memory_budget;
-    let (mut mesh, mut attrs, mut tags) = (doc.mesh, doc.edge_attrs, doc.tags);
+    // The memory guard: the levels (only the newest is kept) and the limit arrays (a
+    // position and a normal a vertex), before any work; each level checks again.
+    let budget = a.memory.bytes();
+    let steps = vec![prism_geom::Scheme::Primal(scheme); a.levels];
+    let mut estimate = Pipeline::with_tags(doc.mesh, doc.edge_attrs, doc.tags, steps);
+    estimate.keep = Keep::Needed;
+    let last = estimate.predicted_counts();
+    a.memory.check(
+        estimate.estimate_peak_then(48 * last.vertices + last.topology_bytes()),
+        "this refinement",
+    )?;
+    let input = estimate.into_last();
+    let (mut mesh, mut attrs, mut tags) = (input.mesh, input.edge_attrs, input.tags);
     let mut order = None;
     for k in 1..=a.levels {
         let (out, o) = refine_primal_ordered(&mesh, &attrs, &tags, scheme, budget, order.as_ref())
@@ -70,31 +83,34 @@ pub fn run(a: LimitArgs) -> Result<(), CliError> {
     }
     let lim = limit_points_ordered(&mesh, &attrs, &tags, scheme, order.as_ref())
         .map_err(|e| input_error(e, a.levels == 0))?;
-    let mut s = String::with_capacity(mesh.num_vertices() * 80);
-    let _ = writeln!(
-        s,
-        "# limit positions and normals after {} level(s) of {}, written by Prism",
-        a.levels,
-        scheme.name()
-    );
-    for p in &lim.positions {
-        let _ = writeln!(s, "v {} {} {}", p.x, p.y, p.z);
-    }
-    for n in &lim.normals {
-        let _ = writeln!(s, "vn {} {} {}", n.x, n.y, n.z);
-    }
-    for f in 0..mesh.num_faces() {
-        if tags.holes.contains(&(f as u32)) {
-            continue;
+    // Streamed into the save's temporary file.
+    write_atomically_with(&a.output, |w| {
+        writeln!(
+            w,
+            "# limit positions and normals after {} level(s) of {}, written by Prism",
+            a.levels,
+            scheme.name()
+        )?;
+        for p in &lim.positions {
+            writeln!(w, "v {} {} {}", p.x, p.y, p.z)?;
         }
-        s.push('f');
-        for c in mesh.face_corners(f) {
-            let v = mesh.corner_verts[c] + 1;
-            let _ = write!(s, " {v}//{v}");
+        for n in &lim.normals {
+            writeln!(w, "vn {} {} {}", n.x, n.y, n.z)?;
         }
-        s.push('\n');
-    }
-    write_atomically(&a.output, s.as_bytes()).map_err(CliError::input)?;
+        for f in 0..mesh.num_faces() {
+            if tags.holes.contains(&(f as u32)) {
+                continue;
+            }
+            w.write_all(b"f")?;
+            for c in mesh.face_corners(f) {
+                let v = mesh.corner_verts[c] + 1;
+                write!(w, " {v}//{v}")?;
+            }
+            w.write_all(b"\n")?;
+        }
+        Ok(())
+    })
+    .map_err(CliError::input)?;
     let undefined = lim
         .normals
         .iter()

@@ -142,6 +142,46 @@ pub fn check_levels(levels: usize) -> Result<(), CliError> {
     Ok(())
 }
 
+/// `--memory-budget SIZE`, shared by the commands that build big meshes.
+#[derive(Debug, clap::Args)]
+pub struct MemoryArgs {
+    /// Memory the job may hold at once: 512M, 4G or 4GiB (powers of 1024), 4GB (powers of
+    /// 1000), or bytes. A job whose estimated peak is larger is refused before it starts
+    /// (exit 1). Default: half of the memory available now.
+    #[arg(long, value_name = "SIZE", value_parser = prism_geom::memory::parse_size)]
+    pub memory_budget: Option<u64>,
+}
+
+impl MemoryArgs {
+    /// The budget in bytes.
+    pub fn bytes(&self) -> u64 {
+        self.memory_budget
+            .unwrap_or_else(prism_geom::memory::default_budget)
+    }
+
+    /// Prints the estimate against the budget, and refuses a job over it (exit 1) naming
+    /// both and what to change.
+    pub fn check(&self, estimate: u64, what: &str) -> Result<(), CliError> {
+        use prism_geom::memory::mib;
+        let budget = self.bytes();
+        println!(
+            "memory: about {} MiB at the peak, budget {} MiB",
+            mib(estimate),
+            mib(budget)
+        );
+        if estimate > budget {
+            return Err(CliError::input(format!(
+                "{what} would need about {} MiB at its peak, more than the memory budget of {} MiB: \
+                 give fewer levels, or --memory-budget {}M if the machine has it",
+                mib(estimate),
+                mib(budget),
+                mib(estimate) + mib(estimate) / 4 + 1
+            )));
+        }
+        Ok(())
+    }
+}
+
 /// Loads the input solid; a file name of no known kind is bad usage (exit 2, like an
 /// unknown output kind), anything wrong inside the file bad input (exit 1).
 pub fn load_input(

@@ -33,6 +33,8 @@ pub struct SkinArgs {
     /// Replace a read-only output file (it keeps its permission bits).
     #[arg(long)]
     pub force: bool,
+    #[command(flatten)]
+    pub memory: super::MemoryArgs,
     /// Also write the patches' control points as JSON.
     #[arg(long)]
     pub patches: Option<PathBuf>,
@@ -85,6 +87,21 @@ fn patches_json(s: &Skin) -> serde_json::Value {
     })
 }
 
+/// The memory guard of a tessellated surface: `patches` patches at `k`×`k` quads, and the
+/// export of `output` when it is assembled in memory (shared with `envelope`).
+pub fn check_tessellation(
+    memory: &super::MemoryArgs,
+    output: &std::path::Path,
+    patches: usize,
+    k: usize,
+    what: &str,
+) -> Result<(), CliError> {
+    use prism_geom::memory;
+    let counts = memory::tessellation_counts(patches as u64, k as u64);
+    let export = memory::export_bytes(&counts, io::ExportFormat::of(output));
+    memory.check(memory::tessellation_bytes(&counts) + export, what)
+}
+
 pub fn run(a: SkinArgs) -> Result<(), CliError> {
     super::check_solid_output_kind(&a.output)?;
     if a.resolution == 0 || a.resolution > 256 {
@@ -102,6 +119,13 @@ pub fn run(a: SkinArgs) -> Result<(), CliError> {
     };
     let s = skin_with(&sections, basis)
         .map_err(|e| CliError::input(format!("{}: {e}", a.input.display())))?;
+    check_tessellation(
+        &a.memory,
+        &a.output,
+        s.patches.len(),
+        a.resolution,
+        "this skin",
+    )?;
     let mesh = s
         .tessellate(a.resolution, !a.no_caps)
         .map_err(CliError::input)?;

@@ -8,6 +8,7 @@ use super::CliError;
 use clap::Args;
 use prism_geom::analysis::measure_fillet;
 use prism_geom::io::{self, Document};
+use prism_geom::pipeline::Keep;
 use prism_geom::scheme::{Scheme, SchemeError, SchemeKind, parse_pipeline};
 use prism_geom::{CornerRule, Pipeline, ReflexMode, StepReport, Topology};
 use std::path::PathBuf;
@@ -58,6 +59,8 @@ pub struct StepArgs {
     /// first (seed 000: about 4, so that the new faces are not cut from both sides).
     #[arg(long, value_name = "K")]
     pub shrink: Option<f64>,
+    #[command(flatten)]
+    pub memory: super::MemoryArgs,
 }
 
 impl StepArgs {
@@ -65,6 +68,7 @@ impl StepArgs {
     pub fn options(&self) -> prism_geom::StepOptions {
         prism_geom::StepOptions {
             overlap: prism_geom::rules::Overlap::clamping(self.clamp),
+            memory_budget: self.memory.bytes(),
             ..Default::default()
         }
     }
@@ -413,7 +417,21 @@ pub fn run(a: SubdivideArgs) -> Result<(), CliError> {
     let mut warnings = LevelWarnings::new(&doc.mesh);
     let mut pipeline = Pipeline::with_tags(doc.mesh, doc.edge_attrs, doc.tags, steps.clone());
     pipeline.options = a.steps.options();
+    // Only the levels the output and the fillet report need are kept.
+    pipeline.keep = Keep::Needed;
     let n = steps.len();
+    // After the last step: the fillet report, then an export assembled in memory.
+    let last_counts = pipeline.predicted_counts();
+    let output = prism_geom::memory::export_bytes(&last_counts, io::ExportFormat::of(&a.output));
+    let report = if pipeline.rounds() {
+        prism_geom::memory::fillet_report_bytes(&last_counts)
+    } else {
+        0
+    };
+    a.steps.memory.check(
+        pipeline.estimate_peak_then(output.max(report)),
+        "this pipeline",
+    )?;
     let result = pipeline.compute_with(n, |k, level| {
         let r = level
             .report
@@ -446,7 +464,7 @@ pub fn run(a: SubdivideArgs) -> Result<(), CliError> {
     }
     result.map_err(|e| CliError::input(e.describe(&numbering)))?;
     report_fillets(&pipeline, a.measure_edge.as_deref())?;
-    let last = &pipeline.levels()[n];
+    let last = pipeline.into_last();
     if io::ExportFormat::of(&a.output).is_some() {
         let holes = &last.tags.holes;
         super::saving(&a.output, a.force, || {
@@ -456,9 +474,9 @@ pub fn run(a: SubdivideArgs) -> Result<(), CliError> {
         return Ok(());
     }
     let out = Document {
-        mesh: last.mesh.clone(),
-        edge_attrs: last.edge_attrs.clone(),
-        tags: last.tags.clone(),
+        mesh: last.mesh,
+        edge_attrs: last.edge_attrs,
+        tags: last.tags,
         ..Document::default()
     };
     let warnings = super::saving(&a.output, a.force, || io::save(&a.output, &out))?;
