@@ -53,6 +53,7 @@ pub use pipeline::{Level, Pipeline, PipelineError, RoundingRun};
 pub use primal::{
     LimitPoints, PrimalError, PrimalOutput, PrimalScheme, RingOrder, limit_points,
     limit_points_ordered, refine_primal, refine_primal_levels, refine_primal_ordered,
+    refine_primal_with,
 };
 pub use rules::{CornerRule, ReflexMode};
 pub use scheme::{Scheme, parse_pipeline};

@@ -131,10 +131,20 @@ pub fn level_bytes(level: &Level) -> u64 {
 
 /// Bytes one step of `scheme` holds on top of the levels kept while it runs: the topology of
 /// its input (`input_topology`: false when the split before carried it), the new level with
-/// its provenance, and its topology when the next step takes it (`carry`), times [`SAFETY`].
-pub fn step_bytes(input: &Counts, scheme: &Scheme, input_topology: bool, carry: bool) -> u64 {
+/// its provenance (when recorded), and its topology when the next step takes it (`carry`),
+/// times [`SAFETY`].
+pub fn step_bytes(
+    input: &Counts,
+    scheme: &Scheme,
+    input_topology: bool,
+    carry: bool,
+    provenance: bool,
+) -> u64 {
     let out = input.after(scheme);
-    let mut b = out.mesh_bytes() + out.provenance_bytes();
+    let mut b = out.mesh_bytes();
+    if provenance {
+        b += out.provenance_bytes();
+    }
     if input_topology {
         b += input.topology_bytes();
     }

@@ -12,7 +12,7 @@ use crate::error::OverBudget;
 use crate::geometry::signed_volume;
 use crate::memory;
 use crate::mesh::PolyMesh;
-use crate::primal::refine_primal;
+use crate::primal::refine_primal_with;
 use crate::refine::Provenance;
 use crate::rules::Overlap;
 use crate::rules::{CombinationState, CornerRule};
@@ -209,10 +209,16 @@ impl Pipeline {
         for k in last..self.steps.len() {
             let s = &self.steps[k];
             let carried_in = k > last && self.carries(k - 1);
-            let step = memory::step_bytes(&counts, s, !carried_in, self.carries(k));
+            let step =
+                memory::step_bytes(&counts, s, !carried_in, self.carries(k), self.provenance(s));
             peak = peak.max(kept + step);
             let next = counts.after(s);
-            let next_bytes = next.mesh_bytes() + next.provenance_bytes();
+            let next_bytes = next.mesh_bytes()
+                + if self.provenance(s) {
+                    next.provenance_bytes()
+                } else {
+                    0
+                };
             kept += next_bytes;
             if !self.kept_after_next(k) {
                 kept -= cur_bytes.min(kept);
@@ -239,6 +245,12 @@ impl Pipeline {
             .fold(memory::Counts::of(&self.levels[last].mesh, None), |c, s| {
                 c.after(s)
             })
+    }
+
+    /// Whether a step of `scheme` records its level's provenance: a biquadratic one always
+    /// (its combination state and face kinds come from it), a primal one for the app.
+    fn provenance(&self, scheme: &Scheme) -> bool {
+        matches!(scheme, Scheme::Biquadratic(_)) || self.keep == Keep::All
     }
 
     /// Whether step `k` (a biquadratic split) writes its level's topology down for step
@@ -275,7 +287,13 @@ impl Pipeline {
             // of it is built; the step's own check then sees what is left.
             let kept = self.kept_bytes() + memory::BASELINE;
             let counts = memory::Counts::of(&self.levels[k].mesh, None);
-            let step = memory::step_bytes(&counts, &scheme, carried.is_none(), self.carries(k));
+            let step = memory::step_bytes(
+                &counts,
+                &scheme,
+                carried.is_none(),
+                self.carries(k),
+                self.provenance(&scheme),
+            );
             OverBudget::check(
                 kept + step,
                 self.options.memory_budget,
@@ -326,8 +344,18 @@ impl Pipeline {
                     }
                 }
                 Scheme::Primal(p) => {
-                    let out = refine_primal(&prev.mesh, &prev.edge_attrs, &prev.tags, p, budget)
-                        .map_err(|e| err(e.into()))?;
+                    // Where the elements came from matters to the app (picking an edge on
+                    // any level), not to a pipeline that keeps only what it writes.
+                    let provenance = self.keep == Keep::All;
+                    let out = refine_primal_with(
+                        &prev.mesh,
+                        &prev.edge_attrs,
+                        &prev.tags,
+                        p,
+                        budget,
+                        provenance,
+                    )
+                    .map_err(|e| err(e.into()))?;
                     let r = &out.report;
                     let report = StepReport {
                         vertices: r.vertices,

@@ -1,4 +1,4 @@
-//! Files: OBJ (read with `tobj`, polygons kept as they are) and the native `.prism.json`
+//! Files: OBJ (read in one pass, polygons kept as they are) and the native `.prism.json`
 //! document. Every write goes to a temporary file in the same folder that is renamed into
 //! place, so a failed save never destroys the previous file.
 
