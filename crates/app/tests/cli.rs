@@ -1307,3 +1307,36 @@ fn the_memory_guard_is_honest_both_ways() {
         );
     }
 }
+
+/// `--normals` writes a `vn` a corner into OBJ (faces `v//n`), smooth or flat, and the file
+/// reads back; without it OBJ has no normals.
+#[test]
+fn subdivide_writes_obj_normals_on_request() {
+    let out = tmp("normals.obj");
+    let mut distinct = Vec::new();
+    for n in ["smooth", "flat"] {
+        succeeds(run_with(
+            &format!(
+                "subdivide assets/cube.obj --scheme catmull-clark --levels 2 --normals {n} -o {{}}"
+            ),
+            &[&out],
+        ));
+        let text = std::fs::read_to_string(&out).unwrap();
+        let vn: Vec<&str> = text.lines().filter(|l| l.starts_with("vn ")).collect();
+        assert_eq!(vn.len(), 96 * 4, "{n}: a normal a corner");
+        assert!(
+            text.lines()
+                .any(|l| l.starts_with("f ") && l.contains("//"))
+        );
+        let set: std::collections::BTreeSet<&str> = vn.into_iter().collect();
+        distinct.push(set.len());
+        let back = prism_geom::io::load(&out).unwrap().0;
+        assert_eq!(back.mesh.num_faces(), 96);
+    }
+    assert!(distinct[0] > distinct[1], "{distinct:?}");
+    succeeds(run_with(
+        "subdivide assets/cube.obj --scheme catmull-clark -o {}",
+        &[&out],
+    ));
+    assert!(!std::fs::read_to_string(&out).unwrap().contains("vn "));
+}

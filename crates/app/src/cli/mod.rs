@@ -240,7 +240,9 @@ pub fn write_surface(
 ) -> Result<(), CliError> {
     use prism_geom::io;
     if io::ExportFormat::of(path).is_some() {
-        saving(path, force, || io::export(path, &doc.mesh, &|_| false))
+        saving(path, force, || {
+            io::export(path, &doc.mesh, &|_| false, io::Normals::Smooth)
+        })
     } else {
         saving(path, force, || io::save(path, doc)).map(|_| ())
     }

@@ -90,6 +90,11 @@ pub struct SubdivideArgs {
     /// 0-based, as in the file).
     #[arg(long)]
     pub measure_edge: Option<String>,
+    /// Normals of the output: `smooth` (split at edges sharper than 40°, as the app's smooth
+    /// shading) or `flat` (one a face). glTF always carries them (smooth unless told); OBJ
+    /// gets a `vn` a corner only when this is given; STL's are its facets'.
+    #[arg(long, value_parser = ["smooth", "flat"])]
+    pub normals: Option<String>,
 }
 
 /// The steps the arguments ask for; without any, the document's pipeline, or none when
@@ -464,11 +469,23 @@ pub fn run(a: SubdivideArgs) -> Result<(), CliError> {
     }
     result.map_err(|e| CliError::input(e.describe(&numbering)))?;
     report_fillets(&pipeline, a.measure_edge.as_deref())?;
+    let normals = a.normals.as_deref().map(|n| {
+        if n == "flat" {
+            io::Normals::Flat
+        } else {
+            io::Normals::Smooth
+        }
+    });
     let last = pipeline.into_last();
     if io::ExportFormat::of(&a.output).is_some() {
         let holes = &last.tags.holes;
         super::saving(&a.output, a.force, || {
-            io::export(&a.output, &last.mesh, &|f| holes.contains(&(f as u32)))
+            io::export(
+                &a.output,
+                &last.mesh,
+                &|f| holes.contains(&(f as u32)),
+                normals.unwrap_or_default(),
+            )
         })?;
         println!("wrote {}", a.output.display());
         return Ok(());
@@ -479,7 +496,13 @@ pub fn run(a: SubdivideArgs) -> Result<(), CliError> {
         tags: last.tags,
         ..Document::default()
     };
-    let warnings = super::saving(&a.output, a.force, || io::save(&a.output, &out))?;
+    let obj = io::FileKind::of(&a.output).ok() == Some(io::FileKind::Obj);
+    let warnings = super::saving(&a.output, a.force, || match normals {
+        Some(n) if obj => {
+            io::write_obj_with_normals(&a.output, &out.mesh, &out.edge_attrs, &out.tags, Some(n))
+        }
+        _ => io::save(&a.output, &out),
+    })?;
     for w in warnings {
         eprintln!("warning: {}: {w}", a.output.display());
     }

@@ -58,8 +58,15 @@ impl PrismApp {
         Ok(())
     }
 
-    /// Exports the level shown in the active view (OBJ with its creases, STL, glTF).
-    pub fn export_to(&mut self, path: &Path) -> Result<(), String> {
+    /// Exports the level shown in the active view (OBJ with its creases, STL, glTF) with
+    /// normals as the view shades it (smooth or flat; in OBJ only when `obj_normals`).
+    pub fn export_to(&mut self, path: &Path, obj_normals: bool) -> Result<(), String> {
+        let shading = if self.tab != super::Tab::Model || self.model.display.smooth {
+            io::Normals::Smooth
+        } else {
+            io::Normals::Flat
+        };
+        let vn = obj_normals.then_some(shading);
         if matches!(self.tab, super::Tab::Skin | super::Tab::Envelope) {
             let (what, mesh) = if self.tab == super::Tab::Skin {
                 (
@@ -85,10 +92,16 @@ impl PrismApp {
                 ));
             };
             if io::ExportFormat::of(path).is_some() {
-                io::export(path, mesh, &|_| false).map_err(|e| e.to_string())?;
+                io::export(path, mesh, &|_| false, shading).map_err(|e| e.to_string())?;
             } else {
-                io::write_obj(path, mesh, &Default::default(), &Default::default())
-                    .map_err(|e| e.to_string())?;
+                io::write_obj_with_normals(
+                    path,
+                    mesh,
+                    &Default::default(),
+                    &Default::default(),
+                    vn,
+                )
+                .map_err(|e| e.to_string())?;
             }
             self.say(format!("exported the {what} to {}", path.display()));
             return Ok(());
@@ -96,10 +109,11 @@ impl PrismApp {
         let (k, lv) = self.model.shown_level();
         let holes = &lv.tags.holes;
         if io::ExportFormat::of(path).is_some() {
-            io::export(path, &lv.mesh, &|f| holes.contains(&(f as u32)))
+            io::export(path, &lv.mesh, &|f| holes.contains(&(f as u32)), shading)
                 .map_err(|e| e.to_string())?;
         } else {
-            io::write_obj(path, &lv.mesh, &lv.edge_attrs, &lv.tags).map_err(|e| e.to_string())?;
+            io::write_obj_with_normals(path, &lv.mesh, &lv.edge_attrs, &lv.tags, vn)
+                .map_err(|e| e.to_string())?;
         }
         self.say(format!("exported level {k} to {}", path.display()));
         Ok(())
@@ -183,8 +197,13 @@ impl PrismApp {
         }
     }
 
-    pub(super) fn export_dialog(&mut self, ext: &str) {
+    /// Asks where to export; `ext` is `obj`, `stl`, `glb`, or `obj+vn` (OBJ with normals).
+    pub(super) fn export_dialog(&mut self, kind: &str) {
         let asked = std::time::Instant::now();
+        let (ext, normals) = match kind.strip_suffix("+vn") {
+            Some(e) => (e, true),
+            None => (kind, false),
+        };
         let picked = rfd::FileDialog::new()
             .add_filter(ext, &[ext])
             .set_file_name(if self.tab == super::Tab::Skin {
@@ -198,7 +217,7 @@ impl PrismApp {
         self.dialog_returned();
         match picked {
             Some(p) => {
-                if let Err(e) = self.export_to(&p) {
+                if let Err(e) = self.export_to(&p, normals) {
                     self.say(format!("could not export: {e}"));
                 }
             }

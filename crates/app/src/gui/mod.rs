@@ -581,8 +581,20 @@ impl PrismApp {
                     out.push(Command::SaveDialog { as_new: true });
                 }
                 ui.menu_button("Export the shown level", |ui| {
-                    for ext in ["obj", "stl", "glb"] {
-                        if ui.button(format!("{}…", ext.to_uppercase())).clicked() {
+                    for (ext, label) in [
+                        ("obj", "OBJ…"),
+                        ("obj+vn", "OBJ with normals…"),
+                        ("stl", "STL…"),
+                        ("glb", "glTF (.glb)…"),
+                    ] {
+                        if ui
+                            .button(label)
+                            .on_hover_text(
+                                "normals as the view shades the level: smooth, or flat \
+                                 with smooth shading off",
+                            )
+                            .clicked()
+                        {
                             out.push(Command::ExportDialog(ext));
                         }
                     }

@@ -165,9 +165,38 @@ fn the_new_user_walk_through() {
     // Exports of the shown level.
     for ext in ["obj", "stl", "glb"] {
         let p = path.with_extension(ext);
-        b.export_to(&p).unwrap();
+        b.export_to(&p, false).unwrap();
         assert!(std::fs::metadata(&p).unwrap().len() > 1000);
     }
+    // Normals as shown: smooth shading gives fewer distinct OBJ normals than flat (one a
+    // face), and a GLB written flat has more vertices (split at every edge).
+    let obj = path.with_extension("vn.obj");
+    let distinct = |b: &mut PrismApp, smooth: bool| {
+        b.model.display.smooth = smooth;
+        b.export_to(&obj, true).unwrap();
+        let text = std::fs::read_to_string(&obj).unwrap();
+        assert!(
+            text.lines()
+                .any(|l| l.starts_with("f ") && l.contains("//"))
+        );
+        let vn: std::collections::BTreeSet<&str> =
+            text.lines().filter(|l| l.starts_with("vn ")).collect();
+        vn.len()
+    };
+    let (smooth, flat) = (distinct(&mut b, true), distinct(&mut b, false));
+    let faces = b.model.views[0].pipeline.levels()[5].mesh.num_faces();
+    assert!(smooth > flat, "smooth {smooth}, flat {flat}");
+    assert!(
+        flat <= faces,
+        "flat: at most a normal a face ({flat} for {faces})"
+    );
+    let glb = path.with_extension("glb");
+    b.model.display.smooth = true;
+    b.export_to(&glb, false).unwrap();
+    let smooth_len = std::fs::metadata(&glb).unwrap().len();
+    b.model.display.smooth = false;
+    b.export_to(&glb, false).unwrap();
+    assert!(std::fs::metadata(&glb).unwrap().len() > smooth_len);
 }
 
 /// Frames with nothing changed rebuild nothing: the scene and overlay (and so the GPU

@@ -107,7 +107,7 @@ fn the_envelope_tab_places_edits_undoes_saves_and_exports_an_envelope() {
     let doc = dir.join("tet.prism.json");
     h.state_mut().save_to(&doc).unwrap();
     let stl = dir.join("tet.stl");
-    h.state_mut().export_to(&stl).unwrap();
+    h.state_mut().export_to(&stl, false).unwrap();
     assert_eq!(
         std::fs::metadata(&stl).unwrap().len(),
         84 + 50 * 2 * 12 * 64

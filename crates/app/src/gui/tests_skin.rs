@@ -111,7 +111,7 @@ fn the_skin_tab_places_edits_undoes_saves_and_exports_a_skin() {
     let doc = dir.join("spout.prism.json");
     h.state_mut().save_to(&doc).unwrap();
     let stl = dir.join("spout.stl");
-    h.state_mut().export_to(&stl).unwrap();
+    h.state_mut().export_to(&stl, false).unwrap();
     assert!(std::fs::metadata(&stl).unwrap().len() > 84 + 50 * 7000);
     let (state, _) = document::open(&doc).unwrap();
     assert_eq!(state.skin.as_ref(), Some(&before));

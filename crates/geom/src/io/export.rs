@@ -72,12 +72,36 @@ pub fn stl_bytes(mesh: &PolyMesh, skip: &dyn Fn(usize) -> bool) -> Vec<u8> {
 /// viewport's smooth shading uses the same default).
 pub const GLB_CREASE_ANGLE_DEG: f64 = 40.0;
 
-/// Binary glTF 2.0 (`.glb`) of `mesh`: one mesh, one node, one scene; positions, smooth
-/// normals split at edges sharper than [`GLB_CREASE_ANGLE_DEG`] (a vertex on such an edge is
-/// written once per side), triangles.
-pub fn glb_bytes(mesh: &PolyMesh, skip: &dyn Fn(usize) -> bool) -> Vec<u8> {
+/// The normals an export carries, as the app shows the level: smooth (the viewport's smooth
+/// shading: split at edges sharper than [`GLB_CREASE_ANGLE_DEG`]) or flat (one per face).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Normals {
+    #[default]
+    Smooth,
+    Flat,
+}
+
+impl Normals {
+    /// A unit normal per corner of `mesh`.
+    pub fn corner_normals(self, mesh: &PolyMesh) -> Vec<glam::DVec3> {
+        self.corner_normals_from(mesh, &crate::geometry::face_normals_raw(mesh))
+    }
+
+    /// [`Normals::corner_normals`] from the faces' raw normals already computed.
+    pub fn corner_normals_from(self, mesh: &PolyMesh, raw: &[glam::DVec3]) -> Vec<glam::DVec3> {
+        let angle = match self {
+            Normals::Smooth => GLB_CREASE_ANGLE_DEG,
+            Normals::Flat => 0.0,
+        };
+        smooth_corner_normals(mesh, raw, &EdgeAttrs::new(), angle)
+    }
+}
+
+/// Binary glTF 2.0 (`.glb`) of `mesh`: one mesh, one node, one scene; positions, normals
+/// ([`Normals`]: a vertex on an edge where they split is written once per side), triangles.
+pub fn glb_bytes(mesh: &PolyMesh, skip: &dyn Fn(usize) -> bool, normals: Normals) -> Vec<u8> {
     let raw = crate::geometry::face_normals_raw(mesh);
-    let corner_normals = smooth_corner_normals(mesh, &raw, &EdgeAttrs::new(), GLB_CREASE_ANGLE_DEG);
+    let corner_normals = normals.corner_normals_from(mesh, &raw);
     // One glTF vertex per distinct (mesh vertex, normal) pair.
     let mut index: HashMap<(u32, [u32; 3]), u32> = HashMap::new();
     let (mut positions, mut normals): (Vec<f32>, Vec<f32>) = (Vec::new(), Vec::new());
@@ -241,11 +265,17 @@ pub fn glb_bytes(mesh: &PolyMesh, skip: &dyn Fn(usize) -> bool) -> Vec<u8> {
     out
 }
 
-/// Writes `mesh` as STL or glTF by the file name, through a temporary file.
-pub fn export(path: &Path, mesh: &PolyMesh, skip: &dyn Fn(usize) -> bool) -> Result<(), IoError> {
+/// Writes `mesh` as STL or glTF by the file name, through a temporary file (STL's facet
+/// normals are the triangles' own whatever `normals` says).
+pub fn export(
+    path: &Path,
+    mesh: &PolyMesh,
+    skip: &dyn Fn(usize) -> bool,
+    normals: Normals,
+) -> Result<(), IoError> {
     let bytes = match ExportFormat::of(path) {
         Some(ExportFormat::Stl) => stl_bytes(mesh, skip),
-        Some(ExportFormat::Glb) => glb_bytes(mesh, skip),
+        Some(ExportFormat::Glb) => glb_bytes(mesh, skip, normals),
         None => return Err(IoError::UnknownExtension { path: path.into() }),
     };
     // The GLB header stores the length in 32 bits.
@@ -295,7 +325,7 @@ mod tests {
     #[test]
     fn glb_is_valid_gltf_with_the_mesh() {
         let m = primitives::cube3();
-        let bytes = glb_bytes(&m, &|_| false);
+        let bytes = glb_bytes(&m, &|_| false, Normals::Smooth);
         assert_eq!(&bytes[0..4], b"glTF");
         let u32_at = |i: usize| u32::from_le_bytes(bytes[i..i + 4].try_into().unwrap());
         assert_eq!(u32_at(8) as usize, bytes.len());
@@ -332,7 +362,7 @@ mod tests {
         }
         // A smooth solid shares its vertices: the torus's 1152 are written once each.
         let t = primitives::torus(48, 24, 3.0, 1.0);
-        let bytes = glb_bytes(&t, &|_| false);
+        let bytes = glb_bytes(&t, &|_| false, Normals::Smooth);
         let json_len = u32::from_le_bytes(bytes[12..16].try_into().unwrap()) as usize;
         let root: json::Root = json::deserialize::from_slice(&bytes[20..20 + json_len]).unwrap();
         assert_eq!(root.accessors[0].count.0, 48 * 24);
@@ -340,7 +370,13 @@ mod tests {
 
     #[test]
     fn unknown_extension_is_an_error() {
-        let e = export(Path::new("/tmp/x.ply"), &primitives::cube3(), &|_| false).unwrap_err();
+        let e = export(
+            Path::new("/tmp/x.ply"),
+            &primitives::cube3(),
+            &|_| false,
+            Normals::Smooth,
+        )
+        .unwrap_err();
         assert!(e.to_string().contains("x.ply"));
     }
 }

@@ -11,8 +11,8 @@ mod validate;
 
 pub use atomic::{check_writable, forced, save_target, write_atomically, write_atomically_with};
 pub use document::{DOCUMENT_VERSION, Document, document_from_str, read_document, write_document};
-pub use export::{ExportFormat, export, glb_bytes, stl_bytes};
-pub use obj::{ObjModel, obj_to_string, read_obj, read_obj_str, write_obj};
+pub use export::{ExportFormat, Normals, export, glb_bytes, stl_bytes};
+pub use obj::{ObjModel, obj_to_string, read_obj, read_obj_str, write_obj, write_obj_with_normals};
 pub use validate::validate_model;
 
 pub use crate::numbering::Numbering;

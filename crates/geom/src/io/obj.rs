@@ -16,7 +16,7 @@
 //! `earcutr` in the face's plane and reported as a warning. Creases are written as `t crease`
 //! lines, corners, holes and options as their `t` lines.
 
-use super::{IoError, write_atomically_with};
+use super::{IoError, Normals, write_atomically_with};
 use crate::edge_attrs::EdgeAttrs;
 use crate::mesh::PolyMesh;
 use crate::tags::SubdivTags;
@@ -196,6 +196,7 @@ pub fn write_obj_to(
     m: &PolyMesh,
     attrs: &EdgeAttrs,
     tags: &SubdivTags,
+    normals: Option<Normals>,
 ) -> std::io::Result<Vec<String>> {
     let mut warnings = Vec::new();
     w.write_all(b"# written by Prism\n")?;
@@ -211,18 +212,49 @@ pub fn write_obj_to(
         line.push('\n');
         w.write_all(line.as_bytes())?;
     }
+    // On request, a `vn` per corner, and faces as `v//n`.
+    let corner_normals = normals.map(|n| n.corner_normals(m));
+    if let Some(cn) = &corner_normals {
+        for n in cn {
+            line.clear();
+            line.push_str("vn");
+            for x in [n.x, n.y, n.z] {
+                line.push(' ');
+                line.push_str(number(&mut buf, x));
+            }
+            line.push('\n');
+            w.write_all(line.as_bytes())?;
+        }
+    }
     let mut holed = 0;
+    let mut corner_of: Vec<(u32, usize)> = Vec::new();
     for f in 0..m.num_faces() {
         line.clear();
         if m.face_has_holes(f) {
             holed += 1;
+            corner_of.clear();
+            corner_of.extend(m.face_corners(f).map(|c| (m.corner_verts[c], c)));
+            let normal = |v: u32| corner_of.iter().find(|x| x.0 == v).map_or(0, |x| x.1) + 1;
             for t in face_vertex_triangles(m, f) {
-                let _ = writeln!(line, "f {} {} {}", t[0] + 1, t[1] + 1, t[2] + 1);
+                line.push('f');
+                for v in t {
+                    match &corner_normals {
+                        Some(_) => write!(line, " {}//{}", v + 1, normal(v)),
+                        None => write!(line, " {}", v + 1),
+                    }
+                    .expect("writing to a String");
+                }
+                line.push('\n');
             }
         } else {
             line.push('f');
-            for &v in m.loop_verts(m.face_loops(f).start) {
-                let _ = write!(line, " {}", v + 1);
+            let l = m.face_loops(f).start;
+            for (v, c) in m.loop_verts(l).iter().zip(m.loop_corners(l)) {
+                match &corner_normals {
+                    Some(_) => write!(line, " {}//{}", v + 1, c + 1),
+                    None => write!(line, " {}", v + 1),
+                }
+                .expect("writing to a String");
             }
             line.push('\n');
         }
@@ -250,7 +282,7 @@ pub fn write_obj_to(
 /// The mesh as OBJ text, plus warnings.
 pub fn obj_to_string(m: &PolyMesh, attrs: &EdgeAttrs, tags: &SubdivTags) -> (String, Vec<String>) {
     let mut bytes = Vec::with_capacity(m.num_vertices() * 40 + m.num_corners() * 8);
-    let warnings = write_obj_to(&mut bytes, m, attrs, tags).expect("writing to memory");
+    let warnings = write_obj_to(&mut bytes, m, attrs, tags, None).expect("writing to memory");
     (
         String::from_utf8(bytes).expect("OBJ text is UTF-8"),
         warnings,
@@ -264,9 +296,21 @@ pub fn write_obj(
     attrs: &EdgeAttrs,
     tags: &SubdivTags,
 ) -> Result<Vec<String>, IoError> {
+    write_obj_with_normals(path, m, attrs, tags, None)
+}
+
+/// [`write_obj`] with a `vn` normal per corner when `normals` asks for them (faces written
+/// `v//n`).
+pub fn write_obj_with_normals(
+    path: &Path,
+    m: &PolyMesh,
+    attrs: &EdgeAttrs,
+    tags: &SubdivTags,
+    normals: Option<Normals>,
+) -> Result<Vec<String>, IoError> {
     let mut warnings = Vec::new();
     write_atomically_with(path, |w| {
-        warnings = write_obj_to(w, m, attrs, tags)?;
+        warnings = write_obj_to(w, m, attrs, tags, normals)?;
         Ok(())
     })?;
     Ok(warnings)
