@@ -305,3 +305,22 @@ fn catmull_clark_then_combination_stays_in_place() {
         );
     }
 }
+
+/// A torus with an even number of segments has a flat ring of blend faces around its top and
+/// bottom after one combination step: merged into one face with a hole, which Doo–Sabin does
+/// not define (the second step was refused: "face … has a hole"). A holed blend face keeps
+/// the cylindrical points; three levels have no flipped face and the radius is reached.
+#[test]
+fn a_torus_rounds_through_three_combination_steps() {
+    let m = prism_geom::primitives::torus(24, 24, 3.0, 1.0);
+    let p = run(m, EdgeAttrs::new(), combination(3, 0.05), Overlap::Clamp);
+    assert_eq!(p.levels().len(), 4, "every step computed");
+    for (k, lv) in p.levels().iter().enumerate().skip(1) {
+        let r = lv.report.as_ref().unwrap();
+        assert!(r.flipped.is_empty(), "level {k}: {} flipped", r.flipped.len());
+    }
+    assert!(p.levels()[3].mesh.num_faces() > 0);
+    let (_, summary) = p.measure_fillets(3).unwrap().unwrap();
+    let s = summary.expect("rounded edges measured");
+    assert!(s.ratio.0 > 0.99 && s.ratio.1 < 1.01, "{:?}", s.ratio);
+}
