@@ -164,15 +164,15 @@ pub fn step_bytes(
     (b as f64 * SAFETY) as u64
 }
 
-/// Bytes an export of a level of these counts assembles in memory: STL's 50 bytes a
-/// triangle; glTF's positions and normals (a vertex per corner at most), indices and the
-/// corner normals computed for them. OBJ and `.prism.json` are streamed: nothing.
+/// Bytes an export of a level of these counts holds while it is written: glTF gathers its
+/// vertices (a position and a normal, one a corner at most, with the map that shares them),
+/// its indices and the corner normals before streaming them; OBJ, `.prism.json` and STL are
+/// streamed as they are computed: nothing that grows with the mesh.
 pub fn export_bytes(counts: &Counts, format: Option<ExportFormat>) -> u64 {
     let triangles = counts.corners.saturating_sub(2 * counts.faces);
     let b = match format {
-        None => 0,
-        Some(ExportFormat::Stl) => 50 * triangles + 84,
-        Some(ExportFormat::Glb) => 72 * counts.corners + 12 * triangles + 24 * counts.faces,
+        None | Some(ExportFormat::Stl) => 0,
+        Some(ExportFormat::Glb) => 88 * counts.corners + 12 * triangles + 24 * counts.faces,
     };
     (b as f64 * SAFETY) as u64
 }

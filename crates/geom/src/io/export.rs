@@ -1,6 +1,7 @@
-//! Export of a computed level for other programs: binary STL (`stl_io`) and binary glTF
+//! Export of a computed level for other programs: binary STL (50 bytes a triangle after an
+//! 84-byte header, written here; `stl_io` reads it back in the tests) and binary glTF
 //! (`.glb`; the JSON part built with `gltf-json`, the typed serde model of the glTF 2.0
-//! schema). Both formats hold triangles only: polygon faces, concave ones and faces with
+//! schema). Both are streamed into the save's temporary file, never assembled whole. Both formats hold triangles only: polygon faces, concave ones and faces with
 //! holes included, are cut by [`crate::triangulate`]; hole faces of the primal schemes are
 //! left out. Coordinates are written as `f32`, which both formats prescribe.
 //!
@@ -8,7 +9,8 @@
 //! fans between edges sharper than 40° ([`crate::normals`], the viewport's smooth shading),
 //! so a rounded solid looks round in other viewers while chamfers and creases stay crisp.
 
-use super::{IoError, write_atomically};
+use super::{IoError, write_atomically_with};
+use std::io::Write;
 use crate::edge_attrs::EdgeAttrs;
 use crate::geometry::{face_normal_raw, unit_or_zero};
 use crate::mesh::PolyMesh;
@@ -40,32 +42,62 @@ impl ExportFormat {
 
 /// Binary STL of `mesh` (faces for which `skip` is true are left out).
 pub fn stl_bytes(mesh: &PolyMesh, skip: &dyn Fn(usize) -> bool) -> Vec<u8> {
-    let p = |v: u32| {
-        let q = mesh.positions[v as usize];
-        stl_io::Vertex::new([q.x as f32, q.y as f32, q.z as f32])
-    };
-    let mut tris = Vec::new();
-    for f in (0..mesh.num_faces()).filter(|&f| !skip(f)) {
-        let n = unit_or_zero(face_normal_raw(mesh, f));
-        for t in crate::triangulate::face_vertex_triangles(mesh, f) {
-            tris.push(stl_io::Triangle {
-                normal: stl_io::Normal::new([n.x as f32, n.y as f32, n.z as f32]),
-                vertices: t.map(p),
-            });
-        }
-    }
-    let mut out = Vec::with_capacity(84 + 50 * tris.len());
-    stl_io::write_stl(&mut out, tris.iter()).expect("writing into memory cannot fail");
+    let mut out = Vec::new();
+    write_stl_to(&mut out, mesh, skip).expect("writing into memory cannot fail");
+    out
+}
+
+/// Binary STL of `mesh` streamed into `w`: the triangles are counted first (the header
+/// holds their number), then written one by one.
+pub fn write_stl_to(
+    w: &mut dyn Write,
+    mesh: &PolyMesh,
+    skip: &dyn Fn(usize) -> bool,
+) -> std::io::Result<()> {
+    let faces = || (0..mesh.num_faces()).filter(|&f| !skip(f));
+    let count: usize = faces()
+        .map(|f| {
+            let corners = mesh.face_corners(f).len();
+            if mesh.face_loops(f).len() == 1 && corners <= 4 {
+                corners - 2
+            } else {
+                crate::triangulate::face_vertex_triangles(mesh, f).len()
+            }
+        })
+        .sum();
+    let count = u32::try_from(count)
+        .map_err(|_| std::io::Error::other("more triangles than binary STL can count"))?;
     // The 80-byte header says who wrote the file (not starting with "solid", which would
     // make readers take it for ASCII STL).
     let header = format!("Prism {} binary STL", env!("CARGO_PKG_VERSION"));
-    for (o, b) in out[..80]
-        .iter_mut()
-        .zip(header.bytes().chain(std::iter::repeat(b' ')))
-    {
+    let mut head = [b' '; 80];
+    for (o, b) in head.iter_mut().zip(header.bytes()) {
         *o = b;
     }
-    out
+    w.write_all(&head)?;
+    w.write_all(&count.to_le_bytes())?;
+    let mut rec = [0u8; 50];
+    for f in faces() {
+        let n = unit_or_zero(face_normal_raw(mesh, f));
+        for t in crate::triangulate::face_vertex_triangles(mesh, f) {
+            let mut k = 0;
+            let mut put = |x: f64| {
+                rec[k..k + 4].copy_from_slice(&(x as f32).to_le_bytes());
+                k += 4;
+            };
+            put(n.x);
+            put(n.y);
+            put(n.z);
+            for v in t {
+                let q = mesh.positions[v as usize];
+                put(q.x);
+                put(q.y);
+                put(q.z);
+            }
+            w.write_all(&rec)?;
+        }
+    }
+    Ok(())
 }
 
 /// Edges whose faces meet at more than this keep separate normals in the glTF export (the
@@ -100,6 +132,20 @@ impl Normals {
 /// Binary glTF 2.0 (`.glb`) of `mesh`: one mesh, one node, one scene; positions, normals
 /// ([`Normals`]: a vertex on an edge where they split is written once per side), triangles.
 pub fn glb_bytes(mesh: &PolyMesh, skip: &dyn Fn(usize) -> bool, normals: Normals) -> Vec<u8> {
+    let mut out = Vec::new();
+    write_glb_to(&mut out, mesh, skip, normals).expect("writing into memory cannot fail");
+    out
+}
+
+/// [`glb_bytes`] streamed into `w`: the vertices and triangles are gathered (the JSON
+/// header holds their counts and bounds), then written straight from those arrays, without
+/// a copy of the binary chunk.
+pub fn write_glb_to(
+    w: &mut dyn Write,
+    mesh: &PolyMesh,
+    skip: &dyn Fn(usize) -> bool,
+    normals: Normals,
+) -> std::io::Result<()> {
     let raw = crate::geometry::face_normals_raw(mesh);
     let corner_normals = normals.corner_normals_from(mesh, &raw);
     // One glTF vertex per distinct (mesh vertex, normal) pair.
@@ -135,17 +181,16 @@ pub fn glb_bytes(mesh: &PolyMesh, skip: &dyn Fn(usize) -> bool, normals: Normals
     if positions.is_empty() {
         (min, max) = ([0.0; 3], [0.0; 3]);
     }
-    let mut bin: Vec<u8> = positions.iter().flat_map(|x| x.to_le_bytes()).collect();
-    let pos_len = bin.len();
-    bin.extend(normals.iter().flat_map(|x| x.to_le_bytes()));
-    let nrm_len = bin.len() - pos_len;
-    bin.extend(tris.iter().flatten().flat_map(|i| i.to_le_bytes()));
-    let idx_len = bin.len() - pos_len - nrm_len;
+    let pos_len = 4 * positions.len();
+    let nrm_len = 4 * normals.len();
+    let idx_len = 12 * tris.len();
+    // Every part is a multiple of 4 bytes: the chunk needs no padding.
+    let bin_len = pos_len + nrm_len + idx_len;
 
     let mut root = json::Root::default();
     root.asset.generator = Some(format!("Prism {}", env!("CARGO_PKG_VERSION")));
     let buffer = root.push(json::Buffer {
-        byte_length: USize64::from(bin.len()),
+        byte_length: USize64::from(bin_len),
         name: None,
         uri: None,
         extensions: None,
@@ -248,21 +293,25 @@ pub fn glb_bytes(mesh: &PolyMesh, skip: &dyn Fn(usize) -> bool, normals: Normals
     while !text.len().is_multiple_of(4) {
         text.push(b' ');
     }
-    while !bin.len().is_multiple_of(4) {
-        bin.push(0);
+    let total = 12 + 8 + text.len() + 8 + bin_len;
+    // The GLB header stores the length in 32 bits.
+    let total = u32::try_from(total)
+        .map_err(|_| std::io::Error::other("the mesh is larger than a 4 GiB glTF file allows"))?;
+    w.write_all(b"glTF")?;
+    w.write_all(&2u32.to_le_bytes())?;
+    w.write_all(&total.to_le_bytes())?;
+    w.write_all(&(text.len() as u32).to_le_bytes())?;
+    w.write_all(b"JSON")?;
+    w.write_all(&text)?;
+    w.write_all(&(bin_len as u32).to_le_bytes())?;
+    w.write_all(b"BIN\0")?;
+    for x in positions.iter().chain(&normals) {
+        w.write_all(&x.to_le_bytes())?;
     }
-    let total = 12 + 8 + text.len() + 8 + bin.len();
-    let mut out = Vec::with_capacity(total);
-    out.extend(b"glTF");
-    out.extend(2u32.to_le_bytes());
-    out.extend((total as u32).to_le_bytes());
-    out.extend((text.len() as u32).to_le_bytes());
-    out.extend(b"JSON");
-    out.extend(text);
-    out.extend((bin.len() as u32).to_le_bytes());
-    out.extend(b"BIN\0");
-    out.extend(bin);
-    out
+    for i in tris.iter().flatten() {
+        w.write_all(&i.to_le_bytes())?;
+    }
+    Ok(())
 }
 
 /// Writes `mesh` as STL or glTF by the file name, through a temporary file (STL's facet
@@ -273,19 +322,13 @@ pub fn export(
     skip: &dyn Fn(usize) -> bool,
     normals: Normals,
 ) -> Result<(), IoError> {
-    let bytes = match ExportFormat::of(path) {
-        Some(ExportFormat::Stl) => stl_bytes(mesh, skip),
-        Some(ExportFormat::Glb) => glb_bytes(mesh, skip, normals),
-        None => return Err(IoError::UnknownExtension { path: path.into() }),
-    };
-    // The GLB header stores the length in 32 bits.
-    if bytes.len() > u32::MAX as usize {
-        return Err(IoError::Write {
-            path: path.into(),
-            source: std::io::Error::other("the mesh is larger than a 4 GiB file allows"),
-        });
-    }
-    write_atomically(path, &bytes)
+    let format = ExportFormat::of(path).ok_or_else(|| IoError::UnknownExtension {
+        path: path.into(),
+    })?;
+    write_atomically_with(path, |w| match format {
+        ExportFormat::Stl => write_stl_to(w, mesh, skip),
+        ExportFormat::Glb => write_glb_to(w, mesh, skip, normals),
+    })
 }
 
 #[cfg(test)]
