@@ -317,7 +317,11 @@ fn a_torus_rounds_through_three_combination_steps() {
     assert_eq!(p.levels().len(), 4, "every step computed");
     for (k, lv) in p.levels().iter().enumerate().skip(1) {
         let r = lv.report.as_ref().unwrap();
-        assert!(r.flipped.is_empty(), "level {k}: {} flipped", r.flipped.len());
+        assert!(
+            r.flipped.is_empty(),
+            "level {k}: {} flipped",
+            r.flipped.len()
+        );
     }
     assert!(p.levels()[3].mesh.num_faces() > 0);
     let (_, summary) = p.measure_fillets(3).unwrap().unwrap();

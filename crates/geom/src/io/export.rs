@@ -10,7 +10,6 @@
 //! so a rounded solid looks round in other viewers while chamfers and creases stay crisp.
 
 use super::{IoError, write_atomically_with};
-use std::io::Write;
 use crate::edge_attrs::EdgeAttrs;
 use crate::geometry::{face_normal_raw, unit_or_zero};
 use crate::mesh::PolyMesh;
@@ -19,6 +18,7 @@ use gltf_json as json;
 use json::validation::Checked::Valid;
 use json::validation::USize64;
 use std::collections::HashMap;
+use std::io::Write;
 use std::path::Path;
 
 /// Formats a level can be exported to.
@@ -322,9 +322,8 @@ pub fn export(
     skip: &dyn Fn(usize) -> bool,
     normals: Normals,
 ) -> Result<(), IoError> {
-    let format = ExportFormat::of(path).ok_or_else(|| IoError::UnknownExtension {
-        path: path.into(),
-    })?;
+    let format =
+        ExportFormat::of(path).ok_or_else(|| IoError::UnknownExtension { path: path.into() })?;
     write_atomically_with(path, |w| match format {
         ExportFormat::Stl => write_stl_to(w, mesh, skip),
         ExportFormat::Glb => write_glb_to(w, mesh, skip, normals),

@@ -202,30 +202,26 @@ pub fn write_obj_to(
     w.write_all(b"# written by Prism\n")?;
     let mut buf = zmij::Buffer::new();
     let mut line = String::with_capacity(96);
-    for p in &m.positions {
+    // `v x y z` or `vn x y z`, each number the shortest that reads back the same.
+    let mut triple = |w: &mut dyn IoWrite, tag: &str, p: DVec3| {
         line.clear();
-        line.push('v');
+        line.push_str(tag);
         for x in [p.x, p.y, p.z] {
             line.push(' ');
             line.push_str(number(&mut buf, x));
         }
         line.push('\n');
-        w.write_all(line.as_bytes())?;
+        w.write_all(line.as_bytes())
+    };
+    for &p in &m.positions {
+        triple(w, "v", p)?;
     }
     // On request, a `vn` per corner, and faces as `v//n`.
     let corner_normals = normals.map(|n| n.corner_normals(m));
-    if let Some(cn) = &corner_normals {
-        for n in cn {
-            line.clear();
-            line.push_str("vn");
-            for x in [n.x, n.y, n.z] {
-                line.push(' ');
-                line.push_str(number(&mut buf, x));
-            }
-            line.push('\n');
-            w.write_all(line.as_bytes())?;
-        }
+    for &n in corner_normals.iter().flatten() {
+        triple(w, "vn", n)?;
     }
+    let mut line = String::with_capacity(96);
     let mut holed = 0;
     let mut corner_of: Vec<(u32, usize)> = Vec::new();
     for f in 0..m.num_faces() {

@@ -217,8 +217,7 @@ pub fn corner_points(
             // A blend face with a hole (flat blend faces merged into a ring, e.g. around the
             // top of a torus) keeps the cylindrical points: Doo–Sabin is not defined there.
             CornerRule::Combination { .. } => {
-                input.vertex_neighbourhood.get(f).copied().unwrap_or(false)
-                    && !m.face_has_holes(f)
+                input.vertex_neighbourhood.get(f).copied().unwrap_or(false) && !m.face_has_holes(f)
             }
             _ => false,
         };
