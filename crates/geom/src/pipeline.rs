@@ -181,6 +181,15 @@ impl Pipeline {
         self.keep == Keep::All || k == 0 || (rounds(k) && !rounds(k - 1))
     }
 
+    /// Releases every level [`Keep`] does not keep (after switching to [`Keep::Needed`]).
+    pub fn release_unneeded(&mut self) {
+        for k in 0..self.levels.len().saturating_sub(1) {
+            if !self.kept_after_next(k) {
+                self.levels[k].release();
+            }
+        }
+    }
+
     /// Whether level `k` was released ([`Keep::Needed`]): its mesh is empty.
     pub fn released(&self, k: usize) -> bool {
         k + 1 < self.levels.len() && !self.kept_after_next(k)

@@ -200,6 +200,9 @@ pub enum Command {
     ComputeAnyway,
     /// Answers the memory question: remove the step.
     RemoveOverBudgetStep,
+    /// The answer "keep only the last level" to the memory question: the view frees its
+    /// intermediate levels and computes on within the budget.
+    DropKeptLevels,
     /// A message for the status bar (what an action did, or why it did nothing).
     Say(String),
     /// Opens the New solid window (`extrude`: on the sketch's extrusion).

@@ -366,6 +366,7 @@ impl PrismApp {
                 }
             }
             Command::ComputeAnyway => self.model.compute_anyway(self.doc.state()),
+            Command::DropKeptLevels => self.model.drop_kept_levels(self.doc.state()),
             Command::RemoveOverBudgetStep => {
                 if let Some(e) = self.model.remove_over_budget_step() {
                     self.run(e);

@@ -310,6 +310,45 @@ fn a_step_over_the_memory_budget_asks_first() {
     assert!(a.model.views[0].error.is_none());
 }
 
+/// The memory question's third answer: the view frees its intermediate levels and computes
+/// on within the budget; a freed level is never shown (the last is).
+#[test]
+fn a_step_over_the_budget_can_drop_the_kept_levels() {
+    let mut a = app();
+    a.model.budget_mib = 80;
+    let steps = parse_pipeline(&["doo-sabin"; 9].join(",")).unwrap();
+    a.run(Edit::SetPipeline { view: 0, steps });
+    a.wait_idle();
+    let (_, asked) = a.model.question.clone().expect("the budget question");
+    let before = a.model.views[0].pipeline.levels().len();
+    a.run(Command::DropKeptLevels);
+    a.wait_idle();
+    let v = &a.model.views[0];
+    let levels = v.pipeline.levels();
+    // Freed levels count no more: either further levels fit, or the same step asks for
+    // less (the guard counts the levels kept).
+    match &a.model.question {
+        Some((_, again)) if levels.len() == before => {
+            assert!(again.needed_mib < asked.needed_mib, "{again:?} {asked:?}")
+        }
+        _ => assert!(
+            levels.len() > before,
+            "{} levels, {before} before",
+            levels.len()
+        ),
+    }
+    let last = levels.len() - 1;
+    for (k, lv) in levels.iter().enumerate().take(last).skip(1) {
+        assert!(
+            v.pipeline.released(k) && lv.mesh.num_faces() == 0,
+            "level {k}"
+        );
+    }
+    assert!(levels[0].mesh.num_faces() > 0 && levels[last].mesh.num_faces() > 0);
+    a.model.views[0].level = 1;
+    assert_eq!(a.model.views[0].shown(), last);
+}
+
 #[test]
 fn bundled_samples_open_and_bad_files_say_why() {
     let mut a = app();

@@ -380,6 +380,9 @@ impl ModelTab {
     /// A new document: selections and the split start afresh, the camera frames it.
     pub fn reset_for_new_document(&mut self) {
         self.cancel_all();
+        for v in &mut self.views {
+            v.keep = prism_geom::pipeline::Keep::All;
+        }
         self.sel_verts.clear();
         self.sel_edges.clear();
         self.active = 0;
@@ -524,6 +527,16 @@ impl ModelTab {
                 if ui.button("Remove the step").clicked() {
                     self.push(Command::RemoveOverBudgetStep);
                 }
+                if ui
+                    .button("Keep only the last level")
+                    .on_hover_text(
+                        "free the levels between the input and the last (the level slider then \
+                         shows those two) and go on within the budget",
+                    )
+                    .clicked()
+                {
+                    self.push(Command::DropKeptLevels);
+                }
             });
         });
     }
@@ -548,6 +561,20 @@ impl ModelTab {
         if let Some((view, o)) = self.question.take() {
             let v = &mut self.views[view];
             v.budget_override = Some((o.needed_mib + o.needed_mib / 4 + 16) << 20);
+            let next = v.pipeline.rebased(doc.pipelines[view].clone());
+            v.submit(next, self.budget_mib << 20, false, &self.waker);
+        }
+    }
+
+    /// The answer "keep only the last level": the view keeps the input, the level each
+    /// rounding run starts from and the newest ([`Keep::Needed`]), frees the others now, and
+    /// computes on within the budget (asking again if even that is too much).
+    pub fn drop_kept_levels(&mut self, doc: &DocState) {
+        if let Some((view, _)) = self.question.take() {
+            let v = &mut self.views[view];
+            v.keep = prism_geom::pipeline::Keep::Needed;
+            v.pipeline.keep = v.keep;
+            v.pipeline.release_unneeded();
             let next = v.pipeline.rebased(doc.pipelines[view].clone());
             v.submit(next, self.budget_mib << 20, false, &self.waker);
         }

@@ -126,6 +126,9 @@ impl ModelTab {
             {
                 v.level = lv;
             }
+            if v.keep == prism_geom::pipeline::Keep::Needed {
+                ui.label("the levels between the input and the last were freed (memory)");
+            }
         }
         if let Some(job) = &v.job {
             let (k, of) = job.computing();

@@ -89,6 +89,9 @@ pub struct ViewPipe {
     /// The pipeline to compute once the running job has finished.
     wanted: Option<Pipeline>,
     pub error: Option<String>,
+    /// Which levels the view keeps: all (the level slider shows any), or after the memory
+    /// question's "keep only the last level", the input and the newest.
+    pub keep: prism_geom::pipeline::Keep,
     /// Budget for the next job when the user allowed more than the default.
     pub budget_override: Option<u64>,
     /// What the cylindrical-family steps do with radii that do not fit their faces: the
@@ -129,6 +132,7 @@ impl ViewPipe {
             job: None,
             wanted: None,
             error: None,
+            keep: prism_geom::pipeline::Keep::All,
             budget_override: None,
             overlap: Overlap::Clamp,
             scene: Arc::new(Scene::default()),
@@ -148,8 +152,11 @@ impl ViewPipe {
     }
 
     /// The level shown: the wanted one, or the last computed if it is not there yet.
+    /// The level shown: the one asked for, or the last when that one was freed.
     pub fn shown(&self) -> usize {
-        self.level.min(self.pipeline.levels().len() - 1)
+        let last = self.pipeline.levels().len() - 1;
+        let k = self.level.min(last);
+        if self.pipeline.released(k) { last } else { k }
     }
 
     pub fn steps(&self) -> &[Scheme] {
@@ -165,6 +172,7 @@ impl ViewPipe {
     /// cancel it. A pipeline with nothing to compute replaces the current one at once.
     pub fn submit(&mut self, mut next: Pipeline, budget: u64, live: bool, wake: &Waker) {
         next.options.memory_budget = self.budget_override.unwrap_or(budget);
+        next.keep = self.keep;
         next.options.overlap = self.overlap;
         if next.is_complete() && self.job.is_none() {
             self.replace(next);
