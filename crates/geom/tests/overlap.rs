@@ -27,6 +27,19 @@ fn run(m: PolyMesh, attrs: EdgeAttrs, steps: Vec<Scheme>, overlap: Overlap) -> P
     p
 }
 
+/// Every level computed has no flipped face and a positive volume.
+fn assert_sound(p: &Pipeline) {
+    for (k, lv) in p.levels().iter().enumerate().skip(1) {
+        let r = lv.report.as_ref().unwrap();
+        assert!(
+            r.flipped.is_empty(),
+            "level {k}: {} flipped",
+            r.flipped.len()
+        );
+        assert!(r.volume > 0.0, "level {k}: volume {}", r.volume);
+    }
+}
+
 fn refused(p: &Pipeline) -> Vec<EdgeFit> {
     let n = p.steps().len();
     match Pipeline::clone(p).compute_with(n, |_, _| {}) {
@@ -69,15 +82,7 @@ fn the_computer_room_is_refused_then_clamped_to_a_sound_solid() {
     assert_eq!(p.levels().len(), 5);
     let first = p.levels()[1].report.as_ref().unwrap();
     assert_eq!(first.clamped, edges);
-    for (k, lv) in p.levels().iter().enumerate().skip(1) {
-        let r = lv.report.as_ref().unwrap();
-        assert!(
-            r.flipped.is_empty(),
-            "level {k}: {} flipped",
-            r.flipped.len()
-        );
-        assert!(r.volume > 0.0);
-    }
+    assert_sound(&p);
     // Every round measures what it was given: the clamped 0.15 and the others' 0.2, to the
     // combination rule's 4-per-level error (0.121 % after four levels); the legs' tops touch
     // the desk, whose points are no part of the legs' fillets.
@@ -315,14 +320,7 @@ fn a_torus_rounds_through_three_combination_steps() {
     let m = prism_geom::primitives::torus(24, 24, 3.0, 1.0);
     let p = run(m, EdgeAttrs::new(), combination(3, 0.05), Overlap::Clamp);
     assert_eq!(p.levels().len(), 4, "every step computed");
-    for (k, lv) in p.levels().iter().enumerate().skip(1) {
-        let r = lv.report.as_ref().unwrap();
-        assert!(
-            r.flipped.is_empty(),
-            "level {k}: {} flipped",
-            r.flipped.len()
-        );
-    }
+    assert_sound(&p);
     assert!(p.levels()[3].mesh.num_faces() > 0);
     let (_, summary) = p.measure_fillets(3).unwrap().unwrap();
     let s = summary.expect("rounded edges measured");
