@@ -169,6 +169,39 @@ pub fn read_obj_str(path: &Path, text: &str) -> Result<ObjModel, IoError> {
     })
 }
 
+/// Writes the lines `fmt` makes for items `0..n` in order, formatting them on every core:
+/// batches of 2^17 items are cut into 2^13-item chunks formatted in parallel, then written in
+/// order, so the output is the serial one byte for byte and at most one batch of text is held.
+fn write_parallel(
+    w: &mut dyn IoWrite,
+    n: usize,
+    fmt: impl Fn(&mut String, &mut zmij::Buffer, usize) + Sync,
+) -> std::io::Result<()> {
+    use rayon::prelude::*;
+    const BATCH: usize = 1 << 17;
+    const CHUNK: usize = 1 << 13;
+    for start in (0..n).step_by(BATCH) {
+        let end = (start + BATCH).min(n);
+        let texts: Vec<String> = (start..end)
+            .step_by(CHUNK)
+            .collect::<Vec<_>>()
+            .into_par_iter()
+            .map(|a| {
+                let mut text = String::with_capacity(48 * CHUNK);
+                let mut buf = zmij::Buffer::new();
+                for i in a..(a + CHUNK).min(end) {
+                    fmt(&mut text, &mut buf, i);
+                }
+                text
+            })
+            .collect();
+        for t in texts {
+            w.write_all(t.as_bytes())?;
+        }
+    }
+    Ok(())
+}
+
 /// The number of `v` and `f` lines (an upper bound: a line is counted by its first word).
 fn count_records(text: &str) -> (usize, usize) {
     let (mut v, mut f) = (0, 0);
@@ -200,43 +233,37 @@ pub fn write_obj_to(
 ) -> std::io::Result<Vec<String>> {
     let mut warnings = Vec::new();
     w.write_all(b"# written by Prism\n")?;
-    let mut buf = zmij::Buffer::new();
-    let mut line = String::with_capacity(96);
     // `v x y z` or `vn x y z`, each number the shortest that reads back the same.
-    let mut triple = |w: &mut dyn IoWrite, tag: &str, p: DVec3| {
-        line.clear();
+    let triple = |line: &mut String, buf: &mut zmij::Buffer, tag: &str, p: DVec3| {
         line.push_str(tag);
         for x in [p.x, p.y, p.z] {
             line.push(' ');
-            line.push_str(number(&mut buf, x));
+            line.push_str(number(buf, x));
         }
         line.push('\n');
-        w.write_all(line.as_bytes())
     };
-    for &p in &m.positions {
-        triple(w, "v", p)?;
-    }
+    write_parallel(w, m.num_vertices(), |line, buf, i| {
+        triple(line, buf, "v", m.positions[i])
+    })?;
     // On request, a `vn` per corner, and faces as `v//n`.
     let corner_normals = normals.map(|n| n.corner_normals(m));
-    for &n in corner_normals.iter().flatten() {
-        triple(w, "vn", n)?;
+    if let Some(cn) = &corner_normals {
+        write_parallel(w, cn.len(), |line, buf, i| triple(line, buf, "vn", cn[i]))?;
     }
-    let mut line = String::with_capacity(96);
-    let mut holed = 0;
-    let mut corner_of: Vec<(u32, usize)> = Vec::new();
-    for f in 0..m.num_faces() {
-        line.clear();
+    let with_normals = corner_normals.is_some();
+    let holed = (0..m.num_faces()).filter(|&f| m.face_has_holes(f)).count();
+    write_parallel(w, m.num_faces(), |line, _, f| {
         if m.face_has_holes(f) {
-            holed += 1;
-            corner_of.clear();
-            corner_of.extend(m.face_corners(f).map(|c| (m.corner_verts[c], c)));
+            let corner_of: Vec<(u32, usize)> =
+                m.face_corners(f).map(|c| (m.corner_verts[c], c)).collect();
             let normal = |v: u32| corner_of.iter().find(|x| x.0 == v).map_or(0, |x| x.1) + 1;
             for t in face_vertex_triangles(m, f) {
                 line.push('f');
                 for v in t {
-                    match &corner_normals {
-                        Some(_) => write!(line, " {}//{}", v + 1, normal(v)),
-                        None => write!(line, " {}", v + 1),
+                    if with_normals {
+                        write!(line, " {}//{}", v + 1, normal(v))
+                    } else {
+                        write!(line, " {}", v + 1)
                     }
                     .expect("writing to a String");
                 }
@@ -246,16 +273,16 @@ pub fn write_obj_to(
             line.push('f');
             let l = m.face_loops(f).start;
             for (v, c) in m.loop_verts(l).iter().zip(m.loop_corners(l)) {
-                match &corner_normals {
-                    Some(_) => write!(line, " {}//{}", v + 1, c + 1),
-                    None => write!(line, " {}", v + 1),
+                if with_normals {
+                    write!(line, " {}//{}", v + 1, c + 1)
+                } else {
+                    write!(line, " {}", v + 1)
                 }
                 .expect("writing to a String");
             }
             line.push('\n');
         }
-        w.write_all(line.as_bytes())?;
-    }
+    })?;
     let mut tail = String::new();
     super::obj_tags::write_tags(&mut tail, attrs, tags);
     w.write_all(tail.as_bytes())?;
