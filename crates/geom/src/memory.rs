@@ -91,6 +91,11 @@ impl Counts {
         }
     }
 
+    /// The triangles a mesh of these counts is cut into (C − 2F for faces without holes).
+    pub fn triangles(&self) -> u64 {
+        self.corners.saturating_sub(2 * self.faces)
+    }
+
     /// Bytes of a mesh of these counts: positions, corner vertices, loop and face starts.
     pub fn mesh_bytes(&self) -> u64 {
         24 * self.vertices + 4 * self.corners + 4 * (self.loops + 1) + 4 * (self.faces + 1)
@@ -100,11 +105,7 @@ impl Counts {
     /// and vertex) at its build's peak (the vertex rings: a destination and a corner per
     /// corner, an offset per vertex).
     pub fn topology_bytes(&self) -> u64 {
-        20 * self.corners
-            + 4 * self.edges
-            + 4 * self.vertices
-            + 8 * self.corners
-            + 4 * self.vertices
+        (20 + 8) * self.corners + 4 * self.edges + (4 + 4) * self.vertices
     }
 
     /// Bytes of the provenance of a level of these counts: a kind and a parent per face, a
@@ -112,6 +113,21 @@ impl Counts {
     pub fn provenance_bytes(&self) -> u64 {
         5 * self.faces + 16 * self.edges
     }
+
+    /// Bytes of a level of these counts: its mesh, and its provenance when recorded.
+    pub fn level_bytes(&self, provenance: bool) -> u64 {
+        self.mesh_bytes()
+            + if provenance {
+                self.provenance_bytes()
+            } else {
+                0
+            }
+    }
+}
+
+/// `bytes` with the [`SAFETY`] factor.
+fn padded(bytes: u64) -> u64 {
+    (bytes as f64 * SAFETY) as u64
 }
 
 /// Bytes a level holds now (its arrays' capacities, its edge marks, tags and provenance).
@@ -141,10 +157,7 @@ pub fn step_bytes(
     provenance: bool,
 ) -> u64 {
     let out = input.after(scheme);
-    let mut b = out.mesh_bytes();
-    if provenance {
-        b += out.provenance_bytes();
-    }
+    let mut b = out.level_bytes(provenance);
     if input_topology {
         b += input.topology_bytes();
     }
@@ -161,7 +174,7 @@ pub fn step_bytes(
             b += 96 * input.corners + 48 * input.faces;
         }
     }
-    (b as f64 * SAFETY) as u64
+    padded(b)
 }
 
 /// Bytes an export of a level of these counts holds while it is written: glTF gathers its
@@ -169,12 +182,13 @@ pub fn step_bytes(
 /// its indices and the corner normals before streaming them; OBJ, `.prism.json` and STL are
 /// streamed as they are computed: nothing that grows with the mesh.
 pub fn export_bytes(counts: &Counts, format: Option<ExportFormat>) -> u64 {
-    let triangles = counts.corners.saturating_sub(2 * counts.faces);
     let b = match format {
         None | Some(ExportFormat::Stl) => 0,
-        Some(ExportFormat::Glb) => 88 * counts.corners + 12 * triangles + 24 * counts.faces,
+        Some(ExportFormat::Glb) => {
+            88 * counts.corners + 12 * counts.triangles() + 24 * counts.faces
+        }
     };
-    (b as f64 * SAFETY) as u64
+    padded(b)
 }
 
 /// Bytes the fillet report holds on top of the levels kept: a box and about eight grid
@@ -182,7 +196,7 @@ pub fn export_bytes(counts: &Counts, format: Option<ExportFormat>) -> u64 {
 /// the level the rounding started from (a quarter of the measured one's at most).
 pub fn fillet_report_bytes(counts: &Counts) -> u64 {
     let b = 80 * counts.faces + (16 << 20) + counts.topology_bytes() / 4;
-    (b as f64 * SAFETY) as u64
+    padded(b)
 }
 
 /// The counts of a tessellation of `patches` patches at `k`×`k` quads each (before the
@@ -202,7 +216,7 @@ pub fn tessellation_counts(patches: u64, k: u64) -> Counts {
 /// and normal a vertex, the welding's map (about 32 bytes a vertex).
 pub fn tessellation_bytes(counts: &Counts) -> u64 {
     let b = counts.mesh_bytes() + 80 * counts.vertices;
-    (b as f64 * SAFETY) as u64 + BASELINE
+    padded(b) + BASELINE
 }
 
 /// The budget when none is given: half of the memory available now (Linux's

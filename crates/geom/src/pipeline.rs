@@ -177,7 +177,7 @@ impl Pipeline {
 
     /// Whether level `k` stays once the level after it exists ([`Keep`]).
     fn kept_after_next(&self, k: usize) -> bool {
-        let rounds = |i: usize| matches!(self.steps.get(i), Some(Scheme::Biquadratic(r)) if r.is_cylindrical_family());
+        let rounds = |i: usize| self.steps.get(i).is_some_and(Scheme::rounds_edges);
         self.keep == Keep::All || k == 0 || (rounds(k) && !rounds(k - 1))
     }
 
@@ -222,12 +222,7 @@ impl Pipeline {
                 memory::step_bytes(&counts, s, !carried_in, self.carries(k), self.provenance(s));
             peak = peak.max(kept + step);
             let next = counts.after(s);
-            let next_bytes = next.mesh_bytes()
-                + if self.provenance(s) {
-                    next.provenance_bytes()
-                } else {
-                    0
-                };
+            let next_bytes = next.level_bytes(self.provenance(s));
             kept += next_bytes;
             if !self.kept_after_next(k) {
                 kept -= cur_bytes.min(kept);
@@ -241,9 +236,7 @@ impl Pipeline {
     /// Whether some step rounds edges (a run of cylindrical-family steps: its fillets can
     /// be measured).
     pub fn rounds(&self) -> bool {
-        self.steps
-            .iter()
-            .any(|s| matches!(s, Scheme::Biquadratic(r) if r.is_cylindrical_family()))
+        self.steps.iter().any(Scheme::rounds_edges)
     }
 
     /// The counts the last level will have once every step is computed ([`memory::Counts`]).
@@ -257,7 +250,8 @@ impl Pipeline {
     }
 
     /// Whether a step of `scheme` records its level's provenance: a biquadratic one always
-    /// (its combination state and face kinds come from it), a primal one for the app.
+    /// (its combination state and face kinds come from it), a primal one for the app (picking
+    /// an edge on any level), not for a pipeline that keeps only what it writes.
     fn provenance(&self, scheme: &Scheme) -> bool {
         matches!(scheme, Scheme::Biquadratic(_)) || self.keep == Keep::All
     }
@@ -317,8 +311,7 @@ impl Pipeline {
                         k + 1 < upto && matches!(self.steps[k + 1], Scheme::Biquadratic(_));
                     // The radii are checked against the faces when a run of
                     // cylindrical-family steps begins (docs/algorithms/cylindrical.md).
-                    let continues_run = k > 0
-                        && matches!(self.steps[k - 1], Scheme::Biquadratic(r) if r.is_cylindrical_family());
+                    let continues_run = k > 0 && self.steps[k - 1].rounds_edges();
                     let options = StepOptions {
                         overlap: if continues_run {
                             Overlap::Unchecked
@@ -353,9 +346,7 @@ impl Pipeline {
                     }
                 }
                 Scheme::Primal(p) => {
-                    // Where the elements came from matters to the app (picking an edge on
-                    // any level), not to a pipeline that keeps only what it writes.
-                    let provenance = self.keep == Keep::All;
+                    let provenance = self.provenance(&scheme);
                     let out = refine_primal_with(
                         &prev.mesh,
                         &prev.edge_attrs,
@@ -424,7 +415,7 @@ impl Pipeline {
     /// that starts before level `k`, or `None` when no step up to `k` rounds edges.
     pub fn rounding_run(&self, k: usize) -> Option<RoundingRun> {
         let k = k.min(self.levels.len() - 1);
-        let rounds = |s: &Scheme| matches!(s, Scheme::Biquadratic(r) if r.is_cylindrical_family());
+        let rounds = Scheme::rounds_edges;
         let last = (0..k).rev().find(|&i| rounds(&self.steps[i]))?;
         let start = (0..=last)
             .rev()

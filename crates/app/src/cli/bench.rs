@@ -66,29 +66,24 @@ pub fn run(a: BenchArgs) -> Result<(), CliError> {
         return Err(CliError::usage("--runs and --levels must be at least 1"));
     }
     let steps = vec![step[0]; a.levels];
-    let (doc, _) = super::load_input(&a.input)?;
+    let (loaded, _) = super::load_input(&a.input)?;
     println!(
         "input: {} vertices, {} faces; {} × {}",
-        doc.mesh.num_vertices(),
-        doc.mesh.num_faces(),
+        loaded.mesh.num_vertices(),
+        loaded.mesh.num_faces(),
         a.levels,
         step[0]
     );
     let mut times = Vec::with_capacity(a.runs);
     let mut faces = 0;
-    let budget = a.memory.bytes();
     // A run holds a copy of the input, the level it steps from and the new one, beside the
-    // input loaded once.
-    let mut estimate = Pipeline::with_tags(
-        doc.mesh.clone(),
-        doc.edge_attrs.clone(),
-        doc.tags.clone(),
-        steps.clone(),
-    );
+    // input loaded once (the estimate's pipeline holds the input, then gives it back).
+    let mut estimate =
+        Pipeline::with_tags(loaded.mesh, loaded.edge_attrs, loaded.tags, steps.clone());
     estimate.keep = Keep::Needed;
     let peak = estimate.estimate_peak() + prism_geom::memory::level_bytes(estimate.input());
-    drop(estimate);
-    a.memory.check(peak, "this benchmark")?;
+    let budget = a.memory.check(peak, "this benchmark")?;
+    let doc = estimate.into_last();
     for run in 1..=a.runs {
         let t = Instant::now();
         if let Scheme::Primal(scheme) = step[0] {

@@ -58,12 +58,11 @@ pub fn run(a: LimitArgs) -> Result<(), CliError> {
     };
     // The memory guard: the levels (only the newest is kept) and the limit arrays (a
     // position and a normal a vertex), before any work; each level checks again.
-    let budget = a.memory.bytes();
     let steps = vec![prism_geom::Scheme::Primal(scheme); a.levels];
     let mut estimate = Pipeline::with_tags(doc.mesh, doc.edge_attrs, doc.tags, steps);
     estimate.keep = Keep::Needed;
     let last = estimate.predicted_counts();
-    a.memory.check(
+    let budget = a.memory.check(
         estimate.estimate_peak_then(48 * last.vertices + last.topology_bytes()),
         "this refinement",
     )?;

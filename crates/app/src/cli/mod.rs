@@ -160,8 +160,9 @@ impl MemoryArgs {
     }
 
     /// Prints the estimate against the budget, and refuses a job over it (exit 1) naming
-    /// both and what to change.
-    pub fn check(&self, estimate: u64, what: &str) -> Result<(), CliError> {
+    /// both and what to change; returns the budget, read once (the default follows the
+    /// memory available, which changes), for the work to run under.
+    pub fn check(&self, estimate: u64, what: &str) -> Result<u64, CliError> {
         use prism_geom::memory::mib;
         let budget = self.bytes();
         println!(
@@ -178,7 +179,7 @@ impl MemoryArgs {
                 mib(estimate) + mib(estimate) / 4 + 1
             )));
         }
-        Ok(())
+        Ok(budget)
     }
 }
 

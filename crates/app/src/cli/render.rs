@@ -233,17 +233,17 @@ pub fn run(a: RenderArgs) -> Result<(), CliError> {
     })?;
     let steps = steps_from(&a.steps, doc.pipeline.as_deref(), true)?;
     let mut pipeline = Pipeline::with_tags(doc.mesh, doc.edge_attrs, doc.tags, steps);
-    pipeline.options = a.steps.options();
     // Every level is kept (the cage is the one before). The scene: three vertices of about
     // 48 bytes a triangle with its indices, copied into the GPU's buffers through staging
     // ones (on software Vulkan all of it in main memory: about 500 bytes a triangle
     // measured), its lines, and the picture at 4× multisampling with its depth.
     let last = pipeline.predicted_counts();
-    let triangles = last.corners.saturating_sub(2 * last.faces);
-    let scene = 500 * triangles + 64 * last.edges + 40 * u64::from(w) * u64::from(h);
-    a.steps
+    let scene = 500 * last.triangles() + 64 * last.edges + 40 * u64::from(w) * u64::from(h);
+    let budget = a
+        .steps
         .memory
         .check(pipeline.estimate_peak_then(scene), "this picture")?;
+    pipeline.options = a.steps.options(budget);
     let mut warnings = super::subdivide::LevelWarnings::new(&pipeline.levels()[0].mesh);
     let n = pipeline.steps().len();
     let last = pipeline

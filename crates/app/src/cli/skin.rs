@@ -99,7 +99,9 @@ pub fn check_tessellation(
     use prism_geom::memory;
     let counts = memory::tessellation_counts(patches as u64, k as u64);
     let export = memory::export_bytes(&counts, io::ExportFormat::of(output));
-    memory.check(memory::tessellation_bytes(&counts) + export, what)
+    memory
+        .check(memory::tessellation_bytes(&counts) + export, what)
+        .map(|_| ())
 }
 
 pub fn run(a: SkinArgs) -> Result<(), CliError> {

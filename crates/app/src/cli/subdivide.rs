@@ -64,11 +64,12 @@ pub struct StepArgs {
 }
 
 impl StepArgs {
-    /// The step options these arguments ask for.
-    pub fn options(&self) -> prism_geom::StepOptions {
+    /// The step options these arguments ask for, under the budget `--memory-budget` gave
+    /// ([`super::MemoryArgs::check`]).
+    pub fn options(&self, memory_budget: u64) -> prism_geom::StepOptions {
         prism_geom::StepOptions {
             overlap: prism_geom::rules::Overlap::clamping(self.clamp),
-            memory_budget: self.memory.bytes(),
+            memory_budget,
             ..Default::default()
         }
     }
@@ -421,7 +422,6 @@ pub fn run(a: SubdivideArgs) -> Result<(), CliError> {
     );
     let mut warnings = LevelWarnings::new(&doc.mesh);
     let mut pipeline = Pipeline::with_tags(doc.mesh, doc.edge_attrs, doc.tags, steps.clone());
-    pipeline.options = a.steps.options();
     // Only the levels the output and the fillet report need are kept.
     pipeline.keep = Keep::Needed;
     let n = steps.len();
@@ -433,10 +433,11 @@ pub fn run(a: SubdivideArgs) -> Result<(), CliError> {
     } else {
         0
     };
-    a.steps.memory.check(
+    let budget = a.steps.memory.check(
         pipeline.estimate_peak_then(output.max(report)),
         "this pipeline",
     )?;
+    pipeline.options = a.steps.options(budget);
     let result = pipeline.compute_with(n, |k, level| {
         let r = level
             .report

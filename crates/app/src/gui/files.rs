@@ -140,20 +140,35 @@ impl PrismApp {
         });
     }
 
+    /// Runs one native file dialog (`show`), then marks its return for
+    /// [`PrismApp::drop_keys_typed_in_dialog`]; when it gave nothing, says why if it most
+    /// likely never opened ([`PrismApp::no_dialog`]).
+    fn dialog(
+        &mut self,
+        show: impl FnOnce() -> Option<std::path::PathBuf>,
+    ) -> Option<std::path::PathBuf> {
+        let asked = std::time::Instant::now();
+        let picked = show();
+        self.dialog_returned();
+        if picked.is_none() {
+            self.no_dialog(asked);
+        }
+        picked
+    }
+
     /// Marks that a file dialog has just returned ([`PrismApp::drop_keys_typed_in_dialog`]).
     pub(super) fn dialog_returned(&mut self) {
         self.after_dialog = Some((std::time::Instant::now(), 0));
     }
 
     pub(super) fn open_dialog(&mut self) {
-        let asked = std::time::Instant::now();
-        let picked = rfd::FileDialog::new()
-            .add_filter("Prism documents and OBJ", &["json", "obj"])
-            .pick_file();
-        self.dialog_returned();
-        match picked {
-            Some(p) => self.open_path(&p),
-            None => self.no_dialog(asked),
+        let picked = self.dialog(|| {
+            rfd::FileDialog::new()
+                .add_filter("Prism documents and OBJ", &["json", "obj"])
+                .pick_file()
+        });
+        if let Some(p) = picked {
+            self.open_path(&p);
         }
     }
 
@@ -174,22 +189,16 @@ impl PrismApp {
 
     /// Saves to the document's own file, or asks where (`as_new`: always asks).
     pub(super) fn save_dialog(&mut self, as_new: bool) {
-        let asked = std::time::Instant::now();
-        let path = match (&self.doc.origin().path, as_new) {
-            (Some(p), false) => Some(p.clone()),
-            _ => {
-                let picked = rfd::FileDialog::new()
+        let own = self.doc.origin().path.clone().filter(|_| !as_new);
+        let path = own.or_else(|| {
+            self.dialog(|| {
+                rfd::FileDialog::new()
                     .add_filter("Prism document", &["prism.json"])
                     .add_filter("OBJ", &["obj"])
                     .set_file_name("model.prism.json")
-                    .save_file();
-                self.dialog_returned();
-                picked
-            }
-        };
-        if path.is_none() {
-            self.no_dialog(asked);
-        }
+                    .save_file()
+            })
+        });
         if let Some(p) = path
             && let Err(e) = self.save_to(&p)
         {
@@ -197,31 +206,27 @@ impl PrismApp {
         }
     }
 
-    /// Asks where to export; `ext` is `obj`, `stl`, `glb`, or `obj+vn` (OBJ with normals).
+    /// Asks where to export; `kind` is `obj`, `stl`, `glb`, or `obj+vn` (OBJ with normals).
     pub(super) fn export_dialog(&mut self, kind: &str) {
-        let asked = std::time::Instant::now();
         let (ext, normals) = match kind.strip_suffix("+vn") {
             Some(e) => (e, true),
             None => (kind, false),
         };
-        let picked = rfd::FileDialog::new()
-            .add_filter(ext, &[ext])
-            .set_file_name(if self.tab == super::Tab::Skin {
-                format!("skin.{ext}")
-            } else if self.tab == super::Tab::Envelope {
-                format!("envelope.{ext}")
-            } else {
-                format!("level.{ext}")
-            })
-            .save_file();
-        self.dialog_returned();
-        match picked {
-            Some(p) => {
-                if let Err(e) = self.export_to(&p, normals) {
-                    self.say(format!("could not export: {e}"));
-                }
-            }
-            None => self.no_dialog(asked),
+        let name = match self.tab {
+            super::Tab::Skin => format!("skin.{ext}"),
+            super::Tab::Envelope => format!("envelope.{ext}"),
+            _ => format!("level.{ext}"),
+        };
+        let picked = self.dialog(|| {
+            rfd::FileDialog::new()
+                .add_filter(ext, &[ext])
+                .set_file_name(name)
+                .save_file()
+        });
+        if let Some(p) = picked
+            && let Err(e) = self.export_to(&p, normals)
+        {
+            self.say(format!("could not export: {e}"));
         }
     }
 

@@ -156,6 +156,12 @@ impl Scheme {
         (x > bound).then(|| format!("{} {} = {x} is above {bound}: {why}", self.name(), p.symbol))
     }
 
+    /// Whether this scheme rounds edges (the cylindrical family: cylindrical, minimum,
+    /// combination), so a run of it has fillets to measure.
+    pub fn rounds_edges(&self) -> bool {
+        matches!(self, Scheme::Biquadratic(r) if r.is_cylindrical_family())
+    }
+
     /// Whether repeating this scheme needs its parameter shrunk: the absolute chamfers,
     /// whose new faces are about l or d wide and are cut from both sides by the same value
     /// again (seed 000 §3.1, docs/algorithms/chamfers.md: about 4× per step).

@@ -561,9 +561,16 @@ impl ModelTab {
         if let Some((view, o)) = self.question.take() {
             let v = &mut self.views[view];
             v.budget_override = Some((o.needed_mib + o.needed_mib / 4 + 16) << 20);
-            let next = v.pipeline.rebased(doc.pipelines[view].clone());
-            v.submit(next, self.budget_mib << 20, false, &self.waker);
+            self.compute_on(view, doc);
         }
+    }
+
+    /// After an answer to the memory question: view `view` computes its missing levels from
+    /// the ones it has.
+    fn compute_on(&mut self, view: usize, doc: &DocState) {
+        let v = &mut self.views[view];
+        let next = v.pipeline.rebased(doc.pipelines[view].clone());
+        v.submit(next, self.budget_mib << 20, false, &self.waker);
     }
 
     /// The answer "keep only the last level": the view keeps the input, the level each
@@ -575,8 +582,7 @@ impl ModelTab {
             v.keep = prism_geom::pipeline::Keep::Needed;
             v.pipeline.keep = v.keep;
             v.pipeline.release_unneeded();
-            let next = v.pipeline.rebased(doc.pipelines[view].clone());
-            v.submit(next, self.budget_mib << 20, false, &self.waker);
+            self.compute_on(view, doc);
         }
     }
 

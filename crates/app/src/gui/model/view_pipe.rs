@@ -151,8 +151,8 @@ impl ViewPipe {
         }
     }
 
-    /// The level shown: the wanted one, or the last computed if it is not there yet.
-    /// The level shown: the one asked for, or the last when that one was freed.
+    /// The level shown: the wanted one, or the last computed if it is not there yet or was
+    /// freed ([`prism_geom::pipeline::Keep::Needed`]).
     pub fn shown(&self) -> usize {
         let last = self.pipeline.levels().len() - 1;
         let k = self.level.min(last);
