@@ -36,6 +36,7 @@ pub mod numbering;
 pub mod pipeline;
 pub mod primal;
 pub mod primitives;
+pub mod progress;
 pub mod refine;
 pub mod rules;
 pub mod scheme;

@@ -17,7 +17,7 @@ use clap::Args;
 use prism_geom::curve::{CurveScheme, Polyline, presets};
 use prism_geom::curve_study::{SCHEMES, StudyRow, fig6_study};
 use prism_geom::io::write_atomically;
-use serde::{Deserialize, Serialize};
+use serde::Serialize;
 use std::path::{Path, PathBuf};
 
 #[derive(Debug, Args)]
@@ -50,12 +50,6 @@ pub struct CurveArgs {
     /// The study's lengths l1 and l2 (l3 = 1).
     #[arg(long, default_value = "0.25,0.5,1,2,4")]
     pub lengths: String,
-}
-
-#[derive(Deserialize)]
-struct CurveIn {
-    closed: bool,
-    points: Vec<[f64; 2]>,
 }
 
 #[derive(Serialize)]
@@ -101,20 +95,8 @@ fn preset(s: &str) -> Result<Polyline, CliError> {
 /// A polyline file `{"closed": bool, "points": [[x, y], ...]}`, or the error naming the
 /// line and column.
 pub fn read_polyline(path: &Path) -> Result<Polyline, CliError> {
-    let text = std::fs::read_to_string(path)
-        .map_err(|e| CliError::input(format!("cannot read {}: {e}", path.display())))?;
-    let c: CurveIn = serde_json::from_str(&text).map_err(|e| {
-        CliError::input(format!(
-            "{}, line {}, column {}: {e} (expected {{\"closed\": bool, \"points\": [[x, y], ...]}})",
-            path.display(),
-            e.line(),
-            e.column()
-        ))
-    })?;
-    Ok(Polyline::new(
-        c.points.iter().map(|&p| p.into()).collect(),
-        c.closed,
-    ))
+    let text = super::read_text(path)?;
+    prism_geom::io::polyline_from_str(path, &text).map_err(|e| CliError::input(e.to_string()))
 }
 
 pub fn run(a: CurveArgs) -> Result<(), CliError> {

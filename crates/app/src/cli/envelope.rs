@@ -45,19 +45,8 @@ pub struct EnvelopeArgs {
 
 /// The scene of a file: the file itself, or its `"envelope"` block (a `.prism.json`).
 pub fn read_scene(path: &Path) -> Result<EnvelopeSpec, CliError> {
-    const SHAPE: &str =
-        r#"{"t": 1.0, "primitives": [{"vertices": [[x, y, z], ...], "faces": [[i, ...], ...]}]}"#;
-    let mut v: serde_json::Value = super::read_json(path, "JSON", SHAPE)?;
-    let scene = match v.get_mut("envelope") {
-        Some(block) => block.take(),
-        None => v,
-    };
-    serde_json::from_value(scene).map_err(|e| {
-        CliError::input(format!(
-            "{}: not a scene ({e}); expected {SHAPE}",
-            path.display()
-        ))
-    })
+    let text = super::read_text(path)?;
+    io::scene_from_str(path, &text).map_err(|e| CliError::input(e.to_string()))
 }
 
 /// The network as OBJ polylines, `segments` a curve.

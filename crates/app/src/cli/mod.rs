@@ -110,21 +110,10 @@ pub enum Command {
     Schemes,
 }
 
-/// A JSON input file read as `T`: a file that cannot be read, or is not a `what`, is named
-/// with what was expected (`shape`).
-pub fn read_json<T: serde::de::DeserializeOwned>(
-    path: &std::path::Path,
-    what: &str,
-    shape: &str,
-) -> Result<T, CliError> {
-    let text = std::fs::read_to_string(path)
-        .map_err(|e| CliError::input(format!("{}: cannot read it: {e}", path.display())))?;
-    serde_json::from_str(&text).map_err(|e| {
-        CliError::input(format!(
-            "{}: not {what} ({e}); expected {shape}",
-            path.display()
-        ))
-    })
+/// The text of an input file, or the error naming it.
+pub fn read_text(path: &std::path::Path) -> Result<String, CliError> {
+    std::fs::read_to_string(path)
+        .map_err(|e| CliError::input(format!("{}: cannot read it: {e}", path.display())))
 }
 
 /// The most levels any command refines: every level has about four times the faces of the

@@ -40,29 +40,10 @@ pub struct SkinArgs {
     pub patches: Option<PathBuf>,
 }
 
-#[derive(serde::Deserialize)]
-struct SectionsFile {
-    #[serde(alias = "skin")]
-    sections: SectionsOrBlock,
-}
-
-#[derive(serde::Deserialize)]
-#[serde(untagged)]
-enum SectionsOrBlock {
-    List(Vec<SectionInput>),
-    Block { sections: Vec<SectionInput> },
-}
-
 /// The sections of a file.
 pub fn read_sections(path: &Path) -> Result<Vec<SectionInput>, CliError> {
-    let f: SectionsFile = super::read_json(
-        path,
-        "a sections file",
-        r#"{"sections": [{"points": [[x, y, z], ...]}, ...]}"#,
-    )?;
-    Ok(match f.sections {
-        SectionsOrBlock::List(s) | SectionsOrBlock::Block { sections: s } => s,
-    })
+    let text = super::read_text(path)?;
+    io::sections_from_str(path, &text).map_err(|e| CliError::input(e.to_string()))
 }
 
 fn patches_json(s: &Skin) -> serde_json::Value {

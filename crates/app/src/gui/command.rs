@@ -186,6 +186,8 @@ pub enum Command {
     DiscardAutosave,
     /// Asks where, then opens.
     OpenDialog,
+    /// Stops opening the file being read on a thread; the document stays.
+    CancelOpening,
     /// Saves to the document's file, or asks where (`as_new`: always asks).
     SaveDialog {
         as_new: bool,

@@ -77,7 +77,15 @@ pub struct Origin {
 
 /// Loads a file as a document.
 pub fn open(path: &Path) -> Result<(DocState, Origin), String> {
-    let (doc, numbering) = io::load(path).map_err(|e| e.to_string())?;
+    open_with(path, &Default::default())
+}
+
+/// As [`open`], adding to `progress` and stopping when it is cancelled (opening.rs).
+pub fn open_with(
+    path: &Path,
+    progress: &prism_geom::progress::Progress,
+) -> Result<(DocState, Origin), String> {
+    let (doc, numbering) = io::load_with(path, progress).map_err(|e| e.to_string())?;
     let native = io::FileKind::of(path).ok() == Some(io::FileKind::Document);
     Ok((
         DocState::from_document(doc),

@@ -23,6 +23,7 @@ mod files;
 mod gestures;
 pub mod model;
 mod new_solid;
+mod opening;
 pub(crate) mod skin;
 mod view3d;
 mod viewport;
@@ -35,6 +36,8 @@ mod tests_autosave;
 mod tests_envelope;
 #[cfg(test)]
 mod tests_new_solid;
+#[cfg(test)]
+mod tests_opening;
 #[cfg(test)]
 mod tests_rounding;
 #[cfg(test)]
@@ -174,6 +177,10 @@ pub struct PrismApp {
     last_file: Option<PathBuf>,
     pub new_solid: new_solid::NewSolid,
     pub autosave: autosave::Autosave,
+    /// A big file being opened on a thread (opening.rs).
+    opening: Option<opening::Opening>,
+    /// Files at least this large open on a thread ([`opening::IN_BACKGROUND_FROM`]).
+    open_in_background_from: u64,
 }
 
 impl PrismApp {
@@ -184,7 +191,18 @@ impl PrismApp {
         // A file that cannot be opened (given, or remembered from the last run) leaves the
         // window on the bundled tripod, its error in the status bar.
         let mut note = None;
-        let (mut state, origin) = match launch.file.as_ref().or(remembered.as_ref()) {
+        // A big file given alone opens on a thread behind a progress bar, over the tripod; a
+        // screenshot or a pipeline for it waits for it.
+        let file = launch.file.as_ref().or(remembered.as_ref());
+        let in_background = file
+            .filter(|p| {
+                launch.screenshot.is_none()
+                    && launch.pipeline.is_empty()
+                    && launch.compare.is_empty()
+                    && std::fs::metadata(p).is_ok_and(|m| m.len() >= opening::IN_BACKGROUND_FROM)
+            })
+            .cloned();
+        let (mut state, origin) = match file.filter(|_| in_background.is_none()) {
             Some(p) => document::open(p).or_else(|e| {
                 note = Some(format!("could not open {}: {e}", p.display()));
                 files::sample(0)
@@ -246,6 +264,8 @@ impl PrismApp {
             after_dialog: None,
             camera_before_edit: None,
             last_file,
+            opening: in_background.map(|p| opening::Opening::start(&p, Arc::new(|| {}))),
+            open_in_background_from: opening::IN_BACKGROUND_FROM,
         })
     }
 
@@ -358,6 +378,7 @@ impl PrismApp {
                 self.say("discarded the unsaved work of the last session");
             }
             Command::OpenDialog => self.open_dialog(),
+            Command::CancelOpening => self.cancel_opening(),
             Command::SaveDialog { as_new } => self.save_dialog(as_new),
             Command::ExportDialog(ext) => self.export_dialog(ext),
             Command::Cancel { view } => {
@@ -427,14 +448,43 @@ impl PrismApp {
         }
     }
 
-    /// Opens a file as the document (undoable: the previous document is one Ctrl+Z away).
+    /// Opens a file as the document (undoable: the previous document is one Ctrl+Z away); a
+    /// big one on a thread behind a progress bar with Cancel (opening.rs).
     pub fn open_path(&mut self, path: &std::path::Path) {
-        match document::open(path) {
+        if let Some(o) = self.opening.take() {
+            o.cancel();
+        }
+        let size = std::fs::metadata(path).map_or(0, |m| m.len());
+        if size >= self.open_in_background_from {
+            self.opening = Some(opening::Opening::start(path, self.model.waker.clone()));
+            return;
+        }
+        self.opened(document::open(path));
+    }
+
+    fn opened(&mut self, loaded: Result<(document::DocState, document::Origin), String>) {
+        match loaded {
             Ok((state, origin)) => {
                 self.replace_document(state, origin);
                 self.autosave.opened(self.doc.generation());
             }
             Err(e) => self.say(format!("could not open: {e}")),
+        }
+    }
+
+    /// Takes the document the opening thread read, once it is done.
+    fn poll_opening(&mut self) {
+        if let Some(loaded) = self.opening.as_ref().and_then(|o| o.poll()) {
+            self.opening = None;
+            self.opened(loaded);
+        }
+    }
+
+    /// Stops opening a file: the document stays as it is.
+    fn cancel_opening(&mut self) {
+        if let Some(o) = self.opening.take() {
+            o.cancel();
+            self.say(format!("stopped opening {}", o.path.display()));
         }
     }
 
@@ -700,9 +750,14 @@ impl PrismApp {
         if let Some(c) = self.restore_window(&ctx) {
             commands.push(c);
         }
+        if self.opening.as_ref().is_some_and(|o| o.window(&ctx)) {
+            commands.push(Command::CancelOpening);
+        }
         for c in commands {
             self.run(c);
         }
+        // After the window was drawn: a file opened between frames shows its bar once.
+        self.poll_opening();
         match self.autosave.tick(&self.doc, false) {
             Ok(_) => {}
             Err(e) => self.say(e),

@@ -84,12 +84,7 @@ struct VersionOnly {
 }
 
 fn json_err(path: &Path, e: serde_json::Error) -> IoError {
-    IoError::Json {
-        path: path.into(),
-        line: e.line(),
-        column: e.column(),
-        message: e.to_string(),
-    }
+    super::inputs::json_error(path, &e, "")
 }
 
 /// Parses a document from text.

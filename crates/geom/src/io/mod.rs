@@ -1,10 +1,11 @@
-//! Files: OBJ (read in one pass, polygons kept as they are) and the native `.prism.json`
-//! document. Every write goes to a temporary file in the same folder that is renamed into
+//! Files: OBJ (read in one pass, polygons kept as they are), the native `.prism.json`
+//! document, and the JSON inputs of the curve, skin and envelope commands. Every write goes to a temporary file in the same folder that is renamed into
 //! place, so a failed save never destroys the previous file.
 
 mod atomic;
 mod document;
 mod export;
+mod inputs;
 mod obj;
 mod obj_tags;
 mod validate;
@@ -12,10 +13,18 @@ mod validate;
 pub use atomic::{check_writable, forced, save_target, write_atomically, write_atomically_with};
 pub use document::{DOCUMENT_VERSION, Document, document_from_str, read_document, write_document};
 pub use export::{ExportFormat, Normals, export, glb_bytes, stl_bytes};
-pub use obj::{ObjModel, obj_to_string, read_obj, read_obj_str, write_obj, write_obj_with_normals};
+pub use inputs::{
+    POLYLINE_SHAPE, SCENE_SHAPE, SECTIONS_SHAPE, polyline_from_str, scene_from_str,
+    sections_from_str,
+};
+pub use obj::{
+    ObjModel, obj_to_string, read_obj, read_obj_str, read_obj_with, write_obj,
+    write_obj_with_normals,
+};
 pub use validate::validate_model;
 
 pub use crate::numbering::Numbering;
+use crate::progress::Progress;
 use std::path::{Path, PathBuf};
 use thiserror::Error;
 
@@ -52,6 +61,8 @@ pub enum IoError {
     Invalid { path: PathBuf, message: String },
     #[error("{path}: unknown file type (use .obj or .prism.json)")]
     UnknownExtension { path: PathBuf },
+    #[error("opening {path} was cancelled")]
+    Cancelled { path: PathBuf },
 }
 
 /// The kinds of file Prism reads and writes.
@@ -80,18 +91,87 @@ impl FileKind {
 /// Loads an OBJ or a `.prism.json` as a document (an OBJ gives no pipeline); also returns
 /// how the file counts its vertices and faces, for messages about them.
 pub fn load(path: &Path) -> Result<(Document, Numbering), IoError> {
-    FileKind::of(path)?;
-    let text = std::fs::read_to_string(path).map_err(|source| IoError::Read {
+    load_with(path, &Progress::default())
+}
+
+/// As [`load`], adding to `progress` as it reads and parses, and stopping with
+/// [`IoError::Cancelled`] between blocks and chunks once it is cancelled (the app's Open of a
+/// big file runs it on a thread behind a progress bar with Cancel).
+pub fn load_with(path: &Path, progress: &Progress) -> Result<(Document, Numbering), IoError> {
+    let loaded = match FileKind::of(path)? {
+        FileKind::Obj => from_obj(read_obj_with(path, progress)?),
+        FileKind::Document => {
+            let bytes = read_bytes(path, progress, 1)?;
+            let text = String::from_utf8(bytes).map_err(|e| IoError::Read {
+                path: path.into(),
+                source: std::io::Error::new(std::io::ErrorKind::InvalidData, e),
+            })?;
+            (document_from_str(path, &text)?, Numbering::default())
+        }
+    };
+    progress
+        .check()
+        .map_err(|_| IoError::Cancelled { path: path.into() })?;
+    checked(path, loaded)
+}
+
+/// The bytes of a file, read in blocks of 8 MiB: each adds its length to `progress`, whose
+/// total is set to `parts` times the file's size (the reading is one part of the job), and
+/// the reading stops between blocks once `progress` is cancelled.
+fn read_bytes(path: &Path, progress: &Progress, parts: u64) -> Result<Vec<u8>, IoError> {
+    use std::io::Read;
+    const BLOCK: u64 = 8 << 20;
+    let read_err = |source| IoError::Read {
         path: path.into(),
         source,
-    })?;
-    load_str(path, &text)
+    };
+    let mut file = std::fs::File::open(path).map_err(read_err)?;
+    let size = file.metadata().map_err(read_err)?.len();
+    progress.set_total(parts * size.max(1));
+    let mut bytes = Vec::new();
+    bytes
+        .try_reserve_exact(size as usize + 1)
+        .map_err(|e| read_err(std::io::Error::new(std::io::ErrorKind::OutOfMemory, e)))?;
+    loop {
+        progress
+            .check()
+            .map_err(|_| IoError::Cancelled { path: path.into() })?;
+        let n = (&mut file)
+            .take(BLOCK)
+            .read_to_end(&mut bytes)
+            .map_err(read_err)?;
+        if n == 0 {
+            return Ok(bytes);
+        }
+        progress.add(n as u64);
+    }
 }
 
 /// As [`load`], for text already in memory (the app's bundled samples); the kind comes
 /// from `path`'s name, which messages quote.
 pub fn load_str(path: &Path, text: &str) -> Result<(Document, Numbering), IoError> {
-    let loaded = load_unchecked(path, text)?;
+    let loaded = match FileKind::of(path)? {
+        FileKind::Obj => from_obj(read_obj_str(path, text)?),
+        FileKind::Document => (document_from_str(path, text)?, Numbering::default()),
+    };
+    checked(path, loaded)
+}
+
+/// A document read from OBJ, and how the file numbers its vertices and faces.
+fn from_obj(m: ObjModel) -> (Document, Numbering) {
+    (
+        Document {
+            mesh: m.mesh,
+            edge_attrs: m.edge_attrs,
+            tags: m.tags,
+            ..Document::default()
+        },
+        Numbering::obj(m.vertex_lines, m.face_lines),
+    )
+}
+
+/// `loaded`, once the one validation of a model (either reader's) accepts it.
+fn checked(path: &Path, loaded: (Document, Numbering)) -> Result<(Document, Numbering), IoError> {
     let d = &loaded.0;
     validate_model(&d.mesh, &d.edge_attrs, &d.tags, &loaded.1).map_err(|message| {
         IoError::Invalid {
@@ -100,24 +180,6 @@ pub fn load_str(path: &Path, text: &str) -> Result<(Document, Numbering), IoErro
         }
     })?;
     Ok(loaded)
-}
-
-fn load_unchecked(path: &Path, text: &str) -> Result<(Document, Numbering), IoError> {
-    match FileKind::of(path)? {
-        FileKind::Obj => {
-            let m = read_obj_str(path, text)?;
-            Ok((
-                Document {
-                    mesh: m.mesh,
-                    edge_attrs: m.edge_attrs,
-                    tags: m.tags,
-                    ..Document::default()
-                },
-                Numbering::obj(m.vertex_lines, m.face_lines),
-            ))
-        }
-        FileKind::Document => Ok((document_from_str(path, text)?, Numbering::default())),
-    }
 }
 
 /// Saves a document as OBJ or `.prism.json` by the file name; returns warnings (e.g. holed

@@ -19,6 +19,7 @@
 use super::{IoError, Normals, write_atomically_with};
 use crate::edge_attrs::EdgeAttrs;
 use crate::mesh::PolyMesh;
+use crate::progress::Progress;
 use crate::tags::SubdivTags;
 use crate::triangulate::face_vertex_triangles;
 use glam::DVec3;
@@ -41,125 +42,278 @@ pub struct ObjModel {
 
 /// Reads an OBJ file.
 pub fn read_obj(path: &Path) -> Result<ObjModel, IoError> {
-    let text = std::fs::read_to_string(path).map_err(|source| IoError::Read {
-        path: path.into(),
-        source,
-    })?;
-    read_obj_str(path, &text)
+    read_obj_with(path, &Progress::default())
+}
+
+/// Reads an OBJ file, adding to `progress` as it goes (reading the bytes counts half, parsing
+/// them the other half) and stopping with [`IoError::Cancelled`] when it is cancelled.
+pub fn read_obj_with(path: &Path, progress: &Progress) -> Result<ObjModel, IoError> {
+    let bytes = super::read_bytes(path, progress, 2)?;
+    parse(path, &bytes, progress)
 }
 
 /// Reads OBJ text (`path` is only used in messages).
 pub fn read_obj_str(path: &Path, text: &str) -> Result<ObjModel, IoError> {
+    parse(path, text.as_bytes(), &Progress::default())
+}
+
+/// Bytes of text a parsing chunk takes (cut after a line's end).
+const CHUNK: usize = 1 << 22;
+
+/// The counts of a chunk's records, by the first word of each line.
+#[derive(Debug, Default, Clone, Copy)]
+struct Counts {
+    lines: usize,
+    v: usize,
+    vt: usize,
+    vn: usize,
+    f: usize,
+}
+
+/// The words of a line without its comment, split at whitespace exactly as
+/// `str::split_whitespace` splits them (Unicode's White_Space): an ASCII line is split on its
+/// bytes, any other by the standard library.
+enum Words<'a> {
+    Ascii(&'a str, usize),
+    Unicode(std::str::SplitWhitespace<'a>),
+}
+
+impl<'a> Iterator for Words<'a> {
+    type Item = &'a str;
+    fn next(&mut self) -> Option<&'a str> {
+        // The ASCII characters of White_Space: tab, LF, VT, FF, CR, space.
+        let space = |b: u8| matches!(b, b' ' | b'\t'..=b'\r');
+        match self {
+            Words::Ascii(s, at) => {
+                let b = s.as_bytes();
+                let mut i = *at;
+                while i < b.len() && space(b[i]) {
+                    i += 1;
+                }
+                if i == b.len() {
+                    *at = i;
+                    return None;
+                }
+                let start = i;
+                while i < b.len() && !space(b[i]) {
+                    i += 1;
+                }
+                *at = i;
+                Some(&s[start..i])
+            }
+            Words::Unicode(w) => w.next(),
+        }
+    }
+}
+
+/// The words of `raw` before its comment (`#` to the end of the line).
+fn words(raw: &str) -> Words<'_> {
+    let line = match raw.find('#') {
+        Some(k) => &raw[..k],
+        None => raw,
+    };
+    if line.is_ascii() {
+        Words::Ascii(line, 0)
+    } else {
+        Words::Unicode(line.split_whitespace())
+    }
+}
+
+/// The statement of a line (its first word) and the words after it. A line that starts
+/// with `v`, `vt`, `vn` or `f` and a blank is known by its first bytes; any other is split.
+fn statement(raw: &str) -> (Option<&str>, Words<'_>) {
+    let keyword = match raw.as_bytes() {
+        [b'v', b' ' | b'\t', ..] => Some("v"),
+        [b'f', b' ' | b'\t', ..] => Some("f"),
+        [b'v', b't', b' ' | b'\t', ..] => Some("vt"),
+        [b'v', b'n', b' ' | b'\t', ..] => Some("vn"),
+        _ => None,
+    };
+    match keyword {
+        Some(k) => (Some(k), words(&raw[k.len()..])),
+        None => {
+            let mut w = words(raw);
+            (w.next(), w)
+        }
+    }
+}
+
+fn count(text: &str) -> Counts {
+    let mut c = Counts::default();
+    for raw in text.lines() {
+        c.lines += 1;
+        match statement(raw).0 {
+            Some("v") => c.v += 1,
+            Some("vt") => c.vt += 1,
+            Some("vn") => c.vn += 1,
+            Some("f") => c.f += 1,
+            _ => {}
+        }
+    }
+    c
+}
+
+/// The text cut into chunks of about [`CHUNK`] bytes, each ending after a line's end (a
+/// `\n` is never inside a UTF-8 sequence, so every chunk is checked as UTF-8 on its own).
+fn chunks(bytes: &[u8], chunk: usize) -> Vec<&[u8]> {
+    let mut out = Vec::with_capacity(bytes.len() / chunk + 1);
+    let mut rest = bytes;
+    while rest.len() > chunk {
+        let cut = match rest[chunk..].iter().position(|&b| b == b'\n') {
+            Some(k) => chunk + k + 1,
+            None => rest.len(),
+        };
+        let (a, b) = rest.split_at(cut);
+        out.push(a);
+        rest = b;
+    }
+    if !rest.is_empty() {
+        out.push(rest);
+    }
+    out
+}
+
+/// What one chunk parses into: its faces (global vertex indices) and tag lines; its vertices
+/// and the lines of its vertices and faces go straight into the mesh's own arrays.
+#[derive(Default)]
+struct Parsed {
+    corners: Vec<u32>,
+    sizes: Vec<u32>,
+    tags: Vec<(usize, Vec<String>)>,
+}
+
+/// The slots of `v` for the chunks, `counts[i]` each.
+fn split_slots<T>(mut v: &mut [T], counts: impl Iterator<Item = usize>) -> Vec<&mut [T]> {
+    let mut out = Vec::new();
+    for n in counts {
+        let (a, b) = v.split_at_mut(n);
+        out.push(a);
+        v = b;
+    }
+    out
+}
+
+/// Parses OBJ bytes on every core: a first parallel pass counts each chunk's lines and
+/// records (by the same first-word test the parse uses, so the counts are exact), which gives
+/// every chunk the line, vertex, texture-coordinate and normal numbers it starts from; the
+/// chunks are then parsed in parallel into their own slots of the mesh's arrays, and their
+/// faces appended in order. Every message is the one a line-by-line reading gives: the
+/// first error in file order, with its line.
+fn parse(path: &Path, bytes: &[u8], progress: &Progress) -> Result<ObjModel, IoError> {
+    parse_in(path, bytes, progress, CHUNK)
+}
+
+/// [`parse`] with chunks of about `chunk` bytes.
+fn parse_in(
+    path: &Path,
+    bytes: &[u8],
+    progress: &Progress,
+    chunk: usize,
+) -> Result<ObjModel, IoError> {
+    use rayon::prelude::*;
     let err = |line: Option<usize>, message: String| IoError::Obj {
         path: path.into(),
         line,
         message,
     };
-    let mut vertex_lines = Vec::new();
-    let mut face_lines = Vec::new();
-    // Sized by a first look at the lines (a memchr scan): no vector grows by copying.
-    let (nv, nf) = count_records(text);
-    let mut mesh = PolyMesh::with_capacity(nv, nf, nf, 4 * nf);
-    vertex_lines.reserve(nv);
-    face_lines.reserve(nf);
-    let mut face: Vec<u32> = Vec::new();
-    let mut tags: Vec<(usize, Vec<String>)> = Vec::new();
     // A UTF-8 byte-order mark is not part of the first line; old Mac files end lines with a
-    // bare CR, which would otherwise make the whole file one line.
-    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
-    let text: std::borrow::Cow<'_, str> = if text.contains('\r') {
-        text.replace("\r\n", "\n").replace('\r', "\n").into()
+    // bare CR (one not before a LF), which would otherwise make the whole file one line.
+    let bytes = bytes.strip_prefix("\u{feff}".as_bytes()).unwrap_or(bytes);
+    let bare_cr = bytes
+        .iter()
+        .enumerate()
+        .any(|(i, &b)| b == b'\r' && bytes.get(i + 1) != Some(&b'\n'));
+    let converted;
+    let bytes = if bare_cr {
+        converted = String::from_utf8_lossy(bytes)
+            .replace("\r\n", "\n")
+            .replace('\r', "\n")
+            .into_bytes();
+        &converted[..]
     } else {
-        text.into()
+        bytes
     };
-    let (mut textures, mut normals) = (0i64, 0i64);
-    for (i, raw) in text.lines().enumerate() {
-        let lineno = i + 1;
-        let line = match raw.find('#') {
-            Some(k) => &raw[..k],
-            None => raw,
-        };
-        let mut words = line.split_whitespace();
-        match words.next() {
-            Some("v") => {
-                let mut xyz = [0.0f64; 3];
-                for x in &mut xyz {
-                    *x = match words.next().map(str::parse::<f64>) {
-                        Some(Ok(v)) => v,
-                        _ => {
-                            return Err(err(
-                                Some(lineno),
-                                format!("'{}' is not a vertex 'v x y z'", line.trim()),
-                            ));
-                        }
-                    };
-                }
-                vertex_lines.push(lineno);
-                mesh.positions.push(DVec3::from_array(xyz));
-            }
-            Some("f") => {
-                face.clear();
-                for w in words {
-                    // v, v/vt, v//vn or v/vt/vn: the texture and normal indices must name
-                    // lines that exist (they are not used, but a wrong one means a broken file).
-                    let mut parts = w.split('/');
-                    let v = parts.next().unwrap_or("");
-                    for (slot, (what, count)) in
-                        parts.zip([("texture coordinate", textures), ("normal", normals)])
-                    {
-                        if slot.is_empty() {
-                            continue;
-                        }
-                        let k: i64 = slot.parse().map_err(|_| {
-                            err(Some(lineno), format!("'{w}' is not a vertex index"))
-                        })?;
-                        if k == 0 || k > count || k < -count {
-                            return Err(err(
-                                Some(lineno),
-                                format!(
-                                    "'{w}' names {what} {k}, but the file has {count} {what}(s) so far"
-                                ),
-                            ));
-                        }
-                    }
-                    let k: i64 = v
-                        .parse()
-                        .map_err(|_| err(Some(lineno), format!("'{w}' is not a vertex index")))?;
-                    let n = vertex_lines.len() as i64;
-                    if k == 0 || k > n || k < -n {
-                        return Err(err(
-                            Some(lineno),
-                            format!(
-                                "vertex index {k} is out of range (the file has {n} vertices so far)"
-                            ),
-                        ));
-                    }
-                    // A relative index counts back from the vertices read so far.
-                    face.push(if k < 0 { n + k } else { k - 1 } as u32);
-                }
-                if face.len() < 3 {
-                    return Err(err(
-                        Some(lineno),
-                        format!(
-                            "a face needs at least 3 vertices, '{}' has {}",
-                            line.trim(),
-                            face.len()
-                        ),
-                    ));
-                }
-                face_lines.push(lineno);
-                mesh.push_polygon(&face);
-            }
-            Some("t") => tags.push((lineno, words.map(str::to_string).collect())),
-            Some("vt") => textures += 1,
-            Some("vn") => normals += 1,
-            _ => {}
-        }
+    let pieces = chunks(bytes, chunk);
+    let texts: Vec<&str> = pieces
+        .par_iter()
+        .map(|c| std::str::from_utf8(c).map_err(|e| &c[..e.valid_up_to()]))
+        .collect::<Vec<_>>()
+        .into_iter()
+        .enumerate()
+        .map(|(k, r)| {
+            r.map_err(|valid| {
+                let before: usize = pieces[..k]
+                    .iter()
+                    .map(|c| c.iter().filter(|&&b| b == b'\n').count())
+                    .sum();
+                let line = before + valid.iter().filter(|&&b| b == b'\n').count() + 1;
+                err(Some(line), "the line is not UTF-8 text".into())
+            })
+        })
+        .collect::<Result<_, _>>()?;
+    let counts: Vec<Counts> = texts.par_iter().map(|t| count(t)).collect();
+    let mut starts = Vec::with_capacity(counts.len());
+    let mut at = Counts::default();
+    for c in &counts {
+        starts.push(at);
+        at.lines += c.lines;
+        at.v += c.v;
+        at.vt += c.vt;
+        at.vn += c.vn;
+        at.f += c.f;
     }
-    let n = vertex_lines.len();
-    let nf = mesh.num_faces();
-    let (edge_attrs, subdiv_tags) =
-        super::obj_tags::read_tags(&tags, n, nf).map_err(|(line, m)| err(Some(line), m))?;
+    let total = at;
+    if total.v > u32::MAX as usize {
+        return Err(err(
+            None,
+            format!("{} vertices are more than Prism indexes (2^32)", total.v),
+        ));
+    }
+    let mut positions = vec![DVec3::ZERO; total.v];
+    let mut vertex_lines = vec![0usize; total.v];
+    let mut face_lines = vec![0usize; total.f];
+    let slots = split_slots(&mut positions, counts.iter().map(|c| c.v))
+        .into_iter()
+        .zip(split_slots(&mut vertex_lines, counts.iter().map(|c| c.v)))
+        .zip(split_slots(&mut face_lines, counts.iter().map(|c| c.f)));
+    let jobs: Vec<_> = texts.iter().zip(&starts).zip(slots).collect();
+    let parsed: Vec<Result<Parsed, IoError>> = jobs
+        .into_par_iter()
+        .map(|((text, start), ((pos, vlines), flines))| {
+            progress
+                .check()
+                .map_err(|_| IoError::Cancelled { path: path.into() })?;
+            let p = parse_chunk(text, start, pos, vlines, flines).map_err(|(l, m)| err(Some(l), m));
+            progress.add(text.len() as u64);
+            p
+        })
+        .collect();
+    let parsed = parsed.into_iter().collect::<Result<Vec<_>, _>>()?;
+    let corners: usize = parsed.iter().map(|p| p.corners.len()).sum();
+    if corners > u32::MAX as usize {
+        return Err(err(
+            None,
+            format!("{corners} face corners are more than Prism indexes (2^32)"),
+        ));
+    }
+    let mut mesh = PolyMesh::with_capacity(0, total.f, total.f, corners);
+    mesh.positions = positions;
+    let mut tags = Vec::new();
+    for p in parsed {
+        mesh.corner_verts.extend_from_slice(&p.corners);
+        let mut end = *mesh
+            .loop_starts
+            .last()
+            .expect("a mesh has its first loop start");
+        for s in p.sizes {
+            end += s;
+            mesh.loop_starts.push(end);
+            mesh.face_starts.push((mesh.loop_starts.len() - 1) as u32);
+        }
+        tags.extend(p.tags);
+    }
+    let (edge_attrs, subdiv_tags) = super::obj_tags::read_tags(&tags, total.v, total.f)
+        .map_err(|(line, m)| err(Some(line), m))?;
     Ok(ObjModel {
         mesh,
         edge_attrs,
@@ -167,6 +321,111 @@ pub fn read_obj_str(path: &Path, text: &str) -> Result<ObjModel, IoError> {
         face_lines,
         vertex_lines,
     })
+}
+
+/// A line as messages quote it: without its comment and the blanks around.
+fn line_of(raw: &str) -> &str {
+    raw.split('#').next().unwrap_or("").trim()
+}
+
+/// One chunk of lines, `start` giving the numbers of the lines and records before it;
+/// vertices and the lines of vertices and faces are written into the chunk's slots.
+fn parse_chunk(
+    text: &str,
+    start: &Counts,
+    positions: &mut [DVec3],
+    vertex_lines: &mut [usize],
+    face_lines: &mut [usize],
+) -> Result<Parsed, (usize, String)> {
+    let mut out = Parsed {
+        corners: Vec::with_capacity(4 * face_lines.len()),
+        sizes: Vec::with_capacity(face_lines.len()),
+        tags: Vec::new(),
+    };
+    let (mut v, mut f) = (0usize, 0usize);
+    let (mut textures, mut normals) = (start.vt as i64, start.vn as i64);
+    for (i, raw) in text.lines().enumerate() {
+        let lineno = start.lines + i + 1;
+        let (first, mut words) = statement(raw);
+        match first {
+            Some("v") => {
+                let mut xyz = [0.0f64; 3];
+                for x in &mut xyz {
+                    *x = match words.next().map(str::parse::<f64>) {
+                        Some(Ok(v)) => v,
+                        _ => {
+                            return Err((
+                                lineno,
+                                format!("'{}' is not a vertex 'v x y z'", line_of(raw)),
+                            ));
+                        }
+                    };
+                }
+                positions[v] = DVec3::from_array(xyz);
+                vertex_lines[v] = lineno;
+                v += 1;
+            }
+            Some("f") => {
+                let n = (start.v + v) as i64;
+                let before = out.corners.len();
+                for w in words {
+                    // v, v/vt, v//vn or v/vt/vn: the texture and normal indices must name
+                    // lines that exist (they are not used, but a wrong one means a broken file).
+                    let mut parts = w.split('/');
+                    let vi = parts.next().unwrap_or("");
+                    for (slot, (what, count)) in
+                        parts.zip([("texture coordinate", textures), ("normal", normals)])
+                    {
+                        if slot.is_empty() {
+                            continue;
+                        }
+                        let k: i64 = slot
+                            .parse()
+                            .map_err(|_| (lineno, format!("'{w}' is not a vertex index")))?;
+                        if k == 0 || k > count || k < -count {
+                            return Err((
+                                lineno,
+                                format!(
+                                    "'{w}' names {what} {k}, but the file has {count} {what}(s) so far"
+                                ),
+                            ));
+                        }
+                    }
+                    let k: i64 = vi
+                        .parse()
+                        .map_err(|_| (lineno, format!("'{w}' is not a vertex index")))?;
+                    if k == 0 || k > n || k < -n {
+                        return Err((
+                            lineno,
+                            format!(
+                                "vertex index {k} is out of range (the file has {n} vertices so far)"
+                            ),
+                        ));
+                    }
+                    // A relative index counts back from the vertices read so far.
+                    out.corners.push(if k < 0 { n + k } else { k - 1 } as u32);
+                }
+                let size = out.corners.len() - before;
+                if size < 3 {
+                    return Err((
+                        lineno,
+                        format!(
+                            "a face needs at least 3 vertices, '{}' has {size}",
+                            line_of(raw),
+                        ),
+                    ));
+                }
+                out.sizes.push(size as u32);
+                face_lines[f] = lineno;
+                f += 1;
+            }
+            Some("t") => out.tags.push((lineno, words.map(str::to_string).collect())),
+            Some("vt") => textures += 1,
+            Some("vn") => normals += 1,
+            _ => {}
+        }
+    }
+    Ok(out)
 }
 
 /// Writes the lines `fmt` makes for items `0..n` in order, formatting them on every core:
@@ -200,20 +459,6 @@ fn write_parallel(
         }
     }
     Ok(())
-}
-
-/// The number of `v` and `f` lines (an upper bound: a line is counted by its first word).
-fn count_records(text: &str) -> (usize, usize) {
-    let (mut v, mut f) = (0, 0);
-    for line in text.as_bytes().split(|&b| b == b'\n') {
-        let t = line.trim_ascii_start();
-        match t {
-            [b'v', b' ' | b'\t', ..] => v += 1,
-            [b'f', b' ' | b'\t', ..] => f += 1,
-            _ => {}
-        }
-    }
-    (v, f)
 }
 
 /// `x` as the shortest decimal that reads back to the same double, without a trailing `.0`
@@ -344,6 +589,82 @@ mod tests {
     use super::*;
     use crate::edge_attrs::EdgeKey;
     use crate::primitives;
+
+    /// Parsing in chunks of a few bytes gives the model (and the first error, with its line)
+    /// that one chunk gives: relative indices, texture and normal counts, tags and line
+    /// numbers all carry across chunk ends.
+    #[test]
+    fn chunks_parse_as_one_text_does() {
+        let text = "# a cube with everything\nv 0 0 0\nv 1 0 0\nvt 0 0\nv 1 1 0\nv 0 1 0\n\
+                    v 0 0 1\nvn 0 0 1\nv 1 0 1\r\nv 1 1 1\nv 0 1 1\nf 1 4 3 2\nf -8/1 -7 -3 -4\n\
+                    f 2/1/1 3 7 6\ng side\nf 3 4 8 7\nf 4 1 5 8\nf 5 6 7 8 # top\n\
+                    t crease 2/1/0 0 1 5.0\nt corner 1/1/0 2 3.0\n";
+        let p = Path::new("c.obj");
+        let one = parse_in(p, text.as_bytes(), &Progress::default(), 1 << 20).unwrap();
+        assert_eq!(one.mesh.num_faces(), 6);
+        for chunk in [1, 7, 16, 40] {
+            let m = parse_in(p, text.as_bytes(), &Progress::default(), chunk).unwrap();
+            assert_eq!(m.mesh, one.mesh, "chunks of {chunk}");
+            assert_eq!(m.vertex_lines, one.vertex_lines);
+            assert_eq!(m.face_lines, one.face_lines);
+            assert_eq!(m.edge_attrs, one.edge_attrs);
+            assert_eq!(m.tags, one.tags);
+        }
+        assert_eq!(one.face_lines[1], 13);
+        let f1: Vec<u32> = one
+            .mesh
+            .face_corners(1)
+            .map(|c| one.mesh.corner_verts[c])
+            .collect();
+        assert_eq!(f1, vec![0, 1, 5, 4]);
+        let bad = format!("{text}f 1 2 9\n");
+        for chunk in [1, 7, 1 << 20] {
+            let e = parse_in(p, bad.as_bytes(), &Progress::default(), chunk)
+                .unwrap_err()
+                .to_string();
+            assert!(e.contains("line 21") && e.contains("vertex index 9"), "{e}");
+        }
+        let e = parse_in(
+            p,
+            b"v 0 0 0\nv 1 0 0\nv 0 \xff 1\n",
+            &Progress::default(),
+            4,
+        )
+        .unwrap_err()
+        .to_string();
+        assert!(e.contains("line 3") && e.contains("not UTF-8"), "{e}");
+    }
+
+    /// A cancelled read stops with `Cancelled`; progress runs to 1 on a whole read.
+    #[test]
+    fn reading_reports_progress_and_stops_when_cancelled() {
+        let dir = std::env::temp_dir().join(format!("prism-progress-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let path = dir.join("cube.obj");
+        write_obj(
+            &path,
+            &primitives::cuboid(DVec3::ZERO, DVec3::ONE),
+            &EdgeAttrs::default(),
+            &SubdivTags::default(),
+        )
+        .unwrap();
+        let progress = Progress::default();
+        read_obj_with(&path, &progress).unwrap();
+        assert!(
+            (progress.fraction() - 1.0).abs() < 1e-12,
+            "{}",
+            progress.fraction()
+        );
+        let progress = Progress::default();
+        progress.cancel();
+        let e = read_obj_with(&path, &progress).unwrap_err();
+        assert!(matches!(e, IoError::Cancelled { .. }), "{e}");
+        // Cancelled between parsing chunks: the bytes are read, the parse stops.
+        let bytes = std::fs::read(&path).unwrap();
+        let e = parse_in(&path, &bytes, &progress, 8).unwrap_err();
+        assert!(matches!(e, IoError::Cancelled { .. }), "{e}");
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
 
     /// Coordinates are written as the shortest decimal that reads back to the same double:
     /// tiny values with an exponent (they were printed positionally, 33 characters for

@@ -118,6 +118,10 @@ pub enum SkinError {
         "section {section} is not star-shaped about its centre (a ray from the centre meets its curve more than once): sections with unequal point counts are matched by polar angle and need it; give every section the same number of points instead"
     )]
     NotStarShaped { section: usize },
+    #[error(
+        "sections {a} and {b} cannot be matched by polar angle: vertices of one lie on the same ray from the centre of the other (within 1e-9 rad); give every section the same number of points instead"
+    )]
+    NotMatched { a: usize, b: usize },
     #[error("resolution {0} is out of range: 1 to 256 quads a patch side")]
     Resolution(usize),
 }

@@ -139,5 +139,10 @@ pub(super) fn equalise(sections: &mut [Section]) -> Result<Vec<usize>, SkinError
     for k in (1..m).rev() {
         carry(k, k - 1, sections);
     }
+    // Rays closer than SAME_RAY share a vertex: two vertices of one section on one ray of the
+    // next (a section hundreds of millions of times longer than wide) leave counts unequal.
+    if let Some(k) = (1..m).find(|&k| sections[k].points.len() != sections[0].points.len()) {
+        return Err(SkinError::NotMatched { a: 0, b: k });
+    }
     Ok(inserted)
 }
