@@ -9,7 +9,8 @@
 //! Position masks:
 //! - corner (and a Catmull–Clark valence-2 vertex): the vertex itself;
 //! - crease or boundary: `⅔ v + ⅙ (e_a + e_b)` along the two crease edges;
-//! - smooth Catmull–Clark, valence n: `(n² v + 4 Σ e_i + Σ d_i) / (n (n + 5))`;
+//! - smooth Catmull–Clark, valence n: `(n² v + 4 Σ e_i + Σ d_i) / (n (n + 5))` (quads only:
+//!   a level with another polygon is refused, its limit is that of the level after it);
 //! - smooth Loop: `e_w = 1/(n + 3/(8β))` per neighbour, `1 − n e_w` for the vertex.
 //!
 //! Tangents: smooth vertices use the cosine masks (`t₁ = Σ cos(iθ)·…`, `t₂` the same rotated
@@ -68,6 +69,16 @@ pub fn limit_points_ordered(
     let topo = Topology::build(mesh)?;
     topo.require_single_fans(mesh)?;
     super::check_faces(mesh, scheme)?;
+    // The masks' diagonal vertex d_i is the quad's fourth corner: an n-gon has none (its
+    // limit comes from the level after it, where every face is a quad).
+    if scheme == PrimalScheme::CatmullClark
+        && let Some(f) = (0..mesh.num_faces()).find(|&f| mesh.face_corners(f).len() != 4)
+    {
+        return Err(PrimalError::NotQuad {
+            face: f as u32,
+            corners: mesh.face_corners(f).len(),
+        });
+    }
     let sh = sharpness(mesh, &topo, attrs, tags);
     let p = &mesh.positions;
     let cv = &mesh.corner_verts;

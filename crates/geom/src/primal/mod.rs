@@ -94,6 +94,10 @@ pub enum PrimalError {
     HoledFace { face: u32, scheme: &'static str },
     #[error("face {face} has {corners} corners: Loop subdivides triangles only")]
     NotTriangle { face: u32, corners: usize },
+    #[error(
+        "face {face} has {corners} corners: the Catmull–Clark limit masks need quads (refine one level first)"
+    )]
+    NotQuad { face: u32, corners: usize },
     #[error(transparent)]
     TooLarge(#[from] OverBudget),
     #[error(
