@@ -356,6 +356,24 @@ fn bench_prints_the_median_and_peak_memory() {
             .1
             .contains("--radius is not a parameter of doo-sabin")
     );
+    // --edit: a cage vertex moved, every level and the last level's scene, in parts.
+    let o = run("bench assets/tripod.obj --scheme combination:r=0.2 --levels 3 --runs 3 --edit");
+    let (out, err) = text(&o);
+    assert!(o.status.success(), "{err}");
+    let value = |key: &str| -> f64 {
+        out.lines()
+            .find_map(|l| l.strip_prefix(key))
+            .unwrap_or_else(|| panic!("{key} in {out}"))
+            .parse()
+            .unwrap()
+    };
+    let (levels, scene, edit) = (value("levels_ms="), value("scene_ms="), value("edit_ms="));
+    assert!(
+        levels > 0.0 && scene > 0.0 && edit >= levels.max(scene),
+        "{out}"
+    );
+    // 12 faces → 54 → 218 → 866 (F + E + V each step).
+    assert!(out.contains("faces=866"), "{out}");
 }
 
 #[test]

@@ -42,9 +42,13 @@ pub fn loop_newell(mesh: &PolyMesh, vs: &[u32]) -> DVec3 {
     }
 }
 
-/// Newell normal of every face (raw, not normalised).
+/// Newell normal of every face (raw, not normalised), on every core (each face on its own,
+/// so the result is the serial one).
 pub fn face_normals_raw(mesh: &PolyMesh) -> Vec<DVec3> {
+    use rayon::prelude::*;
     (0..mesh.num_faces())
+        .into_par_iter()
+        .with_min_len(4096)
         .map(|f| face_normal_raw(mesh, f))
         .collect()
 }

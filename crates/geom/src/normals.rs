@@ -52,9 +52,15 @@ pub fn smooth_corner_normals(
 
 /// Every corner gets its face's unit normal.
 pub fn flat_corner_normals(mesh: &PolyMesh, raw: &[DVec3]) -> Vec<DVec3> {
+    use rayon::prelude::*;
+    let unit: Vec<DVec3> = raw
+        .par_iter()
+        .with_min_len(4096)
+        .map(|&r| unit_or_zero(r))
+        .collect();
     let mut n = vec![DVec3::ZERO; mesh.num_corners()];
-    for (f, &r) in raw.iter().enumerate() {
-        n[mesh.face_corners(f)].fill(unit_or_zero(r));
+    for (f, &u) in unit.iter().enumerate() {
+        n[mesh.face_corners(f)].fill(u);
     }
     n
 }

@@ -4,8 +4,10 @@
 //! A face is projected onto its own plane (Newell normal, [`crate::geometry::face_normal_raw`])
 //! and cut into triangles by ear clipping with hole bridging (`earcutr`, the Rust port of
 //! Mapbox's earcut); triangles come back oriented like the face. A triangle is returned as
-//! it is; a face whose outline is too degenerate for ear clipping falls back to a fan, so it
-//! stays visible and keeps its area.
+//! it is; a quad is cut along the diagonal that leaves both halves facing like the face (the
+//! one through its reflex corner when it is concave; 0–2 when both do), without the ear
+//! clipper's allocations — most faces of a refined level are quads; a face whose outline is
+//! too degenerate for ear clipping falls back to a fan, so it stays visible and keeps its area.
 
 use crate::geometry::{face_normal_raw, unit_or_zero};
 use crate::mesh::PolyMesh;
@@ -20,6 +22,17 @@ pub fn face_triangles(mesh: &PolyMesh, f: usize, normal: DVec3) -> Vec<[u32; 3]>
     if loops.len() == 1 && n == 3 {
         let s = outer.start as u32;
         return vec![[s, s + 1, s + 2]];
+    }
+    if loops.len() == 1 && n == 4 {
+        let s = outer.start as u32;
+        let p = |i: u32| mesh.positions[mesh.corner_verts[(s + i) as usize] as usize];
+        let faces_up = |a: u32, b: u32, c: u32| (p(b) - p(a)).cross(p(c) - p(a)).dot(normal) > 0.0;
+        if faces_up(0, 1, 2) && faces_up(0, 2, 3) {
+            return vec![[s, s + 1, s + 2], [s, s + 2, s + 3]];
+        }
+        if faces_up(1, 2, 3) && faces_up(1, 3, 0) {
+            return vec![[s + 1, s + 2, s + 3], [s + 1, s + 3, s]];
+        }
     }
     let u = normal.any_orthonormal_vector();
     let w = normal.cross(u);
@@ -111,5 +124,29 @@ mod tests {
             assert!((p(t[1]) - p(t[0])).cross(p(t[2]) - p(t[0])).z > 0.0);
         }
         assert!(mesh_triangles(&m, &|_| true).is_empty());
+    }
+
+    /// A concave quad (a dart) is cut through its reflex corner, whichever corner is first.
+    #[test]
+    fn a_concave_quad_is_cut_through_its_reflex_corner() {
+        let dart = [
+            DVec3::new(0.0, 0.0, 0.0),
+            DVec3::new(2.0, 1.0, 0.0),
+            DVec3::new(0.0, 2.0, 0.0),
+            DVec3::new(0.5, 1.0, 0.0), // reflex
+        ];
+        for shift in 0..4 {
+            let mut m = PolyMesh::new();
+            m.positions = (0..4).map(|i| dart[(i + shift) % 4]).collect();
+            m.push_polygon(&[0, 1, 2, 3]);
+            let tris = mesh_triangles(&m, &|_| false);
+            assert_eq!(tris.len(), 2);
+            // Shoelace area of the dart: 1.5.
+            assert!((area(&m, &tris) - 1.5).abs() < 1e-12, "shift {shift}");
+            let p = |v: u32| m.positions[v as usize];
+            for t in &tris {
+                assert!((p(t[1]) - p(t[0])).cross(p(t[2]) - p(t[0])).z > 0.0);
+            }
+        }
     }
 }

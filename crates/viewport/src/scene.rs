@@ -14,6 +14,7 @@ use prism_geom::normals::{flat_corner_normals, smooth_corner_normals};
 use prism_geom::refine::FaceKind;
 use prism_geom::triangulate::face_triangles;
 use prism_geom::{EdgeAttrs, PolyMesh};
+use rayon::prelude::*;
 
 /// How faces are shaded.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -152,7 +153,7 @@ impl Scene {
         mesh: &PolyMesh,
         attrs: &EdgeAttrs,
         kinds: Option<&[FaceKind]>,
-        hidden: &dyn Fn(usize) -> bool,
+        hidden: &(dyn Fn(usize) -> bool + Sync),
         opts: &SceneOptions,
     ) -> Scene {
         let (lo, hi) = mesh.bbox();
@@ -177,6 +178,8 @@ impl Scene {
             ..Scene::default()
         };
         scene.vertices = (0..mesh.num_corners())
+            .into_par_iter()
+            .with_min_len(4096)
             .map(|c| Vertex {
                 position: rel(c),
                 normal: corner_normals[c].as_vec3().to_array(),
@@ -218,11 +221,8 @@ impl Scene {
                 scene.color_range = Some((lo, hi));
             }
         }
-        for f in 0..mesh.num_faces() {
-            if hidden(f) {
-                continue;
-            }
-            if let (ColorBy::Kind, Some(k)) = (opts.color_by, kinds) {
+        if let (ColorBy::Kind, Some(k)) = (opts.color_by, kinds) {
+            for f in (0..mesh.num_faces()).filter(|&f| !hidden(f)) {
                 let col = KIND_COLORS[match k.get(f) {
                     Some(FaceKind::Face) | None => 0,
                     Some(FaceKind::Edge) => 1,
@@ -232,10 +232,17 @@ impl Scene {
                     scene.vertices[c].color = col;
                 }
             }
-            for t in face_triangles(mesh, f, unit_or_zero(raw[f])) {
-                scene.indices.extend_from_slice(&t);
-            }
-            if opts.wireframe {
+        }
+        // Triangles face by face on every core, in face order (the serial result).
+        scene.indices = (0..mesh.num_faces())
+            .into_par_iter()
+            .with_min_len(1024)
+            .filter(|&f| !hidden(f))
+            .flat_map_iter(|f| face_triangles(mesh, f, unit_or_zero(raw[f])))
+            .flatten()
+            .collect();
+        if opts.wireframe {
+            for f in (0..mesh.num_faces()).filter(|&f| !hidden(f)) {
                 for l in mesh.face_loops(f) {
                     let r = mesh.loop_corners(l);
                     for c in r.clone() {

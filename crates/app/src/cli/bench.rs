@@ -28,6 +28,11 @@ pub struct BenchArgs {
     /// Timed runs; the median is reported.
     #[arg(long, default_value_t = 5)]
     pub runs: usize,
+    /// Time an edit as the app sees it instead: a cage vertex moved, every level recomputed
+    /// with everything the app keeps (all levels, their provenance), and the scene of the
+    /// last level built (triangles, normals, colours: the vertex buffers); prints each part.
+    #[arg(long)]
+    pub edit: bool,
     #[command(flatten)]
     pub memory: super::MemoryArgs,
 }
@@ -84,6 +89,9 @@ pub fn run(a: BenchArgs) -> Result<(), CliError> {
     let peak = estimate.estimate_peak() + prism_geom::memory::level_bytes(estimate.input());
     let budget = a.memory.check(peak, "this benchmark")?;
     let doc = estimate.into_last();
+    if a.edit {
+        return edit(doc, steps, budget, a.runs);
+    }
     for run in 1..=a.runs {
         let t = Instant::now();
         if let Scheme::Primal(scheme) = step[0] {
@@ -122,5 +130,60 @@ pub fn run(a: BenchArgs) -> Result<(), CliError> {
         Some(b) => println!("peak_memory_mb={:.1}", b as f64 / (1 << 20) as f64),
         None => println!("peak_memory_mb=unknown"),
     }
+    Ok(())
+}
+
+/// `--edit`: vertex 0 moved by a thousandth of the solid's size (alternately up and back),
+/// then the levels and the last level's scene, as the app's view computes them.
+fn edit(
+    doc: prism_geom::Level,
+    steps: Vec<Scheme>,
+    budget: u64,
+    runs: usize,
+) -> Result<(), CliError> {
+    use crate::gui::model::view_pipe::level_scene;
+    let (lo, hi) = doc.mesh.bbox();
+    let nudge = 1e-3 * (hi - lo).length();
+    let mut mesh = doc.mesh.clone();
+    let (mut compute, mut scene, mut total) = (Vec::new(), Vec::new(), Vec::new());
+    let mut faces = 0;
+    let opts = prism_viewport::SceneOptions::default();
+    for run in 1..=runs {
+        if let Some(p) = mesh.positions.first_mut() {
+            p.z += if run % 2 == 1 { nudge } else { -nudge };
+        }
+        let t = Instant::now();
+        let mut p = Pipeline::with_tags(
+            mesh.clone(),
+            doc.edge_attrs.clone(),
+            doc.tags.clone(),
+            steps.clone(),
+        );
+        p.options.memory_budget = budget;
+        p.options.overlap = prism_geom::rules::Overlap::Clamp;
+        let result = p.compute().map(|_| ());
+        let computed = t.elapsed().as_secs_f64() * 1e3;
+        result.map_err(CliError::input)?;
+        let k = p.levels().len() - 1;
+        let s = level_scene(&p.levels()[k], steps.last().copied(), &opts);
+        let all = t.elapsed().as_secs_f64() * 1e3;
+        faces = p.levels()[k].mesh.num_faces();
+        println!(
+            "run {run}: levels {computed:.2} ms + scene {:.2} ms = {all:.2} ms ({} triangles)",
+            all - computed,
+            s.indices.len() / 3
+        );
+        compute.push(computed);
+        scene.push(all - computed);
+        total.push(all);
+    }
+    let median = |v: &mut Vec<f64>| {
+        v.sort_by(f64::total_cmp);
+        v[v.len() / 2]
+    };
+    println!("faces={faces}");
+    println!("levels_ms={:.2}", median(&mut compute));
+    println!("scene_ms={:.2}", median(&mut scene));
+    println!("edit_ms={:.2}", median(&mut total));
     Ok(())
 }

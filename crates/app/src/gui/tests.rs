@@ -78,6 +78,9 @@ fn the_new_user_walk_through() {
     a.wait_idle();
     let v = &a.model.views[0];
     assert_eq!(v.pipeline.levels().len(), 6);
+    // The status bar's "last edit to picture": the levels and the scene of the last step.
+    let edit = v.last_edit.expect("the edit was timed");
+    assert!(edit.as_secs_f64() < 10.0, "{edit:?}");
     assert_eq!(v.shown(), 5);
     let last = v.pipeline.levels()[5].report.as_ref().unwrap();
     assert!(last.flipped.is_empty());

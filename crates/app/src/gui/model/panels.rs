@@ -426,6 +426,9 @@ impl ModelTab {
         );
         if let Some(r) = &lv.report {
             text += &format!(", {:.2} ms", r.millis);
+            if let Some(t) = v.last_edit {
+                text += &format!(" (last edit to picture {:.0} ms)", t.as_secs_f64() * 1e3);
+            }
             // The radii the rounding run clamped, at every level of it (orange in the view).
             let clamped = v
                 .pipeline

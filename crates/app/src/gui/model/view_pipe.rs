@@ -120,6 +120,11 @@ pub struct ViewPipe {
     sphere: std::sync::OnceLock<(glam::Vec3, f32, usize)>,
     /// Cached fillet measure and what it was made from.
     pub fillet: Option<(FilletKey, String)>,
+    /// When the edit not yet on screen was submitted.
+    edit_started: Option<std::time::Instant>,
+    /// How long the last edit took from its submission to its scene being ready to draw
+    /// (every level recomputed, the vertex buffers built): the status bar shows it.
+    pub last_edit: Option<std::time::Duration>,
 }
 
 impl ViewPipe {
@@ -148,6 +153,8 @@ impl ViewPipe {
             limits: None,
             sphere: std::sync::OnceLock::new(),
             fillet: None,
+            edit_started: None,
+            last_edit: None,
         }
     }
 
@@ -174,7 +181,10 @@ impl ViewPipe {
         next.options.memory_budget = self.budget_override.unwrap_or(budget);
         next.keep = self.keep;
         next.options.overlap = self.overlap;
+        self.edit_started
+            .get_or_insert_with(std::time::Instant::now);
         if next.is_complete() && self.job.is_none() {
+            self.edit_started = None;
             self.replace(next);
             self.error = None;
             return;
@@ -239,6 +249,14 @@ impl ViewPipe {
             {
                 let (k, opts, scene) = *p;
                 self.install_scene(scene, (self.generation, k, opts));
+                if self.wanted.is_none()
+                    && let Some(t) = self.edit_started.take()
+                {
+                    self.last_edit = Some(t.elapsed());
+                }
+            }
+            if self.wanted.is_none() {
+                self.edit_started = None;
             }
         }
         if let Some(next) = self.wanted.take() {
