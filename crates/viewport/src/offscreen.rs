@@ -90,6 +90,11 @@ impl Offscreen {
         self.renderer.upload(&self.device, scene)
     }
 
+    /// Writes `scene` over an uploaded one where it fits ([`Renderer::refill`]).
+    pub fn refill(&self, gpu: &mut GpuScene, scene: &Scene) {
+        self.renderer.refill(&self.device, &self.queue, gpu, scene)
+    }
+
     /// Renders an uploaded scene: one frame, read back as an image.
     pub fn render_uploaded(
         &self,

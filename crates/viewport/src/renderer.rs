@@ -48,6 +48,41 @@ pub struct GpuScene {
     lines: Option<(wgpu::Buffer, u32)>,
 }
 
+const VERTEX: wgpu::BufferUsages = wgpu::BufferUsages::VERTEX.union(wgpu::BufferUsages::COPY_DST);
+const INDEX: wgpu::BufferUsages = wgpu::BufferUsages::INDEX.union(wgpu::BufferUsages::COPY_DST);
+
+/// A buffer holding `data` (written again by [`Renderer::refill`]).
+fn buffer<T: bytemuck::Pod>(
+    device: &wgpu::Device,
+    label: &str,
+    data: &[T],
+    usage: wgpu::BufferUsages,
+) -> wgpu::Buffer {
+    device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+        label: Some(label),
+        contents: bytemuck::cast_slice(data),
+        usage,
+    })
+}
+
+/// Writes `data` over `buf` when it fits, else replaces `buf` by a new buffer.
+fn refill<T: bytemuck::Pod>(
+    device: &wgpu::Device,
+    queue: &wgpu::Queue,
+    buf: &mut wgpu::Buffer,
+    label: &str,
+    data: &[T],
+    usage: wgpu::BufferUsages,
+) {
+    let bytes: &[u8] = bytemuck::cast_slice(data);
+    // wgpu writes whole 4-byte words; every vertex and index here is a multiple of 4.
+    if !bytes.is_empty() && bytes.len() as u64 <= buf.size() {
+        queue.write_buffer(buf, 0, bytes);
+    } else {
+        *buf = buffer(device, label, data, usage);
+    }
+}
+
 /// The camera uniforms of one view; several views (the compare split) draw in one pass,
 /// each with its own slot.
 pub struct CameraSlot {
@@ -164,33 +199,60 @@ impl Renderer {
         camera_slot(device, &self.layout)
     }
 
-    /// Uploads a scene.
+    /// Uploads a scene into new buffers.
     pub fn upload(&self, device: &wgpu::Device, scene: &Scene) -> GpuScene {
-        let vertices = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
-            label: Some("prism vertices"),
-            contents: bytemuck::cast_slice(&scene.vertices),
-            usage: wgpu::BufferUsages::VERTEX,
-        });
-        let indices = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
-            label: Some("prism indices"),
-            contents: bytemuck::cast_slice(&scene.indices),
-            usage: wgpu::BufferUsages::INDEX,
-        });
-        let lines = (!scene.lines.is_empty()).then(|| {
-            (
-                device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
-                    label: Some("prism lines"),
-                    contents: bytemuck::cast_slice(&scene.lines),
-                    usage: wgpu::BufferUsages::VERTEX,
-                }),
-                scene.lines.len() as u32,
-            )
-        });
         GpuScene {
-            vertices,
-            indices,
+            vertices: buffer(device, "prism vertices", &scene.vertices, VERTEX),
+            indices: buffer(device, "prism indices", &scene.indices, INDEX),
             index_count: scene.indices.len() as u32,
-            lines,
+            lines: (!scene.lines.is_empty()).then(|| {
+                (
+                    buffer(device, "prism lines", &scene.lines, VERTEX),
+                    scene.lines.len() as u32,
+                )
+            }),
+        }
+    }
+
+    /// Uploads a scene into `gpu`'s buffers where it fits them (an edit that keeps the
+    /// counts — a vertex dragged, a radius changed — writes over the old data without a new
+    /// allocation on the GPU), into new ones where it does not.
+    pub fn refill(
+        &self,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        gpu: &mut GpuScene,
+        scene: &Scene,
+    ) {
+        refill(
+            device,
+            queue,
+            &mut gpu.vertices,
+            "prism vertices",
+            &scene.vertices,
+            VERTEX,
+        );
+        refill(
+            device,
+            queue,
+            &mut gpu.indices,
+            "prism indices",
+            &scene.indices,
+            INDEX,
+        );
+        gpu.index_count = scene.indices.len() as u32;
+        match (&mut gpu.lines, scene.lines.is_empty()) {
+            (_, true) => gpu.lines = None,
+            (Some((buf, n)), false) => {
+                refill(device, queue, buf, "prism lines", &scene.lines, VERTEX);
+                *n = scene.lines.len() as u32;
+            }
+            (None, false) => {
+                gpu.lines = Some((
+                    buffer(device, "prism lines", &scene.lines, VERTEX),
+                    scene.lines.len() as u32,
+                ))
+            }
         }
     }
 

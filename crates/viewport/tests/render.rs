@@ -87,6 +87,37 @@ fn tripod_scene(pipeline: &str, opts: &SceneOptions, cage: bool) -> Scene {
     scene
 }
 
+/// An edit's scene written over the buffers of the one before renders as the scene
+/// uploaded afresh: a radius changed (same counts, written over), then a level more (more
+/// triangles: new buffers), then the first again (fewer: written over the larger buffers).
+#[test]
+fn refilled_buffers_render_as_fresh_ones() {
+    let gpu = Offscreen::new().expect("a wgpu adapter (install mesa-vulkan-drivers)");
+    let opts = SceneOptions {
+        wireframe: true,
+        ..SceneOptions::default()
+    };
+    let a = tripod_scene("combination:r=0.2,combination:r=0.2", &opts, false);
+    let b = tripod_scene("combination:r=0.35,combination:r=0.35", &opts, false);
+    let c = tripod_scene(
+        "combination:r=0.3,combination:r=0.3,combination:r=0.3",
+        &opts,
+        false,
+    );
+    assert_eq!(a.indices.len(), b.indices.len());
+    let camera = Camera::looking(View::Iso, glam::Vec3::ZERO, a.radius());
+    let mut kept = gpu.upload(&a);
+    for next in [&b, &c, &a] {
+        gpu.refill(&mut kept, next);
+        let refilled = gpu.render_uploaded(&kept, &camera, 160, 120).unwrap();
+        let fresh = gpu.render(next, &camera, 160, 120).unwrap();
+        assert!(refilled == fresh, "a refilled scene renders differently");
+    }
+    let first = gpu.render(&a, &camera, 160, 120).unwrap();
+    let second = gpu.render(&b, &camera, 160, 120).unwrap();
+    assert!(first != second, "the test needs scenes that look different");
+}
+
 #[test]
 fn golden_renders() {
     let gpu = Offscreen::new().expect("a wgpu adapter (install mesa-vulkan-drivers)");

@@ -59,12 +59,21 @@ impl egui_wgpu::CallbackTrait for ViewCallback {
             slot: renderer.camera_slot(device),
             uploaded: None,
         });
-        if v.uploaded.as_ref().map(|u| u.0) != Some(self.version) {
-            v.uploaded = Some((
-                self.version,
-                renderer.upload(device, &self.scene),
-                renderer.upload(device, &self.overlay),
-            ));
+        match &mut v.uploaded {
+            Some((version, _, _)) if *version == self.version => {}
+            // A new version: written over the buffers it fits (an edit keeps the counts).
+            Some((version, scene, overlay)) => {
+                renderer.refill(device, queue, scene, &self.scene);
+                renderer.refill(device, queue, overlay, &self.overlay);
+                *version = self.version;
+            }
+            None => {
+                v.uploaded = Some((
+                    self.version,
+                    renderer.upload(device, &self.scene),
+                    renderer.upload(device, &self.overlay),
+                ))
+            }
         }
         renderer.set_slot_camera(queue, &v.slot, &self.camera, self.aspect);
         Vec::new()
