@@ -106,12 +106,38 @@ impl<'a> Iterator for Words<'a> {
     }
 }
 
-/// The words of `raw` before its comment (`#` to the end of the line).
-fn words(raw: &str) -> Words<'_> {
-    let line = match raw.find('#') {
-        Some(k) => &raw[..k],
-        None => raw,
-    };
+/// The lines of `text` as `str::lines` cuts them (at `\n`, a `\r` before it dropped), each
+/// without its comment (`#` to the end of the line): one `memchr2` a line finds whichever
+/// comes first.
+fn lines(text: &str) -> impl Iterator<Item = &str> {
+    let b = text.as_bytes();
+    let mut at = 0;
+    std::iter::from_fn(move || {
+        if at >= b.len() {
+            return None;
+        }
+        let start = at;
+        let line = match memchr::memchr2(b'\n', b'#', &b[start..]) {
+            Some(k) if b[start + k] == b'\n' => {
+                at = start + k + 1;
+                let line = &text[start..start + k];
+                line.strip_suffix('\r').unwrap_or(line)
+            }
+            Some(k) => {
+                at = memchr::memchr(b'\n', &b[start + k..]).map_or(b.len(), |e| start + k + e + 1);
+                &text[start..start + k]
+            }
+            None => {
+                at = b.len();
+                &text[start..]
+            }
+        };
+        Some(line)
+    })
+}
+
+/// The words of a line without its comment.
+fn words(line: &str) -> Words<'_> {
     if line.is_ascii() {
         Words::Ascii(line, 0)
     } else {
@@ -140,7 +166,7 @@ fn statement(raw: &str) -> (Option<&str>, Words<'_>) {
 
 fn count(text: &str) -> Counts {
     let mut c = Counts::default();
-    for raw in text.lines() {
+    for raw in lines(text) {
         c.lines += 1;
         match statement(raw).0 {
             Some("v") => c.v += 1,
@@ -323,9 +349,9 @@ fn parse_in(
     })
 }
 
-/// A line as messages quote it: without its comment and the blanks around.
-fn line_of(raw: &str) -> &str {
-    raw.split('#').next().unwrap_or("").trim()
+/// A line (without its comment) as messages quote it: without the blanks around.
+fn line_of(line: &str) -> &str {
+    line.trim()
 }
 
 /// One chunk of lines, `start` giving the numbers of the lines and records before it;
@@ -344,7 +370,7 @@ fn parse_chunk(
     };
     let (mut v, mut f) = (0usize, 0usize);
     let (mut textures, mut normals) = (start.vt as i64, start.vn as i64);
-    for (i, raw) in text.lines().enumerate() {
+    for (i, raw) in lines(text).enumerate() {
         let lineno = start.lines + i + 1;
         let (first, mut words) = statement(raw);
         match first {
@@ -633,6 +659,22 @@ mod tests {
         .unwrap_err()
         .to_string();
         assert!(e.contains("line 3") && e.contains("not UTF-8"), "{e}");
+    }
+
+    /// The line cutter is `str::lines` with each line's comment cut off.
+    #[test]
+    fn lines_are_the_standard_lines_without_comments() {
+        for text in [
+            "",
+            "\n",
+            "v 1 2 3\nf 1 2 3",
+            "v 1 2 3 # a\r\n# only\n\nf 1 2 3\r\n",
+            "a\rb\r\n#\n##\nlast\r",
+            "x # y # z\n  # \n\t\n",
+        ] {
+            let want: Vec<&str> = text.lines().map(|l| l.split('#').next().unwrap()).collect();
+            assert_eq!(lines(text).collect::<Vec<_>>(), want, "{text:?}");
+        }
     }
 
     /// A cancelled read stops with `Cancelled`; progress runs to 1 on a whole read.
