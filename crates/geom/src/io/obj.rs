@@ -23,7 +23,6 @@ use crate::progress::Progress;
 use crate::tags::SubdivTags;
 use crate::triangulate::face_vertex_triangles;
 use glam::DVec3;
-use std::fmt::Write as _;
 use std::io::Write as IoWrite;
 use std::path::Path;
 
@@ -494,6 +493,17 @@ fn number(buf: &mut zmij::Buffer, x: f64) -> &str {
     s.strip_suffix(".0").unwrap_or(s)
 }
 
+/// A face corner ` v` or ` v//n` (1-based), the numbers written by `itoa`.
+fn corner(line: &mut String, v: usize, normal: Option<usize>) {
+    let mut b = itoa::Buffer::new();
+    line.push(' ');
+    line.push_str(b.format(v));
+    if let Some(n) = normal {
+        line.push_str("//");
+        line.push_str(b.format(n));
+    }
+}
+
 /// Writes the mesh as OBJ into `w`, streamed; returns the warnings.
 pub fn write_obj_to(
     w: &mut dyn IoWrite,
@@ -531,12 +541,7 @@ pub fn write_obj_to(
             for t in face_vertex_triangles(m, f) {
                 line.push('f');
                 for v in t {
-                    if with_normals {
-                        write!(line, " {}//{}", v + 1, normal(v))
-                    } else {
-                        write!(line, " {}", v + 1)
-                    }
-                    .expect("writing to a String");
+                    corner(line, v as usize + 1, with_normals.then(|| normal(v)));
                 }
                 line.push('\n');
             }
@@ -544,12 +549,7 @@ pub fn write_obj_to(
             line.push('f');
             let l = m.face_loops(f).start;
             for (v, c) in m.loop_verts(l).iter().zip(m.loop_corners(l)) {
-                if with_normals {
-                    write!(line, " {}//{}", v + 1, c + 1)
-                } else {
-                    write!(line, " {}", v + 1)
-                }
-                .expect("writing to a String");
+                corner(line, *v as usize + 1, with_normals.then_some(c + 1));
             }
             line.push('\n');
         }

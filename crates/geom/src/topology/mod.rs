@@ -164,59 +164,14 @@ impl Topology {
         let outgoing =
             |v: u32| &out[out_start[v as usize] as usize..out_start[v as usize + 1] as usize];
 
-        // One pass pairs every half-edge with its twin and numbers the edges: edge e's first
-        // half-edge is the smaller corner index of the pair, so edges come in corner order.
-        let mut twin = vec![NONE; nc];
-        for c in 0..nc {
-            if twin[c] != NONE {
-                continue;
-            }
-            let a = cv[c];
-            let b = cv[next[c] as usize];
-            let mut found = NONE;
-            let mut count = 0;
-            for &(d, dst) in outgoing(b) {
-                if dst == a {
-                    found = d;
-                    count += 1;
-                }
-            }
-            // A third use of the edge: a second b→a half-edge, or a b→a half-edge that an
-            // earlier a→b half-edge already took.
-            if count > 1 || (found != NONE && twin[found as usize] != NONE) {
-                let mut faces: Vec<u32> = outgoing(b)
-                    .iter()
-                    .filter(|&&(_, dst)| dst == a)
-                    .chain(outgoing(a).iter().filter(|&&(_, dst)| dst == b))
-                    .map(|&(e, _)| corner_face[e as usize])
-                    .collect();
-                faces.sort_unstable();
-                faces.dedup();
-                return Err(MeshError::NonManifoldEdge {
-                    a: a.min(b),
-                    b: a.max(b),
-                    faces,
-                });
-            }
-            if found != NONE {
-                twin[c] = found;
-                twin[found as usize] = c as u32;
-            } else {
-                // Without a twin, another a→b half-edge means two faces run the edge the
-                // same way: inconsistent orientation.
-                for &(d, dst) in outgoing(a) {
-                    if d as usize != c && dst == b {
-                        let (f1, f2) = (corner_face[c], corner_face[d as usize]);
-                        return Err(MeshError::InconsistentOrientation {
-                            a,
-                            b,
-                            f1: f1.min(f2),
-                            f2: f1.max(f2),
-                        });
-                    }
-                }
-            }
-        }
+        // Every half-edge looks up its twin on its own, on every core; when each found twin
+        // points back and no half-edge without one has a same-way double, those are the
+        // pairs. Otherwise the serial pass below runs and names the first bad edge.
+        let twin = parallel_twins(cv, &next, &outgoing, nc);
+        let twin = match twin {
+            Some(t) => t,
+            None => serial_twins(cv, &next, &corner_face, &outgoing, nc)?,
+        };
 
         // One outgoing half-edge per vertex; on a boundary the one without a twin, so that
         // walking the ring with `ring_next` from it visits the whole fan.
@@ -408,3 +363,111 @@ impl Topology {
 
 #[cfg(test)]
 mod tests;
+
+/// The twin of every half-edge found by each on its own (in parallel), or `None` when the
+/// pairs are not all mutual and unique (a non-manifold edge, an inconsistent orientation):
+/// then [`serial_twins`] finds the first problem in corner order. When it gives pairs, they
+/// are the ones the serial pass gives.
+fn parallel_twins<'a>(
+    cv: &[u32],
+    next: &[u32],
+    outgoing: &(dyn Fn(u32) -> &'a [(u32, u32)] + Sync),
+    nc: usize,
+) -> Option<Vec<u32>> {
+    use rayon::prelude::*;
+    const TWICE: u32 = NONE - 1;
+    let found: Vec<u32> = (0..nc)
+        .into_par_iter()
+        .with_min_len(1 << 14)
+        .map(|c| {
+            let (a, b) = (cv[c], cv[next[c] as usize]);
+            let mut found = NONE;
+            for &(d, dst) in outgoing(b) {
+                if dst == a {
+                    if found != NONE {
+                        return TWICE;
+                    }
+                    found = d;
+                }
+            }
+            found
+        })
+        .collect();
+    let sound = (0..nc).into_par_iter().with_min_len(1 << 14).all(|c| {
+        let t = found[c];
+        if t == TWICE {
+            return false;
+        }
+        if t != NONE {
+            return found[t as usize] == c as u32;
+        }
+        let (a, b) = (cv[c], cv[next[c] as usize]);
+        !outgoing(a)
+            .iter()
+            .any(|&(d, dst)| d as usize != c && dst == b)
+    });
+    sound.then_some(found)
+}
+
+/// One pass in corner order pairs every half-edge with its twin, or names the first edge
+/// used three times or run the same way by two faces.
+fn serial_twins<'a>(
+    cv: &[u32],
+    next: &[u32],
+    corner_face: &[u32],
+    outgoing: &dyn Fn(u32) -> &'a [(u32, u32)],
+    nc: usize,
+) -> Result<Vec<u32>, MeshError> {
+    let mut twin = vec![NONE; nc];
+    for c in 0..nc {
+        if twin[c] != NONE {
+            continue;
+        }
+        let a = cv[c];
+        let b = cv[next[c] as usize];
+        let mut found = NONE;
+        let mut count = 0;
+        for &(d, dst) in outgoing(b) {
+            if dst == a {
+                found = d;
+                count += 1;
+            }
+        }
+        // A third use of the edge: a second b→a half-edge, or a b→a half-edge that an
+        // earlier a→b half-edge already took.
+        if count > 1 || (found != NONE && twin[found as usize] != NONE) {
+            let mut faces: Vec<u32> = outgoing(b)
+                .iter()
+                .filter(|&&(_, dst)| dst == a)
+                .chain(outgoing(a).iter().filter(|&&(_, dst)| dst == b))
+                .map(|&(e, _)| corner_face[e as usize])
+                .collect();
+            faces.sort_unstable();
+            faces.dedup();
+            return Err(MeshError::NonManifoldEdge {
+                a: a.min(b),
+                b: a.max(b),
+                faces,
+            });
+        }
+        if found != NONE {
+            twin[c] = found;
+            twin[found as usize] = c as u32;
+        } else {
+            // Without a twin, another a→b half-edge means two faces run the edge the
+            // same way: inconsistent orientation.
+            for &(d, dst) in outgoing(a) {
+                if d as usize != c && dst == b {
+                    let (f1, f2) = (corner_face[c], corner_face[d as usize]);
+                    return Err(MeshError::InconsistentOrientation {
+                        a,
+                        b,
+                        f1: f1.min(f2),
+                        f2: f1.max(f2),
+                    });
+                }
+            }
+        }
+    }
+    Ok(twin)
+}
