@@ -111,3 +111,45 @@ fn pinched_vertex_is_refused() {
         Err(MeshError::NonManifoldVertex { vertex: 0, .. })
     ));
 }
+
+/// The twins found on every core are the serial pass's, on a mesh big enough to be cut
+/// into many pieces (a 200 × 150 torus with a hole cut in it: boundary half-edges too); a
+/// mesh the parallel pass cannot pair falls back to the serial pass and its error.
+#[test]
+fn twins_found_in_parallel_are_the_serial_ones() {
+    let mut m = crate::primitives::torus(200, 150, 3.0, 1.0);
+    let mut cut = PolyMesh::new();
+    cut.positions = m.positions.clone();
+    for f in 0..m.num_faces() {
+        if f % 97 != 5 {
+            cut.push_polygon(
+                &m.face_corners(f)
+                    .map(|c| m.corner_verts[c])
+                    .collect::<Vec<_>>(),
+            );
+        }
+    }
+    for mesh in [&m, &cut] {
+        let t = Topology::build(mesh).unwrap();
+        let cv = &mesh.corner_verts;
+        let (nv, nc) = (mesh.num_vertices(), mesh.num_corners());
+        let mut out: Vec<Vec<(u32, u32)>> = vec![Vec::new(); nv];
+        for c in 0..nc {
+            out[cv[c] as usize].push((c as u32, cv[t.next[c] as usize]));
+        }
+        let serial = serial_twins(cv, &t.next, &t.corner_face, &|v| &out[v as usize][..], nc);
+        assert_eq!(serial.unwrap(), t.twin);
+    }
+    assert!(t_has_boundary(&cut));
+    // A face repeated: every edge of it is used three times.
+    m.push_polygon(&[0, 1, 151]);
+    m.push_polygon(&[0, 1, 151]);
+    assert!(matches!(
+        Topology::build(&m),
+        Err(MeshError::NonManifoldEdge { .. } | MeshError::InconsistentOrientation { .. })
+    ));
+}
+
+fn t_has_boundary(m: &PolyMesh) -> bool {
+    Topology::build(m).unwrap().twin.contains(&NONE)
+}
