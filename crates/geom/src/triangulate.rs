@@ -16,22 +16,33 @@ use glam::DVec3;
 /// Triangles of face `f` as *corner* indices (into `mesh.corner_verts`), oriented like
 /// `normal` (the face's unit normal).
 pub fn face_triangles(mesh: &PolyMesh, f: usize, normal: DVec3) -> Vec<[u32; 3]> {
+    let mut out = Vec::new();
+    push_face_triangles(mesh, f, normal, &mut out);
+    out
+}
+
+/// As [`face_triangles`], appended to `out`: a triangle or a quad allocates nothing (the
+/// scene of a level pushes every face's triangles into one buffer a chunk of faces).
+pub fn push_face_triangles(mesh: &PolyMesh, f: usize, normal: DVec3, out: &mut Vec<[u32; 3]>) {
     let loops = mesh.face_loops(f);
     let outer = mesh.loop_corners(loops.start);
     let n = outer.len();
     if loops.len() == 1 && n == 3 {
         let s = outer.start as u32;
-        return vec![[s, s + 1, s + 2]];
+        out.push([s, s + 1, s + 2]);
+        return;
     }
     if loops.len() == 1 && n == 4 {
         let s = outer.start as u32;
         let p = |i: u32| mesh.positions[mesh.corner_verts[(s + i) as usize] as usize];
         let faces_up = |a: u32, b: u32, c: u32| (p(b) - p(a)).cross(p(c) - p(a)).dot(normal) > 0.0;
         if faces_up(0, 1, 2) && faces_up(0, 2, 3) {
-            return vec![[s, s + 1, s + 2], [s, s + 2, s + 3]];
+            out.extend([[s, s + 1, s + 2], [s, s + 2, s + 3]]);
+            return;
         }
         if faces_up(1, 2, 3) && faces_up(1, 3, 0) {
-            return vec![[s + 1, s + 2, s + 3], [s + 1, s + 3, s]];
+            out.extend([[s + 1, s + 2, s + 3], [s + 1, s + 3, s]]);
+            return;
         }
     }
     let u = normal.any_orthonormal_vector();
@@ -52,19 +63,18 @@ pub fn face_triangles(mesh: &PolyMesh, f: usize, normal: DVec3) -> Vec<[u32; 3]>
     let tris = earcutr::earcut(&coords, &holes, 2).unwrap_or_default();
     if tris.is_empty() {
         let s = outer.start as u32;
-        return (1..n as u32 - 1).map(|i| [s, s + i, s + i + 1]).collect();
+        out.extend((1..n as u32 - 1).map(|i| [s, s + i, s + i + 1]));
+        return;
     }
     let p = |c: u32| mesh.positions[mesh.corner_verts[c as usize] as usize];
-    tris.chunks_exact(3)
-        .map(|t| {
-            let [a, b, c] = [corners[t[0]], corners[t[1]], corners[t[2]]];
-            if (p(b) - p(a)).cross(p(c) - p(a)).dot(normal) < 0.0 {
-                [a, c, b]
-            } else {
-                [a, b, c]
-            }
-        })
-        .collect()
+    out.extend(tris.chunks_exact(3).map(|t| {
+        let [a, b, c] = [corners[t[0]], corners[t[1]], corners[t[2]]];
+        if (p(b) - p(a)).cross(p(c) - p(a)).dot(normal) < 0.0 {
+            [a, c, b]
+        } else {
+            [a, b, c]
+        }
+    }));
 }
 
 /// Triangles of face `f` as *vertex* indices, oriented like the face.

@@ -12,7 +12,7 @@ use glam::{DVec3, Vec3};
 use prism_geom::geometry::{face_normals_raw, unit_or_zero};
 use prism_geom::normals::{flat_corner_normals, smooth_corner_normals};
 use prism_geom::refine::FaceKind;
-use prism_geom::triangulate::face_triangles;
+use prism_geom::triangulate::push_face_triangles;
 use prism_geom::{EdgeAttrs, PolyMesh};
 use rayon::prelude::*;
 
@@ -233,14 +233,25 @@ impl Scene {
                 }
             }
         }
-        // Triangles face by face on every core, in face order (the serial result).
-        scene.indices = (0..mesh.num_faces())
+        // Triangles in chunks of faces on every core, joined in face order (the serial
+        // result); a chunk fills one buffer.
+        const CHUNK: usize = 8192;
+        let nf = mesh.num_faces();
+        let chunks: Vec<Vec<[u32; 3]>> = (0..nf.div_ceil(CHUNK))
             .into_par_iter()
-            .with_min_len(1024)
-            .filter(|&f| !hidden(f))
-            .flat_map_iter(|f| face_triangles(mesh, f, unit_or_zero(raw[f])))
-            .flatten()
+            .map(|k| {
+                let faces = k * CHUNK..((k + 1) * CHUNK).min(nf);
+                let mut out = Vec::with_capacity(2 * faces.len());
+                for f in faces.filter(|&f| !hidden(f)) {
+                    push_face_triangles(mesh, f, unit_or_zero(raw[f]), &mut out);
+                }
+                out
+            })
             .collect();
+        scene.indices = Vec::with_capacity(3 * chunks.iter().map(Vec::len).sum::<usize>());
+        for c in &chunks {
+            scene.indices.extend(c.iter().flatten());
+        }
         if opts.wireframe {
             for f in (0..mesh.num_faces()).filter(|&f| !hidden(f)) {
                 for l in mesh.face_loops(f) {
@@ -361,6 +372,7 @@ impl Scene {
 mod tests {
     use super::*;
     use prism_geom::primitives;
+    use prism_geom::triangulate::face_triangles;
 
     /// A vertex thrown far away (a broken step) does not shrink the frame to a dot: the
     /// robust sphere holds the torus, and the far corners are counted.
