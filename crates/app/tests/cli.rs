@@ -262,6 +262,17 @@ fn limit_equals_opensubdiv_and_refined_output_refines_on() {
     ]);
     assert!(o.status.success(), "{:?}", text(&o));
     let (v, n) = read_v_vn(&out);
+    // Numbers as every OBJ Prism writes: the shortest decimal that reads back the same (no
+    // 30-digit positional tiny values, no trailing `.0`).
+    let written = std::fs::read_to_string(&out).unwrap();
+    for word in written
+        .lines()
+        .filter(|l| l.starts_with('v'))
+        .flat_map(|l| l.split_whitespace().skip(1))
+    {
+        assert!(word.parse::<f64>().is_ok(), "{word}");
+        assert!(word.len() <= 24 && !word.ends_with(".0"), "{word}");
+    }
     let reference = Path::new(env!("CARGO_MANIFEST_DIR")).join(
         "../../crates/geom/tests/data/opensubdiv/reference/catmark_cube_creases1.L1.limit.obj.gz",
     );

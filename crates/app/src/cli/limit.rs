@@ -90,12 +90,9 @@ pub fn run(a: LimitArgs) -> Result<(), CliError> {
             a.levels,
             scheme.name()
         )?;
-        for p in &lim.positions {
-            writeln!(w, "v {} {} {}", p.x, p.y, p.z)?;
-        }
-        for n in &lim.normals {
-            writeln!(w, "vn {} {} {}", n.x, n.y, n.z)?;
-        }
+        // Shortest round-trip decimals, as every OBJ Prism writes.
+        prism_geom::io::write_point_lines(w, "v", &lim.positions)?;
+        prism_geom::io::write_point_lines(w, "vn", &lim.normals)?;
         for f in 0..mesh.num_faces() {
             if tags.holes.contains(&(f as u32)) {
                 continue;

@@ -19,7 +19,7 @@ pub use inputs::{
 };
 pub use obj::{
     ObjModel, obj_to_string, read_obj, read_obj_str, read_obj_with, write_obj,
-    write_obj_with_normals,
+    write_obj_with_normals, write_point_lines,
 };
 pub use validate::validate_model;
 

@@ -493,6 +493,19 @@ fn number(buf: &mut zmij::Buffer, x: f64) -> &str {
     s.strip_suffix(".0").unwrap_or(s)
 }
 
+/// `TAG x y z` lines for `points` (`v`, `vn`), each number the shortest decimal that reads
+/// back to the same double, formatted on every core (also `prism limit`'s output).
+pub fn write_point_lines(w: &mut dyn IoWrite, tag: &str, points: &[DVec3]) -> std::io::Result<()> {
+    write_parallel(w, points.len(), |line, buf, i| {
+        line.push_str(tag);
+        for x in points[i].to_array() {
+            line.push(' ');
+            line.push_str(number(buf, x));
+        }
+        line.push('\n');
+    })
+}
+
 /// A face corner ` v` or ` v//n` (1-based), the numbers written by `itoa`.
 fn corner(line: &mut String, v: usize, normal: Option<usize>) {
     let mut b = itoa::Buffer::new();
@@ -514,22 +527,11 @@ pub fn write_obj_to(
 ) -> std::io::Result<Vec<String>> {
     let mut warnings = Vec::new();
     w.write_all(b"# written by Prism\n")?;
-    // `v x y z` or `vn x y z`, each number the shortest that reads back the same.
-    let triple = |line: &mut String, buf: &mut zmij::Buffer, tag: &str, p: DVec3| {
-        line.push_str(tag);
-        for x in [p.x, p.y, p.z] {
-            line.push(' ');
-            line.push_str(number(buf, x));
-        }
-        line.push('\n');
-    };
-    write_parallel(w, m.num_vertices(), |line, buf, i| {
-        triple(line, buf, "v", m.positions[i])
-    })?;
+    write_point_lines(w, "v", &m.positions)?;
     // On request, a `vn` per corner, and faces as `v//n`.
     let corner_normals = normals.map(|n| n.corner_normals(m));
     if let Some(cn) = &corner_normals {
-        write_parallel(w, cn.len(), |line, buf, i| triple(line, buf, "vn", cn[i]))?;
+        write_point_lines(w, "vn", cn)?;
     }
     let with_normals = corner_normals.is_some();
     let holed = (0..m.num_faces()).filter(|&f| m.face_has_holes(f)).count();
