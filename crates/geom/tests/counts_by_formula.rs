@@ -163,10 +163,7 @@ fn check_limit(s: u8, loop_scheme: bool, jitter: &[f64]) -> Result<(), TestCaseE
     if pl.compute().is_err() {
         return Ok(()); // A level turned inside out by the jitter: not this test's subject.
     }
-    let p = &pl.levels()[0].mesh.positions;
-    let lo = p.iter().fold(p[0], |a, &b| a.min(b));
-    let hi = p.iter().fold(p[0], |a, &b| a.max(b));
-    let size = (hi - lo).length();
+    let size = pl.levels()[0].mesh.bbox_diagonal();
     let base = usize::from(scheme == PrimalScheme::CatmullClark);
     if scheme == PrimalScheme::CatmullClark {
         let l = &pl.levels()[0];

@@ -142,8 +142,7 @@ fn edit(
     runs: usize,
 ) -> Result<(), CliError> {
     use crate::gui::model::view_pipe::level_scene;
-    let (lo, hi) = doc.mesh.bbox();
-    let nudge = 1e-3 * (hi - lo).length();
+    let nudge = 1e-3 * doc.mesh.bbox_diagonal();
     let mut mesh = doc.mesh.clone();
     let (mut compute, mut scene, mut total) = (Vec::new(), Vec::new(), Vec::new());
     let mut faces = 0;

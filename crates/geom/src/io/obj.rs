@@ -184,7 +184,7 @@ fn chunks(bytes: &[u8], chunk: usize) -> Vec<&[u8]> {
     let mut out = Vec::with_capacity(bytes.len() / chunk + 1);
     let mut rest = bytes;
     while rest.len() > chunk {
-        let cut = match rest[chunk..].iter().position(|&b| b == b'\n') {
+        let cut = match memchr::memchr(b'\n', &rest[chunk..]) {
             Some(k) => chunk + k + 1,
             None => rest.len(),
         };
@@ -244,10 +244,7 @@ fn parse_in(
     // A UTF-8 byte-order mark is not part of the first line; old Mac files end lines with a
     // bare CR (one not before a LF), which would otherwise make the whole file one line.
     let bytes = bytes.strip_prefix("\u{feff}".as_bytes()).unwrap_or(bytes);
-    let bare_cr = bytes
-        .iter()
-        .enumerate()
-        .any(|(i, &b)| b == b'\r' && bytes.get(i + 1) != Some(&b'\n'));
+    let bare_cr = memchr::memchr_iter(b'\r', bytes).any(|i| bytes.get(i + 1) != Some(&b'\n'));
     let converted;
     let bytes = if bare_cr {
         converted = String::from_utf8_lossy(bytes)
@@ -348,11 +345,6 @@ fn parse_in(
     })
 }
 
-/// A line (without its comment) as messages quote it: without the blanks around.
-fn line_of(line: &str) -> &str {
-    line.trim()
-}
-
 /// One chunk of lines, `start` giving the numbers of the lines and records before it;
 /// vertices and the lines of vertices and faces are written into the chunk's slots.
 fn parse_chunk(
@@ -381,7 +373,7 @@ fn parse_chunk(
                         _ => {
                             return Err((
                                 lineno,
-                                format!("'{}' is not a vertex 'v x y z'", line_of(raw)),
+                                format!("'{}' is not a vertex 'v x y z'", raw.trim()),
                             ));
                         }
                     };
@@ -436,7 +428,7 @@ fn parse_chunk(
                         lineno,
                         format!(
                             "a face needs at least 3 vertices, '{}' has {size}",
-                            line_of(raw),
+                            raw.trim(),
                         ),
                     ));
                 }
