@@ -3,19 +3,21 @@
 //! A flat edge (bend angle below a tolerance) gets cut width 0, so its EDGE-face would have
 //! zero area, and at a T-junction eq. (4) divides by sin φ = 0. Coplanar splits do not change
 //! the solid, so Prism merges the faces on either side of every flat edge (the union may
-//! acquire holes: supported), then removes vertices left with two collinear edges. A merged
+//! acquire holes: supported), then removes vertices left with two edges that meet at more than 120°. A merged
 //! face carries the vertex-neighbourhood flag if any part had it. A region whose boundary
 //! touches itself at a vertex (a pinch) cannot be one face: refused with the vertex named.
 
 use crate::edge_attrs::{EdgeAttrs, EdgeKey};
 use crate::mesh::PolyMesh;
-use crate::rules::dissolve_needed;
 use crate::topology::{NONE, Topology};
 use glam::DVec3;
 use thiserror::Error;
 
-/// Sine of the angle under which two edges at a vertex count as collinear.
-const COLLINEAR_SIN: f64 = 1e-9;
+/// A vertex left with two edges is removed when they are straighter than this (cosine of
+/// their angle: 120°). Collinear ones change nothing; a kink (a merged face that is not quite
+/// planar meets its neighbour along a bent chain) would give a two-cornered VERTEX-face of
+/// no area in the child, so its vertex goes too and the chain becomes one edge.
+pub(crate) const KINK_COS: f64 = -0.5;
 
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum DissolveError {
@@ -47,17 +49,17 @@ fn find(parent: &mut [u32], mut x: u32) -> u32 {
     x
 }
 
-/// Merges the faces across every edge with |bend| < `tol`; `None` when there is none.
+/// Merges the faces across every edge marked in `flat` (one flag an edge of `topo`); `None`
+/// when there is none. `face_flags` are the combination run's vertex-neighbourhood flags,
+/// carried to the merged faces.
 pub fn dissolve_flat_edges(
     mesh: &PolyMesh,
     topo: &Topology,
-    bends: &[f64],
+    flat: &[bool],
     raw_normals: &[DVec3],
     face_flags: &[bool],
     attrs: &EdgeAttrs,
-    tol: f64,
 ) -> Result<Option<Dissolved>, DissolveError> {
-    let flat: Vec<bool> = bends.iter().map(|&b| dissolve_needed(b, tol)).collect();
     let dissolved_edges = flat.iter().filter(|&&f| f).count();
     if dissolved_edges == 0 {
         return Ok(None);
@@ -163,7 +165,7 @@ pub fn dissolve_flat_edges(
         );
     }
 
-    // Remove vertices with exactly two corners whose edges are collinear.
+    // Remove vertices with exactly two corners whose edges meet at more than 120°.
     let nv = out.num_vertices();
     let mut count = vec![0u32; nv];
     for &v in &out.corner_verts {
@@ -181,7 +183,7 @@ pub fn dissolve_flat_edges(
             let p = out.positions[v];
             let a = (out.positions[vs[(i + n - 1) % n] as usize] - p).normalize_or_zero();
             let b = (out.positions[vs[(i + 1) % n] as usize] - p).normalize_or_zero();
-            if a.cross(b).length() < COLLINEAR_SIN && a.dot(b) < 0.0 {
+            if a.dot(b) < KINK_COS {
                 remove[v] = true;
             }
         }

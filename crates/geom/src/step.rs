@@ -100,6 +100,9 @@ pub struct StepReport {
     /// Faces the combination rule moved into the vertex blend because their cut points
     /// would have folded a new face ([`rules::unfold`]).
     pub unfolded_faces: usize,
+    /// What the combination rule's last resort did ([`rules::untangle`]): points of new
+    /// faces still flipped after the fold guard, smoothed until none is, and how far.
+    pub untangled: rules::Untangled,
     /// Signed volume of the result (negative: inside out).
     pub volume: f64,
     /// Wall time of the step in milliseconds.
@@ -167,6 +170,11 @@ pub fn biquadratic_step_carrying(
     } else {
         Vec::new()
     };
+    let untangled = if is_combination {
+        rules::untangle(cur, topo, &prep.normals, &mut points)
+    } else {
+        rules::Untangled::default()
+    };
     let (out, prov) = dual_quad::split(cur, topo, points);
     let new_attrs = refine::propagate(
         cur,
@@ -191,6 +199,7 @@ pub fn biquadratic_step_carrying(
         clamped_faces: prep.clamped_faces,
         collapsed_corners: rule_report.collapsed_corners,
         unfolded_faces: unfolded.len(),
+        untangled,
         volume: checked.volume,
         millis: start.elapsed().as_secs_f64() * 1e3,
     };

@@ -269,6 +269,12 @@ fn warn_level(k: usize, r: &StepReport, before: f64) {
             r.unfolded_faces
         );
     }
+    if r.untangled.points > 0 {
+        eprintln!(
+            "note: level {k}: {} point(s) of folded sliver faces smoothed until none was flipped (largest move {:.3e})",
+            r.untangled.points, r.untangled.largest_move
+        );
+    }
     if r.guarded_corners > 0 {
         eprintln!(
             "note: level {k}: {} straight corner(s) with unequal cut widths capped",

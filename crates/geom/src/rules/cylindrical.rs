@@ -92,7 +92,8 @@ pub(super) fn prepare<'a>(
     let mut p_flags = flags.map(<[bool]>::to_vec);
     let mut dissolved_edges = 0;
     let mut old_vertex = None;
-    let d = dissolve_flat_edges(mesh, &topo, &bends, &raw, flags.unwrap_or(&[]), attrs, tol)?;
+    let flat = flat_edges(mesh, &topo, &bends, flags.unwrap_or(&[]), tol);
+    let d = dissolve_flat_edges(mesh, &topo, &flat, &raw, flags.unwrap_or(&[]), attrs)?;
     if let Some(d) = d {
         (topo, _, normals, bends) = level(&d.mesh, None)?;
         dissolved_edges = d.dissolved_edges;
@@ -189,6 +190,67 @@ pub(super) fn prepare<'a>(
         clamped,
         capped_edges,
     })
+}
+
+/// The edges a cylindrical-family step merges away first (cylindrical.md, "Flat edges"): those
+/// with |ψ| below the flat tolerance. In a combination run an edge with a vertex-blend face on
+/// either side stays: the blend's Doo–Sabin points need no cut width, so nothing divides by
+/// zero there, and merging blend faces made rings (a torus's flat top) where Doo–Sabin is
+/// undefined — unless keeping it would leave a vertex with two edges at 120° or less (a blend
+/// face kept as an island inside a merged face), whose VERTEX-face would have two corners.
+fn flat_edges(
+    mesh: &PolyMesh,
+    topo: &Topology,
+    bends: &[f64],
+    flags: &[bool],
+    tol: f64,
+) -> Vec<bool> {
+    let blend = |c: u32| {
+        c != crate::topology::NONE
+            && flags
+                .get(topo.corner_face[c as usize] as usize)
+                .copied()
+                .unwrap_or(false)
+    };
+    let flat_by_bend: Vec<bool> = bends.iter().map(|&psi| dissolve_needed(psi, tol)).collect();
+    let mut flat: Vec<bool> = flat_by_bend
+        .iter()
+        .zip(&topo.edge_corner)
+        .map(|(&f, &c)| f && !(blend(c) || blend(topo.twin[c as usize])))
+        .collect();
+    // A vertex the merge would leave with two edges at 120° or less (a blend face kept as an
+    // island in a merged face) would give a two-cornered VERTEX-face of no area: its flat
+    // blend edges are merged after all.
+    for (v, &start) in topo.vert_corner.iter().enumerate() {
+        if start == crate::topology::NONE {
+            continue;
+        }
+        let ring: Vec<u32> = std::iter::successors(Some(start), |&c| {
+            let n = topo.ring_next(c);
+            (n != start).then_some(n)
+        })
+        .collect();
+        let kept: Vec<usize> = ring
+            .iter()
+            .map(|&c| topo.corner_edge[c as usize] as usize)
+            .filter(|&e| !flat[e])
+            .collect();
+        if kept.len() != 2 {
+            continue;
+        }
+        let p = mesh.positions[v];
+        let dir = |e: usize| {
+            let (a, b) = topo.edge_verts(mesh, e);
+            let o = if a as usize == v { b } else { a };
+            (mesh.positions[o as usize] - p).normalize_or_zero()
+        };
+        if dir(kept[0]).dot(dir(kept[1])) >= crate::dissolve::KINK_COS {
+            for e in kept {
+                flat[e] |= flat_by_bend[e];
+            }
+        }
+    }
+    flat
 }
 
 fn widths(input: &RuleInput, c: usize) -> (f64, f64) {

@@ -28,12 +28,15 @@ pub mod overlap;
 mod prepare;
 pub mod primal;
 mod unfold;
+mod untangle;
 
 pub use combination::CombinationState;
 pub use cylindrical::{cut_width, dissolve_needed};
 pub use overlap::{EdgeFit, Overlap};
 pub use prepare::Prepared;
 pub(crate) use unfold::unfold;
+pub use untangle::Untangled;
+pub(crate) use untangle::untangle;
 
 use crate::mesh::PolyMesh;
 use crate::topology::Topology;

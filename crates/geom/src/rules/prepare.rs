@@ -176,25 +176,37 @@ mod tests {
     }
 
     /// Only the combination rule reads the run's state; flat edges are merged first and
-    /// the state follows the merged faces.
+    /// the state follows the merged faces — except flat edges beside a vertex-blend face,
+    /// which stay (cylindrical.md, "Flat edges": Doo–Sabin needs no cut width there).
     #[test]
     fn the_combination_state_is_read_by_the_combination_rule_only() {
-        // A triangulated cube: each face's diagonal is flat and merged away.
+        // A triangulated cube: each face's diagonal is flat.
         let m = primitives::fan_triangulated(&primitives::cube3());
-        let state = CombinationState {
-            flags: vec![true; m.num_faces()],
-        };
         let attrs = EdgeAttrs::new();
         let comb = CornerRule::Combination { r: 0.1 };
-        let p = comb
-            .prepare(&m, &attrs, Some(&state), &StepOptions::default(), None)
-            .unwrap();
+        let prepared = |flag: bool| {
+            let state = CombinationState {
+                flags: vec![flag; m.num_faces()],
+            };
+            comb.prepare(&m, &attrs, Some(&state), &StepOptions::default(), None)
+                .unwrap()
+        };
+        // Outside the blend the diagonals are merged away.
+        let p = prepared(false);
         let flags = p.combination.as_ref().expect("continues the run");
         assert_eq!(flags.len(), p.mesh.num_faces());
-        assert!(flags.iter().all(|&f| f));
+        assert!(flags.iter().all(|&f| !f));
         assert_eq!(p.dissolved_edges, 6);
         assert_eq!((p.mesh.num_faces(), p.topo.num_edges()), (6, 12));
         assert_eq!(p.cut_widths.len(), 12);
+        // Blend faces keep them.
+        let p = prepared(true);
+        assert!(p.combination.as_ref().unwrap().iter().all(|&f| f));
+        assert_eq!(p.dissolved_edges, 0);
+        assert_eq!((p.mesh.num_faces(), p.topo.num_edges()), (12, 18));
+        let state = CombinationState {
+            flags: vec![true; m.num_faces()],
+        };
         let cyl = CornerRule::Cylindrical { r: 0.1 };
         assert!(
             cyl.prepare(&m, &attrs, Some(&state), &StepOptions::default(), None)
