@@ -310,8 +310,15 @@ impl Pipeline {
                     let next_is_biquadratic =
                         k + 1 < upto && matches!(self.steps[k + 1], Scheme::Biquadratic(_));
                     // The radii are checked against the faces when a run of
-                    // cylindrical-family steps begins (docs/algorithms/cylindrical.md).
-                    let continues_run = k > 0 && self.steps[k - 1].rounds_edges();
+                    // cylindrical-family steps begins, and again where a step of the run
+                    // changes the radius (docs/algorithms/cylindrical.md, "Overlap").
+                    let radius = |s: &Scheme| match s {
+                        Scheme::Biquadratic(r) => r.radius(),
+                        Scheme::Primal(_) => None,
+                    };
+                    let continues_run = k > 0
+                        && self.steps[k - 1].rounds_edges()
+                        && radius(&self.steps[k - 1]) == radius(&self.steps[k]);
                     let options = StepOptions {
                         overlap: if continues_run {
                             Overlap::Unchecked
