@@ -170,12 +170,7 @@ pub fn biquadratic_step_carrying(
     } else {
         Vec::new()
     };
-    let untangled = if is_combination {
-        rules::untangle(cur, topo, &prep.normals, &mut points)
-    } else {
-        rules::Untangled::default()
-    };
-    let (out, prov) = dual_quad::split(cur, topo, points);
+    let (mut out, prov) = dual_quad::split(cur, topo, points);
     let new_attrs = refine::propagate(
         cur,
         topo,
@@ -185,7 +180,21 @@ pub fn biquadratic_step_carrying(
     );
     let combination = is_combination
         .then(|| CombinationState::next(cur, topo, &prov, prep.combination.as_deref(), &unfolded));
-    let checked = check_children(cur, topo, &prep.normals, &out, &prov);
+    let mut checked = check_children(cur, topo, &prep.normals, &out, &prov);
+    // The combination rule's last resort, only where a new face is still flipped: the child's
+    // vertex c is the parent's corner c, so its points are smoothed in place.
+    let mut untangled = rules::Untangled::default();
+    if is_combination && !checked.flipped.is_empty() {
+        let corners: Vec<u32> = checked
+            .flipped
+            .iter()
+            .flat_map(|&f| out.face_corners(f as usize).map(|c| out.corner_verts[c]))
+            .collect();
+        untangled = rules::untangle(cur, topo, &prep.normals, &mut out.positions, corners);
+        if untangled.points > 0 {
+            checked = check_children(cur, topo, &prep.normals, &out, &prov);
+        }
+    }
     let report = StepReport {
         vertices: out.num_vertices(),
         edges: 4 * topo.num_edges(),

@@ -7,22 +7,24 @@
 //! Doo–Sabin points are no better than their cut points: the EDGE-face between two such
 //! faces can cross itself by a few 10⁻⁵ of the solid, and the guard has nothing left to
 //! move. Mesh untangling (as in CGAL's and Mesquite's optimisers) moves the vertices of such
-//! faces, not the connectivity: each point of a flipped new face goes to the mean of its four
-//! neighbours in the child (a dual-quad vertex has four: `next c`, `prev c`, `next(twin c)`,
-//! `twin(prev c)`), all at once, and the faces around the moved points are checked again.
-//! When a round of that does not clear a face, the next one smooths one ring further. The
-//! faces moved are tiny (the largest move is reported), the counts do not change, and where
-//! nothing is flipped — every solid of the paper — nothing moves.
+//! faces, not the connectivity: each point of a flipped new face goes the shortest of ⅛, ¼, ½
+//! or all of the way to the mean of its four neighbours in the child (a dual-quad vertex has
+//! four: `next c`, `prev c`, `next(twin c)`, `twin(prev c)`) that unflips its four faces, all
+//! points judged against the same state, and the faces around the moved points are checked
+//! again; every 16 rounds the smoothed region grows by one ring. The result is kept only when
+//! no face is left flipped and no point moved more than 1 % of the bounding-box diagonal
+//! (the largest move is reported); the counts never change, and where nothing is flipped —
+//! every solid of the paper — it does not run.
 
 use crate::mesh::PolyMesh;
-use crate::topology::{NONE, Topology};
+use crate::topology::Topology;
 use glam::DVec3;
 
 /// Rounds of smoothing before the step gives up (the faces still flipped are reported).
 const ROUNDS: usize = 64;
 
-/// No point moves farther than this × the bounding-box diagonal (nor farther than the longest
-/// edge of its face): untangling mends folds at the scale of noise, it does not reshape.
+/// No point moves farther than this × the bounding-box diagonal: untangling mends folds at
+/// the scale of noise, it does not reshape.
 const MOST_MOVE: f64 = 1e-2;
 
 /// What [`untangle`] did.
@@ -132,29 +134,6 @@ impl NewFaces<'_> {
         n
     }
 
-    /// The corners of every flipped new face (in parallel: one pass over the level).
-    fn all_flipped(&self, pts: &[DVec3]) -> Vec<u32> {
-        use rayon::prelude::*;
-        let (m, t) = (self.mesh, self.topo);
-        let faces = (0..m.num_faces()).into_par_iter().flat_map_iter(|f| {
-            let hit = self.normals[f] != DVec3::ZERO && self.face_flipped(pts, f);
-            hit.then(|| m.face_corners(f).map(|c| c as u32))
-                .into_iter()
-                .flatten()
-        });
-        let edges = (0..t.num_edges()).into_par_iter().flat_map_iter(|e| {
-            self.edge_flipped(pts, e)
-                .then(|| self.edge_corners(e))
-                .into_iter()
-                .flatten()
-        });
-        let verts = (0..m.num_vertices()).into_par_iter().flat_map_iter(|v| {
-            let hit = t.vert_corner[v] != NONE && self.vertex_flipped(pts, v);
-            hit.then(|| self.vertex_corners(v)).into_iter().flatten()
-        });
-        faces.chain(edges).chain(verts).collect()
-    }
-
     /// The corners of every flipped new face that has one of `members` among its corners.
     fn flipped_near(&self, pts: &[DVec3], members: &[u32]) -> Vec<u32> {
         let t = self.topo;
@@ -206,12 +185,14 @@ fn neighbours(t: &Topology, c: u32) -> [u32; 4] {
 }
 
 /// Smooths the points (indexed by corner of `mesh`) of the new faces that are flipped against
-/// their parent element's normal (`normals`: unit face normals of `mesh`).
+/// their parent element's normal (`normals`: unit face normals of `mesh`); `flipped` are the
+/// corners of the faces the step's check found flipped.
 pub(crate) fn untangle(
     mesh: &PolyMesh,
     topo: &Topology,
     normals: &[DVec3],
     pts: &mut [DVec3],
+    flipped: Vec<u32>,
 ) -> Untangled {
     let mut vsum = vec![DVec3::ZERO; mesh.num_vertices()];
     for c in 0..mesh.num_corners() {
@@ -223,7 +204,7 @@ pub(crate) fn untangle(
         normals,
         vsum,
     };
-    let mut flipped = faces.all_flipped(pts);
+    let mut flipped = flipped;
     let mut done = Untangled::default();
     if flipped.is_empty() {
         return done;
