@@ -220,35 +220,42 @@ fn flat_edges(
         .collect();
     // A vertex the merge would leave with two edges at 120° or less (a blend face kept as an
     // island in a merged face) would give a two-cornered VERTEX-face of no area: its flat
-    // blend edges are merged after all.
-    for (v, &start) in topo.vert_corner.iter().enumerate() {
-        if start == crate::topology::NONE {
-            continue;
-        }
-        let ring: Vec<u32> = std::iter::successors(Some(start), |&c| {
+    // blend edges are merged after all. Only the ends of flat edges kept for a blend can be
+    // such vertices; every one is judged on the same flags (no order).
+    let mut ends: Vec<u32> = (0..flat.len())
+        .filter(|&e| flat_by_bend[e] && !flat[e])
+        .flat_map(|e| {
+            let (a, b) = topo.edge_verts(mesh, e);
+            [a, b]
+        })
+        .collect();
+    ends.sort_unstable();
+    ends.dedup();
+    let mut merge = Vec::new();
+    for v in ends {
+        let start = topo.vert_corner[v as usize];
+        let kept: Vec<usize> = std::iter::successors(Some(start), |&c| {
             let n = topo.ring_next(c);
             (n != start).then_some(n)
         })
+        .map(|c| topo.corner_edge[c as usize] as usize)
+        .filter(|&e| !flat[e])
         .collect();
-        let kept: Vec<usize> = ring
-            .iter()
-            .map(|&c| topo.corner_edge[c as usize] as usize)
-            .filter(|&e| !flat[e])
-            .collect();
         if kept.len() != 2 {
             continue;
         }
-        let p = mesh.positions[v];
+        let p = mesh.positions[v as usize];
         let dir = |e: usize| {
             let (a, b) = topo.edge_verts(mesh, e);
-            let o = if a as usize == v { b } else { a };
+            let o = if a == v { b } else { a };
             (mesh.positions[o as usize] - p).normalize_or_zero()
         };
         if dir(kept[0]).dot(dir(kept[1])) >= crate::dissolve::KINK_COS {
-            for e in kept {
-                flat[e] |= flat_by_bend[e];
-            }
+            merge.extend(kept);
         }
+    }
+    for e in merge {
+        flat[e] |= flat_by_bend[e];
     }
     flat
 }

@@ -45,14 +45,19 @@ struct NewFaces<'a> {
     vsum: Vec<DVec3>,
 }
 
+/// Twice the Newell normal of the polygon through `at(c)` for the corners `cs`.
+fn newell_by(cs: &[u32], at: impl Fn(u32) -> DVec3) -> DVec3 {
+    let o = at(cs[0]);
+    let mut acc = DVec3::ZERO;
+    for w in cs[1..].windows(2) {
+        acc += (at(w[0]) - o).cross(at(w[1]) - o);
+    }
+    acc
+}
+
 impl NewFaces<'_> {
     fn newell(pts: &[DVec3], cs: &[u32]) -> DVec3 {
-        let o = pts[cs[0] as usize];
-        let mut acc = DVec3::ZERO;
-        for w in cs[1..].windows(2) {
-            acc += (pts[w[0] as usize] - o).cross(pts[w[1] as usize] - o);
-        }
-        acc
+        newell_by(cs, |k| pts[k as usize])
     }
 
     /// Whether the FACE-face of face `f` is flipped.
@@ -101,14 +106,7 @@ impl NewFaces<'_> {
     fn flipped_around(&self, pts: &[DVec3], c: usize, q: DVec3) -> usize {
         let t = self.topo;
         let at = |k: u32| if k as usize == c { q } else { pts[k as usize] };
-        let newell = |cs: &[u32]| {
-            let o = at(cs[0]);
-            let mut acc = DVec3::ZERO;
-            for w in cs[1..].windows(2) {
-                acc += (at(w[0]) - o).cross(at(w[1]) - o);
-            }
-            acc
-        };
+        let newell = |cs: &[u32]| newell_by(cs, at);
         let f = t.corner_face[c] as usize;
         let mut n = 0;
         if self.normals[f] != DVec3::ZERO {
@@ -192,7 +190,7 @@ pub(crate) fn untangle(
     topo: &Topology,
     normals: &[DVec3],
     pts: &mut [DVec3],
-    flipped: Vec<u32>,
+    mut flipped: Vec<u32>,
 ) -> Untangled {
     let mut vsum = vec![DVec3::ZERO; mesh.num_vertices()];
     for c in 0..mesh.num_corners() {
@@ -204,7 +202,6 @@ pub(crate) fn untangle(
         normals,
         vsum,
     };
-    let mut flipped = flipped;
     let mut done = Untangled::default();
     if flipped.is_empty() {
         return done;
@@ -272,8 +269,8 @@ pub(crate) fn untangle(
         }
         flipped = faces.flipped_near(pts, &members);
     }
-    // Accepted only when it cleared every face and no point moved farther than the longest
-    // edge of its parent face; otherwise the points stay as the guard left them.
+    // Accepted only when it cleared every face and no point moved farther than MOST_MOVE of
+    // the diagonal; otherwise the points stay as the guard left them.
     let mut ok = flipped.is_empty();
     let diagonal = mesh.bbox_diagonal();
     for c in 0..nc {
