@@ -84,6 +84,27 @@ fn rounding_the_tripod_reports_no_flipped_faces() {
     assert!(!written.contains("NaN") && !written.contains("inf"));
 }
 
+/// `--check-crossings` finds faces that pass through each other though none is flipped: two
+/// vector-sum steps on the tripod leave spikes under its arms (docs/algorithms/biquadratic.md);
+/// rounding the tripod leaves none.
+#[test]
+fn crossings_are_found_where_the_flip_test_sees_none() {
+    let (_, so, se) = succeeds_to(
+        "tripod-vs.obj",
+        "subdivide assets/tripod.obj -o {} --pipeline vector-sum:alpha=0.2:reflex=inward,vector-sum:alpha=0.1:reflex=inward --check-crossings",
+    );
+    let last = so.lines().find(|l| l.starts_with("level 2")).unwrap();
+    assert!(last.contains("flipped=0,"), "{last}");
+    assert!(last.contains("crossings=15,"), "{last}");
+    assert!(se.contains("passes through itself at 15 pair(s)"), "{se}");
+    let (_, so, se) = succeeds_to(
+        "tripod-round-checked.obj",
+        "subdivide assets/tripod.obj -o {} --scheme combination --radius 0.2 --levels 3 --check-crossings",
+    );
+    assert_eq!(so.matches("crossings=0,").count(), 3, "{so}");
+    assert!(!se.contains("passes through"), "{se}");
+}
+
 /// The simple type's folding (seed 000 fig. 10) runs and is counted; the step that turns
 /// the solid inside out fails (exit 1), as a failing step does, and nothing is written.
 #[test]

@@ -462,7 +462,8 @@ fn a_radius_changed_within_a_run_is_checked_again() {
 /// one to three steps of any scheme, then two or three combination steps, clamped. Counts the
 /// combination levels that are unsound although every level before them was sound, and holds
 /// that count to what the docs report (87 of 1,200 before untangling, the flat-edge rules
-/// and the radius check within a run; 28 after). About 20 s in release.
+/// and the radius check within a run; 28 after); counting faces that pass through each other
+/// as unsound too, 153 before and 128 after. About 3 minutes in release.
 #[test]
 #[ignore]
 fn random_mixes_of_steps() {
@@ -499,6 +500,8 @@ fn random_mixes_of_steps() {
     ];
     let mut unsound = Vec::new();
     let mut tried = 0;
+    let mut crossing_unsound = 0;
+    let mut crossed_before = 0;
     for seed in [1u64, 7, 11, 13] {
         let mut state = seed;
         let mut draw = |k: usize| {
@@ -526,26 +529,52 @@ fn random_mixes_of_steps() {
             p.options.overlap = Overlap::Clamp;
             p.options.memory_budget = 2 << 30;
             let _ = p.compute();
-            let mut sound_so_far = true;
+            // Without and with the crossing check (analysis::crossings).
+            let mut sound_so_far = [true, true];
+            let mut counted = [false, false];
             for (k, lv) in p.levels().iter().enumerate().skip(1) {
                 let r = lv.report.as_ref().unwrap();
-                let sound = r.flipped.is_empty() && r.degenerate.is_empty() && r.volume > 0.0;
-                let step = text.split(',').nth(k - 1).unwrap();
-                if sound_so_far && !sound && step.starts_with("combination") {
-                    unsound.push(format!(
-                        "{name} {text} level {k}: {} flipped, {} degenerate",
-                        r.flipped.len(),
-                        r.degenerate.len()
-                    ));
-                    break;
+                let faces_ok = r.flipped.is_empty() && r.degenerate.is_empty() && r.volume > 0.0;
+                let crossing = prism_geom::analysis::crossings(&lv.mesh).len();
+                let rounding = text
+                    .split(',')
+                    .nth(k - 1)
+                    .unwrap()
+                    .starts_with("combination");
+                for (i, sound) in [faces_ok, faces_ok && crossing == 0]
+                    .into_iter()
+                    .enumerate()
+                {
+                    if sound_so_far[i] && !sound && rounding && !counted[i] {
+                        counted[i] = true;
+                        if i == 0 {
+                            unsound.push(format!(
+                                "{name} {text} level {k}: {} flipped, {} degenerate",
+                                r.flipped.len(),
+                                r.degenerate.len()
+                            ));
+                        } else {
+                            crossing_unsound += 1;
+                        }
+                    }
+                    if sound_so_far[i] && !sound && !rounding && i == 1 {
+                        crossed_before += 1;
+                    }
+                    sound_so_far[i] &= sound;
                 }
-                sound_so_far &= sound;
             }
         }
     }
     for u in &unsound {
         println!("{u}");
     }
-    println!("{} of {tried} mixes unsound", unsound.len());
+    println!(
+        "{} of {tried} mixes unsound; counting faces that pass through each other too, {crossing_unsound} (and {crossed_before} crossed themselves before rounding)",
+        unsound.len()
+    );
     assert!(unsound.len() <= 28, "{} of {tried}", unsound.len());
+    assert!(
+        crossing_unsound <= 128,
+        "{crossing_unsound} of {tried} with crossings"
+    );
 }

@@ -91,6 +91,11 @@ pub struct SubdivideArgs {
     /// 0-based, as in the file).
     #[arg(long)]
     pub measure_edge: Option<String>,
+    /// Also look at every level for faces that pass through each other (both still facing
+    /// outward, which the flipped count cannot see): `crossings=N` in each level's line and
+    /// a warning naming the first pair. Takes about as long as the step on big levels.
+    #[arg(long)]
+    pub check_crossings: bool,
     /// Normals of the output: `smooth` (split at edges sharper than 40°, as the app's smooth
     /// shading) or `flat` (one a face). glTF always carries them (smooth unless told); OBJ
     /// gets a `vn` a corner only when this is given; STL's are its facets'.
@@ -456,8 +461,14 @@ pub fn run(a: SubdivideArgs) -> Result<(), CliError> {
         } else {
             format!("{} hole faces", level.tags.holes.len())
         };
+        let crossings = a
+            .check_crossings
+            .then(|| prism_geom::analysis::crossings(&level.mesh));
+        let shown = crossings
+            .as_ref()
+            .map_or(String::new(), |c| format!(", crossings={}", c.len()));
         println!(
-            "level {k}: {} vertices, {} edges, {} faces, {check}, {:.2} ms  [{}]",
+            "level {k}: {} vertices, {} edges, {} faces, {check}{shown}, {:.2} ms  [{}]",
             r.vertices,
             r.edges,
             r.faces,
@@ -465,6 +476,12 @@ pub fn run(a: SubdivideArgs) -> Result<(), CliError> {
             steps[k - 1]
         );
         warnings.level(k, r);
+        if let Some(&(f, g)) = crossings.as_ref().and_then(|c| c.first()) {
+            eprintln!(
+                "warning: level {k}: the surface passes through itself at {} pair(s) of faces, e.g. faces {f} and {g}",
+                crossings.as_ref().map_or(0, Vec::len)
+            );
+        }
     });
     if steps
         .iter()

@@ -1,12 +1,14 @@
 //! Analysis that the app shows and the tests assert: counts, the fillet radius reached
-//! along an edge, mean curvature per vertex. Flipped and degenerate faces are found by each step
+//! along an edge, mean curvature per vertex, faces that pass through each other. Flipped and degenerate faces are found by each step
 //! ([`crate::step::check_children`]).
 
 mod counts;
+mod crossings;
 mod curvature;
 mod face_grid;
 mod fillet;
 
 pub use counts::{MeshCounts, counts};
+pub use crossings::{crossings, triangles_cross};
 pub use curvature::mean_curvature;
 pub use fillet::{FilletError, FilletMeasure, FilletSummary, measure_fillet, measure_fillets};

@@ -1,0 +1,187 @@
+//! Where a surface crosses itself: pairs of faces that share no vertex and whose interiors
+//! intersect. The flip test of a step ([`crate::step::check_children`]) sees a face turned
+//! against its parent; it cannot see two faces that pass through each other while both
+//! still face outward — the spikes two vector-sum steps leave under the tripod's arms, the
+//! ears of vector sum as printed at a reflex corner (docs/algorithms/chamfers.md).
+//!
+//! Faces are triangulated as the renderer does ([`crate::triangulate`]); candidate pairs
+//! come from a uniform grid of face boxes ([`super::face_grid::FaceGrid`]) and must have
+//! overlapping boxes; each pair of their triangles is tested as Möller (1997, "A fast
+//! triangle–triangle intersection test") does: each triangle must straddle the other's
+//! plane, and the two segments in which they cut the line where the planes meet must
+//! overlap by more than a relative 1e-9. Coplanar pairs and pairs that only touch are not
+//! counted — so neighbours that share an edge never count, and faces that share a vertex
+//! count only when they pass through each other beyond it (a fold at that vertex).
+
+use super::face_grid::FaceGrid;
+use crate::mesh::PolyMesh;
+use crate::triangulate::face_vertex_triangles;
+use glam::DVec3;
+
+/// Relative tolerance of the plane sides and of the overlap (× the pair's size).
+const TOL: f64 = 1e-9;
+
+/// The pairs of faces `(f, g)`, `f < g`, that cross each other, ascending.
+pub fn crossings(mesh: &PolyMesh) -> Vec<(u32, u32)> {
+    use rayon::prelude::*;
+    let grid = FaceGrid::new(mesh);
+    let tris: Vec<Vec<[u32; 3]>> = (0..mesh.num_faces())
+        .into_par_iter()
+        .map(|f| face_vertex_triangles(mesh, f))
+        .collect();
+    let box_of = |f: usize| -> (DVec3, DVec3) {
+        grid.boxes.get(f).copied().unwrap_or_else(|| {
+            let mut b = (DVec3::splat(f64::INFINITY), DVec3::splat(f64::NEG_INFINITY));
+            for c in mesh.face_corners(f) {
+                let p = mesh.positions[mesh.corner_verts[c] as usize];
+                b = (b.0.min(p), b.1.max(p));
+            }
+            b
+        })
+    };
+    let mut out: Vec<(u32, u32)> = (0..mesh.num_faces())
+        .into_par_iter()
+        .flat_map_iter(|f| {
+            let (lo, hi) = box_of(f);
+            let centre = 0.5 * (lo + hi);
+            let reach = 0.5 * (hi - lo).length();
+            let found: Vec<(u32, u32)> = grid
+                .faces_near(centre, reach)
+                .into_iter()
+                .filter(|&g| g > f)
+                .filter(|&g| {
+                    let (a, b) = box_of(g);
+                    a.cmple(hi).all() && lo.cmple(b).all()
+                })
+                .filter(|&g| faces_cross(mesh, &tris[f], &tris[g]))
+                .map(|g| (f as u32, g as u32))
+                .collect();
+            found
+        })
+        .collect();
+    out.sort_unstable();
+    out
+}
+
+fn faces_cross(mesh: &PolyMesh, a: &[[u32; 3]], b: &[[u32; 3]]) -> bool {
+    let p = |v: u32| mesh.positions[v as usize];
+    a.iter()
+        .any(|ta| b.iter().any(|tb| triangles_cross(ta.map(p), tb.map(p))))
+}
+
+/// Whether two triangles' interiors intersect (not merely touch; coplanar pairs: no). Two
+/// triangles that share a vertex cross only when both cut the other's plane and the two cuts
+/// leave the shared vertex the same way.
+pub fn triangles_cross(a: [DVec3; 3], b: [DVec3; 3]) -> bool {
+    let scale = a
+        .iter()
+        .chain(&b)
+        .fold(0.0f64, |m, p| m.max((*p - a[0]).length()));
+    if scale == 0.0 {
+        return false;
+    }
+    let tol = TOL * scale;
+    let plane = |t: &[DVec3; 3]| {
+        let n = (t[1] - t[0]).cross(t[2] - t[0]);
+        let l = n.length();
+        (l > 0.0).then(|| n / l)
+    };
+    let (Some(na), Some(nb)) = (plane(&a), plane(&b)) else {
+        return false;
+    };
+    // Signed distances of each triangle's vertices to the other's plane, tiny ones zeroed.
+    let side = |t: &[DVec3; 3], n: DVec3, o: DVec3| {
+        t.map(|p| {
+            let d = n.dot(p - o);
+            if d.abs() <= tol { 0.0 } else { d }
+        })
+    };
+    let da = side(&a, nb, b[0]);
+    let db = side(&b, na, a[0]);
+    let one_side = |d: [f64; 3]| d.iter().all(|&x| x >= 0.0) || d.iter().all(|&x| x <= 0.0);
+    if one_side(da) || one_side(db) {
+        // Apart, touching at a vertex or edge, or coplanar.
+        return false;
+    }
+    let dir = na.cross(nb);
+    if dir.length() <= TOL {
+        return false;
+    }
+    let (ia, ib) = (segment(&a, da, dir), segment(&b, db, dir));
+    ia.0.max(ib.0) < ia.1.min(ib.1) - tol
+}
+
+/// The interval, along `dir`, of the segment in which triangle `t` (signed distances `d` to
+/// the other plane, both signs present) cuts that plane.
+fn segment(t: &[DVec3; 3], d: [f64; 3], dir: DVec3) -> (f64, f64) {
+    let mut lo = f64::INFINITY;
+    let mut hi = f64::NEG_INFINITY;
+    let mut add = |p: DVec3| {
+        let s = p.dot(dir);
+        lo = lo.min(s);
+        hi = hi.max(s);
+    };
+    for i in 0..3 {
+        let j = (i + 1) % 3;
+        if d[i] == 0.0 {
+            add(t[i]);
+        }
+        if d[i] * d[j] < 0.0 {
+            add(t[i] + (t[j] - t[i]) * (d[i] / (d[i] - d[j])));
+        }
+    }
+    (lo, hi)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::primitives;
+
+    #[test]
+    fn two_triangles_through_each_other_cross_and_touching_ones_do_not() {
+        let a = [DVec3::ZERO, DVec3::X * 2.0, DVec3::Y * 2.0];
+        // Pierces a's interior.
+        let b = [
+            DVec3::new(0.5, 0.5, -1.0),
+            DVec3::new(0.5, 0.5, 1.0),
+            DVec3::new(3.0, 3.0, 0.5),
+        ];
+        assert!(triangles_cross(a, b));
+        assert!(triangles_cross(b, a));
+        // Stands on a's edge: touches, does not cross.
+        let c = [
+            DVec3::X,
+            DVec3::new(1.0, 0.0, 1.0),
+            DVec3::new(1.0, -1.0, 0.0),
+        ];
+        assert!(!triangles_cross(a, c));
+        // Coplanar and overlapping: not counted.
+        let d = [
+            DVec3::new(0.5, 0.5, 0.0),
+            DVec3::new(3.0, 0.5, 0.0),
+            DVec3::new(0.5, 3.0, 0.0),
+        ];
+        assert!(!triangles_cross(a, d));
+        // Apart.
+        let e = b.map(|p| p + DVec3::Z * 5.0);
+        assert!(!triangles_cross(a, e));
+    }
+
+    /// A closed solid does not cross itself; two boxes pushed into each other do, and the
+    /// pairs found are faces of different boxes.
+    #[test]
+    fn overlapping_boxes_are_found_and_a_single_box_is_clean() {
+        let one = primitives::cuboid(DVec3::ZERO, DVec3::ONE);
+        assert!(crossings(&one).is_empty());
+        assert!(crossings(&primitives::tripod()).is_empty());
+        assert!(crossings(&primitives::torus(24, 12, 3.0, 1.0)).is_empty());
+        let two = primitives::union_disjoint(&[
+            one.clone(),
+            primitives::cuboid(DVec3::splat(0.5), DVec3::splat(1.5)),
+        ]);
+        let pairs = crossings(&two);
+        assert!(!pairs.is_empty());
+        assert!(pairs.iter().all(|&(f, g)| f < 6 && g >= 6), "{pairs:?}");
+    }
+}
