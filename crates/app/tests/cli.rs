@@ -576,6 +576,37 @@ fn render_shows_flipped_faces_close_up() {
     assert!(text(&o).1.contains("0 to 7"), "{:?}", text(&o));
 }
 
+/// Pixels clearly red though shaded (a face lit from behind, seen from below).
+fn dark_red_pixels(path: &Path) -> usize {
+    let img = image::open(path).unwrap().to_rgb8();
+    img.pixels()
+        .filter(|p| p[0] > 90 && p[0] > p[1].saturating_add(50) && p[0] > p[2].saturating_add(50))
+        .count()
+}
+
+/// Faces that pass through each other, drawn in red by `--color-by crossings`: the spikes two
+/// vector-sum steps leave under the tripod's arms, seen from below; none on a rounded tripod.
+#[test]
+fn render_shows_crossing_faces() {
+    let out = tmp("tripod-crossings.png");
+    let (so, _) = succeeds(run_with(
+        "render assets/tripod.obj -o {} --pipeline vector-sum:alpha=0.2:reflex=inward,vector-sum:alpha=0.1:reflex=inward --color-by crossings --eye 4,4,-2.5 --target 1,1,0.5 --size 300x200",
+        &[&out],
+    ));
+    assert!(
+        so.contains("18 face(s) that pass through another drawn in red (15 pair(s))"),
+        "{so}"
+    );
+    let red = dark_red_pixels(&out);
+    assert!(red > 200, "{red} red pixels");
+    let (so, _) = succeeds(run_with(
+        "render assets/tripod.obj -o {} --scheme combination --radius 0.2 --levels 2 --color-by crossings --eye 4,4,-2.5 --target 1,1,0.5 --size 300x200",
+        &[&out],
+    ));
+    assert!(so.contains("0 face(s) that pass through another"), "{so}");
+    assert_eq!(dark_red_pixels(&out), 0);
+}
+
 /// A free camera: `--eye`/`--target` in the model's coordinates agree with the named view
 /// they reproduce; a turntable writes its frames, each a different picture.
 #[test]

@@ -1,5 +1,5 @@
 //! `prism render IN -o OUT.png [--pipeline P | --scheme S --levels N ...] [--shading flat|smooth]
-//! [--wireframe] [--cage] [--color-by uniform|kind|curvature|scheme|flipped] [--size 1280x800]
+//! [--wireframe] [--cage] [--color-by uniform|kind|curvature|scheme|flipped|crossings] [--size 1280x800]
 //! [--view iso|front|top | --eye X,Y,Z --target X,Y,Z] [--fov DEG] [--frame-vertex N]
 //! [--frames N]`: a headless picture with the viewport's renderer, on any adapter (Mesa's
 //! software Vulkan on a machine without a GPU).
@@ -36,6 +36,9 @@ pub enum ColorArg {
     Scheme,
     /// The material colour, with the last step's flipped faces in red.
     Flipped,
+    /// The material colour, with the faces of the last level that pass through another face
+    /// in red (`analysis::crossings`).
+    Crossings,
 }
 
 #[derive(Debug, Clone, Copy, Default, ValueEnum)]
@@ -261,7 +264,7 @@ pub fn run(a: RenderArgs) -> Result<(), CliError> {
             ShadingArg::Smooth => Shading::Smooth,
         },
         color_by: match a.color_by {
-            ColorArg::Uniform | ColorArg::Flipped => ColorBy::Uniform,
+            ColorArg::Uniform | ColorArg::Flipped | ColorArg::Crossings => ColorBy::Uniform,
             ColorArg::Kind => ColorBy::Kind,
             ColorArg::Curvature => ColorBy::Curvature,
             ColorArg::Scheme => {
@@ -287,6 +290,18 @@ pub fn run(a: RenderArgs) -> Result<(), CliError> {
         let flipped = last.report.as_ref().map_or(&[][..], |r| &r.flipped[..]);
         scene.paint_faces(&last.mesh, flipped, FLIPPED_COLOR);
         println!("{} flipped face(s) drawn in red", flipped.len());
+    }
+    if matches!(a.color_by, ColorArg::Crossings) {
+        let pairs = prism_geom::analysis::crossings(&last.mesh);
+        let mut faces: Vec<u32> = pairs.iter().flat_map(|&(f, g)| [f, g]).collect();
+        faces.sort_unstable();
+        faces.dedup();
+        scene.paint_faces(&last.mesh, &faces, FLIPPED_COLOR);
+        println!(
+            "{} face(s) that pass through another drawn in red ({} pair(s))",
+            faces.len(),
+            pairs.len()
+        );
     }
     if let (true, Some(p)) = (a.cage, prev) {
         scene.add_cage(p, [0.95, 0.75, 0.25]);
