@@ -3,9 +3,10 @@
 //! A flat edge (bend angle below a tolerance) gets cut width 0, so its EDGE-face would have
 //! zero area, and at a T-junction eq. (4) divides by sin φ = 0. Coplanar splits do not change
 //! the solid, so Prism merges the faces on either side of every flat edge (the union may
-//! acquire holes: supported), then removes vertices left with two edges that meet at more than 120°. A merged
-//! face carries the vertex-neighbourhood flag if any part had it. A region whose boundary
-//! touches itself at a vertex (a pinch) cannot be one face: refused with the vertex named.
+//! acquire holes: supported), then removes vertices left with two edges that meet at more
+//! than 120°. A merged face carries the vertex-neighbourhood flag if any part had it. A
+//! region whose boundary touches itself at a vertex (a pinch) cannot be one face: refused
+//! with the vertex named.
 
 use crate::edge_attrs::{EdgeAttrs, EdgeKey};
 use crate::mesh::PolyMesh;

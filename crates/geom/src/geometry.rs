@@ -64,6 +64,16 @@ pub fn angle_between(a: DVec3, b: DVec3) -> f64 {
     a.cross(b).length().atan2(a.dot(b))
 }
 
+/// The sum of the unit normals of the faces around every vertex: the normal a VERTEX-face of
+/// the dual split is checked against (`step::check_children`, the combination rule's guards).
+pub fn vertex_normal_sums(mesh: &PolyMesh, topo: &Topology, unit_normals: &[DVec3]) -> Vec<DVec3> {
+    let mut vsum = vec![DVec3::ZERO; mesh.num_vertices()];
+    for c in 0..mesh.num_corners() {
+        vsum[mesh.corner_verts[c] as usize] += unit_normals[topo.corner_face[c] as usize];
+    }
+    vsum
+}
+
 /// The bend angle ψ ∈ [0, π] of every edge (angle between the two face normals), signed
 /// negative for a concave (reflex) edge. Boundary edges get 0.
 pub fn signed_bend_angles(mesh: &PolyMesh, topo: &Topology, unit_normals: &[DVec3]) -> Vec<f64> {

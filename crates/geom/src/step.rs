@@ -246,10 +246,7 @@ pub fn check_children(
     child: &PolyMesh,
     prov: &Provenance,
 ) -> ChildCheck {
-    let mut vsum = vec![DVec3::ZERO; parent.num_vertices()];
-    for c in 0..parent.num_corners() {
-        vsum[parent.corner_verts[c] as usize] += parent_normals[topo.corner_face[c] as usize];
-    }
+    let vsum = crate::geometry::vertex_normal_sums(parent, topo, parent_normals);
     let d = child.bbox_diagonal();
     let tiny = DEGENERATE_AREA * d * d;
     let mut out = ChildCheck::default();

@@ -476,10 +476,11 @@ pub fn run(a: SubdivideArgs) -> Result<(), CliError> {
             steps[k - 1]
         );
         warnings.level(k, r);
-        if let Some(&(f, g)) = crossings.as_ref().and_then(|c| c.first()) {
+        if let Some(c) = crossings.as_ref().filter(|c| !c.is_empty()) {
+            let (f, g) = c[0];
             eprintln!(
                 "warning: level {k}: the surface passes through itself at {} pair(s) of faces, e.g. faces {f} and {g}",
-                crossings.as_ref().map_or(0, Vec::len)
+                c.len()
             );
         }
     });

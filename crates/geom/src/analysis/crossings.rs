@@ -1,5 +1,4 @@
-//! Where a surface crosses itself: pairs of faces that share no vertex and whose interiors
-//! intersect. The flip test of a step ([`crate::step::check_children`]) sees a face turned
+//! Where a surface crosses itself: pairs of faces whose interiors intersect. The flip test of a step ([`crate::step::check_children`]) sees a face turned
 //! against its parent; it cannot see two faces that pass through each other while both
 //! still face outward — the spikes two vector-sum steps leave under the tripod's arms, the
 //! ears of vector sum as printed at a reflex corner (docs/algorithms/chamfers.md).
@@ -13,7 +12,7 @@
 //! counted — so neighbours that share an edge never count, and faces that share a vertex
 //! count only when they pass through each other beyond it (a fold at that vertex).
 
-use super::face_grid::FaceGrid;
+use super::face_grid::{FaceGrid, face_box};
 use crate::mesh::PolyMesh;
 use crate::triangulate::face_vertex_triangles;
 use glam::DVec3;
@@ -29,15 +28,12 @@ pub fn crossings(mesh: &PolyMesh) -> Vec<(u32, u32)> {
         .into_par_iter()
         .map(|f| face_vertex_triangles(mesh, f))
         .collect();
-    let box_of = |f: usize| -> (DVec3, DVec3) {
-        grid.boxes.get(f).copied().unwrap_or_else(|| {
-            let mut b = (DVec3::splat(f64::INFINITY), DVec3::splat(f64::NEG_INFINITY));
-            for c in mesh.face_corners(f) {
-                let p = mesh.positions[mesh.corner_verts[c] as usize];
-                b = (b.0.min(p), b.1.max(p));
-            }
-            b
-        })
+    // The grid keeps no boxes when a face has no finite one (it then lists every face).
+    let box_of = |f: usize| {
+        grid.boxes
+            .get(f)
+            .copied()
+            .unwrap_or_else(|| face_box(mesh, f))
     };
     let mut out: Vec<(u32, u32)> = (0..mesh.num_faces())
         .into_par_iter()

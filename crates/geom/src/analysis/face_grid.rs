@@ -18,6 +18,16 @@ const BIG: usize = 512;
 /// The most cells the grid has.
 const MAX_CELLS: f64 = 4e6;
 
+/// The bounding box of face `f` (infinite bounds when it has no corner).
+pub(super) fn face_box(mesh: &PolyMesh, f: usize) -> (DVec3, DVec3) {
+    let mut b = (DVec3::splat(f64::INFINITY), DVec3::splat(f64::NEG_INFINITY));
+    for c in mesh.face_corners(f) {
+        let p = mesh.positions[mesh.corner_verts[c] as usize];
+        b = (b.0.min(p), b.1.max(p));
+    }
+    b
+}
+
 /// Faces by grid cell, with every face's box.
 #[derive(Debug, Clone)]
 pub struct FaceGrid {
@@ -34,14 +44,7 @@ pub struct FaceGrid {
 impl FaceGrid {
     pub fn new(mesh: &PolyMesh) -> FaceGrid {
         let boxes: Vec<(DVec3, DVec3)> = (0..mesh.num_faces())
-            .map(|f| {
-                let mut b = (DVec3::splat(f64::INFINITY), DVec3::splat(f64::NEG_INFINITY));
-                for c in mesh.face_corners(f) {
-                    let p = mesh.positions[mesh.corner_verts[c] as usize];
-                    b = (b.0.min(p), b.1.max(p));
-                }
-                b
-            })
+            .map(|f| face_box(mesh, f))
             .filter(|b| b.0.is_finite() && b.1.is_finite())
             .collect();
         let (lo, hi) = boxes.iter().fold(

@@ -1,6 +1,6 @@
 //! Analysis that the app shows and the tests assert: counts, the fillet radius reached
-//! along an edge, mean curvature per vertex, faces that pass through each other. Flipped and degenerate faces are found by each step
-//! ([`crate::step::check_children`]).
+//! along an edge, mean curvature per vertex, faces that pass through each other. Flipped and
+//! degenerate faces are found by each step ([`crate::step::check_children`]).
 
 mod counts;
 mod crossings;

@@ -27,8 +27,14 @@ use crate::topology::{NONE, Topology};
 use glam::DVec3;
 
 /// Newell normal of the polygon through `pts[c]` for the corners `cs`.
-fn newell(pts: &[DVec3], cs: impl Iterator<Item = u32> + Clone) -> DVec3 {
-    let mut it = cs.clone().map(|c| pts[c as usize]);
+fn newell(pts: &[DVec3], cs: impl Iterator<Item = u32>) -> DVec3 {
+    newell_at(cs, |c| pts[c as usize])
+}
+
+/// Newell normal of the polygon through `at(c)` for the corners `cs` (the untangling pass
+/// tries a point at several places without writing it).
+pub(super) fn newell_at(cs: impl Iterator<Item = u32>, at: impl Fn(u32) -> DVec3) -> DVec3 {
+    let mut it = cs.map(at);
     let Some(o) = it.next() else {
         return DVec3::ZERO;
     };
@@ -71,10 +77,7 @@ pub(crate) fn unfold(
     let mut blend: Vec<bool> = (0..nf)
         .map(|f| flags.get(f).copied().unwrap_or(false))
         .collect();
-    let mut vsum = vec![DVec3::ZERO; mesh.num_vertices()];
-    for c in 0..mesh.num_corners() {
-        vsum[mesh.corner_verts[c] as usize] += normals[topo.corner_face[c] as usize];
-    }
+    let vsum = crate::geometry::vertex_normal_sums(mesh, topo, normals);
     let mut moved = Vec::new();
     loop {
         let mut to_move = vec![false; nf];

@@ -16,6 +16,7 @@
 //! (the largest move is reported); the counts never change, and where nothing is flipped —
 //! every solid of the paper — it does not run.
 
+use super::unfold::newell_at;
 use crate::mesh::PolyMesh;
 use crate::topology::Topology;
 use glam::DVec3;
@@ -45,30 +46,13 @@ struct NewFaces<'a> {
     vsum: Vec<DVec3>,
 }
 
-/// Twice the Newell normal of the polygon through `at(c)` for the corners `cs`.
-fn newell_by(cs: &[u32], at: impl Fn(u32) -> DVec3) -> DVec3 {
-    let o = at(cs[0]);
-    let mut acc = DVec3::ZERO;
-    for w in cs[1..].windows(2) {
-        acc += (at(w[0]) - o).cross(at(w[1]) - o);
-    }
-    acc
-}
-
 impl NewFaces<'_> {
-    fn newell(pts: &[DVec3], cs: &[u32]) -> DVec3 {
-        newell_by(cs, |k| pts[k as usize])
-    }
-
-    /// Whether the FACE-face of face `f` is flipped.
-    fn face_flipped(&self, pts: &[DVec3], f: usize) -> bool {
+    /// Whether the FACE-face of face `f` is flipped, the points read through `at`.
+    fn face_flipped(&self, at: impl Fn(u32) -> DVec3 + Copy, f: usize) -> bool {
         let n: DVec3 = self
             .mesh
             .face_loops(f)
-            .map(|l| {
-                let cs: Vec<u32> = self.mesh.loop_corners(l).map(|c| c as u32).collect();
-                Self::newell(pts, &cs)
-            })
+            .map(|l| newell_at(self.mesh.loop_corners(l).map(|c| c as u32), at))
             .sum();
         n.dot(self.normals[f]) < 0.0
     }
@@ -80,61 +64,45 @@ impl NewFaces<'_> {
         [t.next[c as usize], c, t.next[tw as usize], tw]
     }
 
-    fn edge_flipped(&self, pts: &[DVec3], e: usize) -> bool {
+    fn edge_flipped(&self, at: impl Fn(u32) -> DVec3, e: usize) -> bool {
         let t = self.topo;
         let c = t.edge_corner[e] as usize;
         let np = self.normals[t.corner_face[c] as usize]
             + self.normals[t.corner_face[t.twin[c] as usize] as usize];
-        Self::newell(pts, &self.edge_corners(e)).dot(np) < 0.0
+        newell_at(self.edge_corners(e).into_iter(), at).dot(np) < 0.0
     }
 
-    fn vertex_corners(&self, v: usize) -> Vec<u32> {
+    fn vertex_corners(&self, v: usize) -> impl Iterator<Item = u32> + '_ {
         let t = self.topo;
         let start = t.vert_corner[v];
-        std::iter::successors(Some(start), |&c| {
+        std::iter::successors(Some(start), move |&c| {
             let n = t.ring_next(c);
             (n != start).then_some(n)
         })
-        .collect()
     }
 
-    fn vertex_flipped(&self, pts: &[DVec3], v: usize) -> bool {
-        Self::newell(pts, &self.vertex_corners(v)).dot(self.vsum[v]) < 0.0
+    fn vertex_flipped(&self, at: impl Fn(u32) -> DVec3, v: usize) -> bool {
+        newell_at(self.vertex_corners(v), at).dot(self.vsum[v]) < 0.0
     }
 
     /// How many of the four new faces at corner `c` are flipped with `c`'s point at `q`.
     fn flipped_around(&self, pts: &[DVec3], c: usize, q: DVec3) -> usize {
         let t = self.topo;
         let at = |k: u32| if k as usize == c { q } else { pts[k as usize] };
-        let newell = |cs: &[u32]| newell_by(cs, at);
         let f = t.corner_face[c] as usize;
-        let mut n = 0;
-        if self.normals[f] != DVec3::ZERO {
-            let nf: DVec3 = self
-                .mesh
-                .face_loops(f)
-                .map(|l| {
-                    let cs: Vec<u32> = self.mesh.loop_corners(l).map(|k| k as u32).collect();
-                    newell(&cs)
-                })
-                .sum();
-            n += usize::from(nf.dot(self.normals[f]) < 0.0);
-        }
-        for e in [t.corner_edge[c], t.corner_edge[t.prev[c] as usize]] {
-            let e = e as usize;
-            let k = t.edge_corner[e] as usize;
-            let np = self.normals[t.corner_face[k] as usize]
-                + self.normals[t.corner_face[t.twin[k] as usize] as usize];
-            n += usize::from(newell(&self.edge_corners(e)).dot(np) < 0.0);
-        }
-        let v = self.mesh.corner_verts[c] as usize;
-        n += usize::from(newell(&self.vertex_corners(v)).dot(self.vsum[v]) < 0.0);
-        n
+        let face = self.normals[f] != DVec3::ZERO && self.face_flipped(at, f);
+        let edges = [t.corner_edge[c], t.corner_edge[t.prev[c] as usize]]
+            .into_iter()
+            .filter(|&e| self.edge_flipped(at, e as usize))
+            .count();
+        let vertex = self.vertex_flipped(at, self.mesh.corner_verts[c] as usize);
+        usize::from(face) + edges + usize::from(vertex)
     }
 
     /// The corners of every flipped new face that has one of `members` among its corners.
     fn flipped_near(&self, pts: &[DVec3], members: &[u32]) -> Vec<u32> {
         let t = self.topo;
+        let at = |k: u32| pts[k as usize];
         let (mut fs, mut es, mut vs) = (Vec::new(), Vec::new(), Vec::new());
         for &c in members {
             let c = c as usize;
@@ -150,17 +118,17 @@ impl NewFaces<'_> {
         let mut out = Vec::new();
         for f in fs {
             let f = f as usize;
-            if self.normals[f] != DVec3::ZERO && self.face_flipped(pts, f) {
+            if self.normals[f] != DVec3::ZERO && self.face_flipped(at, f) {
                 out.extend(self.mesh.face_corners(f).map(|c| c as u32));
             }
         }
         for e in es {
-            if self.edge_flipped(pts, e as usize) {
+            if self.edge_flipped(at, e as usize) {
                 out.extend(self.edge_corners(e as usize));
             }
         }
         for v in vs {
-            if self.vertex_flipped(pts, v as usize) {
+            if self.vertex_flipped(at, v as usize) {
                 out.extend(self.vertex_corners(v as usize));
             }
         }
@@ -192,15 +160,11 @@ pub(crate) fn untangle(
     pts: &mut [DVec3],
     mut flipped: Vec<u32>,
 ) -> Untangled {
-    let mut vsum = vec![DVec3::ZERO; mesh.num_vertices()];
-    for c in 0..mesh.num_corners() {
-        vsum[mesh.corner_verts[c] as usize] += normals[topo.corner_face[c] as usize];
-    }
     let faces = NewFaces {
         mesh,
         topo,
         normals,
-        vsum,
+        vsum: crate::geometry::vertex_normal_sums(mesh, topo, normals),
     };
     let mut done = Untangled::default();
     if flipped.is_empty() {
