@@ -1008,6 +1008,56 @@ fn envelope_builds_the_bundled_scenes_and_names_bad_ones() {
         "envelope assets/diagonal-cubes.envelope.json -o {} --resolution 4",
     );
     assert!(so.contains("primitives=2 regions=18 patches=54"), "{so}");
+    // Scenes like the paper's Table 2: seven and five primitives of five kinds.
+    let (_, so, _) = succeeds_to(
+        "seven.obj",
+        "envelope assets/table2-seven.envelope.json -o {} --resolution 4",
+    );
+    assert!(
+        so.contains("primitives=7 regions=67 patches=130 removed=0"),
+        "{so}"
+    );
+    let (_, so, _) = succeeds_to(
+        "five.obj",
+        "envelope assets/table2-five.envelope.json -o {} --resolution 4",
+    );
+    assert!(
+        so.contains("primitives=5 regions=50 patches=82 removed=0"),
+        "{so}"
+    );
+    // A cube between two others on a line is swallowed, and named.
+    let row = tmp("row.envelope.json");
+    let cube = |x: f64| {
+        let v: Vec<String> = (0..8)
+            .map(|i| {
+                let s = |b: usize| if i >> b & 1 == 1 { 1.0 } else { -1.0 };
+                format!("[{},{},{}]", x + s(0), s(1), s(2))
+            })
+            .collect();
+        format!(
+            r#"{{"vertices": [{}], "faces": [[0,2,3,1],[4,5,7,6],[0,1,5,4],[2,6,7,3],[0,4,6,2],[1,3,7,5]]}}"#,
+            v.join(",")
+        )
+    };
+    std::fs::write(
+        &row,
+        format!(
+            r#"{{"primitives": [{}, {}, {}]}}"#,
+            cube(0.0),
+            cube(1.5),
+            cube(3.0)
+        ),
+    )
+    .unwrap();
+    let (so, _) = succeeds(run_with("envelope {} -o {}", &[&row, &tmp("row.obj")]));
+    assert!(
+        so.contains("primitives=3 regions=14 patches=14 removed=1"),
+        "{so}"
+    );
+    assert!(
+        so.contains("swallowed by the others") && so.contains("primitive(s) 1"),
+        "{so}"
+    );
     let o = run("envelope assets/cube.envelope.json -o out.obj --t 0");
     assert_eq!(o.status.code(), Some(1));
     assert!(

@@ -1,7 +1,8 @@
 //! The envelope the Envelope tab rebuilds while t or a primitive is dragged
 //! (docs/performance.md): network and patches (`envelope`, what `time_ms=` reports) and, apart,
 //! the K = 8 tessellation, for one cube (6 patches), one hexagonal prism (18), two cubes side by
-//! side (14) and two cubes on a body diagonal (54). Time per patch is the figure to compare as
+//! side (14), two cubes on a body diagonal (54) and the bundled scenes like the paper's Table 2
+//! (five primitives: 82 patches; seven: 130). Time per patch is the figure to compare as
 //! scenes grow.
 
 use prism_geom::freeform::envelope::{EnvelopeSpec, Placement, PrimitiveInput, Shape, envelope};
@@ -25,6 +26,10 @@ fn scene(name: &str) -> EnvelopeSpec {
             vec![Shape::HexagonalPrism { height: 1.0 }.placed(&Placement::default())]
         }
         "two-cubes" => vec![cube([0.0; 3]), cube([3.0, 0.0, 0.0])],
+        "table2-five" => return bundled(include_str!("../../../assets/table2-five.envelope.json")),
+        "table2-seven" => {
+            return bundled(include_str!("../../../assets/table2-seven.envelope.json"));
+        }
         _ => vec![cube([0.0; 3]), cube([3.0, 3.0, 3.0])],
     };
     EnvelopeSpec {
@@ -35,7 +40,21 @@ fn scene(name: &str) -> EnvelopeSpec {
     }
 }
 
-const SCENES: [&str; 4] = ["cube", "hexagonal-prism", "two-cubes", "diagonal-cubes"];
+/// A bundled scene at t = 0.7, like the others.
+fn bundled(text: &str) -> EnvelopeSpec {
+    let mut s: EnvelopeSpec = serde_json::from_str(text).expect("a bundled scene");
+    s.t = 0.7;
+    s
+}
+
+const SCENES: [&str; 6] = [
+    "cube",
+    "hexagonal-prism",
+    "two-cubes",
+    "diagonal-cubes",
+    "table2-five",
+    "table2-seven",
+];
 
 #[divan::bench(args = SCENES)]
 fn network_and_patches(b: divan::Bencher, name: &str) {

@@ -119,6 +119,16 @@ pub fn run(a: EnvelopeArgs) -> Result<(), CliError> {
         e.removed.len(),
         e.largest_border_jump()
     );
+    if !e.removed.is_empty() {
+        println!(
+            "swallowed by the others (centre not a corner of the hull of the centres, seed 004 §5.1.3): primitive(s) {}",
+            e.removed
+                .iter()
+                .map(|i| i.to_string())
+                .collect::<Vec<_>>()
+                .join(", ")
+        );
+    }
     if let Some(path) = &a.curves {
         io::write_atomically(path, curves_obj(&e, 32).as_bytes()).map_err(CliError::input)?;
         println!(

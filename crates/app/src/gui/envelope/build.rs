@@ -1,8 +1,8 @@
 //! The Envelope tab's surface, rebuilt from the document's scene when it changes (one
 //! primitive builds in well under a millisecond, so a drag or the t slider rebuilds it every
 //! frame), with the scene and the overlays drawn from it: the primitives, the curve network
-//! (primitive edges, silhouette edges, fusion edges and insertion curves in their own
-//! colours), the picked vertex.
+//! (primitive edges, silhouette edges, fusion edges, insertion curves and the sections'
+//! straight edges in their own colours), the picked vertex.
 
 use glam::DVec3;
 use prism_geom::freeform::envelope::{CurveKind, Envelope, EnvelopeSpec, envelope};
@@ -19,6 +19,8 @@ pub struct Overlays {
     pub silhouettes: bool,
     pub fusion: bool,
     pub insertions: bool,
+    /// The sections' straight edges (inside the solid).
+    pub straight: bool,
     pub surface: bool,
     pub wireframe: bool,
     pub smooth: bool,
@@ -34,6 +36,7 @@ impl Default for Overlays {
             silhouettes: true,
             fusion: true,
             insertions: true,
+            straight: true,
             surface: true,
             wireframe: false,
             smooth: true,
@@ -47,6 +50,7 @@ pub const EDGE: [f32; 3] = [1.0, 0.85, 0.2];
 pub const SILHOUETTE: [f32; 3] = [1.0, 0.5, 0.15];
 pub const FUSION: [f32; 3] = [0.35, 0.9, 0.4];
 pub const INSERTION: [f32; 3] = [0.3, 0.8, 1.0];
+pub const STRAIGHT: [f32; 3] = [0.85, 0.35, 0.85];
 pub const PICKED: [f32; 3] = [1.0, 0.35, 0.2];
 
 /// One build of the envelope.
@@ -189,6 +193,10 @@ pub fn scenes(
                 })
                 .collect();
             overlay.add_segments(&segs, color);
+        }
+        if o.straight {
+            let segs: Vec<(DVec3, DVec3)> = e.straight.iter().map(|s| (s[0], s[1])).collect();
+            overlay.add_segments(&segs, STRAIGHT);
         }
     }
     if let Some((p, v)) = picked

@@ -3,9 +3,8 @@
 //! by dragging in the view; the global t and a picked vertex's own t; the envelope rebuilt
 //! live with its curve network. Every change is one [`Edit::SetEnvelope`]; a drag is one undo
 //! step.
-//!
-//! This version envelopes one or two primitives; the kernel refuses three or more, saying
-//! so, and the tab offers "Add" only while there is one.
+//! Any number of primitives: those the others swallow (their centre is not a corner of the
+//! hull of the centres) are named in the summary.
 
 mod build;
 
@@ -22,7 +21,7 @@ use prism_viewport::Scene;
 use std::sync::Arc;
 
 /// The bundled scenes: name, file name, contents.
-pub const ENVELOPE_SAMPLES: [(&str, &str, &str); 4] = [
+pub const ENVELOPE_SAMPLES: [(&str, &str, &str); 6] = [
     (
         "One cube (t = 1, Table 1)",
         "cube.envelope.json",
@@ -42,6 +41,16 @@ pub const ENVELOPE_SAMPLES: [(&str, &str, &str); 4] = [
         "Two cubes on a diagonal (t = 0.7)",
         "diagonal-cubes.envelope.json",
         include_str!("../../../../../assets/diagonal-cubes.envelope.json"),
+    ),
+    (
+        "Seven primitives (t = 1, like Table 2 a)",
+        "table2-seven.envelope.json",
+        include_str!("../../../../../assets/table2-seven.envelope.json"),
+    ),
+    (
+        "Five primitives (t = 1, like Table 2 b)",
+        "table2-five.envelope.json",
+        include_str!("../../../../../assets/table2-five.envelope.json"),
     ),
 ];
 
@@ -325,28 +334,28 @@ impl EnvelopeTab {
             }
         });
         ui.horizontal_wrapped(|ui| {
-            if spec.primitives.len() < 2 {
-                ui.menu_button("Add", |ui| {
-                    for (name, shape) in LIBRARY {
-                        if ui.button(name).clicked() {
-                            let mut s = spec.clone();
-                            let at = spec.primitives.get(k).map(centre_of).unwrap_or_default();
-                            let step = DVec3::new(2.5, 0.8, 0.4);
-                            s.primitives
-                                .push(mapped(&shape.placed(&Placement::default()), |v| {
-                                    v + at + step
-                                }));
-                            self.selected = s.primitives.len() - 1;
-                            self.set(Some(s), None);
+            ui.menu_button("Add", |ui| {
+                for (name, shape) in LIBRARY {
+                    if ui.button(name).clicked() {
+                        let mut s = spec.clone();
+                        let at = spec.primitives.get(k).map(centre_of).unwrap_or_default();
+                        // Beside the selected one, clear of every centre in the scene.
+                        let step = DVec3::new(2.5, 0.8, 0.4);
+                        let mut c = at + step;
+                        while spec
+                            .primitives
+                            .iter()
+                            .any(|p| centre_of(p).distance(c) < 1.0)
+                        {
+                            c += step;
                         }
+                        s.primitives
+                            .push(mapped(&shape.placed(&Placement::default()), |v| v + c));
+                        self.selected = s.primitives.len() - 1;
+                        self.set(Some(s), None);
                     }
-                });
-            } else {
-                ui.add_enabled(false, egui::Button::new("Add"))
-                    .on_disabled_hover_text(
-                        "This version envelopes one or two primitives (three or more come next)",
-                    );
-            }
+                }
+            });
             let delete = ui.add_enabled(spec.primitives.len() > 1, egui::Button::new("Delete"));
             if delete
                 .on_disabled_hover_text("The scene needs a primitive; Clear removes the scene")
@@ -402,6 +411,10 @@ impl EnvelopeTab {
         ui.checkbox(&mut o.silhouettes, "Silhouette edges (orange)");
         ui.checkbox(&mut o.fusion, "Fusion edges between primitives (green)");
         ui.checkbox(&mut o.insertions, "Insertion curves of split faces (blue)");
+        ui.checkbox(
+            &mut o.straight,
+            "Straight edges of the sections, inside (violet)",
+        );
         ui.checkbox(&mut o.surface, "Surface");
         ui.checkbox(&mut o.wireframe, "Iso-parameter lines");
         ui.checkbox(&mut o.curvature, "Mean-curvature colours");
@@ -429,6 +442,13 @@ impl EnvelopeTab {
                     e.patches.len(),
                     m.num_faces()
                 ));
+                if !e.removed.is_empty() {
+                    ui.label(format!(
+                        "swallowed by the others (centre not a corner of the centres' hull): primitive(s) {:?}",
+                        e.removed
+                    ))
+                    .on_hover_text("The paper cuts every primitive by the plane through its centre normal to each partner; these keep nothing (seed 004 §5.1.3)");
+                }
                 if let Some(p) = e.primitives.get(self.selected) {
                     ui.label(format!(
                         "primitive {}: centre ({:.3}, {:.3}, {:.3}), sphere radius r = {:.4}",

@@ -1,7 +1,9 @@
-//! Vertex pairs and fusion edges between two primitives' silhouette loops (seed 004 §5.2;
-//! ALGORITHMS §11.4(a), §11.5; docs/algorithms/envelope.md).
+//! Vertex pairs and fusion edges between two primitives' facing sections (seed 004 §5.2;
+//! ALGORITHMS §11.4, §11.5; docs/algorithms/envelope.md).
 //!
-//! Both loops lie in planes normal to d. In one frame `X = unit(d × a)` (a the world axis least
+//! Both sections lie in planes normal to d: whole silhouette loops (two primitives, or
+//! centres on a line) or chains between the same two rays (the straight edges where the
+//! neighbours' cuts cross them, which project onto one line in both, `hull.rs`). In one frame `X = unit(d × a)` (a the world axis least
 //! parallel to d), `Y = d × X`, every loop vertex has a polar angle about its own primitive's
 //! centre; vertices of equal angle (1e-9 rad) pair up, and an angle one loop lacks is inserted
 //! on it — at the root of `(C(τ) − G)·(−sin α X + cos α Y)` on the silhouette edge spanning it.
@@ -14,10 +16,14 @@
 //! tangent-plane normal at P (T_Q likewise), L = |Q − P|: it leaves each end in that end's
 //! tangent plane (§8.1), and for equal polar angles along d. Consecutive pairs bound a fusion
 //! quad: A's loop from angle α_k to α_(k+1), the fusion edge there, B's loop back, the fusion
-//! edge at α_k backwards — counter-clockwise seen from outside.
+//! edge at α_k backwards — counter-clockwise seen from outside. A chain is paired the same
+//! way from its first ray to its last, which are a vertex pair of their own (the paper's
+//! straight-edge vertices, §5.2 b): the paper pairs the curved chains by a normalised
+//! parameter, which it leaves open; the polar angle is one over the same angular range on both
+//! chains, and it makes the two-primitive rule a special case (and the fusion surface of equal
+//! aligned primitives exactly translational).
 
 use super::network::{CurveKind, Network, PatchSide, Region, RegionKind};
-use super::trim::SilhouetteLoop;
 use crate::freeform::bezier::RationalBezier;
 use glam::DVec3;
 use std::f64::consts::{PI, TAU};
@@ -45,31 +51,38 @@ fn same(a: f64, b: f64) -> bool {
     !(SAME_ANGLE..=TAU - SAME_ANGLE).contains(&d)
 }
 
-/// One loop vertex: angle, network vertex, and where it lies (curve, τ).
+/// One section vertex: its angle and network vertex.
 #[derive(Debug, Clone, Copy)]
 struct LoopPoint {
     angle: f64,
     vertex: usize,
 }
 
-/// The loop as pieces in the direction of increasing angle, each from one loop point to the
-/// next: (piece, start point).
+/// The section as pieces in the direction of increasing angle, each from one point to the
+/// next: (piece, start point, end vertex).
 struct Walk {
-    pieces: Vec<(PatchSide, LoopPoint)>,
+    pieces: Vec<(PatchSide, LoopPoint, usize)>,
 }
 
-/// The loop's edges turned to run with increasing angle about G (`forward` tells whether the
-/// kept faces run that way), cut at `extra` angles (T-points, added to `net`).
+/// Angle offset from `start`, with offsets a hair below 2π (rounding) taken as 0.
+fn offset(angle: f64, start: f64) -> f64 {
+    let o = (angle - start).rem_euclid(TAU);
+    if o > TAU - SAME_ANGLE { 0.0 } else { o }
+}
+
+/// The section's edges turned to run with increasing angle about G, cut at `extra` angles
+/// (T-points, added to `net`), sorted from angle `start`.
 fn walk(
     net: &mut Network,
-    lp: &SilhouetteLoop,
+    edges: &[PatchSide],
     g: DVec3,
     fr: (DVec3, DVec3),
     d: DVec3,
     extra: &[f64],
+    start: f64,
 ) -> Walk {
     let mut pieces = Vec::new();
-    for e in &lp.edges {
+    for e in edges {
         let c = e.curve;
         let curve = net.curves[c].bezier.clone();
         // Orient the edge by increasing angle: compare the angle just after its start.
@@ -132,29 +145,52 @@ fn walk(
                     angle: w[0].2,
                     vertex: w[0].1,
                 },
+                w[1].1,
             ));
         }
     }
-    pieces.sort_by(|a, b| a.1.angle.total_cmp(&b.1.angle));
+    pieces.sort_by(|a, b| offset(a.1.angle, start).total_cmp(&offset(b.1.angle, start)));
     Walk { pieces }
 }
 
-/// Joins the silhouette loops of A (centre `ga`, its loop `la`) and B with fusion edges and
-/// fusion quads; `d` = unit(G_B − G_A).
+/// The fusion edge from network vertex p (on A's section) to q (on B's).
+fn fusion_edge(net: &mut Network, p: usize, q: usize, d: DVec3) -> usize {
+    let (pp, pq) = (net.vertices[p].position, net.vertices[q].position);
+    let (np, nq) = (net.vertices[p].normal, net.vertices[q].normal);
+    let pq_v = pq - pp;
+    let l = pq_v.length();
+    let tp = (pq_v - pq_v.dot(np) * np).normalize_or(d);
+    let tq = (pq_v - pq_v.dot(nq) * nq).normalize_or(d);
+    let bez = RationalBezier::polynomial(vec![pp, pp + l / 3.0 * tp, pq - l / 3.0 * tq, pq])
+        .expect("finite points");
+    net.add_curve(bez, p, q, CurveKind::Fusion)
+}
+
+/// Joins A's section (centre `ga`, its edges `sa`) to B's with fusion edges and fusion quads;
+/// `d` = unit(G_B − G_A). `span`: for chains, the rays (normal to d) of their first and last
+/// points in the order of increasing angle about d; `None` for whole loops. Returns the fusion
+/// edges at the chain's first and last rays (the lids' sides), or `None` for loops.
 pub fn fuse(
     net: &mut Network,
-    (ga, la): (DVec3, &SilhouetteLoop),
-    (gb, lb): (DVec3, &SilhouetteLoop),
+    (ga, sa): (DVec3, &[PatchSide]),
+    (gb, sb): (DVec3, &[PatchSide]),
     d: DVec3,
-) {
+    span: Option<(DVec3, DVec3)>,
+) -> Result<Option<(usize, usize)>, String> {
     let fr = frame(d);
-    let angles = |net: &Network, lp: &SilhouetteLoop, g: DVec3| -> Vec<f64> {
-        lp.edges
-            .iter()
-            .map(|e| angle_of(net.vertices[net.curves[e.curve].ends[0]].position - g, fr))
-            .collect()
+    let angles = |net: &Network, edges: &[PatchSide], g: DVec3| -> Vec<f64> {
+        let mut a: Vec<f64> = Vec::new();
+        for e in edges {
+            for v in net.curves[e.curve].ends {
+                let x = angle_of(net.vertices[v].position - g, fr);
+                if !a.iter().any(|&h| same(h, x)) {
+                    a.push(x);
+                }
+            }
+        }
+        a
     };
-    let (aa, ab) = (angles(net, la, ga), angles(net, lb, gb));
+    let (aa, ab) = (angles(net, sa, ga), angles(net, sb, gb));
     let missing = |have: &[f64], other: &[f64]| -> Vec<f64> {
         other
             .iter()
@@ -163,36 +199,75 @@ pub fn fuse(
             .collect()
     };
     let (for_a, for_b) = (missing(&aa, &ab), missing(&ab, &aa));
-    let wa = walk(net, la, ga, fr, d, &for_a);
-    let wb = walk(net, lb, gb, fr, d, &for_b);
+    let start = span.map_or(0.0, |(s, _)| angle_of(s, fr));
+    let wa = walk(net, sa, ga, fr, d, &for_a, start);
+    let wb = walk(net, sb, gb, fr, d, &for_b, start);
     let n = wa.pieces.len();
     if n == 0 || wb.pieces.len() != n {
-        return;
+        return Err(format!(
+            "the facing sections have {} and {} pieces after pairing",
+            n,
+            wb.pieces.len()
+        ));
     }
+    let chained = |w: &Walk| (1..n).all(|k| w.pieces[k - 1].2 == w.pieces[k].1.vertex);
+    if !chained(&wa) || !chained(&wb) {
+        return Err("a facing section is not one chain".into());
+    }
+    let (shift, count) = match span {
+        None => {
+            // Whole loops: start B where its angle is A's first.
+            let shift = wb
+                .pieces
+                .iter()
+                .position(|(_, q, _)| same(q.angle, wa.pieces[0].1.angle))
+                .unwrap_or(0);
+            (shift, n)
+        }
+        Some((s, e)) => {
+            let (s, e) = (angle_of(s, fr), angle_of(e, fr));
+            let near = |x: f64, y: f64| {
+                let o = (x - y).rem_euclid(TAU);
+                o.min(TAU - o) <= 1e-7
+            };
+            let ends = |w: &Walk, g: DVec3| {
+                let last = net.vertices[w.pieces[n - 1].2].position;
+                (w.pieces[0].1.angle, angle_of(last - g, fr))
+            };
+            for (w, g) in [(&wa, ga), (&wb, gb)] {
+                let (first, last) = ends(w, g);
+                if !near(first, s) || !near(last, e) {
+                    return Err(
+                        "a facing section does not run between the rays of its neighbours' cuts"
+                            .into(),
+                    );
+                }
+            }
+            (0, n + 1)
+        }
+    };
     // Fusion edges at each angle, A's point to B's.
-    let start = wb
-        .pieces
-        .iter()
-        .position(|(_, q)| same(q.angle, wa.pieces[0].1.angle))
-        .unwrap_or(0);
-    let mut fusion = Vec::with_capacity(n);
-    for k in 0..n {
-        let p = wa.pieces[k].1.vertex;
-        let q = wb.pieces[(start + k) % n].1.vertex;
-        let (pp, pq) = (net.vertices[p].position, net.vertices[q].position);
-        let (np, nq) = (net.vertices[p].normal, net.vertices[q].normal);
-        let pq_v = pq - pp;
-        let l = pq_v.length();
-        let tp = (pq_v - pq_v.dot(np) * np).normalize_or(d);
-        let tq = (pq_v - pq_v.dot(nq) * nq).normalize_or(d);
-        let bez = RationalBezier::polynomial(vec![pp, pp + l / 3.0 * tp, pq - l / 3.0 * tq, pq])
-            .expect("finite points");
-        fusion.push(net.add_curve(bez, p, q, CurveKind::Fusion));
+    let point = |w: &Walk, k: usize| {
+        if k < n {
+            w.pieces[k].1.vertex
+        } else {
+            w.pieces[n - 1].2
+        }
+    };
+    let mut fusion = Vec::with_capacity(count);
+    for k in 0..count {
+        let p = point(&wa, k);
+        let q = if span.is_none() {
+            wb.pieces[(shift + k) % n].1.vertex
+        } else {
+            point(&wb, k)
+        };
+        fusion.push(fusion_edge(net, p, q, d));
     }
     for k in 0..n {
-        let j = (k + 1) % n;
+        let j = (k + 1) % count;
         let a_piece = wa.pieces[k].0;
-        let b_piece = wb.pieces[(start + k) % n].0;
+        let b_piece = wb.pieces[(shift + k) % n].0;
         net.regions.push(Region {
             sides: vec![
                 a_piece,
@@ -203,4 +278,5 @@ pub fn fuse(
             kind: RegionKind::Fusion,
         });
     }
+    Ok(span.map(|_| (fusion[0], fusion[n])))
 }

@@ -7,19 +7,21 @@
 //! virtual basis, n-sided regions split into quads around an inserted point ([`patches`]);
 //! [`tessellate`] welds them into a closed outward mesh.
 //!
-//! This version envelopes one or two primitives: each of a pair is trimmed by its silhouette
-//! plane ([`trim`]) and the two silhouette loops are joined by fusion edges and quads
-//! ([`fusion`]). Three or more (sections cut again, straight edges, swallowed primitives) are
-//! the next increment, and such a scene is refused with that said.
+//! Any number of primitives: the hull of their centres ([`hull`]) says which primitive is cut
+//! towards which (its hull neighbours) and which are swallowed; each kept primitive is clipped
+//! by its silhouette planes ([`clip`]); the facing sections of every hull edge are joined by
+//! fusion edges and quads ([`fusion`]), and every hull facet is a lid bounded by the fusion
+//! edges at its ray.
 
+pub mod clip;
 pub mod coons;
 pub mod edges;
 pub mod fusion;
+pub mod hull;
 pub mod network;
 pub mod patches;
 pub mod primitive;
 pub mod tessellate;
-pub mod trim;
 
 pub use network::{CurveKind, Network};
 pub use patches::EnvelopePatch;
@@ -27,7 +29,10 @@ pub use primitive::{Placement, Primitive, PrimitiveInput, Shape};
 
 use crate::freeform::skin::Basis;
 use crate::mesh::PolyMesh;
+use glam::DVec3;
+use network::{PatchSide, Region, RegionKind};
 use serde::{Deserialize, Serialize};
+use std::collections::HashMap;
 use thiserror::Error;
 
 #[derive(Debug, Clone, PartialEq, Error)]
@@ -38,10 +43,8 @@ pub enum EnvelopeError {
     Primitive { index: usize, why: String },
     #[error("t of {what} is {t}: t must be finite and > 0 (ρ = t·r)")]
     BadT { what: String, t: f64 },
-    #[error(
-        "{count} primitives: this version envelopes one or two primitives; the network of three or more (sections cut again, straight edges, swallowed primitives, seed 004 §5.1.3 and §5.2 b) is not built yet"
-    )]
-    Several { count: usize },
+    #[error("fusing primitives {a} and {b}: {why}")]
+    Fusion { a: usize, b: usize, why: String },
     #[error("primitives {a} and {b} have the same centre: there is no view vector between them")]
     SameCentre { a: usize, b: usize },
     #[error("resolution {0} is out of range: 1 to 256")]
@@ -86,6 +89,16 @@ pub struct Envelope {
     pub patches: Vec<EnvelopePatch>,
     /// Primitives swallowed by the others (indices in the scene).
     pub removed: Vec<usize>,
+    /// The straight edges of the sections (§5.1.3), from a kept primitive's centre to where two
+    /// of its silhouette planes cross its surface: inside the solid, for display only.
+    pub straight: Vec<[DVec3; 2]>,
+}
+
+/// The signed angle (0 to 2π) from `from` to `to` about unit `d`, counter-clockwise.
+fn ccw(d: DVec3, from: DVec3, to: DVec3) -> f64 {
+    d.dot(from.cross(to))
+        .atan2(from.dot(to))
+        .rem_euclid(std::f64::consts::TAU)
 }
 
 /// Builds the envelope of a scene.
@@ -102,23 +115,87 @@ pub fn envelope(spec: &EnvelopeSpec) -> Result<Envelope, EnvelopeError> {
         .enumerate()
         .map(|(i, p)| Primitive::new(i, p, spec.t))
         .collect::<Result<Vec<_>, _>>()?;
-    let mut network = Network::default();
-    match primitives.as_slice() {
-        [] => return Err(EnvelopeError::Empty),
-        [p] => {
-            trim::add_primitive(&mut network, p, 0, None)?;
-        }
-        [a, b] => {
-            let between = b.centre - a.centre;
-            if between.length() <= 1e-9 * a.radius.max(b.radius) {
-                return Err(EnvelopeError::SameCentre { a: 0, b: 1 });
+    if primitives.is_empty() {
+        return Err(EnvelopeError::Empty);
+    }
+    let centres: Vec<DVec3> = primitives.iter().map(|p| p.centre).collect();
+    let largest = primitives.iter().map(|p| p.radius).fold(0.0, f64::max);
+    for (a, pa) in primitives.iter().enumerate() {
+        for (b, pb) in primitives.iter().enumerate().skip(a + 1) {
+            if pa.centre.distance(pb.centre) <= 1e-9 * pa.radius.max(pb.radius) {
+                return Err(EnvelopeError::SameCentre { a, b });
             }
-            let d = between.normalize();
-            let la = trim::add_primitive(&mut network, a, 0, Some(d))?;
-            let lb = trim::add_primitive(&mut network, b, 1, Some(-d))?;
-            fusion::fuse(&mut network, (a.centre, &la), (b.centre, &lb), d);
         }
-        more => return Err(EnvelopeError::Several { count: more.len() }),
+    }
+    let extent = centres
+        .iter()
+        .map(|c| c.distance(centres[0]))
+        .fold(largest, f64::max);
+    let lay = hull::layout(&centres, 1e-9 * extent);
+    let mut network = Network::default();
+    let mut sections: HashMap<(usize, usize), Vec<PatchSide>> = HashMap::new();
+    for &a in &lay.kept {
+        let partners = lay.neighbours(a);
+        let cuts: Vec<DVec3> = partners
+            .iter()
+            .map(|&b| (centres[b] - centres[a]).normalize())
+            .collect();
+        let found = clip::add_primitive(&mut network, &primitives[a], a, &cuts)?;
+        for (b, s) in partners.into_iter().zip(found) {
+            sections.insert((a, b), s);
+        }
+    }
+    // Fusion strips along the hull edges; the fusion edges at each end, by facet.
+    let mut ends: HashMap<(usize, usize), usize> = HashMap::new(); // (edge, facet) → curve
+    for (ei, e) in lay.edges.iter().enumerate() {
+        let d = (centres[e.b] - centres[e.a]).normalize();
+        let order = e.facets.map(|[f1, f2]| {
+            let (r1, r2) = (lay.facets[f1].normal, lay.facets[f2].normal);
+            if ccw(d, r1, e.outward) < ccw(d, r1, r2) {
+                ((f1, r1), (f2, r2))
+            } else {
+                ((f2, r2), (f1, r1))
+            }
+        });
+        let fused = fusion::fuse(
+            &mut network,
+            (centres[e.a], &sections[&(e.a, e.b)]),
+            (centres[e.b], &sections[&(e.b, e.a)]),
+            d,
+            order.map(|(s, t)| (s.1, t.1)),
+        )
+        .map_err(|why| EnvelopeError::Fusion {
+            a: e.a,
+            b: e.b,
+            why,
+        })?;
+        if let (Some((first, last)), Some((s, t))) = (fused, order) {
+            ends.insert((ei, s.0), first);
+            ends.insert((ei, t.0), last);
+        }
+    }
+    // Lids: each facet, bounded by the fusion edges at its ray.
+    let mut straight = Vec::new();
+    for (fi, f) in lay.facets.iter().enumerate() {
+        let m = f.corners.len();
+        let mut sides = Vec::with_capacity(m);
+        for i in 0..m {
+            let (p, q) = (f.corners[i], f.corners[(i + 1) % m]);
+            let ei = lay
+                .edges
+                .iter()
+                .position(|e| (e.a, e.b) == (p.min(q), p.max(q)))
+                .expect("a facet's side is a hull edge");
+            let c = ends[&(ei, fi)];
+            let side = PatchSide::whole(c, p < q);
+            let corner = network.curves[c].ends[if p < q { 0 } else { 1 }];
+            straight.push([centres[p], network.vertices[corner].position]);
+            sides.push(side);
+        }
+        network.regions.push(Region {
+            sides,
+            kind: RegionKind::Fusion,
+        });
     }
     network.assign_bases(spec.basis);
     let regions = network.regions.len();
@@ -128,7 +205,8 @@ pub fn envelope(spec: &EnvelopeSpec) -> Result<Envelope, EnvelopeError> {
         network,
         regions,
         patches,
-        removed: Vec::new(),
+        removed: lay.removed,
+        straight,
     })
 }
 

@@ -39,6 +39,10 @@ const LAMBDA_MIN: f64 = 0.25;
 /// away from its P_d (a sub-quad with a negative angle at P_i: a fold).
 const LEAVE: f64 = 0.3;
 
+/// The widest sector (radians) the P_d and the insertion curves' tangents may leave between
+/// neighbours around P_i: a sub-quad's corner there must stay well below 180°.
+const STAR: f64 = 150.0 * std::f64::consts::PI / 180.0;
+
 /// One four-sided patch: its sides in the network and its Coons patch.
 #[derive(Debug, Clone, PartialEq)]
 pub struct EnvelopePatch {
@@ -108,25 +112,20 @@ fn virtual_crossing(g: DVec3, c: DVec3, u: DVec3, t: f64) -> f64 {
     }
 }
 
-/// Splits region `r` (not four-sided) into quads around an inserted point (§11.7), adding the
-/// new vertices and insertion curves to `net`.
-fn split(net: &mut Network, r: usize, prims: &[Primitive]) -> Vec<EnvelopePatch> {
-    let region = net.regions[r].clone();
-    let sides = region.sides.clone();
-    let fitted = fitted_sides(net, &sides);
+/// Where the inserted point of region `r` goes for the estimate `mean` (§11.7 steps 3–4), and
+/// its tangent plane's normal.
+fn place(
+    net: &Network,
+    region: &super::network::Region,
+    prims: &[Primitive],
+    pd: &[DVec3],
+    b: &[DVec3],
+    tangent_d: &[DVec3],
+    mean: DVec3,
+) -> (DVec3, DVec3) {
+    let sides = &region.sides;
     let n = sides.len();
-    let mut pd = Vec::with_capacity(n);
-    let mut b = Vec::with_capacity(n);
-    let mut tangent_d = Vec::with_capacity(n);
-    for s in &fitted {
-        let d = s.curve.derivatives(0.5);
-        let bk = s.cross(0.5).0 / 3.0;
-        pd.push(d.point);
-        b.push(bk);
-        tangent_d.push(d.d1);
-    }
-    let mean = (0..n).map(|k| pd[k] + 1.5 * b[k]).sum::<DVec3>() / n as f64;
-    let (pi_, normal) = match region.kind {
+    match region.kind {
         RegionKind::Primitive { primitive, face } => {
             let p = &prims[primitive];
             let g = p.centre;
@@ -173,12 +172,109 @@ fn split(net: &mut Network, r: usize, prims: &[Primitive]) -> Vec<EnvelopePatch>
             let m = (0..n).map(|k| tangent_d[k].cross(b[k])).sum::<DVec3>();
             (mean, m.normalize())
         }
-    };
+    }
+}
+
+/// The widest angle (radians) between consecutive directions (projected into the plane
+/// normal to `n` at `p`), counter-clockwise about n in their order; 2π when they do not go
+/// round once in that order.
+fn widest_sector(p: DVec3, n: DVec3, dirs: impl Iterator<Item = DVec3>) -> f64 {
+    let _ = p;
+    let d: Vec<DVec3> = dirs.map(|v| v - v.dot(n) * n).collect();
+    let m = d.len();
+    let mut total = 0.0;
+    let mut widest = 0.0f64;
+    for k in 0..m {
+        let (a, c) = (d[k], d[(k + 1) % m]);
+        let s = n
+            .dot(a.cross(c))
+            .atan2(a.dot(c))
+            .rem_euclid(std::f64::consts::TAU);
+        total += s;
+        widest = widest.max(s);
+    }
+    if (total - std::f64::consts::TAU).abs() > 1e-6 {
+        std::f64::consts::TAU
+    } else {
+        widest
+    }
+}
+
+/// Splits region `r` (not four-sided) into quads around an inserted point (§11.7), adding the
+/// new vertices and insertion curves to `net`.
+fn split(net: &mut Network, r: usize, prims: &[Primitive]) -> Vec<EnvelopePatch> {
+    let region = net.regions[r].clone();
+    let sides = region.sides.clone();
+    let fitted = fitted_sides(net, &sides);
+    let n = sides.len();
+    let mut pd = Vec::with_capacity(n);
+    let mut b = Vec::with_capacity(n);
+    let mut tangent_d = Vec::with_capacity(n);
+    for s in &fitted {
+        let d = s.curve.derivatives(0.5);
+        let bk = s.cross(0.5).0 / 3.0;
+        pd.push(d.point);
+        b.push(bk);
+        tangent_d.push(d.d1);
+    }
+    let mean = (0..n).map(|k| pd[k] + 1.5 * b[k]).sum::<DVec3>() / n as f64;
+    // The star condition at P_i (envelope.md): the P_d must go round P_i in the region's order
+    // with every sector below STAR; where the paper's estimate fails it, the estimate moves
+    // towards the centroid of the P_d, the first of a few steps that passes (or the best).
+    let centroid = pd.iter().sum::<DVec3>() / n as f64;
+    let mut best: Option<(f64, DVec3, DVec3)> = None;
+    for mu in [0.0, 0.25, 0.5, 0.75, 1.0] {
+        let (p, nrm) = place(
+            net,
+            &region,
+            prims,
+            &pd,
+            &b,
+            &tangent_d,
+            mean.lerp(centroid, mu),
+        );
+        let sector = widest_sector(p, nrm, pd.iter().map(|q| *q - p));
+        if best.is_none_or(|b| sector < b.0) {
+            best = Some((sector, p, nrm));
+        }
+        if sector <= STAR {
+            break;
+        }
+    }
+    let (_, pi_, normal) = best.expect("tried");
     let rho_i = match region.kind {
         RegionKind::Primitive { primitive, .. } => pi_.distance(prims[primitive].centre),
         RegionKind::Fusion => 0.0,
     };
     let vi = net.add_vertex(pi_, normal, rho_i);
+    let proj = |x: DVec3| x - x.dot(normal) * normal;
+    // Per insertion curve: its λ and the leg it leaves P_i with.
+    let mut legs = Vec::with_capacity(n);
+    for k in 0..n {
+        let bn = b[k].dot(normal);
+        let lambda = if bn.abs() < 1e-12 * b[k].length() {
+            LAMBDA_MIN
+        } else {
+            ((pi_ - pd[k]).dot(normal) / bn).max(LAMBDA_MIN)
+        };
+        // The curve must leave P_i towards its P_d: P_m's projection at least LEAVE of the
+        // way from P_i to P_d's (envelope.md, "The star condition at P_i").
+        let w = proj(pd[k] - pi_);
+        let beta = proj(b[k]).dot(w);
+        let lambda = if beta < 0.0 {
+            lambda.min(((1.0 - LEAVE) * w.length_squared() / -beta).max(LAMBDA_MIN))
+        } else {
+            lambda
+        };
+        legs.push((lambda, 2.0 / 3.0 * proj(pd[k] + lambda * b[k] - pi_)));
+    }
+    // Legs that do not go round P_i with every sector below STAR point straight at their P_d
+    // (projected) instead, keeping their length.
+    if widest_sector(pi_, normal, legs.iter().map(|l| l.1)) > STAR {
+        for (k, leg) in legs.iter_mut().enumerate() {
+            leg.1 = proj(pd[k] - pi_).normalize_or_zero() * leg.1.length();
+        }
+    }
     let mut ins = Vec::with_capacity(n);
     for k in 0..n {
         let nd = tangent_d[k].cross(b[k]).normalize();
@@ -192,25 +288,10 @@ fn split(net: &mut Network, r: usize, prims: &[Primitive]) -> Vec<EnvelopePatch>
                 v
             }
         };
-        let bn = b[k].dot(normal);
-        let lambda = if bn.abs() < 1e-12 * b[k].length() {
-            LAMBDA_MIN
-        } else {
-            ((pi_ - pd[k]).dot(normal) / bn).max(LAMBDA_MIN)
-        };
-        let proj = |x: DVec3| x - x.dot(normal) * normal;
-        // The curve must leave P_i towards its P_d: P_m's projection at least LEAVE of the
-        // way from P_i to P_d's (envelope.md, "The star condition at P_i").
-        let w = proj(pd[k] - pi_);
-        let beta = proj(b[k]).dot(w);
-        let lambda = if beta < 0.0 {
-            lambda.min(((1.0 - LEAVE) * w.length_squared() / -beta).max(LAMBDA_MIN))
-        } else {
-            lambda
-        };
+        let (lambda, leg) = legs[k];
         let bez = RationalBezier::polynomial(vec![
             pi_,
-            pi_ + 2.0 / 3.0 * proj(pd[k] + lambda * b[k] - pi_),
+            pi_ + leg,
             pd[k] + 2.0 / 3.0 * lambda * b[k],
             pd[k],
         ])

@@ -1,0 +1,516 @@
+//! A primitive's curved network, trimmed by the silhouette planes towards its hull neighbours
+//! (seed 004 §5.1; ALGORITHMS §11.2–11.3; docs/algorithms/envelope.md).
+//!
+//! Every cut k is a plane Π_k through the primitive's centre G with unit normal `d_k` (towards
+//! the partner), and the primitive keeps `(x − G)·d_k ≤ 0` for all k. All of the primitive's
+//! curves lie in planes through G (a curved edge in the plane of G and its two ends, a
+//! silhouette edge in its Π_k), so which part of the curved primitive is kept is decided in
+//! **directions** from G, and those are the directions of the flat polyhedron: each flat face is
+//! clipped by the half-spaces as a convex polygon (Sutherland–Hodgman, points within 10⁻⁹ r of
+//! a plane taken as on it), and every corner and side of a kept polygon is then mapped onto the
+//! curved primitive:
+//! - an original vertex stays;
+//! - a point where Π_k crosses an edge is the **silhouette point** S on the curved edge in that
+//!   direction (bisection to 10⁻¹⁵), its t interpolated between the edge's ends by central
+//!   angle;
+//! - a point inside a face where Π_k and Π_l cross (a section **cut again**, §5.1.3: the corner
+//!   of a pie-slice section) lies on the ray along Π_k ∩ Π_l; its distance from G is the mean of
+//!   where the two whole silhouette edges of that face (each built across the face as if the
+//!   other cut were not there) cross the ray, and its t the mean of theirs (on the sphere at
+//!   t = 1, on the flat face as t → 0);
+//! - a side along an edge is the curved edge (whole), or the kept piece **rebuilt** with §6.3
+//!   between its ends so that its tangent at S is normal to S − G too; where the rebuilt piece
+//!   would hook — leave its end or arrive backwards, when no convex arc is normal to both radii
+//!   (`|A − G| cos γ > |S − G|`: small t, a plane cutting near a corner) — the edge's own piece
+//!   is kept (de Casteljau, the same curve) and S's tangent plane is the one through that
+//!   piece's tangent and the section's;
+//! - a side along Π_k is a **silhouette edge**, built in Π_k with §6.3 between its ends
+//!   (ρ = t·|P − G| at each); a kept side along an edge that lies in Π_k is one as it is.
+//!
+//! The silhouette edges on Π_k, in the direction the kept faces run along them, are the
+//! **section** facing partner k: a closed loop when nothing else cuts Π_k, otherwise a chain
+//! between the two rays where the neighbouring cuts cross it (the straight edges of §5.1.3,
+//! which end inside the solid and are not curves of the network).
+
+use super::EnvelopeError;
+use super::edges::curved_edge;
+use super::network::{CurveKind, Network, PatchSide, Region, RegionKind};
+use super::patches::piece;
+use super::primitive::Primitive;
+use crate::freeform::bezier::RationalBezier;
+use glam::DVec3;
+use std::collections::HashMap;
+
+/// Relative tolerance (of r) for "on a cut plane".
+const ON_PLANE: f64 = 1e-9;
+
+/// Unit directions closer than this are one network vertex.
+const SAME_DIRECTION: f64 = 1e-9;
+
+/// Where a corner of a clipped face lies on the primitive.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum At {
+    Vertex(usize),
+    /// On edge (a, b), a < b, where cut `cut` crosses it.
+    Edge {
+        a: usize,
+        b: usize,
+        cut: usize,
+    },
+    /// Inside face `face`, where two cuts cross.
+    Inside {
+        face: usize,
+        cuts: [usize; 2],
+    },
+}
+
+/// What the side from a corner to the next runs along.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Along {
+    /// The primitive's edge between these vertices.
+    Edge(usize, usize),
+    Cut(usize),
+}
+
+#[derive(Debug, Clone, Copy)]
+struct Corner {
+    flat: DVec3,
+    at: At,
+    along: Along,
+}
+
+/// A point located on the curved primitive.
+#[derive(Debug, Clone, Copy)]
+struct Located {
+    position: DVec3,
+    t: f64,
+    /// Parameter on the curved edge (a < b, from a to b) for a point on an edge.
+    tau: Option<f64>,
+}
+
+/// The root of `(C(τ) − G)·w` on a curve through direction u from G (w normal to u in the
+/// curve's plane): the curve point in direction u.
+fn at_direction(c: &RationalBezier, g: DVec3, u: DVec3) -> f64 {
+    let n = (c.eval(0.0) - g).cross(c.eval(1.0) - g);
+    let w = n.cross(u);
+    let f = |tau: f64| (c.eval(tau) - g).dot(w);
+    let (mut lo, mut hi) = (0.0, 1.0);
+    let flo = f(lo) > 0.0;
+    for _ in 0..60 {
+        let mid = 0.5 * (lo + hi);
+        if (f(mid) > 0.0) == flo {
+            lo = mid
+        } else {
+            hi = mid
+        }
+    }
+    0.5 * (lo + hi)
+}
+
+/// Whether a curve leaves its start or reaches its end against its chord.
+fn hooks(c: &RationalBezier, chord: DVec3) -> bool {
+    c.derivatives(0.0).d1.dot(chord) <= 0.0 || c.derivatives(1.0).d1.dot(chord) <= 0.0
+}
+
+fn angle(x: DVec3, y: DVec3) -> f64 {
+    x.cross(y).length().atan2(x.dot(y))
+}
+
+/// The face clipped by every cut, as a convex polygon of corners (empty when nothing is kept).
+fn clip_face(p: &Primitive, f: usize, cuts: &[DVec3], tol: f64) -> Vec<Corner> {
+    let face = &p.faces[f];
+    let m = face.len();
+    let mut poly: Vec<Corner> = (0..m)
+        .map(|i| Corner {
+            flat: p.vertices[face[i]],
+            at: At::Vertex(face[i]),
+            along: Along::Edge(face[i], face[(i + 1) % m]),
+        })
+        .collect();
+    for (k, &d) in cuts.iter().enumerate() {
+        let s: Vec<f64> = poly
+            .iter()
+            .map(|c| {
+                let x = (c.flat - p.centre).dot(d);
+                if x.abs() <= tol { 0.0 } else { x }
+            })
+            .collect();
+        if s.iter().all(|&x| x <= 0.0) {
+            continue;
+        }
+        let crossing = |cur: Corner, nxt: Corner, sc: f64, sn: f64| Corner {
+            flat: cur.flat + (nxt.flat - cur.flat) * (sc / (sc - sn)),
+            at: match cur.along {
+                Along::Edge(a, b) => At::Edge {
+                    a: a.min(b),
+                    b: a.max(b),
+                    cut: k,
+                },
+                Along::Cut(l) => At::Inside {
+                    face: f,
+                    cuts: [l, k],
+                },
+            },
+            along: cur.along,
+        };
+        let n = poly.len();
+        let mut out = Vec::with_capacity(n + 1);
+        for i in 0..n {
+            let (cur, nxt) = (poly[i], poly[(i + 1) % n]);
+            let (sc, sn) = (s[i], s[(i + 1) % n]);
+            if sc <= 0.0 {
+                if sn <= 0.0 {
+                    out.push(cur);
+                } else if sc < 0.0 {
+                    out.push(cur);
+                    out.push(Corner {
+                        along: Along::Cut(k),
+                        ..crossing(cur, nxt, sc, sn)
+                    });
+                } else {
+                    out.push(Corner {
+                        along: Along::Cut(k),
+                        ..cur
+                    });
+                }
+            } else if sn < 0.0 {
+                out.push(crossing(cur, nxt, sc, sn));
+            }
+        }
+        poly = out;
+        if poly.len() < 3 {
+            return Vec::new();
+        }
+    }
+    poly
+}
+
+struct Clipper<'a> {
+    p: &'a Primitive,
+    index: usize,
+    cuts: &'a [DVec3],
+    tol: f64,
+    /// (unit direction, network vertex, where) of every vertex added.
+    points: Vec<(DVec3, usize, At)>,
+    /// Whole curved edges, (a, b) with a < b, from a to b.
+    full: HashMap<(usize, usize), RationalBezier>,
+    /// Curves by their (unordered) end vertices.
+    curves: HashMap<(usize, usize), usize>,
+}
+
+impl Clipper<'_> {
+    fn bad_edge(&self, a: usize, b: usize) -> EnvelopeError {
+        EnvelopeError::Primitive {
+            index: self.index,
+            why: format!("edge {a}-{b} cannot be curved (through or opposite the centre)"),
+        }
+    }
+
+    fn full_edge(&mut self, a: usize, b: usize) -> Result<RationalBezier, EnvelopeError> {
+        if let Some(c) = self.full.get(&(a, b)) {
+            return Ok(c.clone());
+        }
+        let p = self.p;
+        let c = curved_edge(p.centre, p.vertices[a], p.vertices[b], p.t[a], p.t[b])
+            .ok_or_else(|| self.bad_edge(a, b))?;
+        self.full.insert((a, b), c.clone());
+        Ok(c)
+    }
+
+    /// The curved point on edge (a, b) in direction u.
+    fn on_edge(&mut self, a: usize, b: usize, u: DVec3) -> Result<Located, EnvelopeError> {
+        let c = self.full_edge(a, b)?;
+        let g = self.p.centre;
+        let tau = at_direction(&c, g, u);
+        let position = c.eval(tau);
+        let (va, vb) = (self.p.vertices[a] - g, self.p.vertices[b] - g);
+        let share = angle(va, position - g) / angle(va, vb).max(f64::MIN_POSITIVE);
+        Ok(Located {
+            position,
+            t: self.p.t[a] + (self.p.t[b] - self.p.t[a]) * share,
+            tau: Some(tau),
+        })
+    }
+
+    /// Where cut `k`'s line crosses the boundary of face `f` (unclipped): its two ends.
+    fn face_line(&mut self, f: usize, k: usize) -> Result<Vec<Located>, EnvelopeError> {
+        let p = self.p;
+        let face = &p.faces[f];
+        let m = face.len();
+        let s: Vec<f64> = face
+            .iter()
+            .map(|&v| {
+                let x = (p.vertices[v] - p.centre).dot(self.cuts[k]);
+                if x.abs() <= self.tol { 0.0 } else { x }
+            })
+            .collect();
+        let mut ends = Vec::new();
+        for i in 0..m {
+            let (a, b) = (face[i], face[(i + 1) % m]);
+            let (sa, sb) = (s[i], s[(i + 1) % m]);
+            if sa == 0.0 {
+                ends.push(Located {
+                    position: p.vertices[a],
+                    t: p.t[a],
+                    tau: None,
+                });
+            } else if sa * sb < 0.0 {
+                let flat = p.vertices[a] + (p.vertices[b] - p.vertices[a]) * (sa / (sa - sb));
+                let u = (flat - p.centre).normalize();
+                ends.push(self.on_edge(a.min(b), a.max(b), u)?);
+            }
+        }
+        Ok(ends)
+    }
+
+    /// The curved point inside face `f` in direction u, where cuts k and l cross.
+    fn inside(
+        &mut self,
+        f: usize,
+        cuts: [usize; 2],
+        flat: DVec3,
+    ) -> Result<Located, EnvelopeError> {
+        let g = self.p.centre;
+        let u = (flat - g).normalize();
+        let (mut dist, mut t, mut count) = (0.0, 0.0, 0.0);
+        for k in cuts {
+            if let [e1, e2] = self.face_line(f, k)?.as_slice()
+                && let Some(c) = curved_edge(g, e1.position, e2.position, e1.t, e2.t)
+            {
+                let q = c.eval(at_direction(&c, g, u));
+                let (v1, v2) = (e1.position - g, e2.position - g);
+                let share = angle(v1, q - g) / angle(v1, v2).max(f64::MIN_POSITIVE);
+                dist += q.distance(g);
+                t += e1.t + (e2.t - e1.t) * share;
+                count += 1.0;
+            }
+        }
+        if count == 0.0 {
+            return Err(EnvelopeError::Primitive {
+                index: self.index,
+                why: format!(
+                    "face {f}: the corner where two silhouette planes cross it cannot be curved"
+                ),
+            });
+        }
+        Ok(Located {
+            position: g + u * (dist / count),
+            t: t / count,
+            tau: None,
+        })
+    }
+
+    fn locate(&mut self, c: &Corner) -> Result<Located, EnvelopeError> {
+        let g = self.p.centre;
+        match c.at {
+            At::Vertex(i) => Ok(Located {
+                position: self.p.vertices[i],
+                t: self.p.t[i],
+                tau: None,
+            }),
+            At::Edge { a, b, .. } => self.on_edge(a, b, (c.flat - g).normalize()),
+            At::Inside { face, cuts } => self.inside(face, cuts, c.flat),
+        }
+    }
+
+    /// The network vertex of a corner (one per direction).
+    fn vertex(&mut self, net: &mut Network, c: &Corner) -> Result<usize, EnvelopeError> {
+        let u = (c.flat - self.p.centre).normalize();
+        if let Some(&(_, v, _)) = self
+            .points
+            .iter()
+            .find(|(w, _, _)| w.distance(u) <= SAME_DIRECTION)
+        {
+            return Ok(v);
+        }
+        let l = self.locate(c)?;
+        let g = self.p.centre;
+        let v = net.add_vertex(
+            l.position,
+            (l.position - g).normalize(),
+            l.t * l.position.distance(g),
+        );
+        self.points.push((u, v, c.at));
+        Ok(v)
+    }
+
+    fn at_of(&self, v: usize) -> At {
+        self.points
+            .iter()
+            .find(|p| p.1 == v)
+            .map(|p| p.2)
+            .expect("added")
+    }
+
+    /// The parameter of vertex `v` on curved edge (a, b).
+    fn tau_on(
+        &mut self,
+        net: &Network,
+        v: usize,
+        a: usize,
+        b: usize,
+    ) -> Result<f64, EnvelopeError> {
+        Ok(match self.at_of(v) {
+            At::Vertex(i) => {
+                if i == a {
+                    0.0
+                } else {
+                    1.0
+                }
+            }
+            _ => {
+                let u = (net.vertices[v].position - self.p.centre).normalize();
+                self.on_edge(a, b, u)?.tau.expect("on an edge")
+            }
+        })
+    }
+
+    /// The curve of a side from vertex x to vertex y along `along`, as a side of the region.
+    fn side(
+        &mut self,
+        net: &mut Network,
+        x: usize,
+        y: usize,
+        along: Along,
+    ) -> Result<PatchSide, EnvelopeError> {
+        let key = (x.min(y), x.max(y));
+        if let Some(&c) = self.curves.get(&key) {
+            return Ok(PatchSide::whole(c, net.curves[c].ends[0] == x));
+        }
+        let g = self.p.centre;
+        let t_of =
+            |net: &Network, v: usize| net.vertices[v].rho / net.vertices[v].position.distance(g);
+        let (px, py) = (net.vertices[x].position, net.vertices[y].position);
+        let c = match along {
+            Along::Cut(k) => {
+                let bez = curved_edge(g, px, py, t_of(net, x), t_of(net, y)).ok_or_else(|| {
+                    EnvelopeError::Primitive {
+                        index: self.index,
+                        why: format!("a silhouette edge towards partner {k} cannot be curved"),
+                    }
+                })?;
+                let bez = if hooks(&bez, py - px) {
+                    // A short piece between points at different distances from G (a corner
+                    // where two cuts cross, next to where one crosses an edge): no convex arc
+                    // is normal to both radii. The cubic that leaves and reaches them along
+                    // the section's tangents, a third of the chord long, instead (an
+                    // inflection, not a hook; envelope.md).
+                    let chord = py - px;
+                    let along = |p: DVec3| {
+                        let t = self.cuts[k].cross(p - g).normalize();
+                        if t.dot(chord) < 0.0 { -t } else { t }
+                    };
+                    let l = chord.length() / 3.0;
+                    RationalBezier::polynomial(vec![px, px + l * along(px), py - l * along(py), py])
+                        .expect("finite points")
+                } else {
+                    bez
+                };
+                net.add_curve(bez, x, y, CurveKind::Silhouette)
+            }
+            Along::Edge(a, b) => {
+                let (lo, hi) = (a.min(b), a.max(b));
+                let (ax, ay) = (self.at_of(x), self.at_of(y));
+                let whole = matches!((ax, ay), (At::Vertex(_), At::Vertex(_)));
+                if whole {
+                    let bez = curved_edge(g, px, py, t_of(net, x), t_of(net, y))
+                        .ok_or_else(|| self.bad_edge(a, b))?;
+                    net.add_curve(bez, x, y, CurveKind::Edge)
+                } else {
+                    let rebuilt = curved_edge(g, px, py, t_of(net, x), t_of(net, y))
+                        .ok_or_else(|| self.bad_edge(a, b))?;
+                    if hooks(&rebuilt, py - px) {
+                        // No convex arc joins them normal to both radii: the edge's own piece,
+                        // and at each silhouette point the tangent plane through its tangent
+                        // and the section's.
+                        let full = self.full_edge(lo, hi)?;
+                        let (tx, ty) = (self.tau_on(net, x, lo, hi)?, self.tau_on(net, y, lo, hi)?);
+                        let bez = piece(&full, tx, ty);
+                        for (v, at, end) in [(x, ax, 0.0), (y, ay, 1.0)] {
+                            if let At::Edge { cut, .. } = at {
+                                let s = net.vertices[v].position;
+                                let sign = if end == 0.0 { -1.0 } else { 1.0 };
+                                let along = bez.derivatives(end).d1 * sign;
+                                let loop_dir = self.cuts[cut].cross(s - g);
+                                let mut n = loop_dir.cross(along).normalize();
+                                if n.dot(s - g) < 0.0 {
+                                    n = -n;
+                                }
+                                net.vertices[v].normal = n;
+                            }
+                        }
+                        net.add_curve(bez, x, y, CurveKind::Edge)
+                    } else {
+                        net.add_curve(rebuilt, x, y, CurveKind::Edge)
+                    }
+                }
+            }
+        };
+        self.curves.insert(key, c);
+        Ok(PatchSide::whole(c, true))
+    }
+}
+
+/// Adds primitive `index` to `net`, trimmed to `(x − G)·d_k ≤ 0` for every unit `d_k` in
+/// `cuts`: its kept vertices, silhouette points, curves and regions. Returns each cut's
+/// section: the silhouette edges on it, in the direction the kept faces run along them.
+pub fn add_primitive(
+    net: &mut Network,
+    p: &Primitive,
+    index: usize,
+    cuts: &[DVec3],
+) -> Result<Vec<Vec<PatchSide>>, EnvelopeError> {
+    let tol = ON_PLANE * p.radius;
+    let mut clip = Clipper {
+        p,
+        index,
+        cuts,
+        tol,
+        points: Vec::new(),
+        full: HashMap::new(),
+        curves: HashMap::new(),
+    };
+    let on_cut = |k: usize, x: DVec3| (x - p.centre).dot(cuts[k]).abs() <= tol;
+    let mut sections = vec![Vec::new(); cuts.len()];
+    for f in 0..p.faces.len() {
+        let poly = clip_face(p, f, cuts, tol);
+        if poly.is_empty() {
+            continue;
+        }
+        let ids = poly
+            .iter()
+            .map(|c| clip.vertex(net, c))
+            .collect::<Result<Vec<_>, _>>()?;
+        let m = poly.len();
+        let mut sides = Vec::with_capacity(m);
+        for i in 0..m {
+            let (x, y) = (ids[i], ids[(i + 1) % m]);
+            if x == y {
+                continue;
+            }
+            let side = clip.side(net, x, y, poly[i].along)?;
+            let cut = match poly[i].along {
+                Along::Cut(k) => Some(k),
+                // A kept edge lying in a cut plane (the face across is removed).
+                Along::Edge(..) => (0..cuts.len())
+                    .find(|&k| on_cut(k, poly[i].flat) && on_cut(k, poly[(i + 1) % m].flat)),
+            };
+            if let Some(k) = cut {
+                net.curves[side.curve].kind = CurveKind::Silhouette;
+                sections[k].push(side);
+            }
+            sides.push(side);
+        }
+        if sides.len() < 3 {
+            continue;
+        }
+        net.regions.push(Region {
+            sides,
+            kind: RegionKind::Primitive {
+                primitive: index,
+                face: f,
+            },
+        });
+    }
+    Ok(sections)
+}

@@ -1,0 +1,344 @@
+//! Which primitives meet which: the convex hull of the primitives' centres (seed 004 §5.1.3,
+//! §5.2; docs/algorithms/envelope.md, "Three or more primitives").
+//!
+//! The paper cuts every primitive A by the plane through its centre normal to the view vector
+//! towards every other primitive B and keeps `(x − G_A)·(G_B − G_A) ≤ 0` for all B: the cone
+//! `K_A` of directions in which no other centre lies ahead — the **normal cone** of the hull of
+//! the centres at G_A. So:
+//! - A keeps a part only where G_A is a **vertex** of the hull; a centre inside the hull, or on
+//!   a hull edge or facet between its corners, has a cone without interior, and the primitive
+//!   is swallowed (§5.1.3: "automatically removed"). A swallowed centre is a convex combination
+//!   of the others, so its cuts are implied by theirs and the others do not change.
+//! - Only the cuts towards A's **hull neighbours** bound `K_A`; the others touch it along a ray
+//!   at most (a diagonal of a square of centres), so they are left out.
+//! - A's section facing B has area exactly when A–B is a **hull edge**; it is a pie slice
+//!   between the rays of the two facets beside that edge, and B's section facing A spans the
+//!   same rays (the third primitive's cut lines project to one line: `d_AB × (G_C − G_A)` ∥
+//!   `d_AB × (G_C − G_B)`), so the sections pair up across the fusion strip.
+//! - Each **facet** of the hull is a lid: the region bounded by the fusion edges at its ray.
+//!
+//! Collinear centres give the two ends and no facet (the two-primitive case: whole silhouette
+//! loops); coplanar centres give the polygon with two facets, `+n` and `−n`.
+
+use glam::DVec3;
+
+/// A hull edge between primitives `a < b`, with the facets on either side (none when the
+/// centres are collinear: then the sections are whole loops).
+#[derive(Debug, Clone, PartialEq)]
+pub struct HullEdge {
+    pub a: usize,
+    pub b: usize,
+    pub facets: Option<[usize; 2]>,
+    /// A direction normal to `G_B − G_A` inside the edge's normal cone (outwards).
+    pub outward: DVec3,
+}
+
+/// A hull facet: its outward unit normal and its corners, counter-clockwise about it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Facet {
+    pub normal: DVec3,
+    pub corners: Vec<usize>,
+}
+
+/// The layout of a scene's primitives.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Layout {
+    /// Primitives whose centre is a hull vertex, ascending.
+    pub kept: Vec<usize>,
+    /// Swallowed primitives, ascending.
+    pub removed: Vec<usize>,
+    pub edges: Vec<HullEdge>,
+    pub facets: Vec<Facet>,
+}
+
+impl Layout {
+    /// The hull neighbours of primitive `a`, ascending.
+    pub fn neighbours(&self, a: usize) -> Vec<usize> {
+        let mut n: Vec<usize> = self
+            .edges
+            .iter()
+            .filter_map(|e| {
+                if e.a == a {
+                    Some(e.b)
+                } else if e.b == a {
+                    Some(e.a)
+                } else {
+                    None
+                }
+            })
+            .collect();
+        n.sort_unstable();
+        n
+    }
+}
+
+/// Strict 2D convex hull (no point on an edge between corners), counter-clockwise, by
+/// Andrew's monotone chain; `pts` are (x, y, index).
+fn hull_2d(pts: &[(f64, f64, usize)], tol: f64) -> Vec<usize> {
+    let mut p = pts.to_vec();
+    p.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.total_cmp(&b.1)));
+    let cross = |o: &(f64, f64, usize), a: &(f64, f64, usize), b: &(f64, f64, usize)| {
+        (a.0 - o.0) * (b.1 - o.1) - (a.1 - o.1) * (b.0 - o.0)
+    };
+    let chain = |iter: &mut dyn Iterator<Item = &(f64, f64, usize)>| {
+        let mut h: Vec<(f64, f64, usize)> = Vec::new();
+        for q in iter {
+            while h.len() >= 2 && cross(&h[h.len() - 2], &h[h.len() - 1], q) <= tol {
+                h.pop();
+            }
+            h.push(*q);
+        }
+        h.pop();
+        h
+    };
+    let mut lower = chain(&mut p.iter());
+    let upper = chain(&mut p.iter().rev());
+    lower.extend(upper);
+    lower.into_iter().map(|q| q.2).collect()
+}
+
+/// Two unit vectors spanning the plane normal to unit `n`.
+fn plane_frame(n: DVec3) -> (DVec3, DVec3) {
+    let a = if n.x.abs() < 0.9 { DVec3::X } else { DVec3::Y };
+    let x = n.cross(a).normalize();
+    (x, n.cross(x))
+}
+
+/// The layout of primitives with centres `c` (pairwise distinct: checked by the caller).
+/// `tol` is the distance below which a centre counts as on a line or plane.
+pub fn layout(c: &[DVec3], tol: f64) -> Layout {
+    let n = c.len();
+    if n < 2 {
+        return Layout {
+            kept: (0..n).collect(),
+            ..Layout::default()
+        };
+    }
+    // Affine dimension: the farthest point from c[0], then from that line, then that plane.
+    let far = |f: &dyn Fn(DVec3) -> f64| {
+        (0..n)
+            .max_by(|&i, &j| f(c[i]).total_cmp(&f(c[j])))
+            .expect("points")
+    };
+    let i1 = far(&|p| p.distance(c[0]));
+    let extent = c[i1].distance(c[0]);
+    let dir = (c[i1] - c[0]).normalize();
+    let off_line = |p: DVec3| (p - c[0]).reject_from_normalized(dir).length();
+    let i2 = far(&off_line);
+    if off_line(c[i2]) <= tol {
+        // Collinear: the two ends.
+        let along = |i: usize| (c[i] - c[0]).dot(dir);
+        let lo = (0..n)
+            .min_by(|&i, &j| along(i).total_cmp(&along(j)))
+            .unwrap();
+        let hi = (0..n)
+            .max_by(|&i, &j| along(i).total_cmp(&along(j)))
+            .unwrap();
+        let (a, b) = (lo.min(hi), lo.max(hi));
+        return finish(
+            n,
+            vec![HullEdge {
+                a,
+                b,
+                facets: None,
+                outward: DVec3::ZERO,
+            }],
+            Vec::new(),
+        );
+    }
+    let normal = dir.cross(c[i2] - c[0]).normalize();
+    let off_plane = |p: DVec3| (p - c[0]).dot(normal).abs();
+    let i3 = far(&off_plane);
+    if off_plane(c[i3]) <= tol {
+        // Coplanar: the polygon, with a facet on each side.
+        let (x, y) = plane_frame(normal);
+        let pts: Vec<(f64, f64, usize)> = (0..n)
+            .map(|i| ((c[i] - c[0]).dot(x), (c[i] - c[0]).dot(y), i))
+            .collect();
+        let ring = hull_2d(&pts, tol * extent);
+        let m = ring.len();
+        let edges = (0..m)
+            .map(|k| {
+                let (p, q) = (ring[k], ring[(k + 1) % m]);
+                // Counter-clockwise about `normal`: the outside is on the right of p → q.
+                let outward = (c[q] - c[p]).cross(normal).normalize();
+                HullEdge {
+                    a: p.min(q),
+                    b: p.max(q),
+                    facets: Some([0, 1]),
+                    outward,
+                }
+            })
+            .collect();
+        let facets = vec![
+            Facet {
+                normal,
+                corners: ring.clone(),
+            },
+            Facet {
+                normal: -normal,
+                corners: ring.into_iter().rev().collect(),
+            },
+        ];
+        return finish(n, edges, facets);
+    }
+    // Spatial: every plane through three centres with all the others behind it (within tol),
+    // merged when two triples span one plane; each facet's corners are the strict 2D hull of
+    // the centres on it.
+    let mut facets: Vec<Facet> = Vec::new();
+    for i in 0..n {
+        for j in i + 1..n {
+            for k in j + 1..n {
+                let m = (c[j] - c[i]).cross(c[k] - c[i]);
+                if m.length() <= tol * (c[j] - c[i]).length().max((c[k] - c[i]).length()) {
+                    continue;
+                }
+                let m = m.normalize();
+                for nrm in [m, -m] {
+                    if facets.iter().any(|f| {
+                        f.normal.dot(nrm) > 1.0 - 1e-12
+                            && (c[i] - c[f.corners[0]]).dot(nrm).abs() <= tol
+                    }) {
+                        continue;
+                    }
+                    if (0..n).all(|q| (c[q] - c[i]).dot(nrm) <= tol) {
+                        let on: Vec<usize> = (0..n)
+                            .filter(|&q| (c[q] - c[i]).dot(nrm).abs() <= tol)
+                            .collect();
+                        let (x, y) = plane_frame(nrm);
+                        let pts: Vec<(f64, f64, usize)> = on
+                            .iter()
+                            .map(|&q| ((c[q] - c[i]).dot(x), (c[q] - c[i]).dot(y), q))
+                            .collect();
+                        facets.push(Facet {
+                            normal: nrm,
+                            corners: hull_2d(&pts, tol * extent),
+                        });
+                    }
+                }
+            }
+        }
+    }
+    // Edges from the facets' sides; each side is in two facets.
+    let mut edges: Vec<HullEdge> = Vec::new();
+    for (fi, f) in facets.iter().enumerate() {
+        let m = f.corners.len();
+        for k in 0..m {
+            let (p, q) = (f.corners[k], f.corners[(k + 1) % m]);
+            let (a, b) = (p.min(q), p.max(q));
+            match edges.iter_mut().find(|e| e.a == a && e.b == b) {
+                Some(e) => {
+                    let first = e.facets.expect("set")[0];
+                    e.facets = Some([first, fi]);
+                    e.outward = (facets[first].normal + f.normal).normalize();
+                }
+                None => edges.push(HullEdge {
+                    a,
+                    b,
+                    facets: Some([fi, fi]),
+                    outward: f.normal,
+                }),
+            }
+        }
+    }
+    finish(n, edges, facets)
+}
+
+fn finish(n: usize, mut edges: Vec<HullEdge>, facets: Vec<Facet>) -> Layout {
+    edges.sort_by_key(|e| (e.a, e.b));
+    let mut kept: Vec<usize> = edges.iter().flat_map(|e| [e.a, e.b]).collect();
+    kept.sort_unstable();
+    kept.dedup();
+    let removed = (0..n).filter(|i| kept.binary_search(i).is_err()).collect();
+    Layout {
+        kept,
+        removed,
+        edges,
+        facets,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn v(x: f64, y: f64, z: f64) -> DVec3 {
+        DVec3::new(x, y, z)
+    }
+
+    #[test]
+    fn collinear_centres_keep_the_ends() {
+        let l = layout(&[v(0., 0., 0.), v(6., 0., 0.), v(3., 0., 0.)], 1e-9);
+        assert_eq!(l.kept, vec![0, 1]);
+        assert_eq!(l.removed, vec![2]);
+        assert_eq!(l.edges.len(), 1);
+        assert!(l.facets.is_empty());
+    }
+
+    #[test]
+    fn coplanar_centres_give_a_polygon_and_two_lids() {
+        // A square with a centre in the middle and one on a side.
+        let c = [
+            v(0., 0., 0.),
+            v(3., 0., 0.),
+            v(3., 3., 0.),
+            v(0., 3., 0.),
+            v(1.5, 1.5, 0.),
+            v(1.5, 0., 0.),
+        ];
+        let l = layout(&c, 1e-9);
+        assert_eq!(l.kept, vec![0, 1, 2, 3]);
+        assert_eq!(l.removed, vec![4, 5]);
+        assert_eq!(l.edges.len(), 4);
+        assert_eq!(l.facets.len(), 2);
+        assert_eq!(l.neighbours(0), vec![1, 3]);
+        for e in &l.edges {
+            let mid = 0.5 * (c[e.a] + c[e.b]);
+            assert!((mid - v(1.5, 1.5, 0.)).dot(e.outward) > 0.0);
+        }
+    }
+
+    #[test]
+    fn a_tetrahedron_of_centres_with_one_inside() {
+        let c = [
+            v(0., 0., 0.),
+            v(4., 0., 0.),
+            v(0., 4., 0.),
+            v(0., 0., 4.),
+            v(0.8, 0.8, 0.8),
+        ];
+        let l = layout(&c, 1e-9);
+        assert_eq!(l.kept, vec![0, 1, 2, 3]);
+        assert_eq!(l.removed, vec![4]);
+        assert_eq!(l.edges.len(), 6);
+        assert_eq!(l.facets.len(), 4);
+        for f in &l.facets {
+            assert_eq!(f.corners.len(), 3);
+            // Counter-clockwise about the outward normal.
+            let [a, b, cc] = [c[f.corners[0]], c[f.corners[1]], c[f.corners[2]]];
+            assert!((b - a).cross(cc - a).dot(f.normal) > 0.0);
+            assert!((c[4] - a).dot(f.normal) < 0.0);
+        }
+    }
+
+    #[test]
+    fn a_cube_of_centres_has_square_facets() {
+        let mut c = Vec::new();
+        for i in 0..8 {
+            c.push(v(
+                3.0 * (i & 1) as f64,
+                3.0 * ((i >> 1) & 1) as f64,
+                3.0 * ((i >> 2) & 1) as f64,
+            ));
+        }
+        let l = layout(&c, 1e-9);
+        assert_eq!(l.kept.len(), 8);
+        assert_eq!(l.facets.len(), 6);
+        assert!(l.facets.iter().all(|f| f.corners.len() == 4));
+        assert_eq!(l.edges.len(), 12);
+        assert!(l.edges.iter().all(|e| {
+            let [p, q] = e.facets.unwrap();
+            p != q
+        }));
+    }
+}
