@@ -31,6 +31,10 @@ use std::f64::consts::{PI, TAU};
 /// Angles closer than this (radians) are one.
 const SAME_ANGLE: f64 = 1e-9;
 
+/// How far (radians) a chain's end may lie from its ray (rounding only: both are where the
+/// same two cuts cross).
+const END_ANGLE: f64 = 1e-7;
+
 /// The frame of polar angles about d.
 fn frame(d: DVec3) -> (DVec3, DVec3) {
     let a = [DVec3::X, DVec3::Y, DVec3::Z]
@@ -80,6 +84,7 @@ fn walk(
     d: DVec3,
     extra: &[f64],
     start: f64,
+    chain: bool,
 ) -> Walk {
     let mut pieces = Vec::new();
     for e in edges {
@@ -150,6 +155,24 @@ fn walk(
         }
     }
     pieces.sort_by(|a, b| offset(a.1.angle, start).total_cmp(&offset(b.1.angle, start)));
+    if chain {
+        // A chain runs from its one start that no piece ends at (its first point may sit a
+        // hair before the start ray, by rounding).
+        let head = pieces
+            .iter()
+            .position(|p| !pieces.iter().any(|q| q.2 == p.1.vertex));
+        if let Some(h) = head {
+            let mut ordered = vec![pieces.swap_remove(h)];
+            while let Some(i) = pieces
+                .iter()
+                .position(|p| p.1.vertex == ordered[ordered.len() - 1].2)
+            {
+                ordered.push(pieces.swap_remove(i));
+            }
+            ordered.append(&mut pieces);
+            pieces = ordered;
+        }
+    }
     Walk { pieces }
 }
 
@@ -178,30 +201,61 @@ pub fn fuse(
     span: Option<(DVec3, DVec3)>,
 ) -> Result<Option<(usize, usize)>, String> {
     let fr = frame(d);
-    let angles = |net: &Network, edges: &[PatchSide], g: DVec3| -> Vec<f64> {
-        let mut a: Vec<f64> = Vec::new();
-        for e in edges {
-            for v in net.curves[e.curve].ends {
-                let x = angle_of(net.vertices[v].position - g, fr);
-                if !a.iter().any(|&h| same(h, x)) {
-                    a.push(x);
-                }
+    // Where each section's points lie: their polar angle for whole loops; for chains, the
+    // angle normalised between the chain's own two ends (the points only one of its edges
+    // reaches), which pair with the other chain's ends (the paper's normalised parameter,
+    // §5.2 b; the ends lie on the same rays, so this is the polar angle up to rounding).
+    let start = span.map_or(0.0, |(s, _)| angle_of(s, fr));
+    let base = start - 0.5;
+    let place = |net: &Network, edges: &[PatchSide], g: DVec3| -> (Vec<f64>, (f64, f64)) {
+        let ends: Vec<usize> = edges.iter().flat_map(|e| net.curves[e.curve].ends).collect();
+        let at = |v: usize| angle_of(net.vertices[v].position - g, fr);
+        let range = if span.is_some() {
+            let tips: Vec<f64> = ends
+                .iter()
+                .filter(|&&v| ends.iter().filter(|&&w| w == v).count() == 1)
+                .map(|&v| offset(at(v), base))
+                .collect();
+            let lo = tips.iter().copied().fold(f64::INFINITY, f64::min);
+            let hi = tips.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+            (lo, hi)
+        } else {
+            (0.0, TAU)
+        };
+        let mut u: Vec<f64> = Vec::new();
+        for &v in &ends {
+            if span.is_some() && ends.iter().filter(|&&w| w == v).count() == 1 {
+                continue;
+            }
+            let x = if span.is_some() {
+                (offset(at(v), base) - range.0) / (range.1 - range.0)
+            } else {
+                at(v)
+            };
+            if !u.iter().any(|&h| same(h, x)) {
+                u.push(x);
             }
         }
-        a
+        (u, range)
     };
-    let (aa, ab) = (angles(net, sa, ga), angles(net, sb, gb));
-    let missing = |have: &[f64], other: &[f64]| -> Vec<f64> {
+    let ((ua, ra), (ub, rb)) = (place(net, sa, ga), place(net, sb, gb));
+    let missing = |have: &[f64], other: &[f64], r: (f64, f64)| -> Vec<f64> {
         other
             .iter()
             .copied()
             .filter(|&x| !have.iter().any(|&h| same(h, x)))
+            .map(|x| {
+                if span.is_some() {
+                    (base + r.0 + x * (r.1 - r.0)).rem_euclid(TAU)
+                } else {
+                    x
+                }
+            })
             .collect()
     };
-    let (for_a, for_b) = (missing(&aa, &ab), missing(&ab, &aa));
-    let start = span.map_or(0.0, |(s, _)| angle_of(s, fr));
-    let wa = walk(net, sa, ga, fr, d, &for_a, start);
-    let wb = walk(net, sb, gb, fr, d, &for_b, start);
+    let (for_a, for_b) = (missing(&ua, &ub, ra), missing(&ub, &ua, rb));
+    let wa = walk(net, sa, ga, fr, d, &for_a, start, span.is_some());
+    let wb = walk(net, sb, gb, fr, d, &for_b, start, span.is_some());
     let n = wa.pieces.len();
     if n == 0 || wb.pieces.len() != n {
         return Err(format!(
@@ -228,7 +282,7 @@ pub fn fuse(
             let (s, e) = (angle_of(s, fr), angle_of(e, fr));
             let near = |x: f64, y: f64| {
                 let o = (x - y).rem_euclid(TAU);
-                o.min(TAU - o) <= 1e-7
+                o.min(TAU - o) <= END_ANGLE
             };
             let ends = |w: &Walk, g: DVec3| {
                 let last = net.vertices[w.pieces[n - 1].2].position;

@@ -135,7 +135,16 @@ pub fn envelope(spec: &EnvelopeSpec) -> Result<Envelope, EnvelopeError> {
     let mut network = Network::default();
     let mut sections: HashMap<(usize, usize), Vec<PatchSide>> = HashMap::new();
     for &a in &lay.kept {
-        let partners = lay.neighbours(a);
+        // The cuts in an order of their directions, not of the listing, so that rounding in the
+        // clipping cannot depend on the listing either.
+        let mut partners = lay.neighbours(a);
+        let dir = |b: usize| (centres[b] - centres[a]).normalize().to_array();
+        partners.sort_by(|&p, &q| {
+            let (u, v) = (dir(p), dir(q));
+            u[0].total_cmp(&v[0])
+                .then(u[1].total_cmp(&v[1]))
+                .then(u[2].total_cmp(&v[2]))
+        });
         let cuts: Vec<DVec3> = partners
             .iter()
             .map(|&b| (centres[b] - centres[a]).normalize())
