@@ -75,7 +75,7 @@ fn offset(angle: f64, start: f64) -> f64 {
 }
 
 /// The section's edges turned to run with increasing angle about G, cut at `extra` angles
-/// (T-points, added to `net`), sorted from angle `start`.
+/// (T-points, added to `net`), sorted by angle: a chain from `chain_start` along its links.
 fn walk(
     net: &mut Network,
     edges: &[PatchSide],
@@ -83,9 +83,9 @@ fn walk(
     fr: (DVec3, DVec3),
     d: DVec3,
     extra: &[f64],
-    start: f64,
-    chain: bool,
+    chain_start: Option<f64>,
 ) -> Walk {
+    let start = chain_start.unwrap_or(0.0);
     let mut pieces = Vec::new();
     for e in edges {
         let c = e.curve;
@@ -155,7 +155,7 @@ fn walk(
         }
     }
     pieces.sort_by(|a, b| offset(a.1.angle, start).total_cmp(&offset(b.1.angle, start)));
-    if chain {
+    if chain_start.is_some() {
         // A chain runs from its one start that no piece ends at (its first point may sit a
         // hair before the start ray, by rounding).
         let head = pieces
@@ -208,7 +208,10 @@ pub fn fuse(
     let start = span.map_or(0.0, |(s, _)| angle_of(s, fr));
     let base = start - 0.5;
     let place = |net: &Network, edges: &[PatchSide], g: DVec3| -> (Vec<f64>, (f64, f64)) {
-        let ends: Vec<usize> = edges.iter().flat_map(|e| net.curves[e.curve].ends).collect();
+        let ends: Vec<usize> = edges
+            .iter()
+            .flat_map(|e| net.curves[e.curve].ends)
+            .collect();
         let at = |v: usize| angle_of(net.vertices[v].position - g, fr);
         let range = if span.is_some() {
             let tips: Vec<f64> = ends
@@ -254,8 +257,8 @@ pub fn fuse(
             .collect()
     };
     let (for_a, for_b) = (missing(&ua, &ub, ra), missing(&ub, &ua, rb));
-    let wa = walk(net, sa, ga, fr, d, &for_a, start, span.is_some());
-    let wb = walk(net, sb, gb, fr, d, &for_b, start, span.is_some());
+    let wa = walk(net, sa, ga, fr, d, &for_a, span.map(|_| start));
+    let wb = walk(net, sb, gb, fr, d, &for_b, span.map(|_| start));
     let n = wa.pieces.len();
     if n == 0 || wb.pieces.len() != n {
         return Err(format!(
