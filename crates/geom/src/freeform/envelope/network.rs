@@ -130,6 +130,12 @@ pub(crate) fn perpendicular(n: DVec3, tangent: DVec3) -> DVec3 {
 /// Legs closer to antiparallel than this (radians) continue each other: rule (a).
 const STRAIGHT: f64 = 1e-9;
 
+/// Rule (a) only where the crossing curves leave the curve at a real angle (sine at least
+/// this): a crossing that grazes the curve (a cut passing close to a primitive's edge) would
+/// put g almost along C′, and the cross derivative `k g + h C′` turns parallel to the curve
+/// somewhere along it — a fold inside the patches with both sides agreeing (envelope.md).
+const GRAZING: f64 = 0.5;
+
 impl Network {
     /// Adds a vertex.
     pub(crate) fn add_vertex(&mut self, position: DVec3, normal: DVec3, rho: f64) -> usize {
@@ -243,7 +249,8 @@ impl Network {
                 g[end] = match legs[end].iter().map(|l| l.2).collect::<Vec<_>>().as_slice() {
                     [a, b]
                         if a.cross(*b).length().atan2(a.dot(*b))
-                            > std::f64::consts::PI - STRAIGHT =>
+                            > std::f64::consts::PI - STRAIGHT
+                            && a.normalize_or_zero().cross(d).length() >= GRAZING =>
                     {
                         let u = a.normalize_or_zero();
                         if u.dot(side) >= 0.0 { u } else { -u }
