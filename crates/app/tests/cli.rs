@@ -1014,7 +1014,7 @@ fn envelope_builds_the_bundled_scenes_and_names_bad_ones() {
         "envelope assets/table2-seven.envelope.json -o {} --resolution 4",
     );
     assert!(
-        so.contains("primitives=7 regions=65 patches=130 removed=0"),
+        so.contains("primitives=7 regions=67 patches=135 removed=0"),
         "{so}"
     );
     let (_, so, _) = succeeds_to(

@@ -205,8 +205,9 @@ fn four_cubes_on_a_tetrahedron() {
     }
 }
 
-/// A primitive whose centre is not a corner of the centres' hull is swallowed (§5.1.3): it is
-/// reported and the surface is the one without it.
+/// A primitive whose centre is not a corner of the centres' hull is swallowed (§5.1.3), and so is
+/// one within a tenth of its radius of the others' hull: it is reported and the surface is the
+/// one without it.
 #[test]
 fn swallowed_primitives_are_removed() {
     let mut row = vec![
@@ -215,10 +216,17 @@ fn swallowed_primitives_are_removed() {
     ];
     let mut inner = l_of_three();
     let mut deep = tetrahedron_of_four();
+    let mut long = vec![
+        cube_at([0.0; 3], [0.0; 3]),
+        cube_at([6.0, 0.0, 0.0], [0.0; 3]),
+    ];
     let cases = [
         (&mut row, cube_at([1.5, 0.0, 0.0], [0.0, 0.0, 30.0])),
         (&mut inner, cube_at([1.0, 1.0, 0.0], [10.0, 20.0, 30.0])),
         (&mut deep, cube_at([0.8, 0.9, 1.0], [0.0; 3])),
+        // 0.05 off the line: within a tenth of r of the others' hull (a 1.9° sliver of it
+        // would be kept, and it folded: 50 of 768 faces inwards).
+        (&mut long, cube_at([3.0, 0.05, 0.0], [0.0; 3])),
     ];
     for (without, extra) in cases {
         let bare = build(without.clone(), 0.7);
@@ -268,7 +276,7 @@ fn the_listing_order_of_many_does_not_matter() {
 }
 
 /// The bundled scenes like the paper's Table 2 (seven and five primitives of several kinds and
-/// sizes) are sound at t = 1 and 0.7, and enclose their primitives at t = 1.
+/// sizes) are sound at t = 1, 0.7 and 0.5, and enclose their primitives at t = 1.
 #[test]
 fn the_bundled_scenes_of_several_are_sound() {
     for (name, text) in [
@@ -282,7 +290,7 @@ fn the_bundled_scenes_of_several_are_sound() {
         ),
     ] {
         let spec: EnvelopeSpec = serde_json::from_str(text).unwrap();
-        for t in [1.0, 0.7] {
+        for t in [1.0, 0.7, 0.5] {
             let e = envelope(&EnvelopeSpec { t, ..spec.clone() }).unwrap();
             assert!(e.removed.is_empty());
             assert_sound(&e, t == 1.0, &format!("{name} at t = {t}"));
@@ -340,6 +348,16 @@ fn survey() {
         ),
     ];
     let mut scenes = scenes;
+    for off in [0.05, 0.2, 0.5, 1.0] {
+        scenes.push((
+            "near row",
+            vec![
+                cube_at([0.0; 3], [0.0; 3]),
+                cube_at([3.0, off, 0.0], [0.0; 3]),
+                cube_at([6.0, 0.0, 0.0], [0.0; 3]),
+            ],
+        ));
+    }
     for (name, text) in [
         (
             "table2-seven",

@@ -121,7 +121,7 @@ pub fn run(a: EnvelopeArgs) -> Result<(), CliError> {
     );
     if !e.removed.is_empty() {
         println!(
-            "swallowed by the others (centre not a corner of the hull of the centres, seed 004 §5.1.3): primitive(s) {}",
+            "swallowed by the others (centre inside, or within r/10 of, the hull of the others' centres; seed 004 §5.1.3): primitive(s) {}",
             e.removed
                 .iter()
                 .map(|i| i.to_string())

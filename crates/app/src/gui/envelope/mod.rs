@@ -444,7 +444,7 @@ impl EnvelopeTab {
                 ));
                 if !e.removed.is_empty() {
                     ui.label(format!(
-                        "swallowed by the others (centre not a corner of the centres' hull): primitive(s) {:?}",
+                        "swallowed by the others (centre inside, or within r/10 of, the others' hull): primitive(s) {:?}",
                         e.removed
                     ))
                     .on_hover_text("The paper cuts every primitive by the plane through its centre normal to each partner; these keep nothing (seed 004 §5.1.3)");

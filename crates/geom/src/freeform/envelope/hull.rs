@@ -258,6 +258,120 @@ fn finish(n: usize, mut edges: Vec<HullEdge>, facets: Vec<Facet>) -> Layout {
     }
 }
 
+/// The layout of the primitives `active` (indices into `c`), with indices into `c`.
+fn layout_of(c: &[DVec3], active: &[usize], tol: f64) -> Layout {
+    let sub: Vec<DVec3> = active.iter().map(|&i| c[i]).collect();
+    let l = layout(&sub, tol);
+    let map = |v: &[usize]| -> Vec<usize> { v.iter().map(|&i| active[i]).collect() };
+    Layout {
+        kept: map(&l.kept),
+        removed: map(&l.removed),
+        edges: l
+            .edges
+            .into_iter()
+            .map(|e| {
+                let (a, b) = (active[e.a], active[e.b]);
+                HullEdge {
+                    a: a.min(b),
+                    b: a.max(b),
+                    ..e
+                }
+            })
+            .collect(),
+        facets: l
+            .facets
+            .into_iter()
+            .map(|f| Facet {
+                normal: f.normal,
+                corners: map(&f.corners),
+            })
+            .collect(),
+    }
+}
+
+fn segment_distance(p: DVec3, a: DVec3, b: DVec3) -> f64 {
+    let ab = b - a;
+    let s = ((p - a).dot(ab) / ab.length_squared().max(f64::MIN_POSITIVE)).clamp(0.0, 1.0);
+    p.distance(a + s * ab)
+}
+
+/// The distance from `p` to the convex hull the layout describes (0 inside).
+fn hull_distance(p: DVec3, c: &[DVec3], l: &Layout) -> f64 {
+    if l.facets.is_empty() {
+        return match l.edges.first() {
+            Some(e) => segment_distance(p, c[e.a], c[e.b]),
+            None => l.kept.first().map_or(f64::INFINITY, |&k| p.distance(c[k])),
+        };
+    }
+    let side = |f: &Facet| (p - c[f.corners[0]]).dot(f.normal);
+    if l.facets.len() > 2 && l.facets.iter().all(|f| side(f) <= 0.0) {
+        return 0.0;
+    }
+    l.facets
+        .iter()
+        .map(|f| {
+            let m = f.corners.len();
+            let q = p - side(f) * f.normal;
+            let inside = (0..m).all(|k| {
+                let (a, b) = (c[f.corners[k]], c[f.corners[(k + 1) % m]]);
+                (b - a).cross(q - a).dot(f.normal) >= 0.0
+            });
+            if inside {
+                side(f).abs()
+            } else {
+                (0..m)
+                    .map(|k| segment_distance(p, c[f.corners[k]], c[f.corners[(k + 1) % m]]))
+                    .fold(f64::INFINITY, f64::min)
+            }
+        })
+        .fold(f64::INFINITY, f64::min)
+}
+
+/// The layout of primitives with centres `c` and sphere radii `r`, where a primitive whose
+/// centre lies within `swallow × r` of the hull of the others' centres is swallowed too: its
+/// cone would be a sliver (a centre a hair off the line or plane of its neighbours) and its
+/// faces and the lids beside it thin strips that no patch split survives (envelope.md). One
+/// at a time, the nearest (relative to its r) first, so two close centres do not take each
+/// other out.
+pub fn layout_swallowing(c: &[DVec3], r: &[f64], tol: f64, swallow: f64) -> Layout {
+    let mut active: Vec<usize> = (0..c.len()).collect();
+    loop {
+        let l = layout_of(c, &active, tol);
+        if l.kept.len() <= 2 {
+            return finish_removed(l, c.len());
+        }
+        let nearest = l
+            .kept
+            .iter()
+            .map(|&i| {
+                let others: Vec<usize> = l.kept.iter().copied().filter(|&j| j != i).collect();
+                let d = hull_distance(c[i], c, &layout_of(c, &others, tol));
+                (d / r[i], i)
+            })
+            .min_by(|a, b| {
+                a.0.total_cmp(&b.0).then_with(|| {
+                    let (p, q) = (c[a.1].to_array(), c[b.1].to_array());
+                    p[0].total_cmp(&q[0])
+                        .then(p[1].total_cmp(&q[1]))
+                        .then(p[2].total_cmp(&q[2]))
+                })
+            })
+            .expect("kept");
+        if nearest.0 >= swallow {
+            return finish_removed(l, c.len());
+        }
+        active = l.kept.iter().copied().filter(|&j| j != nearest.1).collect();
+    }
+}
+
+/// The layout with every primitive it does not keep listed as removed.
+fn finish_removed(mut l: Layout, n: usize) -> Layout {
+    l.removed = (0..n)
+        .filter(|i| l.kept.binary_search(i).is_err())
+        .collect();
+    l
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -340,5 +454,36 @@ mod tests {
             let [p, q] = e.facets.unwrap();
             p != q
         }));
+    }
+
+    #[test]
+    fn a_centre_a_hair_off_its_neighbours_line_is_swallowed() {
+        let c = [v(0., 0., 0.), v(3., 0.05, 0.), v(6., 0., 0.)];
+        let r = [1.7; 3];
+        let l = layout_swallowing(&c, &r, 1e-9, 0.1);
+        assert_eq!(l.kept, vec![0, 2]);
+        assert_eq!(l.removed, vec![1]);
+        // Well off the line it stays.
+        let c = [v(0., 0., 0.), v(3., 0.5, 0.), v(6., 0., 0.)];
+        assert_eq!(layout_swallowing(&c, &r, 1e-9, 0.1).kept, vec![0, 1, 2]);
+        // Two close centres do not take each other out.
+        let c = [
+            v(0., 0., 0.),
+            v(4., 0., 0.),
+            v(4.05, 0.05, 0.),
+            v(2., 3., 0.),
+        ];
+        let l = layout_swallowing(&c, &[1.7; 4], 1e-9, 0.1);
+        assert_eq!(l.kept.len(), 3, "{l:?}");
+        // A centre just above the middle of a facet goes; one at a corner stays.
+        let c = [
+            v(0., 0., 0.),
+            v(4., 0., 0.),
+            v(0., 4., 0.),
+            v(0., 0., 4.),
+            v(1.4, 1.4, 1.4),
+        ];
+        let l = layout_swallowing(&c, &[1.7; 5], 1e-9, 0.1);
+        assert_eq!(l.kept, vec![0, 1, 2, 3]);
     }
 }

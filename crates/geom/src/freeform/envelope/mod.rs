@@ -94,6 +94,10 @@ pub struct Envelope {
     pub straight: Vec<[DVec3; 2]>,
 }
 
+/// A primitive whose centre lies within this share of its sphere's radius of the hull of the
+/// others' centres is swallowed (hull.rs): its part would be a sliver.
+const SWALLOW: f64 = 0.1;
+
 /// The signed angle (0 to 2π) from `from` to `to` about unit `d`, counter-clockwise.
 fn ccw(d: DVec3, from: DVec3, to: DVec3) -> f64 {
     d.dot(from.cross(to))
@@ -131,7 +135,8 @@ pub fn envelope(spec: &EnvelopeSpec) -> Result<Envelope, EnvelopeError> {
         .iter()
         .map(|c| c.distance(centres[0]))
         .fold(largest, f64::max);
-    let lay = hull::layout(&centres, 1e-9 * extent);
+    let radii: Vec<f64> = primitives.iter().map(|p| p.radius).collect();
+    let lay = hull::layout_swallowing(&centres, &radii, 1e-9 * extent, SWALLOW);
     let mut network = Network::default();
     let mut sections: HashMap<(usize, usize), Vec<PatchSide>> = HashMap::new();
     for &a in &lay.kept {
