@@ -317,9 +317,12 @@ fn refine(
             child_tags.corners.insert(numbering.vertex(v), d as f64);
         }
     }
-    child_tags.holes = (0..face_parent.len() as u32)
-        .filter(|&f| sh.hole[face_parent[f as usize] as usize])
-        .collect();
+    // Only a parent with holes has child faces to look for (a pass over every child face).
+    if sh.hole.iter().any(|&h| h) {
+        child_tags.holes = (0..face_parent.len() as u32)
+            .filter(|&f| sh.hole[face_parent[f as usize] as usize])
+            .collect();
+    }
 
     let report = PrimalReport {
         vertices: child.num_vertices(),

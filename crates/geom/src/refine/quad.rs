@@ -40,23 +40,46 @@ pub fn counts(mesh: &PolyMesh, edges: usize) -> ChildCounts {
     }
 }
 
-/// The child's faces (no positions yet), and the parent face of each.
+/// The child's faces (no positions yet), and the parent face of each. Every array is
+/// written on rayon's pool (each child quad is a function of its parent corner alone), so
+/// the fresh pages are also first touched on every core.
 pub fn faces(mesh: &PolyMesh, topo: &Topology, n: PrimalNumbering) -> (PolyMesh, Vec<u32>) {
+    use rayon::prelude::*;
     let nc = mesh.num_corners();
     let cv = &mesh.corner_verts;
     let mut child = PolyMesh::new();
-    child.corner_verts.reserve(4 * nc);
-    child.loop_starts = (0..=nc as u32).map(|i| 4 * i).collect();
-    child.face_starts = (0..=nc as u32).collect();
-    for c in 0..nc {
-        child.corner_verts.extend_from_slice(&[
-            n.vertex(cv[c]),
-            n.edge_point(topo.corner_edge[c]),
-            n.face_point(topo.corner_face[c]),
-            n.edge_point(topo.corner_edge[topo.prev[c] as usize]),
-        ]);
-    }
-    (child, topo.corner_face.clone())
+    child.corner_verts = vec![0; 4 * nc];
+    const QUADS: usize = 1 << 12;
+    child
+        .corner_verts
+        .par_chunks_mut(4 * QUADS)
+        .enumerate()
+        .for_each(|(i, block)| {
+            for (j, quad) in block.chunks_exact_mut(4).enumerate() {
+                let c = i * QUADS + j;
+                quad[0] = n.vertex(cv[c]);
+                quad[1] = n.edge_point(topo.corner_edge[c]);
+                quad[2] = n.face_point(topo.corner_face[c]);
+                quad[3] = n.edge_point(topo.corner_edge[topo.prev[c] as usize]);
+            }
+        });
+    child.loop_starts = (0..nc + 1)
+        .into_par_iter()
+        .with_min_len(1 << 14)
+        .map(|i| 4 * i as u32)
+        .collect();
+    child.face_starts = (0..nc + 1)
+        .into_par_iter()
+        .with_min_len(1 << 14)
+        .map(|i| i as u32)
+        .collect();
+    let parent = topo
+        .corner_face
+        .par_iter()
+        .with_min_len(1 << 14)
+        .copied()
+        .collect();
+    (child, parent)
 }
 
 /// Topology of the child of `mesh` (with topology `topo`).

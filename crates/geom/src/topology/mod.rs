@@ -13,6 +13,21 @@
 
 use crate::error::{MeshError, MeshWarning};
 use crate::mesh::PolyMesh;
+use rayon::prelude::*;
+
+/// Faces a task of the parallel loop pass takes.
+const FACE_CHUNK: usize = 1 << 12;
+
+/// `s` cut at `bounds` (ascending, from 0 to `s.len()`): one piece per window.
+fn split_at_bounds<'a, T>(mut s: &'a mut [T], bounds: &[usize]) -> Vec<&'a mut [T]> {
+    let mut pieces = Vec::with_capacity(bounds.len().saturating_sub(1));
+    for w in bounds.windows(2) {
+        let (head, tail) = std::mem::take(&mut s).split_at_mut(w[1] - w[0]);
+        pieces.push(head);
+        s = tail;
+    }
+    pieces
+}
 
 /// Marks a missing index (no twin, unused vertex).
 pub const NONE: u32 = u32::MAX;
@@ -108,40 +123,74 @@ impl Topology {
             }
         }
 
+        // Loops: face, next and previous corner of every corner, on every core in chunks of
+        // faces (each chunk owns its corners); the faces that need the full check (not a
+        // plain triangle or quad of distinct in-range vertices) are checked after, in order,
+        // so the first bad face is named as one pass would name it.
         let mut corner_face = vec![0u32; nc];
         let mut next = vec![0u32; nc];
         let mut prev = vec![0u32; nc];
+        let first_faces: Vec<usize> = (0..nf).step_by(FACE_CHUNK).chain([nf]).collect();
+        let bounds: Vec<usize> = first_faces
+            .iter()
+            .map(|&f| {
+                if f == nf {
+                    nc
+                } else {
+                    mesh.face_corners(f).start
+                }
+            })
+            .collect();
+        let flagged: Vec<Vec<u32>> = split_at_bounds(&mut corner_face, &bounds)
+            .into_par_iter()
+            .zip(split_at_bounds(&mut next, &bounds))
+            .zip(split_at_bounds(&mut prev, &bounds))
+            .enumerate()
+            .map(|(i, ((cf, nx), pv))| {
+                let base = bounds[i];
+                let mut flagged = Vec::new();
+                for f in first_faces[i]..first_faces[i + 1] {
+                    let loops = mesh.face_loops(f);
+                    let vs = &mesh.corner_verts[mesh.face_corners(f)];
+                    let small = loops.len() == 1 && (3..=4).contains(&vs.len());
+                    let ok = small
+                        && vs.iter().all(|&v| (v as usize) < nv)
+                        && vs[0] != vs[1]
+                        && vs[0] != vs[2]
+                        && vs[1] != vs[2]
+                        && (vs.len() == 3 || (vs[3] != vs[0] && vs[3] != vs[1] && vs[3] != vs[2]));
+                    if !ok {
+                        flagged.push(f as u32);
+                    }
+                    for l in loops {
+                        let r = mesh.loop_corners(l);
+                        for c in r.clone() {
+                            cf[c - base] = f as u32;
+                            nx[c - base] = (c + 1) as u32;
+                            pv[c - base] = c.wrapping_sub(1) as u32;
+                        }
+                        if !r.is_empty() {
+                            nx[r.end - 1 - base] = r.start as u32;
+                            pv[r.start - base] = (r.end - 1) as u32;
+                        }
+                    }
+                }
+                flagged
+            })
+            .collect();
         // Per-vertex stamp of the last face that used it: detects a vertex repeated in a
         // face with more than four corners (smaller ones compare their corners directly).
-        let mut stamp = vec![NONE; nv];
-        for f in 0..nf {
-            let loops = mesh.face_loops(f);
-            if loops.is_empty() {
-                return Err(MeshError::EmptyFace { face: f as u32 });
+        let mut stamp = Vec::new();
+        for &f in flagged.iter().flatten() {
+            if mesh.face_loops(f as usize).is_empty() {
+                return Err(MeshError::EmptyFace { face: f });
             }
-            let corners = mesh.face_corners(f);
-            let vs = &mesh.corner_verts[corners.clone()];
-            let small = loops.len() == 1 && (3..=4).contains(&vs.len());
-            let ok = small
-                && vs.iter().all(|&v| (v as usize) < nv)
-                && vs[0] != vs[1]
-                && vs[0] != vs[2]
-                && vs[1] != vs[2]
-                && (vs.len() == 3 || (vs[3] != vs[0] && vs[3] != vs[1] && vs[3] != vs[2]));
-            if !ok {
-                check_face(mesh, f, &mut stamp)?;
+            if stamp.is_empty() {
+                stamp = vec![NONE; nv];
             }
-            for l in loops {
-                let r = mesh.loop_corners(l);
-                for c in r.clone() {
-                    corner_face[c] = f as u32;
-                    next[c] = (c + 1) as u32;
-                    prev[c] = c.wrapping_sub(1) as u32;
-                }
-                next[r.end - 1] = r.start as u32;
-                prev[r.start] = (r.end - 1) as u32;
-            }
+            check_face(mesh, f as usize, &mut stamp)?;
         }
+        drop(stamp);
 
         // Outgoing half-edges per vertex (CSR), each stored with its destination vertex so
         // that the twin search reads one contiguous run.
@@ -175,28 +224,31 @@ impl Topology {
 
         // One outgoing half-edge per vertex; on a boundary the one without a twin, so that
         // walking the ring with `ring_next` from it visits the whole fan.
-        let mut vert_corner = vec![NONE; nv];
-        let mut unused = 0u32;
-        let mut first_unused = NONE;
-        for (v, vc) in vert_corner.iter_mut().enumerate() {
-            let ring = outgoing(v as u32);
-            if let Some(&(first, _)) = ring.first() {
-                *vc = ring
-                    .iter()
+        let vert_corner: Vec<u32> = (0..nv)
+            .into_par_iter()
+            .with_min_len(1 << 14)
+            .map(|v| {
+                let ring = outgoing(v as u32);
+                ring.iter()
                     .find(|&&(d, _)| twin[d as usize] == NONE)
-                    .map_or(first, |&(d, _)| d);
-            } else {
-                unused += 1;
-                if first_unused == NONE {
-                    first_unused = v as u32;
-                }
-            }
-        }
+                    .or(ring.first())
+                    .map_or(NONE, |&(d, _)| d)
+            })
+            .collect();
+        let unused = vert_corner
+            .par_iter()
+            .with_min_len(1 << 14)
+            .filter(|&&c| c == NONE)
+            .count() as u32;
         let mut warnings = Vec::new();
         if unused > 0 {
+            let first = vert_corner
+                .par_iter()
+                .position_first(|&c| c == NONE)
+                .expect("counted") as u32;
             warnings.push(MeshWarning::UnusedVertices {
                 count: unused,
-                first: first_unused,
+                first,
             });
         }
 
@@ -273,6 +325,31 @@ impl Topology {
     /// vertex, open at a boundary vertex): two cones touching at a tip, two sheets touching
     /// at a corner.
     pub fn require_single_fans(&self, mesh: &PolyMesh) -> Result<(), MeshError> {
+        // A fan walk visits distinct corners of its vertex (`ring_next` is one-to-one), so
+        // it never counts more than the vertex's valence; the fans' sizes add up to the
+        // number of corners exactly when every vertex is a single fan. Only then is the
+        // per-vertex count below skipped.
+        let nc = mesh.num_corners();
+        let fan = |start: u32, bound: usize| {
+            let mut k = 0usize;
+            let mut c = start;
+            loop {
+                k += 1;
+                c = self.ring_next(c);
+                if c == NONE || c == start || k > bound {
+                    return k;
+                }
+            }
+        };
+        let total: usize = self
+            .vert_corner
+            .par_iter()
+            .with_min_len(1 << 12)
+            .map(|&start| if start == NONE { 0 } else { fan(start, nc) })
+            .sum();
+        if total == nc {
+            return Ok(());
+        }
         let mut valence = vec![0u32; mesh.num_vertices()];
         for &v in &mesh.corner_verts {
             valence[v as usize] += 1;
@@ -281,15 +358,7 @@ impl Topology {
             if start == NONE {
                 continue;
             }
-            let mut k = 0u32;
-            let mut c = start;
-            loop {
-                k += 1;
-                c = self.ring_next(c);
-                if c == NONE || c == start || k > valence[v] {
-                    break;
-                }
-            }
+            let k = fan(start, valence[v] as usize) as u32;
             if k != valence[v] {
                 return Err(MeshError::NonManifoldVertex {
                     vertex: v as u32,

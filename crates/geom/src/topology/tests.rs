@@ -153,3 +153,90 @@ fn twins_found_in_parallel_are_the_serial_ones() {
 fn t_has_boundary(m: &PolyMesh) -> bool {
     Topology::build(m).unwrap().twin.contains(&NONE)
 }
+
+/// Everything the build writes on rayon's pool (loops, ring starts, the fan check) and the
+/// primal splits are the same on one thread as on several, field for field, on a mesh cut
+/// into many pieces with n-gons, holes and boundaries in it; the first bad face is named
+/// the same way.
+#[test]
+fn the_build_and_the_splits_are_the_same_on_any_number_of_threads() {
+    use crate::primal::{PrimalScheme, refine_primal};
+    use crate::tags::SubdivTags;
+    let torus = crate::primitives::torus(150, 100, 3.0, 1.0);
+    let holed =
+        crate::primitives::union_disjoint(&[torus.clone(), crate::primitives::holed_block()]);
+    let mut open = crate::primitives::union_disjoint(&[
+        crate::primitives::ngon_prism(7, 1.0, 1.0),
+        torus.clone(),
+    ]);
+    open.truncate_faces(open.num_faces() - 3);
+    let tri = crate::primitives::fan_triangulated(&torus);
+    let on = |threads: usize, m: &PolyMesh, scheme: Option<PrimalScheme>| {
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .unwrap();
+        pool.install(|| {
+            let t = Topology::build(m).unwrap();
+            let fans = t.require_single_fans(m);
+            let refined = scheme.map(|s| {
+                let attrs = crate::edge_attrs::EdgeAttrs::new();
+                refine_primal(m, &attrs, &SubdivTags::default(), s, u64::MAX).unwrap()
+            });
+            (t, fans, refined)
+        })
+    };
+    let cases = [
+        (&holed, None),
+        (&open, Some(PrimalScheme::CatmullClark)),
+        (&torus, Some(PrimalScheme::CatmullClark)),
+        (&tri, Some(PrimalScheme::Loop)),
+    ];
+    for (m, scheme) in cases {
+        let (a, fa, ra) = on(1, m, scheme);
+        let (b, fb, rb) = on(3, m, scheme);
+        assert_eq!(a.corner_face, b.corner_face);
+        assert_eq!(a.next, b.next);
+        assert_eq!(a.prev, b.prev);
+        assert_eq!(a.twin, b.twin);
+        assert_eq!(a.corner_edge, b.corner_edge);
+        assert_eq!(a.edge_corner, b.edge_corner);
+        assert_eq!(a.vert_corner, b.vert_corner);
+        assert_eq!(a.warnings, b.warnings);
+        assert_eq!(fa, fb);
+        // And what one pass over the loops gives.
+        for f in 0..m.num_faces() {
+            for l in m.face_loops(f) {
+                let r = m.loop_corners(l);
+                for c in r.clone() {
+                    assert_eq!(a.corner_face[c], f as u32);
+                    let n = if c + 1 == r.end { r.start } else { c + 1 };
+                    assert_eq!(a.next[c], n as u32);
+                    assert_eq!(a.prev[n], c as u32);
+                }
+            }
+        }
+        if let (Some(ra), Some(rb)) = (ra, rb) {
+            assert_eq!(ra.mesh, rb.mesh);
+            assert_eq!(ra.tags.holes, rb.tags.holes);
+        }
+    }
+    // Two bad faces far apart: the first is named.
+    let mut bad = torus.clone();
+    let n = bad.num_faces();
+    let (f1, f2) = (n / 3, 2 * n / 3);
+    for f in [f2, f1] {
+        let c = bad.face_corners(f).start;
+        bad.corner_verts[c + 1] = bad.corner_verts[c];
+    }
+    for threads in [1, 3] {
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .unwrap();
+        match pool.install(|| Topology::build(&bad)) {
+            Err(MeshError::RepeatedVertex { face, .. }) => assert_eq!(face, f1 as u32),
+            other => panic!("{threads} threads: {:?}", other.map(|_| ())),
+        }
+    }
+}
