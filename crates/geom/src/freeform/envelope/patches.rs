@@ -39,6 +39,10 @@ const LAMBDA_MIN: f64 = 0.25;
 /// away from its P_d (a sub-quad with a negative angle at P_i: a fold).
 const LEAVE: f64 = 0.3;
 
+/// The split point of a three-sided region's side stays this far from its ends (a share
+/// of the side's parameter).
+const SPLIT_MIN: f64 = 0.2;
+
 /// The widest sector (radians) the P_d and the insertion curves' tangents may leave between
 /// neighbours around P_i: a sub-quad's corner there must stay well below 180°.
 const STAR: f64 = 150.0 * std::f64::consts::PI / 180.0;
@@ -110,6 +114,32 @@ fn virtual_crossing(g: DVec3, c: DVec3, u: DVec3, t: f64) -> f64 {
         Some(e) => e.eval(0.5).distance(g),
         None => v.length(),
     }
+}
+
+/// The parameter in [SPLIT_MIN, 1 − SPLIT_MIN] of the point of `c` nearest `p`: the best
+/// of 13 samples, then golden-section steps around it. The search finds a minimum to about
+/// 1e-8 (the distance is flat there), so a result within 1e-6 of the middle is the middle:
+/// a regular triangle and its neighbour across a side split it at one point.
+fn nearest_parameter(c: &RationalBezier, p: DVec3) -> f64 {
+    let d = |u: f64| c.eval(u).distance_squared(p);
+    let span = 1.0 - 2.0 * SPLIT_MIN;
+    let step = span / 12.0;
+    let u0 = (0..=12)
+        .map(|i| SPLIT_MIN + step * i as f64)
+        .min_by(|&a, &b| d(a).total_cmp(&d(b)))
+        .expect("samples");
+    let (mut lo, mut hi) = ((u0 - step).max(SPLIT_MIN), (u0 + step).min(1.0 - SPLIT_MIN));
+    let g = 0.5 * (5f64.sqrt() - 1.0);
+    for _ in 0..30 {
+        let (a, z) = (hi - g * (hi - lo), lo + g * (hi - lo));
+        if d(a) <= d(z) {
+            hi = z;
+        } else {
+            lo = a;
+        }
+    }
+    let u = 0.5 * (lo + hi);
+    if (u - 0.5).abs() < 1e-6 { 0.5 } else { u }
 }
 
 /// Where the inserted point of region `r` goes for the estimate `mean` (§11.7 steps 3–4), and
@@ -207,41 +237,62 @@ fn split(net: &mut Network, r: usize, prims: &[Primitive]) -> Vec<EnvelopePatch>
     let sides = region.sides.clone();
     let fitted = fitted_sides(net, &sides);
     let n = sides.len();
-    let mut pd = Vec::with_capacity(n);
-    let mut b = Vec::with_capacity(n);
-    let mut tangent_d = Vec::with_capacity(n);
-    for s in &fitted {
-        let d = s.curve.derivatives(0.5);
-        let bk = s.cross(0.5).0 / 3.0;
-        pd.push(d.point);
-        b.push(bk);
-        tangent_d.push(d.d1);
-    }
-    let mean = (0..n).map(|k| pd[k] + 1.5 * b[k]).sum::<DVec3>() / n as f64;
+    // Where each side is split, its point P_d, the cross derivative there and the tangent.
+    let at = |split: &[f64]| {
+        let mut pd = Vec::with_capacity(n);
+        let mut b = Vec::with_capacity(n);
+        let mut tangent_d = Vec::with_capacity(n);
+        for (s, &u) in fitted.iter().zip(split) {
+            let d = s.curve.derivatives(u);
+            pd.push(d.point);
+            b.push(s.cross(u).0 / 3.0);
+            tangent_d.push(d.d1);
+        }
+        (pd, b, tangent_d)
+    };
+    // The inserted point for split points `pd` (cross derivatives `b`, tangents `tangent_d`).
     // The star condition at P_i (envelope.md): the P_d must go round P_i in the region's order
     // with every sector below STAR; where the paper's estimate fails it, the estimate moves
     // towards the centroid of the P_d, the first of a few steps that passes (or the best).
-    let centroid = pd.iter().sum::<DVec3>() / n as f64;
-    let mut best: Option<(f64, DVec3, DVec3)> = None;
-    for mu in [0.0, 0.25, 0.5, 0.75, 1.0] {
-        let (p, nrm) = place(
-            net,
-            &region,
-            prims,
-            &pd,
-            &b,
-            &tangent_d,
-            mean.lerp(centroid, mu),
-        );
-        let sector = widest_sector(p, nrm, pd.iter().map(|q| *q - p));
-        if best.is_none_or(|b| sector < b.0) {
-            best = Some((sector, p, nrm));
+    let inserted = |pd: &[DVec3], b: &[DVec3], tangent_d: &[DVec3]| {
+        let mean = (0..n).map(|k| pd[k] + 1.5 * b[k]).sum::<DVec3>() / n as f64;
+        let centroid = pd.iter().sum::<DVec3>() / n as f64;
+        let mut best: Option<(f64, DVec3, DVec3)> = None;
+        for mu in [0.0, 0.25, 0.5, 0.75, 1.0] {
+            let (p, nrm) = place(
+                net,
+                &region,
+                prims,
+                pd,
+                b,
+                tangent_d,
+                mean.lerp(centroid, mu),
+            );
+            let sector = widest_sector(p, nrm, pd.iter().map(|q| *q - p));
+            if best.is_none_or(|b| sector < b.0) {
+                best = Some((sector, p, nrm));
+            }
+            if sector <= STAR {
+                break;
+            }
         }
-        if sector <= STAR {
-            break;
+        best.expect("tried")
+    };
+    let mut split_at = vec![0.5; n];
+    let (mut pd, mut b, mut tangent_d) = at(&split_at);
+    let mut best = inserted(&pd, &b, &tangent_d);
+    if n == 3 {
+        // A three-sided region is split where its sides come nearest the inserted point
+        // (envelope.md, "Thin three-sided regions"): at the middles a thin triangle's
+        // quads meet its long sides at a few degrees and fold. A regular one is split at
+        // its middles as before.
+        for (k, s) in fitted.iter().enumerate() {
+            split_at[k] = nearest_parameter(&s.curve, best.1);
         }
+        (pd, b, tangent_d) = at(&split_at);
+        best = inserted(&pd, &b, &tangent_d);
     }
-    let (_, pi_, normal) = best.expect("tried");
+    let (_, pi_, normal) = best;
     let rho_i = match region.kind {
         RegionKind::Primitive { primitive, .. } => pi_.distance(prims[primitive].centre),
         RegionKind::Fusion => 0.0,
@@ -279,7 +330,7 @@ fn split(net: &mut Network, r: usize, prims: &[Primitive]) -> Vec<EnvelopePatch>
     for k in 0..n {
         let nd = tangent_d[k].cross(b[k]).normalize();
         // The region across may have split this curve already: share its P_d.
-        let tau = sides[k].tau(0.5);
+        let tau = sides[k].tau(split_at[k]);
         let vd = match net.vertex_at(sides[k].curve, tau) {
             Some(v) => v,
             None => {
@@ -317,8 +368,14 @@ fn split(net: &mut Network, r: usize, prims: &[Primitive]) -> Vec<EnvelopePatch>
                     t0: 0.0,
                     t1: 1.0,
                 },
-                sides[k].half(true),
-                sides[j].half(false),
+                PatchSide {
+                    t0: sides[k].tau(split_at[k]),
+                    ..sides[k]
+                },
+                PatchSide {
+                    t1: sides[j].tau(split_at[j]),
+                    ..sides[j]
+                },
                 PatchSide {
                     curve: ins[j],
                     t0: 1.0,
