@@ -13,6 +13,7 @@ use crate::mesh::PolyMesh;
 use crate::rules::primal::crease::{self, INFINITE, is_semi_sharp, is_sharp};
 use crate::tags::{BoundaryInterpolation, CreaseMethod, SubdivTags};
 use crate::topology::{NONE, Topology};
+use rayon::prelude::*;
 
 /// Sharpness of every edge and vertex of one level, boundary rules applied.
 pub(crate) struct Sharpness {
@@ -56,11 +57,16 @@ pub(crate) fn sharpness(
     // Boundary vertices: holes (no interpolation) and sharp corners, before the boundary
     // edges themselves are sharpened.
     if tags.boundary != BoundaryInterpolation::EdgeOnly {
-        for v in 0..nv {
-            let c = topo.vert_corner[v];
-            if c == NONE || topo.twin[c as usize] != NONE {
-                continue;
-            }
+        // The boundary vertices (their first half-edge has no twin), found on every core.
+        let boundary: Vec<usize> = (0..nv)
+            .into_par_iter()
+            .with_min_len(1 << 14)
+            .filter(|&v| {
+                let c = topo.vert_corner[v];
+                c != NONE && topo.twin[c as usize] == NONE
+            })
+            .collect();
+        for v in boundary {
             topo.vertex_ring_from(mesh, topo.vert_corner[v], &mut ring_e, &mut ring_f);
             match tags.boundary {
                 BoundaryInterpolation::None => {
@@ -83,11 +89,14 @@ pub(crate) fn sharpness(
             }
         }
     }
-    for (e, s) in edge.iter_mut().enumerate() {
-        if topo.twin[topo.edge_corner[e] as usize] == NONE {
-            *s = INFINITE;
-        }
-    }
+    edge.par_iter_mut()
+        .with_min_len(1 << 14)
+        .enumerate()
+        .for_each(|(e, s)| {
+            if topo.twin[topo.edge_corner[e] as usize] == NONE {
+                *s = INFINITE;
+            }
+        });
     let mut sharp_edges = vec![0u32; nv];
     let mut semi: Vec<bool> = vert.iter().map(|&s| is_semi_sharp(s)).collect();
     for (e, &s) in edge.iter().enumerate() {
