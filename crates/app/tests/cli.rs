@@ -1017,6 +1017,24 @@ fn envelope_builds_the_bundled_scenes_and_names_bad_ones() {
         so.contains("primitives=7 regions=67 patches=135 removed=0"),
         "{so}"
     );
+    assert!(so.contains(" folded=0 "), "{so}");
+    // At t = 0.5 some of its cells fold: counted, and the first named on stderr (exit 0).
+    let (_, so, se) = succeeds_to(
+        "seven-05.obj",
+        "envelope assets/table2-seven.envelope.json -o {} --resolution 4 --t 0.5",
+    );
+    let folded: usize = so
+        .split_whitespace()
+        .find_map(|w| w.strip_prefix("folded="))
+        .unwrap()
+        .parse()
+        .unwrap();
+    assert!(folded > 0, "{so}");
+    assert!(
+        se.contains(&format!("warning: {folded} of 8640 sampled cells fold"))
+            && se.contains("the first on primitive 0 face 0"),
+        "{se}"
+    );
     let (_, so, _) = succeeds_to(
         "five.obj",
         "envelope assets/table2-five.envelope.json -o {} --resolution 4",

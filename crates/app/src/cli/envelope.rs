@@ -111,14 +111,19 @@ pub fn run(a: EnvelopeArgs) -> Result<(), CliError> {
     )?;
     let mesh = e.tessellate(spec.resolution).map_err(CliError::input)?;
     let counts = prism_geom::analysis::counts(&mesh);
+    let folds = e.folds();
     println!(
-        "primitives={} regions={} patches={} removed={} time_ms={millis:.3} largest normal jump across patch borders {:.2e}°",
+        "primitives={} regions={} patches={} removed={} time_ms={millis:.3} folded={} largest normal jump across patch borders {:.2e}°",
         e.primitives.len(),
         e.regions,
         e.patches.len(),
         e.removed.len(),
+        folds.len(),
         e.largest_border_jump()
     );
+    if let Some(w) = e.fold_warning(&folds) {
+        eprintln!("warning: {w}");
+    }
     if !e.removed.is_empty() {
         println!(
             "swallowed by the others (centre inside, or within r/10 of, the hull of the others' centres; seed 004 §5.1.3): primitive(s) {}",

@@ -32,7 +32,9 @@ fn the_envelope_tab_places_edits_undoes_saves_and_exports_an_envelope() {
         let topo = prism_geom::Topology::build(mesh).unwrap();
         topo.require_closed(mesh).unwrap();
         assert!(b.jump < 1e-9, "{}", b.jump);
+        assert_eq!(b.folds, None);
     }
+    h.get_by_label_contains("Folds: none");
 
     // t through the model as one gesture: one undo step.
     for t in [0.9, 0.7, 0.5] {
@@ -177,4 +179,34 @@ fn the_t_sweep_shows_the_three_t() {
         a.envelope.sweep_summary(),
         vec![(1.0, Some(6)), (0.5, Some(6)), (0.1, Some(6))]
     );
+}
+
+/// Folds are shown in the summary: none on a bundled sample at its own t; the seven-primitive
+/// sample at t = 0.5 has cells turned by more than 90°, counted, with where the first lies.
+#[test]
+fn the_summary_counts_folds() {
+    let k = envelope::ENVELOPE_SAMPLES
+        .iter()
+        .position(|s| s.1 == "table2-seven.envelope.json")
+        .unwrap();
+    for (t, folded) in [(None, false), (Some(0.5), true)] {
+        let mut a = app();
+        let mut spec = envelope::sample(k).unwrap();
+        if let Some(t) = t {
+            spec = envelope::with_uniform_t(&spec, t);
+        }
+        a.run(Command::Edit(Edit::SetEnvelope {
+            spec: Some(spec),
+            gesture: None,
+        }));
+        a.envelope.sync(a.doc.state().envelope.as_ref());
+        let b = a.envelope.built().expect("built");
+        match &b.folds {
+            Some((n, text)) => {
+                assert!(folded && *n > 0);
+                assert!(text.contains("the first on primitive 0 face 0"), "{text}");
+            }
+            None => assert!(!folded),
+        }
+    }
 }

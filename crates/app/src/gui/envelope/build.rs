@@ -61,6 +61,8 @@ pub struct Built {
     pub millis: f64,
     /// Largest analytic normal jump across patch borders, degrees.
     pub jump: f64,
+    /// The fold warning, when some sampled cell folds ([`Envelope::folds`]), and the count.
+    pub folds: Option<(usize, String)>,
 }
 
 impl Built {
@@ -76,11 +78,16 @@ impl Built {
             Ok((e, _)) => e.largest_border_jump(),
             Err(_) => 0.0,
         };
+        let folds = result.as_ref().ok().and_then(|(e, _)| {
+            let f = e.folds();
+            e.fold_warning(&f).map(|w| (f.len(), w))
+        });
         Built {
             spec: spec.clone(),
             result,
             millis,
             jump,
+            folds,
         }
     }
 }

@@ -459,6 +459,18 @@ impl EnvelopeTab {
                     "G1: largest normal jump across patch borders {:.1e}°; network and patches in {:.2} ms",
                     b.jump, b.millis
                 ));
+                match &b.folds {
+                    Some((n, text)) => {
+                        ui.colored_label(
+                            egui::Color32::from_rgb(255, 120, 100),
+                            format!("Folds: {n} cell(s)"),
+                        )
+                        .on_hover_text(text.clone());
+                    }
+                    None => {
+                        ui.label("Folds: none (every sampled cell faces like its patch's corners)");
+                    }
+                }
             }
             Err(e) => {
                 ui.colored_label(

@@ -16,6 +16,7 @@
 pub mod clip;
 pub mod coons;
 pub mod edges;
+pub mod folds;
 pub mod fusion;
 pub mod hull;
 pub mod network;
@@ -231,6 +232,41 @@ impl Envelope {
             return Err(EnvelopeError::Resolution(k));
         }
         Ok(tessellate::tessellate(&self.network, &self.patches, k))
+    }
+
+    /// The folded cells of its patches ([`folds::folds`], [`folds::FOLD_CELLS`] a side).
+    pub fn folds(&self) -> Vec<folds::Fold> {
+        folds::folds(&self.network, &self.patches, folds::FOLD_CELLS)
+    }
+
+    /// The warning for `folds` (none when empty): how many cells of how many patches, and
+    /// where the first lies.
+    pub fn fold_warning(&self, folds: &[folds::Fold]) -> Option<String> {
+        let first = folds.first()?;
+        let mut patches: Vec<usize> = folds.iter().map(|f| f.patch).collect();
+        patches.dedup();
+        Some(format!(
+            "{} of {} sampled cells fold ({} of {} patches: the surface turns more than 90° from the tangent planes at the patch's corners), the first on {} (patch {}, u = {:.2}, v = {:.2}); a larger t or primitives further apart usually clear it",
+            folds.len(),
+            self.patches.len() * folds::FOLD_CELLS * folds::FOLD_CELLS,
+            patches.len(),
+            self.patches.len(),
+            self.describe_region(first.region),
+            first.patch,
+            first.u,
+            first.v
+        ))
+    }
+
+    /// What region `r` lies on, in words: "primitive P face F" or "a fusion region".
+    pub fn describe_region(&self, r: usize) -> String {
+        match self.network.regions.get(r).map(|x| x.kind) {
+            Some(network::RegionKind::Primitive { primitive, face }) => {
+                format!("primitive {primitive} face {face}")
+            }
+            Some(network::RegionKind::Fusion) => format!("region {r} (between primitives)"),
+            None => format!("region {r}"),
+        }
     }
 
     /// The largest angle in degrees between the two sides' normals along the patch borders

@@ -1,0 +1,67 @@
+//! Folds of an envelope, found patch by patch (docs/algorithms/envelope.md, "Folds, reported").
+//!
+//! Every patch is sampled on a k × k grid of cells; a cell whose normal `(∂S/∂u) × (∂S/∂v)`
+//! (from the cell's four corners) makes more than 90° with the outward normals of the
+//! patch's four corners blended bilinearly to the cell's centre is **folded**: the surface
+//! there has turned past the tangent planes it spans between. The corners are network
+//! vertices, whose normals are the tangent planes every curve through them touches (outward),
+//! so the test needs no other part of the surface and costs one grid per patch. It sees
+//! folds that a winding-number test at a step off the face misses (a cell tilted by 95° in a
+//! pleat is outside-facing enough to pass that one); it does not see two distant parts of
+//! the surface passing through each other.
+
+use super::network::Network;
+use super::patches::EnvelopePatch;
+use glam::DVec3;
+
+/// Cells along each side of a patch that the check samples.
+pub const FOLD_CELLS: usize = 8;
+
+/// A folded cell: its patch, the patch's region and the cell's centre (u, v).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Fold {
+    pub patch: usize,
+    pub region: usize,
+    pub u: f64,
+    pub v: f64,
+}
+
+/// The folded cells of `patches` sampled `k` × `k`, patch by patch, in order.
+pub fn folds(net: &Network, patches: &[EnvelopePatch], k: usize) -> Vec<Fold> {
+    let k = k.max(1);
+    let kf = k as f64;
+    let mut out = Vec::new();
+    for (pi, p) in patches.iter().enumerate() {
+        // Corners (0, 0), (1, 0), (1, 1), (0, 1): the starts of sides 0 to 3.
+        let n: Vec<DVec3> = p
+            .sides
+            .iter()
+            .map(|s| {
+                net.vertex_at(s.curve, s.t0)
+                    .map_or(DVec3::ZERO, |v| net.vertices[v].normal)
+            })
+            .collect();
+        let g = p.coons.grid(k);
+        let at = |i: usize, j: usize| g[i + (k + 1) * j];
+        for j in 0..k {
+            for i in 0..k {
+                let du = at(i + 1, j) - at(i, j) + at(i + 1, j + 1) - at(i, j + 1);
+                let dv = at(i, j + 1) - at(i, j) + at(i + 1, j + 1) - at(i + 1, j);
+                let (u, v) = ((i as f64 + 0.5) / kf, (j as f64 + 0.5) / kf);
+                let expected = n[0] * ((1.0 - u) * (1.0 - v))
+                    + n[1] * (u * (1.0 - v))
+                    + n[2] * (u * v)
+                    + n[3] * ((1.0 - u) * v);
+                if du.cross(dv).dot(expected) < 0.0 {
+                    out.push(Fold {
+                        patch: pi,
+                        region: p.region,
+                        u,
+                        v,
+                    });
+                }
+            }
+        }
+    }
+    out
+}
