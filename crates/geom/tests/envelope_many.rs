@@ -483,6 +483,8 @@ fn survey_random() {
     for count in 2..=5 {
         let (mut worst, mut bad, mut errors, mut folds, mut jumps) = (0.0f64, 0, 0, 0, 0);
         let mut folds_at_1 = 0;
+        // Scenes with a folded cell ([`Envelope::folds`]: stricter than the winding test).
+        let (mut cells, mut cells_at_1) = (0, 0);
         for _ in 0..100 {
             let spread: f64 = std::env::var("SPREAD").map_or(4.0, |v| v.parse().unwrap());
             let prims = random_cubes(&mut rng, count, spread);
@@ -504,6 +506,12 @@ fn survey_random() {
                                 folds_at_1 += 1;
                             }
                         }
+                        if !e.folds().is_empty() {
+                            cells += 1;
+                            if t == 1.0 {
+                                cells_at_1 += 1;
+                            }
+                        }
                         if e.largest_border_jump() > 1e-3 {
                             jumps += 1;
                         }
@@ -512,7 +520,7 @@ fn survey_random() {
             }
         }
         println!(
-            "{count} cubes: worst regions/faces {worst:.3}, errors {errors}, open {bad}, folded {folds} ({folds_at_1} at t = 1), G1 broken {jumps} of 200"
+            "{count} cubes: worst regions/faces {worst:.3}, errors {errors}, open {bad}, folded {folds} ({folds_at_1} at t = 1), a folded cell {cells} ({cells_at_1} at t = 1), G1 broken {jumps} of 200"
         );
     }
 }
