@@ -2,6 +2,7 @@
 //! sphere, the surface between the primitive and its sphere, symmetric, independent of the
 //! listing order, closed and outward for every t, enclosing the primitive, G1.
 
+mod common;
 use prism_geom::freeform::envelope::network::RegionKind;
 use prism_geom::freeform::envelope::{
     Envelope, EnvelopeError, EnvelopeSpec, Placement, PrimitiveInput, Shape, envelope,
@@ -34,24 +35,7 @@ const SHAPES: [Shape; 6] = [
     Shape::HexagonalPrism { height: 1.0 },
 ];
 
-/// Signed solid angle sum / 4π: the winding number of the closed mesh about `p`.
-fn winding(m: &PolyMesh, p: DVec3) -> f64 {
-    let mut w = 0.0;
-    for f in 0..m.num_faces() {
-        let vs: Vec<DVec3> = m
-            .face_corners(f)
-            .map(|c| m.positions[m.corner_verts[c] as usize] - p)
-            .collect();
-        for k in 1..vs.len() - 1 {
-            let (a, b, c) = (vs[0], vs[k], vs[k + 1]);
-            let (la, lb, lc) = (a.length(), b.length(), c.length());
-            let num = a.dot(b.cross(c));
-            let den = la * lb * lc + a.dot(b) * lc + b.dot(c) * la + c.dot(a) * lb;
-            w += 2.0 * num.atan2(den);
-        }
-    }
-    w / (4.0 * std::f64::consts::PI)
-}
+use common::winding;
 
 fn face_normal(m: &PolyMesh, f: usize) -> (DVec3, DVec3) {
     let vs: Vec<DVec3> = m

@@ -5,10 +5,31 @@ use prism_geom::{DVec3, PolyMesh};
 /// Moves every vertex of `m` by one of the `offsets.len() / 3` random offsets, vertex `i`
 /// by offset `i mod n`: the property tests draw a fixed number of offsets whatever the
 /// mesh's size.
+#[allow(dead_code)] // not every test crate that includes this module uses it
 pub fn jitter(m: &mut PolyMesh, offsets: &[f64]) {
     let n = offsets.len() / 3;
     for (i, p) in m.positions.iter_mut().enumerate() {
         let j = 3 * (i % n);
         *p += DVec3::new(offsets[j], offsets[j + 1], offsets[j + 2]);
     }
+}
+
+/// Signed solid angle sum / 4π: the winding number of the closed mesh `m` about `p`.
+#[allow(dead_code)] // not every test crate that includes this module uses it
+pub fn winding(m: &PolyMesh, p: DVec3) -> f64 {
+    let mut w = 0.0;
+    for f in 0..m.num_faces() {
+        let vs: Vec<DVec3> = m
+            .face_corners(f)
+            .map(|c| m.positions[m.corner_verts[c] as usize] - p)
+            .collect();
+        for k in 1..vs.len() - 1 {
+            let (a, b, c) = (vs[0], vs[k], vs[k + 1]);
+            let (la, lb, lc) = (a.length(), b.length(), c.length());
+            let num = a.dot(b.cross(c));
+            let den = la * lb * lc + a.dot(b) * lc + b.dot(c) * la + c.dot(a) * lb;
+            w += 2.0 * num.atan2(den);
+        }
+    }
+    w / (4.0 * std::f64::consts::PI)
 }
