@@ -204,9 +204,10 @@ fn the_summary_counts_folds() {
         match &b.folds {
             Some((n, text)) => {
                 assert!(folded && *n > 0);
+                assert_eq!(b.fold_points.len(), *n);
                 assert!(text.contains("the first on primitive 0 face 0"), "{text}");
             }
-            None => assert!(!folded),
+            None => assert!(!folded && b.fold_points.is_empty()),
         }
     }
 }

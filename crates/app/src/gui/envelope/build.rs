@@ -52,6 +52,7 @@ pub const FUSION: [f32; 3] = [0.35, 0.9, 0.4];
 pub const INSERTION: [f32; 3] = [0.3, 0.8, 1.0];
 pub const STRAIGHT: [f32; 3] = [0.85, 0.35, 0.85];
 pub const PICKED: [f32; 3] = [1.0, 0.35, 0.2];
+pub const FOLDED: [f32; 3] = [1.0, 0.1, 0.1];
 
 /// One build of the envelope.
 pub struct Built {
@@ -63,6 +64,8 @@ pub struct Built {
     pub jump: f64,
     /// The fold warning, when some sampled cell folds ([`Envelope::folds`]), and the count.
     pub folds: Option<(usize, String)>,
+    /// The folded cells' centres on the surface, marked in the view.
+    pub fold_points: Vec<DVec3>,
 }
 
 impl Built {
@@ -78,16 +81,24 @@ impl Built {
             Ok((e, _)) => e.largest_border_jump(),
             Err(_) => 0.0,
         };
-        let folds = result.as_ref().ok().and_then(|(e, _)| {
-            let f = e.folds();
-            e.fold_warning(&f).map(|w| (f.len(), w))
-        });
+        let (folds, fold_points) = match &result {
+            Ok((e, _)) => {
+                let f = e.folds();
+                let points = f
+                    .iter()
+                    .map(|c| e.patches[c.patch].coons.eval(c.u, c.v))
+                    .collect();
+                (e.fold_warning(&f).map(|w| (f.len(), w)), points)
+            }
+            Err(_) => (None, Vec::new()),
+        };
         Built {
             spec: spec.clone(),
             result,
             millis,
             jump,
             folds,
+            fold_points,
         }
     }
 }
@@ -206,6 +217,8 @@ pub fn scenes(
             overlay.add_segments(&segs, STRAIGHT);
         }
     }
+    // Folded cells are always marked: a red cross at each one's centre.
+    overlay.add_points(&built.fold_points, 0.01 * size, FOLDED);
     if let Some((p, v)) = picked
         && let Some(x) = built.spec.primitives.get(p).and_then(|p| p.vertices.get(v))
     {

@@ -463,7 +463,7 @@ impl EnvelopeTab {
                     Some((n, text)) => {
                         ui.colored_label(
                             egui::Color32::from_rgb(255, 120, 100),
-                            format!("Folds: {n} cell(s)"),
+                            format!("Folds: {n} cell(s), marked with red crosses"),
                         )
                         .on_hover_text(text.clone());
                     }
