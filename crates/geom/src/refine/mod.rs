@@ -246,6 +246,20 @@ impl Provenance {
     }
 }
 
+/// The loop and face starts of `faces` one-loop faces of `corners` corners each (the primal
+/// splits' children), written on rayon's pool.
+pub(crate) fn uniform_starts(faces: usize, corners: u32) -> (Vec<u32>, Vec<u32>) {
+    use rayon::prelude::*;
+    let starts = |step: u32| {
+        (0..faces + 1)
+            .into_par_iter()
+            .with_min_len(1 << 14)
+            .map(|i| step * i as u32)
+            .collect()
+    };
+    (starts(corners), starts(1))
+}
+
 /// Hands edge attributes down one split: every child edge lying on an attributed parent edge
 /// gets `child(attribute, end)` when that is `Some` (`end` as in
 /// [`Numbering::edge_children`]). The one propagation for both families: the biquadratic

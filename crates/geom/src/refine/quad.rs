@@ -63,16 +63,7 @@ pub fn faces(mesh: &PolyMesh, topo: &Topology, n: PrimalNumbering) -> (PolyMesh,
                 quad[3] = n.edge_point(topo.corner_edge[topo.prev[c] as usize]);
             }
         });
-    child.loop_starts = (0..nc + 1)
-        .into_par_iter()
-        .with_min_len(1 << 14)
-        .map(|i| 4 * i as u32)
-        .collect();
-    child.face_starts = (0..nc + 1)
-        .into_par_iter()
-        .with_min_len(1 << 14)
-        .map(|i| i as u32)
-        .collect();
+    (child.loop_starts, child.face_starts) = super::uniform_starts(nc, 4);
     let parent = topo
         .corner_face
         .par_iter()

@@ -68,16 +68,7 @@ pub fn faces(mesh: &PolyMesh, topo: &Topology, n: PrimalNumbering) -> (PolyMesh,
                 ]);
             }
         });
-    child.loop_starts = (0..4 * nf + 1)
-        .into_par_iter()
-        .with_min_len(1 << 14)
-        .map(|i| 3 * i as u32)
-        .collect();
-    child.face_starts = (0..4 * nf + 1)
-        .into_par_iter()
-        .with_min_len(1 << 14)
-        .map(|i| i as u32)
-        .collect();
+    (child.loop_starts, child.face_starts) = super::uniform_starts(4 * nf, 3);
     let parent = (0..4 * nf)
         .into_par_iter()
         .with_min_len(1 << 14)

@@ -258,7 +258,8 @@ impl Envelope {
         ))
     }
 
-    /// What region `r` lies on, in words: "primitive P face F" or "a fusion region".
+    /// What region `r` lies on, in words: "primitive P face F", or "region R (between
+    /// primitives)" for a fusion strip's quad or a lid.
     pub fn describe_region(&self, r: usize) -> String {
         match self.network.regions.get(r).map(|x| x.kind) {
             Some(network::RegionKind::Primitive { primitive, face }) => {
