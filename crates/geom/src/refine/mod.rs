@@ -246,10 +246,30 @@ impl Provenance {
     }
 }
 
-/// The loop and face starts of `faces` one-loop faces of `corners` corners each (the primal
-/// splits' children), written on rayon's pool.
-pub(crate) fn uniform_starts(faces: usize, corners: u32) -> (Vec<u32>, Vec<u32>) {
+/// The child faces of a primal split: `parents` × `width` corner indices, `fill(p, out)`
+/// writing parent `p`'s children into its `width` slots, cut into one-loop faces of
+/// `corners` corners each. Written on rayon's pool in blocks of parents (each parent's
+/// children depend on it alone), so the fresh pages are also first touched on every core.
+pub(crate) fn uniform_faces(
+    parents: usize,
+    width: usize,
+    corners: u32,
+    fill: impl Fn(usize, &mut [u32]) + Sync,
+) -> PolyMesh {
     use rayon::prelude::*;
+    const BLOCK: usize = 1 << 12;
+    let mut child = PolyMesh::new();
+    child.corner_verts = vec![0; parents * width];
+    child
+        .corner_verts
+        .par_chunks_mut(BLOCK * width)
+        .enumerate()
+        .for_each(|(i, block)| {
+            for (j, out) in block.chunks_exact_mut(width).enumerate() {
+                fill(i * BLOCK + j, out);
+            }
+        });
+    let faces = parents * width / corners as usize;
     let starts = |step: u32| {
         (0..faces + 1)
             .into_par_iter()
@@ -257,7 +277,9 @@ pub(crate) fn uniform_starts(faces: usize, corners: u32) -> (Vec<u32>, Vec<u32>)
             .map(|i| step * i as u32)
             .collect()
     };
-    (starts(corners), starts(1))
+    child.loop_starts = starts(corners);
+    child.face_starts = starts(1);
+    child
 }
 
 /// Hands edge attributes down one split: every child edge lying on an attributed parent edge

@@ -40,30 +40,16 @@ pub fn counts(mesh: &PolyMesh, edges: usize) -> ChildCounts {
     }
 }
 
-/// The child's faces (no positions yet), and the parent face of each. Every array is
-/// written on rayon's pool (each child quad is a function of its parent corner alone), so
-/// the fresh pages are also first touched on every core.
+/// The child's faces (no positions yet), and the parent face of each, on rayon's pool.
 pub fn faces(mesh: &PolyMesh, topo: &Topology, n: PrimalNumbering) -> (PolyMesh, Vec<u32>) {
     use rayon::prelude::*;
-    let nc = mesh.num_corners();
     let cv = &mesh.corner_verts;
-    let mut child = PolyMesh::new();
-    child.corner_verts = vec![0; 4 * nc];
-    const QUADS: usize = 1 << 12;
-    child
-        .corner_verts
-        .par_chunks_mut(4 * QUADS)
-        .enumerate()
-        .for_each(|(i, block)| {
-            for (j, quad) in block.chunks_exact_mut(4).enumerate() {
-                let c = i * QUADS + j;
-                quad[0] = n.vertex(cv[c]);
-                quad[1] = n.edge_point(topo.corner_edge[c]);
-                quad[2] = n.face_point(topo.corner_face[c]);
-                quad[3] = n.edge_point(topo.corner_edge[topo.prev[c] as usize]);
-            }
-        });
-    (child.loop_starts, child.face_starts) = super::uniform_starts(nc, 4);
+    let child = super::uniform_faces(mesh.num_corners(), 4, 4, |c, quad| {
+        quad[0] = n.vertex(cv[c]);
+        quad[1] = n.edge_point(topo.corner_edge[c]);
+        quad[2] = n.face_point(topo.corner_face[c]);
+        quad[3] = n.edge_point(topo.corner_edge[topo.prev[c] as usize]);
+    });
     let parent = topo
         .corner_face
         .par_iter()

@@ -45,30 +45,19 @@ fn at(c: u32) -> (u32, u32) {
     (c / 3, c % 3)
 }
 
-/// The child's faces (no positions yet), and the parent face of each.
+/// The child's faces (no positions yet), and the parent face of each, on rayon's pool.
 pub fn faces(mesh: &PolyMesh, topo: &Topology, n: PrimalNumbering) -> (PolyMesh, Vec<u32>) {
     use rayon::prelude::*;
-    const FACES: usize = 1 << 12;
     let nf = mesh.num_faces();
     let cv = &mesh.corner_verts;
-    let mut child = PolyMesh::new();
-    // Every array on rayon's pool: each parent triangle's four children depend on it alone.
-    child.corner_verts = vec![0; 12 * nf];
-    child
-        .corner_verts
-        .par_chunks_mut(12 * FACES)
-        .enumerate()
-        .for_each(|(i, block)| {
-            for (j, four) in block.chunks_exact_mut(12).enumerate() {
-                let c0 = mesh.face_corners(i * FACES + j).start;
-                let v = [0, 1, 2].map(|k| n.vertex(cv[c0 + k]));
-                let e = [0, 1, 2].map(|k| n.edge_point(topo.corner_edge[c0 + k]));
-                four.copy_from_slice(&[
-                    v[0], e[0], e[2], v[1], e[1], e[0], v[2], e[2], e[1], e[0], e[1], e[2],
-                ]);
-            }
-        });
-    (child.loop_starts, child.face_starts) = super::uniform_starts(4 * nf, 3);
+    let child = super::uniform_faces(nf, 12, 3, |f, four| {
+        let c0 = mesh.face_corners(f).start;
+        let v = [0, 1, 2].map(|k| n.vertex(cv[c0 + k]));
+        let e = [0, 1, 2].map(|k| n.edge_point(topo.corner_edge[c0 + k]));
+        four.copy_from_slice(&[
+            v[0], e[0], e[2], v[1], e[1], e[0], v[2], e[2], e[1], e[0], e[1], e[2],
+        ]);
+    });
     let parent = (0..4 * nf)
         .into_par_iter()
         .with_min_len(1 << 14)
