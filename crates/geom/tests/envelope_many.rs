@@ -508,3 +508,51 @@ fn survey_random() {
         );
     }
 }
+
+/// Cells of the primitives' parts that face their primitive's centre, sampled 16 × 16.
+fn cells_facing_the_centre(e: &Envelope) -> usize {
+    let k = 16;
+    let mut n = 0;
+    for p in &e.patches {
+        let RegionKind::Primitive { primitive, .. } = e.network.regions[p.region].kind else {
+            continue;
+        };
+        let centre = e.primitives[primitive].centre;
+        let g = p.coons.grid(k);
+        let at = |i: usize, j: usize| g[i + (k + 1) * j];
+        for j in 0..k {
+            for i in 0..k {
+                let normal = (at(i + 1, j + 1) - at(i, j)).cross(at(i, j + 1) - at(i + 1, j));
+                let c = 0.25 * (at(i, j) + at(i + 1, j) + at(i, j + 1) + at(i + 1, j + 1));
+                if normal.dot(c - centre) <= 0.0 {
+                    n += 1;
+                }
+            }
+        }
+    }
+    n
+}
+
+/// A grazing cut leaves a thin triangle on a cube face (sides 0.64, 0.65 and 0.066 on the
+/// middle cube here): split at its sides' middles, its quads turned cells towards the cube's
+/// centre at t = 1; split where its sides come nearest the inserted point (envelope.md, "Thin
+/// three-sided regions"), none does, and the patch check finds no fold.
+#[test]
+fn a_thin_triangle_is_split_where_its_sides_come_nearest() {
+    let e = build(
+        vec![
+            cube_at([0.565348333199, 2.073710053444, 1.201416233653], [0.0; 3]),
+            cube_at([3.721235812321, 2.747735118965, 1.868713682061], [0.0; 3]),
+            cube_at([2.314143065356, 1.279304673443, 1.695121210114], [0.0; 3]),
+        ],
+        1.0,
+    );
+    assert!(
+        e.network
+            .regions
+            .iter()
+            .any(|r| r.sides.len() == 3 && matches!(r.kind, RegionKind::Primitive { .. }))
+    );
+    assert_eq!(cells_facing_the_centre(&e), 0);
+    assert_eq!(e.folds(), vec![]);
+}
