@@ -33,6 +33,7 @@ pub mod memory;
 pub mod mesh;
 pub mod normals;
 pub mod numbering;
+mod parallel;
 pub mod pipeline;
 pub mod primal;
 pub mod primitives;

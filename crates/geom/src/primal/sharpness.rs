@@ -10,6 +10,7 @@
 
 use crate::edge_attrs::EdgeAttrs;
 use crate::mesh::PolyMesh;
+use crate::parallel::filled;
 use crate::rules::primal::crease::{self, INFINITE, is_semi_sharp, is_sharp};
 use crate::tags::{BoundaryInterpolation, CreaseMethod, SubdivTags};
 use crate::topology::{NONE, Topology};
@@ -34,19 +35,19 @@ pub(crate) fn sharpness(
 ) -> Sharpness {
     let nv = mesh.num_vertices();
     let ne = topo.num_edges();
-    let mut edge = vec![0.0f32; ne];
+    let mut edge = filled(ne, 0.0f32);
     for (k, a) in attrs {
         if let Some(e) = topo.find_edge(mesh, k.0, k.1) {
             edge[e as usize] = (a.crease as f32).max(0.0);
         }
     }
-    let mut vert = vec![0.0f32; nv];
+    let mut vert = filled(nv, 0.0f32);
     for (&v, &s) in &tags.corners {
         if (v as usize) < nv {
             vert[v as usize] = (s as f32).max(0.0);
         }
     }
-    let mut hole = vec![false; mesh.num_faces()];
+    let mut hole = filled(mesh.num_faces(), false);
     for &f in &tags.holes {
         if (f as usize) < hole.len() {
             hole[f as usize] = true;
@@ -97,16 +98,25 @@ pub(crate) fn sharpness(
                 *s = INFINITE;
             }
         });
-    let mut sharp_edges = vec![0u32; nv];
-    let mut semi: Vec<bool> = vert.iter().map(|&s| is_semi_sharp(s)).collect();
-    for (e, &s) in edge.iter().enumerate() {
-        if is_sharp(s) {
-            let (a, b) = topo.edge_verts(mesh, e);
-            sharp_edges[a as usize] += 1;
-            sharp_edges[b as usize] += 1;
-            if is_semi_sharp(s) {
-                semi[a as usize] = true;
-                semi[b as usize] = true;
+    let mut sharp_edges = filled(nv, 0u32);
+    let mut semi: Vec<bool> = vert
+        .par_iter()
+        .with_min_len(1 << 14)
+        .map(|&s| is_semi_sharp(s))
+        .collect();
+    // A smooth closed level (the usual one) has no sharp edge to count: one look on
+    // every core instead of a pass on one.
+    let any_sharp = edge.par_iter().with_min_len(1 << 14).any(|&s| is_sharp(s));
+    if any_sharp {
+        for (e, &s) in edge.iter().enumerate() {
+            if is_sharp(s) {
+                let (a, b) = topo.edge_verts(mesh, e);
+                sharp_edges[a as usize] += 1;
+                sharp_edges[b as usize] += 1;
+                if is_semi_sharp(s) {
+                    semi[a as usize] = true;
+                    semi[b as usize] = true;
+                }
             }
         }
     }

@@ -259,7 +259,7 @@ pub(crate) fn uniform_faces(
     use rayon::prelude::*;
     const BLOCK: usize = 1 << 12;
     let mut child = PolyMesh::new();
-    child.corner_verts = vec![0; parents * width];
+    child.corner_verts = crate::parallel::filled(parents * width, 0);
     child
         .corner_verts
         .par_chunks_mut(BLOCK * width)

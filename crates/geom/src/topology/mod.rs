@@ -13,21 +13,15 @@
 
 use crate::error::{MeshError, MeshWarning};
 use crate::mesh::PolyMesh;
+use crate::parallel::{filled, split_at_bounds};
+use outgoing::Outgoing;
 use rayon::prelude::*;
+
+mod edges;
+mod outgoing;
 
 /// Faces a task of the parallel loop pass takes.
 const FACE_CHUNK: usize = 1 << 12;
-
-/// `s` cut at `bounds` (ascending, from 0 to `s.len()`): one piece per window.
-fn split_at_bounds<'a, T>(mut s: &'a mut [T], bounds: &[usize]) -> Vec<&'a mut [T]> {
-    let mut pieces = Vec::with_capacity(bounds.len().saturating_sub(1));
-    for w in bounds.windows(2) {
-        let (head, tail) = std::mem::take(&mut s).split_at_mut(w[1] - w[0]);
-        pieces.push(head);
-        s = tail;
-    }
-    pieces
-}
 
 /// Marks a missing index (no twin, unused vertex).
 pub const NONE: u32 = u32::MAX;
@@ -112,24 +106,30 @@ impl Topology {
         if nf == 0 {
             return Err(MeshError::NoFaces);
         }
-        for (i, p) in mesh.positions.iter().enumerate() {
-            if !p.is_finite() {
-                return Err(MeshError::NonFinite {
-                    vertex: i as u32,
-                    x: p.x,
-                    y: p.y,
-                    z: p.z,
-                });
-            }
+        // `all` first: rayon's `position_first` costs several times a plain pass.
+        let finite = |p: &glam::DVec3| p.is_finite();
+        if !mesh.positions.par_iter().with_min_len(1 << 14).all(finite) {
+            let i = mesh
+                .positions
+                .iter()
+                .position(|p| !finite(p))
+                .expect("found");
+            let p = mesh.positions[i];
+            return Err(MeshError::NonFinite {
+                vertex: i as u32,
+                x: p.x,
+                y: p.y,
+                z: p.z,
+            });
         }
 
         // Loops: face, next and previous corner of every corner, on every core in chunks of
         // faces (each chunk owns its corners); the faces that need the full check (not a
         // plain triangle or quad of distinct in-range vertices) are checked after, in order,
         // so the first bad face is named as one pass would name it.
-        let mut corner_face = vec![0u32; nc];
-        let mut next = vec![0u32; nc];
-        let mut prev = vec![0u32; nc];
+        let mut corner_face = filled(nc, 0);
+        let mut next = filled(nc, 0);
+        let mut prev = filled(nc, 0);
         let first_faces: Vec<usize> = (0..nf).step_by(FACE_CHUNK).chain([nf]).collect();
         let bounds: Vec<usize> = first_faces
             .iter()
@@ -195,23 +195,7 @@ impl Topology {
         // Outgoing half-edges per vertex (CSR), each stored with its destination vertex so
         // that the twin search reads one contiguous run.
         let cv = &mesh.corner_verts;
-        let mut out_start = vec![0u32; nv + 1];
-        for &v in cv {
-            out_start[v as usize + 1] += 1;
-        }
-        for i in 0..nv {
-            out_start[i + 1] += out_start[i];
-        }
-        let mut fill: Vec<u32> = out_start[..nv].to_vec();
-        let mut out: Vec<(u32, u32)> = vec![(0, 0); nc];
-        for (c, &v) in cv.iter().enumerate() {
-            let slot = &mut fill[v as usize];
-            out[*slot as usize] = (c as u32, cv[next[c] as usize]);
-            *slot += 1;
-        }
-        drop(fill);
-        let outgoing =
-            |v: u32| &out[out_start[v as usize] as usize..out_start[v as usize + 1] as usize];
+        let outgoing = Outgoing::new(nv, cv, &next);
 
         // Every half-edge looks up its twin on its own, on every core; when each found twin
         // points back and no half-edge without one has a same-way double, those are the
@@ -228,11 +212,11 @@ impl Topology {
             .into_par_iter()
             .with_min_len(1 << 14)
             .map(|v| {
-                let ring = outgoing(v as u32);
-                ring.iter()
-                    .find(|&&(d, _)| twin[d as usize] == NONE)
-                    .or(ring.first())
-                    .map_or(NONE, |&(d, _)| d)
+                let mut ring = outgoing.of(v as u32);
+                ring.clone()
+                    .find(|&(d, _)| twin[d as usize] == NONE)
+                    .or_else(|| ring.next())
+                    .map_or(NONE, |(d, _)| d)
             })
             .collect();
         let unused = vert_corner
@@ -267,20 +251,7 @@ impl Topology {
         prev: Vec<u32>,
         vert_corner: Vec<u32>,
     ) -> Topology {
-        let n = twin.len();
-        let mut corner_edge = vec![NONE; n];
-        let mut edge_corner = Vec::with_capacity(n / 2 + 1);
-        for c in 0..n {
-            let t = twin[c];
-            if t == NONE || (c as u32) < t {
-                let e = edge_corner.len() as u32;
-                edge_corner.push(c as u32);
-                corner_edge[c] = e;
-                if t != NONE {
-                    corner_edge[t as usize] = e;
-                }
-            }
-        }
+        let (corner_edge, edge_corner) = edges::number_edges(&twin);
         Topology {
             corner_face,
             next,
@@ -437,12 +408,7 @@ mod tests;
 /// pairs are not all mutual and unique (a non-manifold edge, an inconsistent orientation):
 /// then [`serial_twins`] finds the first problem in corner order. When it gives pairs, they
 /// are the ones the serial pass gives.
-fn parallel_twins<'a>(
-    cv: &[u32],
-    next: &[u32],
-    outgoing: &(dyn Fn(u32) -> &'a [(u32, u32)] + Sync),
-    nc: usize,
-) -> Option<Vec<u32>> {
+fn parallel_twins(cv: &[u32], next: &[u32], outgoing: &Outgoing, nc: usize) -> Option<Vec<u32>> {
     use rayon::prelude::*;
     const TWICE: u32 = NONE - 1;
     let found: Vec<u32> = (0..nc)
@@ -451,7 +417,7 @@ fn parallel_twins<'a>(
         .map(|c| {
             let (a, b) = (cv[c], cv[next[c] as usize]);
             let mut found = NONE;
-            for &(d, dst) in outgoing(b) {
+            for (d, dst) in outgoing.of(b) {
                 if dst == a {
                     if found != NONE {
                         return TWICE;
@@ -471,20 +437,18 @@ fn parallel_twins<'a>(
             return found[t as usize] == c as u32;
         }
         let (a, b) = (cv[c], cv[next[c] as usize]);
-        !outgoing(a)
-            .iter()
-            .any(|&(d, dst)| d as usize != c && dst == b)
+        !outgoing.of(a).any(|(d, dst)| d as usize != c && dst == b)
     });
     sound.then_some(found)
 }
 
 /// One pass in corner order pairs every half-edge with its twin, or names the first edge
 /// used three times or run the same way by two faces.
-fn serial_twins<'a>(
+fn serial_twins(
     cv: &[u32],
     next: &[u32],
     corner_face: &[u32],
-    outgoing: &dyn Fn(u32) -> &'a [(u32, u32)],
+    outgoing: &Outgoing,
     nc: usize,
 ) -> Result<Vec<u32>, MeshError> {
     let mut twin = vec![NONE; nc];
@@ -496,7 +460,7 @@ fn serial_twins<'a>(
         let b = cv[next[c] as usize];
         let mut found = NONE;
         let mut count = 0;
-        for &(d, dst) in outgoing(b) {
+        for (d, dst) in outgoing.of(b) {
             if dst == a {
                 found = d;
                 count += 1;
@@ -505,11 +469,11 @@ fn serial_twins<'a>(
         // A third use of the edge: a second b→a half-edge, or a b→a half-edge that an
         // earlier a→b half-edge already took.
         if count > 1 || (found != NONE && twin[found as usize] != NONE) {
-            let mut faces: Vec<u32> = outgoing(b)
-                .iter()
-                .filter(|&&(_, dst)| dst == a)
-                .chain(outgoing(a).iter().filter(|&&(_, dst)| dst == b))
-                .map(|&(e, _)| corner_face[e as usize])
+            let mut faces: Vec<u32> = outgoing
+                .of(b)
+                .filter(|&(_, dst)| dst == a)
+                .chain(outgoing.of(a).filter(|&(_, dst)| dst == b))
+                .map(|(e, _)| corner_face[e as usize])
                 .collect();
             faces.sort_unstable();
             faces.dedup();
@@ -525,7 +489,7 @@ fn serial_twins<'a>(
         } else {
             // Without a twin, another a→b half-edge means two faces run the edge the
             // same way: inconsistent orientation.
-            for &(d, dst) in outgoing(a) {
+            for (d, dst) in outgoing.of(a) {
                 if d as usize != c && dst == b {
                     let (f1, f2) = (corner_face[c], corner_face[d as usize]);
                     return Err(MeshError::InconsistentOrientation {

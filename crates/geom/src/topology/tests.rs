@@ -137,8 +137,21 @@ fn twins_found_in_parallel_are_the_serial_ones() {
         for c in 0..nc {
             out[cv[c] as usize].push((c as u32, cv[t.next[c] as usize]));
         }
-        let serial = serial_twins(cv, &t.next, &t.corner_face, &|v| &out[v as usize][..], nc);
-        assert_eq!(serial.unwrap(), t.twin);
+        // The counting sort gives these lists however the corners are cut into runs.
+        for runs in [1, 2, 3, 7] {
+            let outgoing = Outgoing::in_runs(nv, cv, &t.next, runs);
+            for (v, list) in out.iter().enumerate() {
+                assert!(outgoing.of(v as u32).eq(list.iter().copied()), "vertex {v}");
+            }
+            let serial = serial_twins(cv, &t.next, &t.corner_face, &outgoing, nc);
+            assert_eq!(serial.unwrap(), t.twin);
+        }
+        // So does the edge numbering however the half-edges are cut into blocks.
+        let one = edges::one_pass(&t.twin);
+        assert_eq!((&one.0, &one.1), (&t.corner_edge, &t.edge_corner));
+        for block in [1, 7, 4096, 1 << 16] {
+            assert_eq!(edges::in_blocks(&t.twin, block), one, "blocks of {block}");
+        }
     }
     assert!(t_has_boundary(&cut));
     // A face repeated: every edge of it is used three times.

@@ -1,0 +1,90 @@
+//! Edge numbering: every edge is numbered by its smaller half-edge (a half-edge without a
+//! twin is an edge of its own), in increasing order of that half-edge.
+//!
+//! On one thread this is one pass. On several, the half-edges are cut into blocks: each
+//! block counts the edges it leads, the counts' prefix sums give every block its first edge
+//! number, each block numbers its own leading half-edges, and a last pass gives every other
+//! half-edge its twin's number. The numbers are the one pass's whatever the blocks.
+
+use super::NONE;
+use crate::parallel::{filled, split_at_bounds};
+use rayon::prelude::*;
+
+/// Half-edges a block of the parallel numbering takes.
+const BLOCK: usize = 1 << 16;
+
+/// `(corner_edge, edge_corner)` of the half-edges whose twins are `twin`.
+pub(super) fn number_edges(twin: &[u32]) -> (Vec<u32>, Vec<u32>) {
+    if rayon::current_num_threads() > 1 && twin.len() >= 4 * BLOCK {
+        in_blocks(twin, BLOCK)
+    } else {
+        one_pass(twin)
+    }
+}
+
+/// Whether half-edge `c` numbers its edge.
+#[inline]
+fn leads(twin: &[u32], c: usize) -> bool {
+    let t = twin[c];
+    t == NONE || (c as u32) < t
+}
+
+pub(super) fn one_pass(twin: &[u32]) -> (Vec<u32>, Vec<u32>) {
+    let n = twin.len();
+    let mut corner_edge = vec![NONE; n];
+    let mut edge_corner = Vec::with_capacity(n / 2 + 1);
+    for c in 0..n {
+        if leads(twin, c) {
+            let e = edge_corner.len() as u32;
+            edge_corner.push(c as u32);
+            corner_edge[c] = e;
+            let t = twin[c];
+            if t != NONE {
+                corner_edge[t as usize] = e;
+            }
+        }
+    }
+    (corner_edge, edge_corner)
+}
+
+pub(super) fn in_blocks(twin: &[u32], block: usize) -> (Vec<u32>, Vec<u32>) {
+    let n = twin.len();
+    let range = |b: usize| b * block..((b + 1) * block).min(n);
+    let counts: Vec<usize> = (0..n.div_ceil(block))
+        .into_par_iter()
+        .map(|b| range(b).filter(|&c| leads(twin, c)).count())
+        .collect();
+    let mut bounds = Vec::with_capacity(counts.len() + 1);
+    bounds.push(0);
+    for k in counts {
+        bounds.push(bounds[bounds.len() - 1] + k);
+    }
+    // The leading half-edges' numbers (the others' slots are not read).
+    let mut lead = filled(n, 0);
+    let mut edge_corner = filled(bounds[bounds.len() - 1], 0);
+    lead.par_chunks_mut(block)
+        .zip(split_at_bounds(&mut edge_corner, &bounds))
+        .enumerate()
+        .for_each(|(b, (lead, firsts))| {
+            let mut k = 0;
+            for (c, l) in range(b).zip(lead) {
+                if leads(twin, c) {
+                    *l = (bounds[b] + k) as u32;
+                    firsts[k] = c as u32;
+                    k += 1;
+                }
+            }
+        });
+    let corner_edge = (0..n)
+        .into_par_iter()
+        .with_min_len(block)
+        .map(|c| {
+            if leads(twin, c) {
+                lead[c]
+            } else {
+                lead[twin[c] as usize]
+            }
+        })
+        .collect();
+    (corner_edge, edge_corner)
+}
