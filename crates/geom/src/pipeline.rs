@@ -12,7 +12,7 @@ use crate::error::OverBudget;
 use crate::geometry::signed_volume;
 use crate::memory;
 use crate::mesh::PolyMesh;
-use crate::primal::refine_primal_with;
+use crate::primal::refine_primal_carrying;
 use crate::refine::Provenance;
 use crate::rules::Overlap;
 use crate::rules::{CombinationState, CornerRule};
@@ -256,11 +256,15 @@ impl Pipeline {
         matches!(scheme, Scheme::Biquadratic(_)) || self.keep == Keep::All
     }
 
-    /// Whether step `k` (a biquadratic split) writes its level's topology down for step
-    /// `k + 1`.
+    /// Whether step `k` writes its level's topology down for step `k + 1`: from one
+    /// biquadratic split to the next, and from one primal split to the next (a step of the
+    /// other family checks its input in its own way, so it builds the topology itself).
     fn carries(&self, k: usize) -> bool {
-        matches!(self.steps.get(k), Some(Scheme::Biquadratic(_)))
-            && matches!(self.steps.get(k + 1), Some(Scheme::Biquadratic(_)))
+        matches!(
+            (self.steps.get(k), self.steps.get(k + 1)),
+            (Some(Scheme::Biquadratic(_)), Some(Scheme::Biquadratic(_)))
+                | (Some(Scheme::Primal(_)), Some(Scheme::Primal(_)))
+        )
     }
 
     /// Computes levels up to `upto` (at most the number of steps), calling `each` after every
@@ -274,7 +278,7 @@ impl Pipeline {
         mut each: impl FnMut(usize, &Level),
     ) -> Result<&Level, PipelineError> {
         let upto = upto.min(self.steps.len());
-        // The topology a biquadratic split wrote down, for the biquadratic step after it.
+        // The topology a split wrote down, for the step of its family after it.
         let mut carried = None;
         while self.levels.len() <= upto {
             let k = self.levels.len() - 1;
@@ -354,15 +358,18 @@ impl Pipeline {
                 }
                 Scheme::Primal(p) => {
                     let provenance = self.provenance(&scheme);
-                    let out = refine_primal_with(
+                    let (out, topo) = refine_primal_carrying(
                         &prev.mesh,
                         &prev.edge_attrs,
                         &prev.tags,
                         p,
                         budget,
                         provenance,
+                        carried.take(),
+                        k + 1 < upto && self.carries(k),
                     )
                     .map_err(|e| err(e.into()))?;
+                    carried = topo;
                     let r = &out.report;
                     let report = StepReport {
                         vertices: r.vertices,

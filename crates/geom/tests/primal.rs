@@ -231,3 +231,51 @@ proptest! {
         }
     }
 }
+
+/// A pipeline of primal steps (the app's and the command line's path) passes each split's
+/// written-down topology on to the next primal step instead of searching the child again:
+/// every level is the one single steps give, bit for bit, on an open mesh with creases and
+/// from Loop on to Catmull–Clark.
+#[test]
+fn a_pipeline_of_primal_steps_gives_the_single_steps_levels() {
+    use prism_geom::{Pipeline, Scheme};
+    let mut open = primitives::torus(9, 7, 3.0, 1.0);
+    open.truncate_faces(open.num_faces() - 4);
+    let mut attrs = EdgeAttrs::new();
+    for (a, b, s) in [(0, 1, 2.5), (1, 2, 1.0), (9, 10, 4.0)] {
+        attrs.insert(
+            EdgeKey::new(a, b),
+            EdgeAttr {
+                crease: s,
+                ..EdgeAttr::default()
+            },
+        );
+    }
+    let cc = Scheme::Primal(PrimalScheme::CatmullClark);
+    let lp = Scheme::Primal(PrimalScheme::Loop);
+    for (mesh, steps) in [
+        (open.clone(), vec![cc, cc, cc]),
+        (primitives::fan_triangulated(&open), vec![lp, lp, cc]),
+    ] {
+        let tags = SubdivTags::default();
+        let mut p = Pipeline::with_tags(mesh.clone(), attrs.clone(), tags.clone(), steps.clone());
+        p.compute().unwrap();
+        let (mut m, mut a, mut t) = (mesh, attrs.clone(), tags);
+        for (k, s) in steps.iter().enumerate() {
+            let Scheme::Primal(s) = *s else {
+                unreachable!()
+            };
+            let out = refine_primal(&m, &a, &t, s, u64::MAX).unwrap();
+            let level = &p.levels()[k + 1];
+            assert_eq!(
+                level.mesh.corner_verts,
+                out.mesh.corner_verts,
+                "level {}",
+                k + 1
+            );
+            assert_eq!(level.mesh.positions, out.mesh.positions, "level {}", k + 1);
+            assert_eq!(level.edge_attrs, out.edge_attrs, "level {}", k + 1);
+            (m, a, t) = (out.mesh, out.edge_attrs, out.tags);
+        }
+    }
+}

@@ -189,6 +189,29 @@ pub fn refine_primal_with(
     refine(mesh, attrs, tags, scheme, memory_budget, with).map(|(o, _, _)| o)
 }
 
+/// [`refine_primal_with`] from the parent's topology when the split before wrote it down
+/// (`known`), writing the child's down too when `child_topology` (the pipeline passes it on
+/// from one primal step to the next, as [`refine_primal_levels`] does).
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn refine_primal_carrying(
+    mesh: &PolyMesh,
+    attrs: &EdgeAttrs,
+    tags: &SubdivTags,
+    scheme: PrimalScheme,
+    memory_budget: u64,
+    provenance: bool,
+    known: Option<Topology>,
+    child_topology: bool,
+) -> Result<(PrimalOutput, Option<Topology>), PrimalError> {
+    let with = With {
+        provenance,
+        known_topology: known,
+        child_topology,
+        ..With::default()
+    };
+    refine(mesh, attrs, tags, scheme, memory_budget, with).map(|(o, _, t)| (o, t))
+}
+
 /// `levels` levels at once, only the last one kept. From the second level on the topology
 /// is not searched for but written down from the split (`refine::quad::topology`), which saves a
 /// third of a level's time.
