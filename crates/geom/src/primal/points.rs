@@ -84,7 +84,8 @@ pub(crate) fn child_points(lv: &Level, scheme: PrimalScheme, n: PrimalNumbering)
         let (f0, f1) = (topo.corner_face[c], topo.corner_face[t]);
         // Smooth mask as vertex weight, face weight and the two face terms.
         let (vw, fw, fsum) = if cc {
-            let (vw, fw) = catmark::edge_weights(lv.tags.triangles, face_size(f0), face_size(f1));
+            let (vw, fw) =
+                catmark::edge_weights(lv.tags.triangles, || (face_size(f0), face_size(f1)));
             (vw, fw, face_pts[f0 as usize] + face_pts[f1 as usize])
         } else {
             let o0 = cv[topo.prev[c] as usize] as usize;

@@ -18,10 +18,18 @@ pub fn face_point(sum: DVec3, n: usize) -> DVec3 {
     sum / n as f64
 }
 
-/// Vertex and face weights of a Catmull–Clark smooth edge.
+/// Vertex and face weights of a Catmull–Clark smooth edge between faces of `n0` and `n1`
+/// corners (asked for only under the smooth triangle rule: the plain weights need no sizes).
 #[inline]
-pub fn edge_weights(tri: TriangleSubdivision, n0: usize, n1: usize) -> (f64, f64) {
-    if tri == TriangleSubdivision::Smooth && (n0 == 3 || n1 == 3) {
+pub fn edge_weights(
+    tri: TriangleSubdivision,
+    sizes: impl FnOnce() -> (usize, usize),
+) -> (f64, f64) {
+    if tri != TriangleSubdivision::Smooth {
+        return (0.25, 0.25);
+    }
+    let (n0, n1) = sizes();
+    if n0 == 3 || n1 == 3 {
         let t = 0.47;
         let w0 = if n0 == 3 { t } else { 0.25 };
         let w1 = if n1 == 3 { t } else { 0.25 };
@@ -52,10 +60,10 @@ mod tests {
             let p = vertex_point(DVec3::ONE, DVec3::ONE * n as f64, DVec3::ONE * n as f64, n);
             assert!((p - DVec3::ONE).length() < 1e-15);
         }
-        let (vw, fw) = edge_weights(TriangleSubdivision::Smooth, 3, 3);
+        let (vw, fw) = edge_weights(TriangleSubdivision::Smooth, || (3, 3));
         assert!((2.0 * vw + 2.0 * fw - 1.0).abs() < 1e-15);
         assert_eq!(
-            edge_weights(TriangleSubdivision::Catmark, 3, 3),
+            edge_weights(TriangleSubdivision::Catmark, || (3, 3)),
             (0.25, 0.25)
         );
     }
