@@ -140,14 +140,16 @@ impl PolyMesh {
     }
 
     /// Axis-aligned bounding box (min, max).
+    /// Computed on every core (the least and greatest coordinates do not depend on the
+    /// order they are met in).
     pub fn bbox(&self) -> (DVec3, DVec3) {
-        let mut lo = DVec3::splat(f64::INFINITY);
-        let mut hi = DVec3::splat(f64::NEG_INFINITY);
-        for p in &self.positions {
-            lo = lo.min(*p);
-            hi = hi.max(*p);
-        }
-        (lo, hi)
+        use rayon::prelude::*;
+        let empty = || (DVec3::splat(f64::INFINITY), DVec3::splat(f64::NEG_INFINITY));
+        self.positions
+            .par_iter()
+            .with_min_len(1 << 14)
+            .fold(empty, |(lo, hi), p| (lo.min(*p), hi.max(*p)))
+            .reduce(empty, |(a, b), (c, d)| (a.min(c), b.max(d)))
     }
 
     /// Whether every coordinate is finite.

@@ -21,3 +21,25 @@ pub(crate) fn split_at_bounds<'a, T>(mut s: &'a mut [T], bounds: &[usize]) -> Ve
     }
     pieces
 }
+
+/// Faces a task takes in [`face_chunks`].
+const FACE_CHUNK: usize = 1 << 12;
+
+/// `mesh`'s faces cut into chunks of 4,096 for rayon's pool: the first face of each chunk
+/// (and the face count), and the first corner of each (and the corner count), ready for
+/// [`split_at_bounds`] of per-corner arrays.
+pub(crate) fn face_chunks(mesh: &crate::mesh::PolyMesh) -> (Vec<usize>, Vec<usize>) {
+    let nf = mesh.num_faces();
+    let faces: Vec<usize> = (0..nf).step_by(FACE_CHUNK).chain([nf]).collect();
+    let corners = faces
+        .iter()
+        .map(|&f| {
+            if f == nf {
+                mesh.num_corners()
+            } else {
+                mesh.face_corners(f).start
+            }
+        })
+        .collect();
+    (faces, corners)
+}

@@ -227,16 +227,21 @@ impl Provenance {
         face_kind: Vec<FaceKind>,
         face_parent: Vec<u32>,
     ) -> Provenance {
-        let per_edge = match numbering {
-            Numbering::DualQuad => 4,
-            Numbering::Primal(_) => 2,
-        };
-        let mut edge_parent = Vec::with_capacity(per_edge * topo.num_edges());
-        for e in 0..topo.num_edges() as u32 {
+        // Each parent edge's children, on every core, in edge order.
+        let children = |e: u32, out: &mut [(EdgeKey, EdgeKey)]| {
             let (a, b) = topo.edge_verts(parent, e as usize);
             let pk = EdgeKey::new(a, b);
-            numbering.edge_children(parent, topo, e, |k, _| edge_parent.push((k, pk)));
-        }
+            let mut i = 0;
+            numbering.edge_children(parent, topo, e, |k, _| {
+                out[i] = (k, pk);
+                i += 1;
+            });
+            debug_assert_eq!(i, out.len());
+        };
+        let edge_parent = match numbering {
+            Numbering::DualQuad => per_edge::<4>(topo.num_edges(), children),
+            Numbering::Primal(_) => per_edge::<2>(topo.num_edges(), children),
+        };
         Provenance {
             numbering,
             face_kind,
@@ -244,6 +249,24 @@ impl Provenance {
             edge_parent,
         }
     }
+}
+
+/// `[f(0), f(1), …]` flattened, `f(e)` filling edge e's `K` entries, on rayon's pool.
+fn per_edge<const K: usize>(
+    edges: usize,
+    f: impl Fn(u32, &mut [(EdgeKey, EdgeKey)]) + Sync,
+) -> Vec<(EdgeKey, EdgeKey)> {
+    use rayon::prelude::*;
+    (0..edges as u32)
+        .into_par_iter()
+        .with_min_len(1 << 12)
+        .map(|e| {
+            let mut out = [(EdgeKey(0, 0), EdgeKey(0, 0)); K];
+            f(e, &mut out);
+            out
+        })
+        .collect::<Vec<[(EdgeKey, EdgeKey); K]>>()
+        .into_flattened()
 }
 
 /// The child faces of a primal split: `parents` × `width` corner indices, `fill(p, out)`

@@ -11,14 +11,14 @@ use crate::mesh::PolyMesh;
 use glam::DVec3;
 
 /// Writes the Doo–Sabin point of every corner of loop `l` into `out` (indexed by corner).
-pub(crate) fn loop_points(m: &PolyMesh, l: usize, out: &mut [DVec3]) {
+pub(crate) fn loop_points(m: &PolyMesh, l: usize, out: &mut [DVec3], base: usize) {
     let r = m.loop_corners(l);
     let p = |k: usize| m.positions[m.corner_verts[r.start + k] as usize];
     let n = r.len();
     if n == 4 {
         let v = [p(0), p(1), p(2), p(3)];
         for i in 0..4 {
-            out[r.start + i] =
+            out[r.start - base + i] =
                 (9.0 * v[i] + 3.0 * v[(i + 1) % 4] + v[(i + 2) % 4] + 3.0 * v[(i + 3) % 4]) / 16.0;
         }
         return;
@@ -37,7 +37,8 @@ pub(crate) fn loop_points(m: &PolyMesh, l: usize, out: &mut [DVec3]) {
     centroid /= n as f64;
     for i in 0..n {
         let (s, c) = (step * i as f64).sin_cos();
-        out[r.start + i] = 0.25 * p(i) + 0.75 * centroid + (c * a + s * b) / (2.0 * n as f64);
+        out[r.start - base + i] =
+            0.25 * p(i) + 0.75 * centroid + (c * a + s * b) / (2.0 * n as f64);
     }
 }
 
@@ -75,7 +76,7 @@ mod tests {
                 .collect();
             let m = PolyMesh::from_polygons(v.clone(), &[(0..n as u32).collect()]);
             let mut out = vec![DVec3::ZERO; n];
-            loop_points(&m, 0, &mut out);
+            loop_points(&m, 0, &mut out, 0);
             for (i, o) in out.iter().enumerate() {
                 assert!((*o - eq1(&v, i)).length() < 1e-13, "n={n} i={i}");
             }
@@ -95,7 +96,7 @@ mod tests {
         ];
         let m = PolyMesh::from_polygons(v, &[vec![0, 1, 2]]);
         let mut out = vec![DVec3::ZERO; 3];
-        loop_points(&m, 0, &mut out);
+        loop_points(&m, 0, &mut out, 0);
         assert!((out[0] - DVec3::new(1.0, 1.0, 0.0)).length() < 1e-14);
         assert!((out[1] - DVec3::new(4.0, 1.0, 0.0)).length() < 1e-14);
     }

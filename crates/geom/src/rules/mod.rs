@@ -211,63 +211,90 @@ pub fn corner_points(
     rule: &CornerRule,
     input: &RuleInput,
 ) -> Result<(Vec<DVec3>, RuleReport), RuleError> {
+    use rayon::prelude::*;
     let m = input.mesh;
-    let mut pts = vec![DVec3::ZERO; m.num_corners()];
+    let mut pts = crate::parallel::filled(m.num_corners(), DVec3::ZERO);
+    // Chunks of faces on every core, each owning its faces' corners; the first error in
+    // face order is the one reported, as one pass would.
+    let (faces, bounds) = crate::parallel::face_chunks(m);
+    let chunks: Vec<Result<RuleReport, RuleError>> =
+        crate::parallel::split_at_bounds(&mut pts, &bounds)
+            .into_par_iter()
+            .enumerate()
+            .map(|(i, out)| {
+                let mut report = RuleReport::default();
+                for f in faces[i]..faces[i + 1] {
+                    face_points(rule, input, f, out, bounds[i], &mut report)?;
+                }
+                Ok(report)
+            })
+            .collect();
     let mut report = RuleReport::default();
-    for f in 0..m.num_faces() {
-        let use_doo_sabin = match rule {
-            CornerRule::DooSabin => true,
-            // A blend face with a hole (flat blend faces merged into a ring, e.g. around the
-            // top of a torus) keeps the cylindrical points: Doo–Sabin is not defined there.
-            CornerRule::Combination { .. } => {
-                input.vertex_neighbourhood.get(f).copied().unwrap_or(false) && !m.face_has_holes(f)
-            }
-            _ => false,
-        };
-        if use_doo_sabin {
-            if m.face_has_holes(f) {
-                return Err(RuleError::HoledFace { face: f as u32 });
-            }
-            let l = m.face_loops(f).start;
-            doo_sabin::loop_points(m, l, &mut pts);
-            continue;
-        }
-        for c in m.face_corners(f) {
-            let placed = match *rule {
-                CornerRule::AngleBisector { l } => chamfer::angle_bisector(
-                    input,
-                    c,
-                    input.face_params.get(f).copied().unwrap_or(l),
-                ),
-                CornerRule::CutWidth { d } => {
-                    chamfer::cut_width(input, c, input.face_params.get(f).copied().unwrap_or(d))
-                }
-                CornerRule::VectorSum { alpha, reflex } => {
-                    chamfer::vector_sum(input, c, alpha, reflex)
-                }
-                CornerRule::Cylindrical { .. } | CornerRule::Combination { .. } => {
-                    cylindrical::simple(input, c, &mut report)
-                }
-                CornerRule::Minimum { .. } => cylindrical::minimum(input, c),
-                CornerRule::DooSabin => unreachable!("handled above"),
-            };
-            pts[c] = match placed {
-                Ok(p) => p,
-                Err(RuleError::ZeroLengthEdge { .. }) => {
-                    report.collapsed_corners += 1;
-                    m.positions[m.corner_verts[c] as usize]
-                }
-                Err(e) => return Err(e),
-            };
-        }
+    for r in chunks {
+        let r = r?;
+        report.guarded_corners += r.guarded_corners;
+        report.collapsed_corners += r.collapsed_corners;
     }
-    for (c, p) in pts.iter().enumerate() {
-        if !p.is_finite() {
-            return Err(RuleError::NonFinite {
-                face: input.topo.corner_face[c],
-                vertex: m.corner_verts[c],
-            });
-        }
+    if !pts.par_iter().with_min_len(1 << 14).all(|p| p.is_finite()) {
+        let c = pts.iter().position(|p| !p.is_finite()).expect("found");
+        return Err(RuleError::NonFinite {
+            face: input.topo.corner_face[c],
+            vertex: m.corner_verts[c],
+        });
     }
     Ok((pts, report))
+}
+
+/// The new points of face `f`'s corners, written to `out` (which starts at corner `base`).
+fn face_points(
+    rule: &CornerRule,
+    input: &RuleInput,
+    f: usize,
+    out: &mut [DVec3],
+    base: usize,
+    report: &mut RuleReport,
+) -> Result<(), RuleError> {
+    let m = input.mesh;
+    let use_doo_sabin = match rule {
+        CornerRule::DooSabin => true,
+        // A blend face with a hole (flat blend faces merged into a ring, e.g. around the
+        // top of a torus) keeps the cylindrical points: Doo–Sabin is not defined there.
+        CornerRule::Combination { .. } => {
+            input.vertex_neighbourhood.get(f).copied().unwrap_or(false) && !m.face_has_holes(f)
+        }
+        _ => false,
+    };
+    if use_doo_sabin {
+        if m.face_has_holes(f) {
+            return Err(RuleError::HoledFace { face: f as u32 });
+        }
+        let l = m.face_loops(f).start;
+        doo_sabin::loop_points(m, l, out, base);
+        return Ok(());
+    }
+    for c in m.face_corners(f) {
+        let placed = match *rule {
+            CornerRule::AngleBisector { l } => {
+                chamfer::angle_bisector(input, c, input.face_params.get(f).copied().unwrap_or(l))
+            }
+            CornerRule::CutWidth { d } => {
+                chamfer::cut_width(input, c, input.face_params.get(f).copied().unwrap_or(d))
+            }
+            CornerRule::VectorSum { alpha, reflex } => chamfer::vector_sum(input, c, alpha, reflex),
+            CornerRule::Cylindrical { .. } | CornerRule::Combination { .. } => {
+                cylindrical::simple(input, c, report)
+            }
+            CornerRule::Minimum { .. } => cylindrical::minimum(input, c),
+            CornerRule::DooSabin => unreachable!("handled above"),
+        };
+        out[c - base] = match placed {
+            Ok(p) => p,
+            Err(RuleError::ZeroLengthEdge { .. }) => {
+                report.collapsed_corners += 1;
+                m.positions[m.corner_verts[c] as usize]
+            }
+            Err(e) => return Err(e),
+        };
+    }
+    Ok(())
 }

@@ -151,7 +151,7 @@ pub(crate) fn unfold(
         }
         for f in 0..nf {
             if to_move[f] {
-                doo_sabin::loop_points(mesh, mesh.face_loops(f).start, pts);
+                doo_sabin::loop_points(mesh, mesh.face_loops(f).start, pts, 0);
                 blend[f] = true;
                 moved.push(f as u32);
             }

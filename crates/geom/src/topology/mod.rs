@@ -20,9 +20,6 @@ use rayon::prelude::*;
 mod edges;
 mod outgoing;
 
-/// Faces a task of the parallel loop pass takes.
-const FACE_CHUNK: usize = 1 << 12;
-
 /// Marks a missing index (no twin, unused vertex).
 pub const NONE: u32 = u32::MAX;
 
@@ -130,17 +127,7 @@ impl Topology {
         let mut corner_face = filled(nc, 0);
         let mut next = filled(nc, 0);
         let mut prev = filled(nc, 0);
-        let first_faces: Vec<usize> = (0..nf).step_by(FACE_CHUNK).chain([nf]).collect();
-        let bounds: Vec<usize> = first_faces
-            .iter()
-            .map(|&f| {
-                if f == nf {
-                    nc
-                } else {
-                    mesh.face_corners(f).start
-                }
-            })
-            .collect();
+        let (first_faces, bounds) = crate::parallel::face_chunks(mesh);
         let flagged: Vec<Vec<u32>> = split_at_bounds(&mut corner_face, &bounds)
             .into_par_iter()
             .zip(split_at_bounds(&mut next, &bounds))
