@@ -182,11 +182,17 @@ pub fn refine_primal_with(
     memory_budget: u64,
     provenance: bool,
 ) -> Result<PrimalOutput, PrimalError> {
-    let with = With {
+    refine_primal_carrying(
+        mesh,
+        attrs,
+        tags,
+        scheme,
+        memory_budget,
         provenance,
-        ..With::default()
-    };
-    refine(mesh, attrs, tags, scheme, memory_budget, with).map(|(o, _, _)| o)
+        None,
+        false,
+    )
+    .map(|(o, _)| o)
 }
 
 /// [`refine_primal_with`] from the parent's topology when the split before wrote it down
