@@ -309,8 +309,9 @@ mod tests {
     use crate::primitives;
 
     /// Every biquadratic rule gives the same child, provenance and report (flipped and
-    /// degenerate faces, the volume to the last bit) on one thread as on three, on meshes
-    /// cut into many chunks; the first face a rule refuses is named the same way.
+    /// degenerate faces, the volume to the last bit, the radii lowered where rounds would
+    /// overlap) on one thread as on three, on meshes cut into many chunks; the first face a
+    /// rule refuses is named the same way.
     #[test]
     fn a_step_is_the_same_on_any_number_of_threads() {
         let torus = primitives::torus(150, 100, 3.0, 1.0);
@@ -319,14 +320,16 @@ mod tests {
             torus.clone(),
             primitives::tripod(),
         ]);
+        let clamp = StepOptions {
+            overlap: rules::Overlap::Clamp,
+            ..StepOptions::default()
+        };
         let on = |threads: usize, m: &PolyMesh, rule: CornerRule| {
             let pool = rayon::ThreadPoolBuilder::new()
                 .num_threads(threads)
                 .build()
                 .unwrap();
-            pool.install(|| {
-                biquadratic_step(m, &EdgeAttrs::new(), &rule, None, &StepOptions::default())
-            })
+            pool.install(|| biquadratic_step(m, &EdgeAttrs::new(), &rule, None, &clamp))
         };
         for (m, rule) in [
             (&torus, CornerRule::DooSabin),
@@ -340,6 +343,8 @@ mod tests {
                 },
             ),
             (&tripods, CornerRule::Combination { r: 0.1 }),
+            // Radii too large for the tripods' arms: lowered where the rounds would overlap.
+            (&tripods, CornerRule::Combination { r: 0.9 }),
         ] {
             let (a, b) = (on(1, m, rule).unwrap(), on(3, m, rule).unwrap());
             assert_eq!(a.mesh, b.mesh, "{rule:?}");
@@ -350,6 +355,9 @@ mod tests {
             };
             assert_eq!(same(&a.report), same(&b.report), "{rule:?}");
             assert_eq!(a.report.volume.to_bits(), b.report.volume.to_bits());
+            if rule == (CornerRule::Combination { r: 0.9 }) {
+                assert!(!a.report.clamped.is_empty());
+            }
         }
         // Doo–Sabin refuses faces with holes: the first one is named.
         let holed = primitives::union_disjoint(&[

@@ -111,6 +111,9 @@ fn extents(input: &RuleInput, c: usize) -> Option<[[f64; 2]; 2]> {
 /// rule's Doo–Sabin faces), each edge of length L keeping at least `(1 − room)·L`.
 /// `input.cut_widths` is not read.
 pub fn fitting_scales(input: &RuleInput, widths: &[f64], skip: &[bool], room: f64) -> Vec<f64> {
+    use rayon::prelude::*;
+    use std::sync::atomic::{AtomicU64, Ordering::Relaxed};
+    const MIN: usize = 1 << 12;
     let (m, t) = (input.mesh, input.topo);
     let mut scale = vec![1.0f64; widths.len()];
     let cut = |c: usize| {
@@ -121,15 +124,17 @@ pub fn fitting_scales(input: &RuleInput, widths: &[f64], skip: &[bool], room: f6
     };
     // Each corner's frame once: a constraint reads its own corner and the next.
     let ext: Vec<Option<[[f64; 2]; 2]>> = (0..m.num_corners())
+        .into_par_iter()
+        .with_min_len(MIN)
         .map(|c| if cut(c) { extents(input, c) } else { None })
         .collect();
     // One constraint per face corner: its edge E₁ = c→next(c), with the coefficients of
-    // the widths of E₂(c), E₁ and E₁(next(c)).
-    let mut constraints: Vec<([usize; 3], [f64; 3], f64)> = Vec::new();
-    for c in 0..m.num_corners() {
+    // the widths of E₂(c), E₁ and E₁(next(c)); formed again in each pass (usually there is
+    // one) rather than stored.
+    let constraint = |c: usize| {
         let n = t.next[c] as usize;
         let (Some(kc), Some(kn)) = (ext[c], ext[n]) else {
-            continue;
+            return None;
         };
         let len = (m.positions[m.corner_verts[n] as usize]
             - m.positions[m.corner_verts[c] as usize])
@@ -141,37 +146,57 @@ pub fn fitting_scales(input: &RuleInput, widths: &[f64], skip: &[bool], room: f6
         ];
         // a₁(c) = kc[0][0]·w(E₁) + kc[0][1]·w(E₂(c)); a₂(n) = kn[1][0]·w(E₁(n)) + kn[1][1]·w(E₁).
         let coef = [kc[0][1], kc[0][0] + kn[1][1], kn[1][0]];
-        constraints.push((edges, coef, room * len));
-    }
+        Some((edges, coef, room * len))
+    };
     // Each pass reads the factors of the pass before and lowers every edge to the least
     // factor its broken constraints ask for, all at once: no edge is favoured for coming
-    // first, so the result does not depend on how the input is numbered.
-    let mut lowered = vec![1.0f64; widths.len()];
+    // first, so the result does not depend on how the input is numbered — nor on the
+    // threads. The factors lie in [0, 1], where the order of an f64's bits is its order
+    // as a number, so the least is kept by an atomic minimum of the bits.
+    let lowered: Vec<AtomicU64> = (0..widths.len())
+        .into_par_iter()
+        .with_min_len(MIN)
+        .map(|_| AtomicU64::new(1.0f64.to_bits()))
+        .collect();
     for _ in 0..PASSES {
-        lowered.fill(1.0);
-        let mut changed = false;
-        for (edges, coef, len) in &constraints {
-            let terms = [0, 1, 2].map(|i| coef[i] * widths[edges[i]] * scale[edges[i]]);
-            let sum: f64 = terms.iter().sum();
-            if sum <= len * (1.0 + SLACK) {
-                continue;
-            }
-            let pos: f64 = terms.iter().filter(|&&x| x > 0.0).sum();
-            let neg: f64 = terms.iter().filter(|&&x| x < 0.0).sum();
-            let k = ((len - neg) / pos).clamp(0.0, 1.0);
-            for i in 0..3 {
-                if terms[i] > 0.0 && k < lowered[edges[i]] {
-                    lowered[edges[i]] = k;
-                    changed = true;
+        lowered
+            .par_iter()
+            .with_min_len(MIN)
+            .for_each(|l| l.store(1.0f64.to_bits(), Relaxed));
+        let changed = (0..m.num_corners())
+            .into_par_iter()
+            .with_min_len(MIN)
+            .map(|c| {
+                let Some((edges, coef, len)) = constraint(c) else {
+                    return false;
+                };
+                let terms = [0, 1, 2].map(|i| coef[i] * widths[edges[i]] * scale[edges[i]]);
+                let sum: f64 = terms.iter().sum();
+                if sum <= len * (1.0 + SLACK) {
+                    return false;
                 }
-            }
-        }
+                let pos: f64 = terms.iter().filter(|&&x| x > 0.0).sum();
+                let neg: f64 = terms.iter().filter(|&&x| x < 0.0).sum();
+                // + 0.0 turns a −0.0 into 0.0, whose bits are the least.
+                let k = ((len - neg) / pos).clamp(0.0, 1.0) + 0.0;
+                let mut changed = false;
+                for i in 0..3 {
+                    if terms[i] > 0.0 {
+                        let before = lowered[edges[i]].fetch_min(k.to_bits(), Relaxed);
+                        changed |= k.to_bits() < before;
+                    }
+                }
+                changed
+            })
+            .reduce(|| false, |a, b| a | b);
         if !changed {
             break;
         }
-        for (s, l) in scale.iter_mut().zip(&lowered) {
-            *s *= l;
-        }
+        scale
+            .par_iter_mut()
+            .with_min_len(MIN)
+            .zip(&lowered)
+            .for_each(|(s, l)| *s *= f64::from_bits(l.load(Relaxed)));
     }
     scale
 }
