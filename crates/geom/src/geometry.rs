@@ -77,9 +77,11 @@ pub fn vertex_normal_sums(mesh: &PolyMesh, topo: &Topology, unit_normals: &[DVec
 /// The bend angle ψ ∈ [0, π] of every edge (angle between the two face normals), signed
 /// negative for a concave (reflex) edge. Boundary edges get 0.
 pub fn signed_bend_angles(mesh: &PolyMesh, topo: &Topology, unit_normals: &[DVec3]) -> Vec<f64> {
+    use rayon::prelude::*;
     let cv = &mesh.corner_verts;
     topo.edge_corner
-        .iter()
+        .par_iter()
+        .with_min_len(4096)
         .map(|&c| {
             let t = topo.twin[c as usize];
             if t == NONE {

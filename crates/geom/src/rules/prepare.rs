@@ -73,7 +73,13 @@ pub(super) fn checked_level(
         }
     };
     let raw = face_normals_raw(mesh);
-    let normals = raw.iter().map(|&n| unit_or_zero(n)).collect();
+    let normals = {
+        use rayon::prelude::*;
+        raw.par_iter()
+            .with_min_len(4096)
+            .map(|&n| unit_or_zero(n))
+            .collect()
+    };
     Ok((topo, raw, normals))
 }
 
