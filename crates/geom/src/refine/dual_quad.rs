@@ -53,109 +53,65 @@ pub fn estimated_bytes(mesh: &PolyMesh, edges: usize) -> u64 {
     c * 24 + (2 * c + 4 * e) * 4 + loops * 4 + faces * (4 + 4 + 1) + 4 * e * 16
 }
 
-/// Builds the refined mesh from one new point per parent corner, on rayon's pool: the FACE-,
-/// EDGE- and VERTEX-faces each written where they belong (the same lists on any number of
-/// threads).
+/// Builds the refined mesh from one new point per parent corner.
 pub fn split(
     mesh: &PolyMesh,
     topo: &Topology,
     corner_points: Vec<DVec3>,
 ) -> (PolyMesh, Provenance) {
-    use rayon::prelude::*;
-    const MIN: usize = 1 << 12;
     debug_assert_eq!(corner_points.len(), mesh.num_corners());
     let nf = mesh.num_faces();
     let ne = topo.num_edges();
     let nc = mesh.num_corners();
-    let nl = mesh.num_loops();
-
-    // VERTEX-faces: the rings of the used vertices, in blocks of vertices on every core.
-    let used: Vec<u32> = (0..topo.vert_corner.len() as u32)
-        .into_par_iter()
-        .with_min_len(MIN)
-        .filter(|&v| topo.vert_corner[v as usize] != NONE)
-        .collect();
-    let rings: Vec<(Vec<u32>, Vec<u32>)> = used
-        .par_chunks(MIN)
-        .map(|vs| {
-            // Valence 4 is the usual vertex; a ring past that grows the list.
-            let (mut corners, mut sizes) = (
-                Vec::with_capacity(4 * vs.len()),
-                Vec::with_capacity(vs.len()),
-            );
-            for &v in vs {
-                let start = topo.vert_corner[v as usize];
-                let before = corners.len();
-                let mut c = start;
-                loop {
-                    corners.push(c);
-                    c = topo.ring_next(c);
-                    if c == start {
-                        break;
-                    }
-                }
-                sizes.push((corners.len() - before) as u32);
-            }
-            (corners, sizes)
-        })
-        .collect();
-    let ring_corners: usize = rings.iter().map(|r| r.0.len()).sum();
-
-    let mut out = PolyMesh::new();
+    let used_v = topo.vert_corner.iter().filter(|&&c| c != NONE).count();
+    let faces = nf + ne + used_v;
+    let loops = mesh.num_loops() + ne + used_v;
+    let mut out = PolyMesh::with_capacity(nc, faces, loops, nc + 4 * ne + nc);
     out.positions = corner_points;
-    // FACE-faces: the parent's loops with corner ids as vertex ids; EDGE-faces: the four
-    // sides of every edge; then the rings.
-    let mut cv = Vec::with_capacity(nc + 4 * ne + ring_corners);
-    cv.par_extend((0..nc as u32).into_par_iter().with_min_len(1 << 14));
-    cv.par_extend((0..4 * ne).into_par_iter().with_min_len(1 << 14).map(|i| {
-        let c = topo.edge_corner[i / 4];
-        let side = if i % 4 < 2 { c } else { topo.twin[c as usize] };
-        if i % 2 == 0 {
-            topo.next[side as usize]
-        } else {
-            side
-        }
-    }));
-    for (corners, _) in &rings {
-        cv.extend_from_slice(corners);
-    }
-    out.corner_verts = cv;
-
-    let mut loop_starts = Vec::with_capacity(nl + ne + used.len() + 1);
-    loop_starts.extend_from_slice(&mesh.loop_starts);
-    loop_starts.par_extend(
-        (0..ne as u32)
-            .into_par_iter()
-            .with_min_len(1 << 14)
-            .map(|k| nc as u32 + 4 * (k + 1)),
-    );
-    let mut at = (nc + 4 * ne) as u32;
-    for (_, sizes) in &rings {
-        for &k in sizes {
-            at += k;
-            loop_starts.push(at);
-        }
-    }
-    out.loop_starts = loop_starts;
-    let mut face_starts = Vec::with_capacity(nf + ne + used.len() + 1);
-    face_starts.extend_from_slice(&mesh.face_starts);
-    face_starts.par_extend(
-        (0..(ne + used.len()) as u32)
-            .into_par_iter()
-            .with_min_len(1 << 14)
-            .map(|k| nl as u32 + k + 1),
-    );
-    out.face_starts = face_starts;
-
-    let faces = nf + ne + used.len();
     let mut kind = Vec::with_capacity(faces);
-    kind.par_extend(rayon::iter::repeat_n(FaceKind::Face, nf).with_min_len(1 << 14));
-    kind.par_extend(rayon::iter::repeat_n(FaceKind::Edge, ne).with_min_len(1 << 14));
-    kind.par_extend(rayon::iter::repeat_n(FaceKind::Vertex, used.len()).with_min_len(1 << 14));
     let mut parent = Vec::with_capacity(faces);
-    parent.par_extend((0..nf as u32).into_par_iter().with_min_len(1 << 14));
-    parent.par_extend((0..ne as u32).into_par_iter().with_min_len(1 << 14));
-    parent.par_extend(used.par_iter().with_min_len(1 << 14).copied());
+
+    // FACE-faces: the parent's loops with corner ids as vertex ids.
+    out.corner_verts.extend(0..nc as u32);
+    out.loop_starts.clear();
+    out.loop_starts.extend_from_slice(&mesh.loop_starts);
+    out.face_starts.clear();
+    out.face_starts.extend_from_slice(&mesh.face_starts);
+    kind.resize(nf, FaceKind::Face);
+    parent.extend(0..nf as u32);
+
+    // EDGE-faces.
+    let mut n_loops = mesh.num_loops() as u32;
+    for (e, &c) in topo.edge_corner.iter().enumerate() {
+        let t = topo.twin[c as usize];
+        out.corner_verts
+            .extend_from_slice(&[topo.next[c as usize], c, topo.next[t as usize], t]);
+        out.loop_starts.push(out.corner_verts.len() as u32);
+        n_loops += 1;
+        out.face_starts.push(n_loops);
+        kind.push(FaceKind::Edge);
+        parent.push(e as u32);
+    }
+
+    // VERTEX-faces.
+    for (v, &start) in topo.vert_corner.iter().enumerate() {
+        if start == NONE {
+            continue;
+        }
+        let mut c = start;
+        loop {
+            out.corner_verts.push(c);
+            c = topo.ring_next(c);
+            if c == start {
+                break;
+            }
+        }
+        out.loop_starts.push(out.corner_verts.len() as u32);
+        n_loops += 1;
+        out.face_starts.push(n_loops);
+        kind.push(FaceKind::Vertex);
+        parent.push(v as u32);
+    }
     let prov = Provenance::new(mesh, topo, Numbering::DualQuad, kind, parent);
     (out, prov)
 }
