@@ -32,10 +32,14 @@ use crate::mesh::PolyMesh;
 use crate::step::{StepError, StepOptions};
 use crate::topology::Topology;
 use glam::DVec3;
+use rayon::prelude::*;
 use std::borrow::Cow;
 
 /// Straight-corner threshold on 1 − c (c = m₁·m₂ = −cos φ) for the δ term (§2.6).
 const STRAIGHT_CORNER: f64 = 1e-12;
+
+/// Edges a task of rayon's pool takes at least in the per-edge passes.
+const PAR_MIN: usize = 4096;
 
 /// The share of an edge a combination step's two new points on it may take together: each
 /// edge of a cut face keeps at least a tenth of its length, so no face of the child
@@ -102,21 +106,31 @@ pub(super) fn prepare<'a>(
         p_attrs = Cow::Owned(d.edge_attrs);
         old_vertex = Some(d.old_vertex);
     }
-    let mut radii = Vec::with_capacity(bends.len());
-    for (e, &psi) in bends.iter().enumerate() {
+    // Each edge's radius and its cut width's check on every core; the first knife edge in
+    // edge order is named.
+    let mut radii: Vec<f64> = (0..bends.len())
+        .into_par_iter()
+        .with_min_len(PAR_MIN)
+        .map(|e| {
+            let (a, b) = topo.edge_verts(&p_mesh, e);
+            rule.edge_radius(p_attrs.get(&EdgeKey::new(a, b)))
+                .expect("the cylindrical family has a radius")
+        })
+        .collect();
+    let knife = |e: usize| !cut_width(radii[e], bends[e]).is_finite();
+    if (0..bends.len())
+        .into_par_iter()
+        .with_min_len(PAR_MIN)
+        .any(knife)
+    {
+        let e = (0..bends.len()).find(|&e| knife(e)).expect("found");
         let (a, b) = topo.edge_verts(&p_mesh, e);
-        let r = rule
-            .edge_radius(p_attrs.get(&EdgeKey::new(a, b)))
-            .expect("the cylindrical family has a radius");
-        if !cut_width(r, psi).is_finite() {
-            return Err(RuleError::KnifeEdge {
-                a,
-                b,
-                bend_deg: psi.to_degrees(),
-            }
-            .into());
+        return Err(RuleError::KnifeEdge {
+            a,
+            b,
+            bend_deg: bends[e].to_degrees(),
         }
-        radii.push(r);
+        .into());
     }
     let skip = p_flags.as_deref().unwrap_or(&[]);
     let input = RuleInput {
@@ -130,7 +144,8 @@ pub(super) fn prepare<'a>(
     let mut clamped = Vec::new();
     if options.overlap != Overlap::Unchecked {
         let tangents: Vec<f64> = radii
-            .iter()
+            .par_iter()
+            .with_min_len(PAR_MIN)
             .zip(&bends)
             .map(|(r, psi)| {
                 if psi.abs() < tol {
@@ -163,7 +178,8 @@ pub(super) fn prepare<'a>(
         }
     }
     let mut cut_widths: Vec<f64> = radii
-        .iter()
+        .par_iter()
+        .with_min_len(PAR_MIN)
         .zip(&bends)
         .map(|(&r, &psi)| cut_width(r, psi))
         .collect();
