@@ -131,33 +131,22 @@ pub struct PrimalOutput {
 
 /// Refuses faces with holes, and non-triangles under Loop, naming the face.
 pub(crate) fn check_faces(mesh: &PolyMesh, scheme: PrimalScheme) -> Result<(), PrimalError> {
-    use rayon::prelude::*;
-    let fits = |f: usize| {
-        !mesh.face_has_holes(f) && (scheme != PrimalScheme::Loop || mesh.face_corners(f).len() == 3)
+    let misfit = |f: usize| {
+        mesh.face_has_holes(f) || (scheme == PrimalScheme::Loop && mesh.face_corners(f).len() != 3)
     };
-    // Every face checked on every core; the first that does not fit is named in order.
-    if (0..mesh.num_faces())
-        .into_par_iter()
-        .with_min_len(1 << 14)
-        .all(fits)
-    {
+    let Some(f) = crate::parallel::first_where(mesh.num_faces(), misfit) else {
         return Ok(());
+    };
+    if mesh.face_has_holes(f) {
+        return Err(PrimalError::HoledFace {
+            face: f as u32,
+            scheme: scheme.name(),
+        });
     }
-    for f in 0..mesh.num_faces() {
-        if mesh.face_has_holes(f) {
-            return Err(PrimalError::HoledFace {
-                face: f as u32,
-                scheme: scheme.name(),
-            });
-        }
-        if scheme == PrimalScheme::Loop && mesh.face_corners(f).len() != 3 {
-            return Err(PrimalError::NotTriangle {
-                face: f as u32,
-                corners: mesh.face_corners(f).len(),
-            });
-        }
-    }
-    Ok(())
+    Err(PrimalError::NotTriangle {
+        face: f as u32,
+        corners: mesh.face_corners(f).len(),
+    })
 }
 
 /// One level of Catmull–Clark or Loop, with its [`Provenance`].

@@ -117,13 +117,9 @@ pub(super) fn prepare<'a>(
                 .expect("the cylindrical family has a radius")
         })
         .collect();
-    let knife = |e: usize| !cut_width(radii[e], bends[e]).is_finite();
-    if (0..bends.len())
-        .into_par_iter()
-        .with_min_len(PAR_MIN)
-        .any(knife)
+    if let Some(e) =
+        crate::parallel::first_where(bends.len(), |e| !cut_width(radii[e], bends[e]).is_finite())
     {
-        let e = (0..bends.len()).find(|&e| knife(e)).expect("found");
         let (a, b) = topo.edge_verts(&p_mesh, e);
         return Err(RuleError::KnifeEdge {
             a,

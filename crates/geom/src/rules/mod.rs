@@ -235,8 +235,7 @@ pub fn corner_points(
         report.guarded_corners += r.guarded_corners;
         report.collapsed_corners += r.collapsed_corners;
     }
-    if !pts.par_iter().with_min_len(1 << 14).all(|p| p.is_finite()) {
-        let c = pts.iter().position(|p| !p.is_finite()).expect("found");
+    if let Some(c) = crate::parallel::first_where(pts.len(), |c| !pts[c].is_finite()) {
         return Err(RuleError::NonFinite {
             face: input.topo.corner_face[c],
             vertex: m.corner_verts[c],

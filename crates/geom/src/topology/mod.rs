@@ -13,7 +13,7 @@
 
 use crate::error::{MeshError, MeshWarning};
 use crate::mesh::PolyMesh;
-use crate::parallel::{filled, split_at_bounds};
+use crate::parallel::{filled, first_where, split_at_bounds};
 use outgoing::Outgoing;
 use rayon::prelude::*;
 
@@ -103,14 +103,7 @@ impl Topology {
         if nf == 0 {
             return Err(MeshError::NoFaces);
         }
-        // `all` first: rayon's `position_first` costs several times a plain pass.
-        let finite = |p: &glam::DVec3| p.is_finite();
-        if !mesh.positions.par_iter().with_min_len(1 << 14).all(finite) {
-            let i = mesh
-                .positions
-                .iter()
-                .position(|p| !finite(p))
-                .expect("found");
+        if let Some(i) = first_where(nv, |i| !mesh.positions[i].is_finite()) {
             let p = mesh.positions[i];
             return Err(MeshError::NonFinite {
                 vertex: i as u32,
