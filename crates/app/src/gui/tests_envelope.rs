@@ -181,15 +181,16 @@ fn the_t_sweep_shows_the_three_t() {
     );
 }
 
-/// Folds are shown in the summary: none on a bundled sample at its own t; the seven-primitive
-/// sample at t = 0.5 has cells turned by more than 90°, counted, with where the first lies.
+/// Folds are shown in the summary: none on a bundled sample at its own t or at t = 0.5; the
+/// seven-primitive sample at t = 0.1 has cells turned by more than 90°, counted, with where the
+/// first lies.
 #[test]
 fn the_summary_counts_folds() {
     let k = envelope::ENVELOPE_SAMPLES
         .iter()
         .position(|s| s.1 == "table2-seven.envelope.json")
         .unwrap();
-    for (t, folded) in [(None, false), (Some(0.5), true)] {
+    for (t, folded) in [(None, false), (Some(0.5), false), (Some(0.1), true)] {
         let mut a = app();
         let mut spec = envelope::sample(k).unwrap();
         if let Some(t) = t {

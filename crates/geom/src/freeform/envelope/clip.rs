@@ -25,7 +25,10 @@
 //!   is kept (de Casteljau, the same curve) and S's tangent plane is the one through that
 //!   piece's tangent and the section's;
 //! - a side along Π_k is a **silhouette edge**, built in Π_k with §6.3 between its ends
-//!   (ρ = t·|P − G| at each); a kept side along an edge that lies in Π_k is one as it is.
+//!   (ρ = t·|P − G| at each), or, where that hooks or nearly does (a leg under 15 % of the
+//!   chord: a straight-looking curve whose parameter crowds at one end), the polynomial cubic
+//!   along the section's tangents with legs of a third of the chord; a kept side along an edge that
+//!   lies in Π_k is one as it is.
 //!
 //! The silhouette edges on Π_k, in the direction the kept faces run along them, are the
 //! **section** facing partner k: a closed loop when nothing else cuts Π_k, otherwise a chain
@@ -46,6 +49,13 @@ const ON_PLANE: f64 = 1e-9;
 
 /// Unit directions closer than this are one network vertex.
 const SAME_DIRECTION: f64 = 1e-9;
+
+/// A §6.3 piece whose leg at either end is shorter than this share of its chord is treated as
+/// hooked: such a curve is nearly straight but spends most of its parameter at the short leg's
+/// end (weights like 1, 71, 0.25, 1), and the patches on it fold (envelope.md, "Nearly hooked
+/// pieces"). An arc normal to two radii of equal length has legs of at least a third of its
+/// chord, so t = 1 never meets it.
+const NEAR_HOOK: f64 = 0.15;
 
 /// Where a corner of a clipped face lies on the primitive.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -107,9 +117,16 @@ fn at_direction(c: &RationalBezier, g: DVec3, u: DVec3) -> f64 {
     0.5 * (lo + hi)
 }
 
-/// Whether a curve leaves its start or reaches its end against its chord.
-fn hooks(c: &RationalBezier, chord: DVec3) -> bool {
-    c.derivatives(0.0).d1.dot(chord) <= 0.0 || c.derivatives(1.0).d1.dot(chord) <= 0.0
+/// Whether `c` (from the first to the last point of `chord`) hooks — leaves its start or
+/// reaches its end backwards — or, for `near` > 0, nearly does: a leg shorter than `near` of
+/// the chord.
+fn hooks(c: &RationalBezier, chord: DVec3, near: f64) -> bool {
+    let p = &c.points;
+    let least = near * chord.length();
+    c.derivatives(0.0).d1.dot(chord) <= 0.0
+        || c.derivatives(1.0).d1.dot(chord) <= 0.0
+        || p[0].distance(p[1]) < least
+        || p[3].distance(p[2]) < least
 }
 
 fn angle(x: DVec3, y: DVec3) -> f64 {
@@ -389,12 +406,13 @@ impl Clipper<'_> {
                         why: format!("a silhouette edge towards partner {k} cannot be curved"),
                     }
                 })?;
-                let bez = if hooks(&bez, py - px) {
+                let bez = if hooks(&bez, py - px, NEAR_HOOK) {
                     // A short piece between points at different distances from G (a corner
                     // where two cuts cross, next to where one crosses an edge): no convex arc
-                    // is normal to both radii. The cubic that leaves and reaches them along
-                    // the section's tangents, a third of the chord long, instead (an
-                    // inflection, not a hook; envelope.md).
+                    // is normal to both radii, or only one with a leg too short to give its
+                    // parameter room. The cubic that leaves and reaches them along the
+                    // section's tangents, a third of the chord long, instead (an inflection,
+                    // not a hook; envelope.md).
                     let chord = py - px;
                     let along = |p: DVec3| {
                         let t = self.cuts[k].cross(p - g).normalize();
@@ -419,7 +437,7 @@ impl Clipper<'_> {
                 } else {
                     let rebuilt = curved_edge(g, px, py, t_of(net, x), t_of(net, y))
                         .ok_or_else(|| self.bad_edge(a, b))?;
-                    if hooks(&rebuilt, py - px) {
+                    if hooks(&rebuilt, py - px, 0.0) {
                         // No convex arc joins them normal to both radii: the edge's own piece,
                         // and at each silhouette point the tangent plane through its tangent
                         // and the section's.

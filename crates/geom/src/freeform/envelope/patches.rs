@@ -11,11 +11,12 @@
 //! split into n quads around an inserted point P_i (§11.7):
 //! 1. `P_d(k)` = boundary k at τ = ½, `b_k = X_k(½)/3`;
 //! 2. `P_i` = mean of `P_d(k) + (3/2)b_k`;
-//! 3. moved along G → P_i to the distance `max(ρ̄, d_face)` from the primitive's centre G (ρ̄ =
-//!    mean curvature radius t·r at the region's corners; d_face = distance to the face's plane
-//!    along that ray), so P_i never lies inside the primitive; where ρ̄ > r (t > 1), to where
-//!    virtual edges from the corners across the ray cross it (the paper's ρ̄ would put P_i at
-//!    t·r, far beyond edges that bulge a few per cent);
+//! 3. moved along G → P_i to the distance `max(d_v, d_face)` from the primitive's centre G,
+//!    d_v = the mean of where virtual edges from the region's corners (§6.3, each corner's t)
+//!    across the ray cross it, d_face = distance to the face's plane along the ray, so P_i
+//!    never lies inside the primitive. At t = 1 d_v is the sphere, the paper's ρ̄ = t·r; for
+//!    t ≠ 1 it lies as far out as the region's own curves bulge, where ρ̄ dented wide faces
+//!    (envelope.md, "The inserted point");
 //! 4. tangent plane at P_i normal to `P_i − G`, or the face normal when the clamp acted;
 //! 5. insertion curve k, with `λ_k = ((P_i − P_d)·n)/(b_k·n)`, `λ̂ = max(λ_k, ¼)` and Π the
 //!    projection onto that plane: `P_i, P_i + ⅔Π(P_d + λ̂b_k − P_i), P_d + ⅔λ̂b_k, P_d` — the
@@ -167,24 +168,21 @@ fn place(
                         .expect("a region corner is a vertex")
                 })
                 .collect();
-            let rho =
-                corners.iter().map(|&v| net.vertices[v].rho).sum::<f64>() / corners.len() as f64;
             let nf = p.normals[face];
             let d_face = nf.dot(p.vertices[p.faces[face][0]] - g) / nf.dot(u);
-            if rho > p.radius {
-                // t > 1: the paper's ρ̄ would put P_i at t·r, far beyond edges that bulge a
-                // few per cent; take where virtual edges cross the ray instead (envelope.md).
-                let d = corners
-                    .iter()
-                    .map(|&v| {
-                        let c = net.vertices[v].position;
-                        let t = net.vertices[v].rho / c.distance(g);
-                        virtual_crossing(g, c, u, t)
-                    })
-                    .sum::<f64>()
-                    / corners.len() as f64;
-                (g + d * u, u)
-            } else if rho < d_face {
+            // Where virtual edges from the corners across the ray cross it (envelope.md, "The
+            // inserted point"): the sphere at t = 1, as the paper's ρ̄; for t ≠ 1 as far out as
+            // the region's own curves bulge.
+            let d = corners
+                .iter()
+                .map(|&v| {
+                    let c = net.vertices[v].position;
+                    let t = net.vertices[v].rho / c.distance(g);
+                    virtual_crossing(g, c, u, t)
+                })
+                .sum::<f64>()
+                / corners.len() as f64;
+            if d < d_face {
                 // Clamped: on the face plane, at the centroid of the P_d projected onto it
                 // (the face centre for a regular face; inside a cut face's part, envelope.md).
                 let f0 = p.vertices[p.faces[face][0]];
@@ -195,7 +193,7 @@ fn place(
                     / n as f64;
                 (c, nf)
             } else {
-                (g + rho * u, u)
+                (g + d * u, u)
             }
         }
         RegionKind::Fusion => {
