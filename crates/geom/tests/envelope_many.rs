@@ -533,10 +533,10 @@ fn cells_facing_the_centre(e: &Envelope) -> usize {
 
 /// A grazing cut leaves a thin triangle on a cube face (sides 0.64, 0.65 and 0.066 on the
 /// middle cube here): split at its sides' middles, its quads turned cells towards the cube's
-/// centre at t = 1; split where its sides come nearest the inserted point (envelope.md, "Thin
-/// three-sided regions"), none does, and the patch check finds no fold.
+/// centre at t = 1; split at the feet of its incentre with square insertion curves
+/// (envelope.md, "Three-sided regions"), none does, and the patch check finds no fold.
 #[test]
-fn a_thin_triangle_is_split_where_its_sides_come_nearest() {
+fn a_thin_triangle_is_split_at_the_feet_of_its_incentre() {
     let e = build(
         vec![
             cube_at([0.565348333199, 2.073710053444, 1.201416233653], [0.0; 3]),
@@ -553,4 +553,48 @@ fn a_thin_triangle_is_split_where_its_sides_come_nearest() {
     );
     assert_eq!(cells_facing_the_centre(&e), 0);
     assert_eq!(e.folds(), vec![]);
+}
+
+/// Two cubes whose cut leaves each a triangle of 2.08 × 2.15 × 0.15 with a 4.6° corner:
+/// split at the feet of the inserted point alone, the quad at the 4.6° corner folded (14
+/// cells at t = 1, 32 at 0.7); with the incentre's feet and square insertion curves no cell
+/// of those needles folds from t = 1 to 0.3, nor any cell of the scene at t = 1, 0.7 and 0.3,
+/// and none faces its cube's centre at t = 1 and 0.7 (at 0.5 triangles 0.05 across
+/// and a pentagon's sliver still fold: envelope.md, "Left").
+#[test]
+fn a_needle_triangle_does_not_fold() {
+    let prims = vec![
+        cube_at([1.353, 3.941, 3.292], [0.0; 3]),
+        cube_at([1.669, 0.472, 0.121], [0.0; 3]),
+    ];
+    for t in [1.0, 0.7, 0.5, 0.3] {
+        let e = build(prims.clone(), t);
+        let needles: Vec<usize> = (0..e.network.regions.len())
+            .filter(|&r| {
+                let sides = &e.network.regions[r].sides;
+                let len: Vec<f64> = sides
+                    .iter()
+                    .map(|s| {
+                        let c = &e.network.curves[s.curve].bezier;
+                        c.eval(s.t0).distance(c.eval(s.t1))
+                    })
+                    .collect();
+                sides.len() == 3
+                    && len.iter().cloned().fold(f64::INFINITY, f64::min) < 0.2
+                    && len.iter().cloned().fold(0.0, f64::max) > 2.0
+            })
+            .collect();
+        assert_eq!(needles.len(), 2, "t = {t}");
+        let folds = e.folds();
+        assert!(
+            folds.iter().all(|f| !needles.contains(&f.region)),
+            "t = {t}: {folds:?}"
+        );
+        if [1.0, 0.7, 0.3].contains(&t) {
+            assert_eq!(folds, vec![], "t = {t}");
+        }
+        if t >= 0.7 {
+            assert_eq!(cells_facing_the_centre(&e), 0, "t = {t}");
+        }
+    }
 }

@@ -24,6 +24,12 @@
 //! 6. sub-quad k = insertion k, the second half of boundary k, the first half of boundary
 //!    k + 1, insertion k + 1 backwards. The insertion curve's basis is rule (a) at P_d (the
 //!    boundary runs on through P_d) and rule (b) at P_i.
+//!
+//! A three-sided region is split at the feet of its incentre instead of the middles, with
+//! `b_k` square to the side, and as its smallest corner narrows from 50° to 20° its insertion
+//! curves turn from the paper's into cubics a third long at both ends, straight at the foot
+//! and square to the side (envelope.md, "Three-sided regions"); a regular triangle is the
+//! paper's.
 
 use super::coons::{Coons, Side};
 use super::edges::curved_edge;
@@ -40,9 +46,17 @@ const LAMBDA_MIN: f64 = 0.25;
 /// away from its P_d (a sub-quad with a negative angle at P_i: a fold).
 const LEAVE: f64 = 0.3;
 
-/// The split point of a three-sided region's side stays this far from its ends (a share
-/// of the side's parameter).
-const SPLIT_MIN: f64 = 0.2;
+/// The split point of a three-sided region's side (the foot of its incentre) stays this far
+/// from the side's ends (a share of its parameter).
+const SPLIT_MIN: f64 = 0.02;
+
+/// A three-sided region whose smallest corner is below this angle (radians, 20°) takes the
+/// square insertion curves; above [`PAPER_ABOVE`] (50°) the paper's; in between a blend, so
+/// the surface moves continuously as a corner narrows.
+const SQUARE_BELOW: f64 = 20.0 * std::f64::consts::PI / 180.0;
+
+/// See [`SQUARE_BELOW`].
+const PAPER_ABOVE: f64 = 50.0 * std::f64::consts::PI / 180.0;
 
 /// The widest sector (radians) the P_d and the insertion curves' tangents may leave between
 /// neighbours around P_i: a sub-quad's corner there must stay well below 180°.
@@ -279,15 +293,40 @@ fn split(net: &mut Network, r: usize, prims: &[Primitive]) -> Vec<EnvelopePatch>
     let mut split_at = vec![0.5; n];
     let (mut pd, mut b, mut tangent_d) = at(&split_at);
     let mut best = inserted(&pd, &b, &tangent_d);
+    // A three-sided region is split at the feet of its incentre, with cross derivatives
+    // square to its sides there (envelope.md, "Three-sided regions"): a thin triangle's
+    // quads then have corners near 90° at the feet. A regular one is split at its middles,
+    // where the cross derivatives are square already, as the paper does.
+    // `thin`: how far the insertion curves go from the paper's legs to the square ones.
+    let mut thin = 0.0;
     if n == 3 {
-        // A three-sided region is split where its sides come nearest the inserted point
-        // (envelope.md, "Thin three-sided regions"): at the middles a thin triangle's
-        // quads meet its long sides at a few degrees and fold. A regular one is split at
-        // its middles as before.
+        let least = (0..3)
+            .map(|k| {
+                let out = fitted[k].curve.derivatives(0.0).d1;
+                let back = -fitted[(k + 2) % 3].curve.derivatives(1.0).d1;
+                out.angle_between(back)
+            })
+            .fold(f64::INFINITY, f64::min);
+        thin = ((PAPER_ABOVE - least) / (PAPER_ABOVE - SQUARE_BELOW)).clamp(0.0, 1.0);
+        let corner: Vec<DVec3> = fitted.iter().map(|s| s.curve.eval(0.0)).collect();
+        // Side k joins corners k and k + 1; the side opposite corner k is side k + 1.
+        let chord = |k: usize| corner[k].distance(corner[(k + 1) % 3]);
+        let perimeter = chord(0) + chord(1) + chord(2);
+        let incentre = (0..3)
+            .map(|k| corner[k] * chord((k + 1) % 3))
+            .sum::<DVec3>()
+            / perimeter;
         for (k, s) in fitted.iter().enumerate() {
-            split_at[k] = nearest_parameter(&s.curve, best.1);
+            split_at[k] = nearest_parameter(&s.curve, incentre);
         }
         (pd, b, tangent_d) = at(&split_at);
+        for k in 0..n {
+            let t = tangent_d[k].normalize();
+            let across = b[k] - b[k].dot(t) * t;
+            if across.length() > 1e-9 * b[k].length() {
+                b[k] = across;
+            }
+        }
         best = inserted(&pd, &b, &tangent_d);
     }
     let (_, pi_, normal) = best;
@@ -297,8 +336,8 @@ fn split(net: &mut Network, r: usize, prims: &[Primitive]) -> Vec<EnvelopePatch>
     };
     let vi = net.add_vertex(pi_, normal, rho_i);
     let proj = |x: DVec3| x - x.dot(normal) * normal;
-    // Per insertion curve: its λ and the leg it leaves P_i with.
-    let mut legs = Vec::with_capacity(n);
+    // Per insertion curve: the legs it leaves P_i and P_d with.
+    let mut legs: Vec<(DVec3, DVec3)> = Vec::with_capacity(n);
     for k in 0..n {
         let bn = b[k].dot(normal);
         let lambda = if bn.abs() < 1e-12 * b[k].length() {
@@ -315,13 +354,21 @@ fn split(net: &mut Network, r: usize, prims: &[Primitive]) -> Vec<EnvelopePatch>
         } else {
             lambda
         };
-        legs.push((lambda, 2.0 / 3.0 * proj(pd[k] + lambda * b[k] - pi_)));
+        let paper = (
+            2.0 / 3.0 * proj(pd[k] + lambda * b[k] - pi_),
+            2.0 / 3.0 * lambda * b[k],
+        );
+        // Square: a third of the way, straight at the foot (projected) and square to the
+        // side; the paper's legs overshoot across a thin triangle.
+        let third = pd[k].distance(pi_) / 3.0;
+        let square = (w / 3.0, third * b[k].normalize());
+        legs.push((paper.0.lerp(square.0, thin), paper.1.lerp(square.1, thin)));
     }
     // Legs that do not go round P_i with every sector below STAR point straight at their P_d
     // (projected) instead, keeping their length.
-    if widest_sector(pi_, normal, legs.iter().map(|l| l.1)) > STAR {
+    if widest_sector(pi_, normal, legs.iter().map(|l| l.0)) > STAR {
         for (k, leg) in legs.iter_mut().enumerate() {
-            leg.1 = proj(pd[k] - pi_).normalize_or_zero() * leg.1.length();
+            leg.0 = proj(pd[k] - pi_).normalize_or_zero() * leg.0.length();
         }
     }
     let mut ins = Vec::with_capacity(n);
@@ -337,14 +384,9 @@ fn split(net: &mut Network, r: usize, prims: &[Primitive]) -> Vec<EnvelopePatch>
                 v
             }
         };
-        let (lambda, leg) = legs[k];
-        let bez = RationalBezier::polynomial(vec![
-            pi_,
-            pi_ + leg,
-            pd[k] + 2.0 / 3.0 * lambda * b[k],
-            pd[k],
-        ])
-        .expect("finite points");
+        let (leg_i, leg_d) = legs[k];
+        let bez = RationalBezier::polynomial(vec![pi_, pi_ + leg_i, pd[k] + leg_d, pd[k]])
+            .expect("finite points");
         let end = bez.derivatives(1.0).d1;
         let c = net.add_curve(bez, vi, vd, CurveKind::Insertion);
         // Rule (a) at P_d: the boundary runs on through it.
