@@ -27,8 +27,8 @@
 //! - a side along Π_k is a **silhouette edge**, built in Π_k with §6.3 between its ends
 //!   (ρ = t·|P − G| at each), or, where that hooks or nearly does (a leg under 15 % of the
 //!   chord: a straight-looking curve whose parameter crowds at one end), the polynomial cubic
-//!   along the section's tangents with legs of a third of the chord; a kept side along an edge that
-//!   lies in Π_k is one as it is.
+//!   along the section's tangents with legs of a third of the chord; a kept side along an
+//!   edge that lies in Π_k is one as it is.
 //!
 //! The silhouette edges on Π_k, in the direction the kept faces run along them, are the
 //! **section** facing partner k: a closed loop when nothing else cuts Π_k, otherwise a chain

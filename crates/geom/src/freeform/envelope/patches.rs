@@ -361,7 +361,7 @@ fn split(net: &mut Network, r: usize, prims: &[Primitive]) -> Vec<EnvelopePatch>
         // Square: a third of the way, straight at the foot (projected) and square to the
         // side; the paper's legs overshoot across a thin triangle.
         let third = pd[k].distance(pi_) / 3.0;
-        let square = (w / 3.0, third * b[k].normalize());
+        let square = (w / 3.0, third * b[k].normalize_or_zero());
         legs.push((paper.0.lerp(square.0, thin), paper.1.lerp(square.1, thin)));
     }
     // Legs that do not go round P_i with every sector below STAR point straight at their P_d
