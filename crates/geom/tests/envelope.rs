@@ -418,12 +418,14 @@ fn two_aligned_cubes_fuse_by_translation() {
 }
 
 /// Two cubes on the body diagonal: 18 regions (each cube's 3 triangles and 3 pentagons, 6 fusion
-/// quads), 54 patches; closed, outward and G1 for t from 0.1 to 1; at t = 1 both cubes enclosed.
+/// quads), 54 patches; closed, outward and G1 for t from 0.1 to 1 and at t = 2 and 3 (120 of
+/// 3,456 faces inwards at t = 3 before short sides took their own cross derivative); at t = 1
+/// both cubes enclosed.
 /// (The literal P_i and insertion rules folded at t = 0.7, 0.5, 0.3: 96, 96, 48 of 3456 faces.)
 #[test]
 fn two_diagonal_cubes_are_closed_outward_and_g1() {
     let gb = DVec3::new(3.0, 3.0, 3.0);
-    for t in [1.0, 0.7, 0.5, 0.3, 0.1] {
+    for t in [1.0, 0.7, 0.5, 0.3, 0.1, 2.0, 3.0] {
         let e = pair(
             cube_at([0.0; 3], [0.0; 3]),
             cube_at(gb.to_array(), [0.0; 3]),
@@ -510,11 +512,13 @@ fn primitives_with_one_centre_are_refused() {
 /// Two cubes off every symmetry axis: at t = 0.3 the rebuilt kept pieces of two edges hooked
 /// (no convex arc leaves the corner and reaches the silhouette point normal to both radii) and
 /// the surface folded (analytic border jump 180°, 10 of 896 faces inwards); with the edge's own
-/// piece kept there, closed, outward and G1 for t from 0.3 to 1.
+/// piece kept there, closed, outward and G1 for t from 0.3 to 1 — and at t = 0.1 too, since
+/// short patch sides take their own cross derivative (10 faces inwards before; envelope.md,
+/// "Short sides"), with no folded cell at any of these t.
 #[test]
 fn an_off_axis_pair_keeps_the_edge_where_the_rebuilt_piece_would_hook() {
     let gb = DVec3::new(3.0, 1.2, 0.6);
-    for t in [1.0, 0.7, 0.5, 0.3] {
+    for t in [1.0, 0.7, 0.5, 0.3, 0.1] {
         let e = pair(
             cube_at([0.0; 3], [0.0; 3]),
             cube_at(gb.to_array(), [0.0; 3]),
@@ -531,6 +535,7 @@ fn an_off_axis_pair_keeps_the_edge_where_the_rebuilt_piece_would_hook() {
         assert!(jump < 1e-9, "t = {t}: {jump}°");
         let m = e.tessellate(8).unwrap();
         assert_closed_outward_from(&m, DVec3::ZERO, gb, &format!("t = {t}"));
+        assert_eq!(e.folds(), vec![], "t = {t}");
     }
 }
 

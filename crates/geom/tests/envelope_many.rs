@@ -312,7 +312,7 @@ fn folds_are_found_patch_by_patch() {
     }
     let spec: EnvelopeSpec =
         serde_json::from_str(include_str!("../../../assets/table2-seven.envelope.json")).unwrap();
-    for (t, first) in [(0.2, "primitive 2 face 2"), (0.1, "primitive 0 face 0")] {
+    for (t, first) in [(0.2, "primitive 2 face 7"), (0.1, "primitive 0 face 0")] {
         let e = envelope(&EnvelopeSpec { t, ..spec.clone() }).unwrap();
         let folds = e.folds();
         assert!(!folds.is_empty(), "t = {t}");

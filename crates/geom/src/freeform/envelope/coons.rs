@@ -17,6 +17,10 @@ use crate::freeform::bezier::RationalBezier;
 use crate::freeform::g1::fit;
 use glam::DVec3;
 
+/// The least share of the fitted part across a short side that its short-side cross
+/// derivative keeps pointing into the patch ([`Side::short`]).
+const INWARD_FLOOR: f64 = 0.25;
+
 /// One border of a patch: its curve (parametrised along the side) and its inward cross
 /// derivative `X(s) = (k₀(1−s) + k₁s)·g(s) + (h₀(1−s) + h₁s)·T(s)`, `g(s) = (1−s)g₀ + s g₁`,
 /// where `T(s) = unit(C′(s))·((1−s)|C′(0)| + s|C′(1)|)` is the curve's tangent with its speed
@@ -29,6 +33,11 @@ pub struct Side {
     pub h: (f64, f64),
     /// |C′| at s = 0 and s = 1, which T interpolates.
     pub speed: (f64, f64),
+    /// The corner legs the cross derivative was fitted to.
+    pub legs: (DVec3, DVec3),
+    /// How far the cross derivative's part along the side goes from `h T` to the legs'
+    /// parts along it interpolated as vectors ([`Side::short`]; 0: not at all).
+    pub direct: f64,
 }
 
 impl Side {
@@ -47,6 +56,8 @@ impl Side {
             k: (k0, k1),
             h: (h0, h1),
             speed,
+            legs: (a0, a1),
+            direct: 0.0,
         }
     }
 
@@ -69,8 +80,64 @@ impl Side {
         (m * dir, (m1 - m0) * dir + m * ddir)
     }
 
+    /// This side with its cross derivative blended towards the short-side form by `direct`
+    /// (0 to 1). On a side much shorter than its neighbours the corner legs are long against
+    /// its own speed, `h` is large and `h T` swings with the side's direction; the short-side
+    /// form keeps the fitted part across the side (`k g` less its part along the side, at
+    /// least a quarter of it inwards) and takes the part along the side from the legs
+    /// interpolated as vectors, which stays within them. It equals the fit at both ends and
+    /// lies in the plane of g and C′, so G1 along the border is untouched.
+    pub fn short(mut self, direct: f64) -> Side {
+        self.direct = direct.clamp(0.0, 1.0);
+        self
+    }
+
     /// The cross derivative and its s-derivative at s.
     pub fn cross(&self, s: f64) -> (DVec3, DVec3) {
+        let (x, dx) = self.fitted_cross(s);
+        if self.direct == 0.0 {
+            return (x, dx);
+        }
+        let (y, dy) = self.short_cross(s);
+        let w = self.direct;
+        (x.lerp(y, w), dx.lerp(dy, w))
+    }
+
+    /// The short-side form of the cross derivative ([`Side::short`]) and its s-derivative.
+    fn short_cross(&self, s: f64) -> (DVec3, DVec3) {
+        let d = self.curve.derivatives(s);
+        let speed = d.d1.length();
+        if speed == 0.0 {
+            return (DVec3::ZERO, DVec3::ZERO);
+        }
+        // Unit tangent t and its derivative.
+        let t = d.d1 / speed;
+        let dt = (d.d2 - d.d2.dot(t) * t) / speed;
+        let (g, dg) = (self.g.0.lerp(self.g.1, s), self.g.1 - self.g.0);
+        let (k, dk) = (self.k.0 + (self.k.1 - self.k.0) * s, self.k.1 - self.k.0);
+        // The fitted part across the side, its length and direction.
+        let across = k * (g - g.dot(t) * t);
+        let d_across =
+            dk * (g - g.dot(t) * t) + k * (dg - (dg.dot(t) + g.dot(dt)) * t - g.dot(t) * dt);
+        let kappa = across.length();
+        if kappa == 0.0 {
+            return (DVec3::ZERO, DVec3::ZERO);
+        }
+        let dir = across / kappa;
+        let d_dir = (d_across - d_across.dot(dir) * dir) / kappa;
+        let (v, dv) = (self.legs.0.lerp(self.legs.1, s), self.legs.1 - self.legs.0);
+        let (beta, d_beta) = if v.dot(dir) >= INWARD_FLOOR * kappa {
+            (v.dot(dir), dv.dot(dir) + v.dot(d_dir))
+        } else {
+            (INWARD_FLOOR * kappa, INWARD_FLOOR * d_across.dot(dir))
+        };
+        let along = v.dot(t) * t;
+        let d_along = (dv.dot(t) + v.dot(dt)) * t + v.dot(t) * dt;
+        (beta * dir + along, d_beta * dir + beta * d_dir + d_along)
+    }
+
+    /// `k g + h T`, the paper's form, and its s-derivative.
+    fn fitted_cross(&self, s: f64) -> (DVec3, DVec3) {
         let (t, dt) = self.tangent(s);
         let g = self.g.0.lerp(self.g.1, s);
         let dg = self.g.1 - self.g.0;
@@ -226,6 +293,44 @@ impl Coons {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The short-side cross derivative meets the corner legs at both ends, lies in the plane
+    /// of g and C′ everywhere (G1), and its s-derivative is its difference quotient.
+    #[test]
+    fn the_short_side_form_fits_the_legs_in_the_tangent_plane() {
+        // A short, bent side with long legs leaning along it from both corners.
+        let curve = RationalBezier::new(
+            vec![
+                DVec3::ZERO,
+                DVec3::new(0.02, 0.01, 0.0),
+                DVec3::new(0.05, 0.01, 0.005),
+                DVec3::new(0.06, 0.0, 0.0),
+            ],
+            vec![1.0, 0.8, 1.3, 1.0],
+        )
+        .unwrap();
+        let g = (DVec3::Y, DVec3::new(0.1, 1.0, 0.05));
+        // Legs in the corners' tangent planes, mostly along the side (h ≈ ±8).
+        let a0 = 0.5 * g.0 + 8.0 * curve.derivatives(0.0).d1;
+        let a1 = 0.6 * g.1 - 7.0 * curve.derivatives(1.0).d1;
+        let side = Side::fitted(curve.clone(), g, a0, a1).short(1.0);
+        assert!((side.cross(0.0).0 - a0).length() < 1e-12);
+        assert!((side.cross(1.0).0 - a1).length() < 1e-12);
+        for i in 0..=20 {
+            let s = i as f64 / 20.0;
+            let (x, dx) = side.cross(s);
+            let gs = g.0.lerp(g.1, s);
+            let n = gs.cross(curve.derivatives(s).d1).normalize();
+            assert!(x.dot(n).abs() < 1e-12 * x.length(), "{s}");
+            let h = 1e-6;
+            let (lo, hi) = ((s - h).max(0.0), (s + h).min(1.0));
+            let fd = (side.cross(hi).0 - side.cross(lo).0) / (hi - lo);
+            assert!(
+                (fd - dx).length() < 1e-5 * (1.0 + dx.length()),
+                "{s}: {fd} {dx}"
+            );
+        }
+    }
 
     fn line(a: DVec3, b: DVec3) -> RationalBezier {
         RationalBezier::polynomial(vec![a, a.lerp(b, 1.0 / 3.0), a.lerp(b, 2.0 / 3.0), b]).unwrap()

@@ -58,6 +58,14 @@ const SQUARE_BELOW: f64 = 20.0 * std::f64::consts::PI / 180.0;
 /// See [`SQUARE_BELOW`].
 const PAPER_ABOVE: f64 = 50.0 * std::f64::consts::PI / 180.0;
 
+/// A patch side whose chord is below this share of the patch's longest side starts to take
+/// the short-side cross derivative ([`Side::short`]), wholly below [`SHORT_FULL`]: no side of a
+/// single primitive's patches is that short, so they keep the paper's.
+const SHORT_FROM: f64 = 0.45;
+
+/// See [`SHORT_FROM`].
+const SHORT_FULL: f64 = 0.2;
+
 /// The widest sector (radians) the P_d and the insertion curves' tangents may leave between
 /// neighbours around P_i: a sub-quad's corner there must stay well below 180°.
 const STAR: f64 = 150.0 * std::f64::consts::PI / 180.0;
@@ -94,6 +102,11 @@ fn fitted_sides(net: &Network, sides: &[PatchSide]) -> Vec<Side> {
         .map(|s| piece(&net.curves[s.curve].bezier, s.t0, s.t1))
         .collect();
     let n = sides.len();
+    let chords: Vec<f64> = curves
+        .iter()
+        .map(|c| c.eval(0.0).distance(c.eval(1.0)))
+        .collect();
+    let longest = chords.iter().cloned().fold(0.0, f64::max);
     (0..n)
         .map(|k| {
             let prev = &curves[(k + n - 1) % n];
@@ -102,7 +115,11 @@ fn fitted_sides(net: &Network, sides: &[PatchSide]) -> Vec<Side> {
             let a1 = next.derivatives(0.0).d1;
             let c = &net.curves[sides[k].curve];
             let g = (c.basis_at(sides[k].t0), c.basis_at(sides[k].t1));
+            // A side much shorter than the patch's longest takes the short-side cross
+            // derivative (envelope.md, "Short sides").
+            let ratio = chords[k] / longest.max(f64::MIN_POSITIVE);
             Side::fitted(curves[k].clone(), g, a0, a1)
+                .short((SHORT_FROM - ratio) / (SHORT_FROM - SHORT_FULL))
         })
         .collect()
 }
