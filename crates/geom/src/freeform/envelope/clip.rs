@@ -23,7 +23,8 @@
 //!   would hook — leave its end or arrive backwards, when no convex arc is normal to both radii
 //!   (`|A − G| cos γ > |S − G|`: small t, a plane cutting near a corner) — the edge's own piece
 //!   is kept (de Casteljau, the same curve) and S's tangent plane is the one through that
-//!   piece's tangent and the section's;
+//!   piece's tangent and the section's; where it nearly hooks (a leg under 5 % of the chord)
+//!   the polynomial cubic normal to both radii, legs a third of the chord;
 //! - a side along Π_k is a **silhouette edge**, built in Π_k with §6.3 between its ends
 //!   (ρ = t·|P − G| at each), or, where that hooks or nearly does (a leg under 15 % of the
 //!   chord: a straight-looking curve whose parameter crowds at one end), the polynomial cubic
@@ -56,6 +57,12 @@ const SAME_DIRECTION: f64 = 1e-9;
 /// pieces"). An arc normal to two radii of equal length has legs of at least a third of its
 /// chord, so t = 1 never meets it.
 const NEAR_HOOK: f64 = 0.15;
+
+/// The same for a kept piece of a primitive's edge rebuilt between a corner and a silhouette
+/// point; a larger share reaches the pieces of two diagonal cubes at t = 0.1, from each corner
+/// to the middle of its edge, whose legs are short but whose cubic would bulge past the curved
+/// edges beside them (envelope.md, "Nearly hooked pieces").
+const NEAR_HOOK_EDGE: f64 = 0.05;
 
 /// Where a corner of a clipped face lies on the primitive.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -127,6 +134,20 @@ fn hooks(c: &RationalBezier, chord: DVec3, near: f64) -> bool {
         || c.derivatives(1.0).d1.dot(chord) <= 0.0
         || p[0].distance(p[1]) < least
         || p[3].distance(p[2]) < least
+}
+
+/// The polynomial cubic from `px` to `py` in the plane through `g` normal to `plane`, leaving
+/// and reaching each end normal to its radius (towards the other end), legs a third of the
+/// chord: where a §6.3 piece hooks or nearly does.
+fn third_cubic(g: DVec3, plane: DVec3, px: DVec3, py: DVec3) -> RationalBezier {
+    let chord = py - px;
+    let along = |p: DVec3| {
+        let t = plane.cross(p - g).normalize();
+        if t.dot(chord) < 0.0 { -t } else { t }
+    };
+    let l = chord.length() / 3.0;
+    RationalBezier::polynomial(vec![px, px + l * along(px), py - l * along(py), py])
+        .expect("finite points")
 }
 
 fn angle(x: DVec3, y: DVec3) -> f64 {
@@ -413,14 +434,7 @@ impl Clipper<'_> {
                     // parameter room. The cubic that leaves and reaches them along the
                     // section's tangents, a third of the chord long, instead (an inflection,
                     // not a hook; envelope.md).
-                    let chord = py - px;
-                    let along = |p: DVec3| {
-                        let t = self.cuts[k].cross(p - g).normalize();
-                        if t.dot(chord) < 0.0 { -t } else { t }
-                    };
-                    let l = chord.length() / 3.0;
-                    RationalBezier::polynomial(vec![px, px + l * along(px), py - l * along(py), py])
-                        .expect("finite points")
+                    third_cubic(g, self.cuts[k], px, py)
                 } else {
                     bez
                 };
@@ -457,6 +471,12 @@ impl Clipper<'_> {
                                 net.vertices[v].normal = n;
                             }
                         }
+                        net.add_curve(bez, x, y, CurveKind::Edge)
+                    } else if hooks(&rebuilt, py - px, NEAR_HOOK_EDGE) {
+                        // Nearly hooked: a leg under NEAR_HOOK_EDGE of the chord, the parameter
+                        // crowded at that end. The cubic normal to both radii instead; S keeps
+                        // its tangent plane (envelope.md, "Nearly hooked pieces").
+                        let bez = third_cubic(g, (px - g).cross(py - g), px, py);
                         net.add_curve(bez, x, y, CurveKind::Edge)
                     } else {
                         net.add_curve(rebuilt, x, y, CurveKind::Edge)
