@@ -307,14 +307,13 @@ fn split(net: &mut Network, r: usize, prims: &[Primitive]) -> Vec<EnvelopePatch>
         }
         best.expect("tried")
     };
-    let mut split_at = vec![0.5; n];
-    let (mut pd, mut b, mut tangent_d) = at(&split_at);
-    let mut best = inserted(&pd, &b, &tangent_d);
     // A three-sided region is split at the feet of its incentre, with cross derivatives
     // square to its sides there (envelope.md, "Three-sided regions"): a thin triangle's
     // quads then have corners near 90° at the feet. A regular one is split at its middles,
-    // where the cross derivatives are square already, as the paper does.
+    // where the cross derivatives are square already, as the paper does; other regions at
+    // their sides' middles.
     // `thin`: how far the insertion curves go from the paper's legs to the square ones.
+    let mut split_at = vec![0.5; n];
     let mut thin = 0.0;
     if n == 3 {
         let least = (0..3)
@@ -336,7 +335,9 @@ fn split(net: &mut Network, r: usize, prims: &[Primitive]) -> Vec<EnvelopePatch>
         for (k, s) in fitted.iter().enumerate() {
             split_at[k] = nearest_parameter(&s.curve, incentre);
         }
-        (pd, b, tangent_d) = at(&split_at);
+    }
+    let (pd, mut b, tangent_d) = at(&split_at);
+    if n == 3 {
         for k in 0..n {
             let t = tangent_d[k].normalize();
             let across = b[k] - b[k].dot(t) * t;
@@ -344,8 +345,8 @@ fn split(net: &mut Network, r: usize, prims: &[Primitive]) -> Vec<EnvelopePatch>
                 b[k] = across;
             }
         }
-        best = inserted(&pd, &b, &tangent_d);
     }
+    let best = inserted(&pd, &b, &tangent_d);
     let (_, pi_, normal) = best;
     let rho_i = match region.kind {
         RegionKind::Primitive { primitive, .. } => pi_.distance(prims[primitive].centre),
