@@ -116,9 +116,9 @@ impl Side {
         let (g, dg) = (self.g.0.lerp(self.g.1, s), self.g.1 - self.g.0);
         let (k, dk) = (self.k.0 + (self.k.1 - self.k.0) * s, self.k.1 - self.k.0);
         // The fitted part across the side, its length and direction.
-        let across = k * (g - g.dot(t) * t);
-        let d_across =
-            dk * (g - g.dot(t) * t) + k * (dg - (dg.dot(t) + g.dot(dt)) * t - g.dot(t) * dt);
+        let g_across = g - g.dot(t) * t;
+        let across = k * g_across;
+        let d_across = dk * g_across + k * (dg - (dg.dot(t) + g.dot(dt)) * t - g.dot(t) * dt);
         let kappa = across.length();
         if kappa == 0.0 {
             return (DVec3::ZERO, DVec3::ZERO);
@@ -126,8 +126,9 @@ impl Side {
         let dir = across / kappa;
         let d_dir = (d_across - d_across.dot(dir) * dir) / kappa;
         let (v, dv) = (self.legs.0.lerp(self.legs.1, s), self.legs.1 - self.legs.0);
-        let (beta, d_beta) = if v.dot(dir) >= INWARD_FLOOR * kappa {
-            (v.dot(dir), dv.dot(dir) + v.dot(d_dir))
+        let inward = v.dot(dir);
+        let (beta, d_beta) = if inward >= INWARD_FLOOR * kappa {
+            (inward, dv.dot(dir) + v.dot(d_dir))
         } else {
             (INWARD_FLOOR * kappa, INWARD_FLOOR * d_across.dot(dir))
         };
