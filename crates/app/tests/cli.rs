@@ -1037,8 +1037,8 @@ fn envelope_builds_the_bundled_scenes_and_names_bad_ones() {
         .unwrap();
     assert!(folded > 0, "{so}");
     assert!(
-        se.contains(&format!("warning: {folded} of 8640 sampled cells fold"))
-            && se.contains("the first on primitive 0 face 0"),
+        se.contains(&format!("warning: {folded} of 8320 sampled cells fold"))
+            && se.contains("the first on primitive 2 face 0"),
         "{se}"
     );
     let (_, so, _) = succeeds_to(

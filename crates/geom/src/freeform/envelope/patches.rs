@@ -30,10 +30,15 @@
 //! curves turn from the paper's into cubics a third long at both ends, straight at the foot
 //! and square to the side (envelope.md, "Three-sided regions"); a regular triangle is the
 //! paper's.
+//!
+//! A sliver (five or more sides, two long ones not adjacent, the rest short) is also tried as
+//! a strip — one quad between the long sides, each chain of short sides closed by a curve
+//! across into a region of its own — and split so where that folds fewer cells than the split
+//! round P_i (envelope.md, "Slivers").
 
 use super::coons::{Coons, Side};
 use super::edges::curved_edge;
-use super::network::{CurveKind, Network, PatchSide, RegionKind};
+use super::network::{CurveKind, Network, PatchSide, Region, RegionKind};
 use super::primitive::Primitive;
 use crate::freeform::bezier::RationalBezier;
 use glam::DVec3;
@@ -65,6 +70,10 @@ const SHORT_FROM: f64 = 0.45;
 
 /// See [`SHORT_FROM`].
 const SHORT_FULL: f64 = 0.2;
+
+/// A region of five or more sides whose sides other than its two longest are all shorter
+/// than this share of the shorter of those is split as a strip ([`strip`]).
+const SLIVER: f64 = 0.45;
 
 /// The widest sector (radians) the P_d and the insertion curves' tangents may leave between
 /// neighbours around P_i: a sub-quad's corner there must stay well below 180°.
@@ -261,8 +270,7 @@ fn widest_sector(p: DVec3, n: DVec3, dirs: impl Iterator<Item = DVec3>) -> f64 {
 
 /// Splits region `r` (not four-sided) into quads around an inserted point (§11.7), adding the
 /// new vertices and insertion curves to `net`.
-fn split(net: &mut Network, r: usize, prims: &[Primitive]) -> Vec<EnvelopePatch> {
-    let region = net.regions[r].clone();
+fn split(net: &mut Network, region: Region, r: usize, prims: &[Primitive]) -> Vec<EnvelopePatch> {
     let sides = region.sides.clone();
     let fitted = fitted_sides(net, &sides);
     let n = sides.len();
@@ -445,17 +453,128 @@ fn split(net: &mut Network, r: usize, prims: &[Primitive]) -> Vec<EnvelopePatch>
         .collect()
 }
 
-/// The patches of every region of `net`, splitting those that are not four-sided.
+/// A side's chord.
+fn chord(net: &Network, s: &PatchSide) -> f64 {
+    let b = &net.curves[s.curve].bezier;
+    b.eval(s.t0).distance(b.eval(s.t1))
+}
+
+/// The two long sides of a sliver: a region of five or more sides whose two longest (by
+/// chord) are not adjacent and every other side is under [`SLIVER`] of the shorter of them;
+/// `None` for other regions.
+fn sliver(net: &Network, region: &Region) -> Option<(usize, usize)> {
+    let n = region.sides.len();
+    if n < 5 {
+        return None;
+    }
+    let chords: Vec<f64> = region.sides.iter().map(|s| chord(net, s)).collect();
+    let mut order: Vec<usize> = (0..n).collect();
+    order.sort_by(|&a, &b| chords[b].total_cmp(&chords[a]).then(a.cmp(&b)));
+    let (i, j) = (order[0].min(order[1]), order[0].max(order[1]));
+    let long = chords[i].min(chords[j]);
+    let thin = order[2..].iter().all(|&k| chords[k] <= SLIVER * long);
+    (j - i != 1 && !(i == 0 && j == n - 1) && thin).then_some((i, j))
+}
+
+/// A sliver with long sides `i` < `j` as a four-sided strip between them and the chains of
+/// short sides at its ends, each chain of two or more sides closed by a curve across into a
+/// region of its own (envelope.md, "Slivers"): the strip last. The curve across is a cubic
+/// with legs a third of its chord projected into its ends' tangent planes, with the rule (b)
+/// basis [`Network::add_curve`] gives it.
+fn strip(net: &mut Network, region: &Region, (i, j): (usize, usize)) -> Vec<Region> {
+    let sides = &region.sides;
+    let n = sides.len();
+    let mut parts = Vec::new();
+    let mut ends = Vec::new();
+    for (from, to) in [(i, j), (j, i)] {
+        let chain: Vec<PatchSide> = (from + 1..)
+            .map(|k| sides[k % n])
+            .take((to + n - from - 1) % n)
+            .collect();
+        if let [single] = chain[..] {
+            ends.push(single);
+            continue;
+        }
+        let last = chain[chain.len() - 1];
+        let corner = |s: &PatchSide, tau: f64| {
+            net.vertex_at(s.curve, tau)
+                .expect("a region corner is a vertex")
+        };
+        let (va, vb) = (corner(&chain[0], chain[0].t0), corner(&last, last.t1));
+        let (a, b) = (net.vertices[va], net.vertices[vb]);
+        let d = b.position - a.position;
+        let proj = |n: DVec3| d - d.dot(n) * n;
+        let bez = RationalBezier::polynomial(vec![
+            a.position,
+            a.position + proj(a.normal) / 3.0,
+            b.position - proj(b.normal) / 3.0,
+            b.position,
+        ])
+        .expect("finite points");
+        let c = net.add_curve(bez, va, vb, CurveKind::Insertion);
+        ends.push(PatchSide::whole(c, true));
+        let mut closed = chain;
+        closed.push(PatchSide::whole(c, false));
+        parts.push(Region {
+            sides: closed,
+            kind: region.kind,
+        });
+    }
+    parts.push(Region {
+        sides: vec![sides[i], ends[0], sides[j], ends[1]],
+        kind: region.kind,
+    });
+    parts
+}
+
+/// The patches of `region` (number `r`): one Coons patch if it is four-sided, else its split.
+fn region_patches(
+    net: &mut Network,
+    region: Region,
+    r: usize,
+    prims: &[Primitive],
+) -> Vec<EnvelopePatch> {
+    if region.sides.len() == 4 {
+        let quad: [PatchSide; 4] = region.sides.try_into().expect("four");
+        vec![patch(net, quad, r)]
+    } else {
+        split(net, region, r, prims)
+    }
+}
+
+/// The patches of every region of `net`, splitting those that are not four-sided. A sliver
+/// ([`sliver`]) is split as a strip ([`strip`]) where that folds fewer of its cells than the
+/// split round one inserted point (envelope.md, "Slivers").
 pub fn build(net: &mut Network, prims: &[Primitive]) -> Vec<EnvelopePatch> {
     let mut out = Vec::new();
+    let folded = |net: &Network, patches: &[EnvelopePatch]| {
+        super::folds::folds(net, patches, super::folds::FOLD_CELLS).len()
+    };
     for r in 0..net.regions.len() {
-        let sides = &net.regions[r].sides;
-        if sides.len() == 4 {
-            let quad: [PatchSide; 4] = sides.clone().try_into().expect("four");
-            out.push(patch(net, quad, r));
-        } else {
-            out.extend(split(net, r, prims));
+        let region = net.regions[r].clone();
+        let Some(long) = sliver(net, &region) else {
+            out.extend(region_patches(net, region, r, prims));
+            continue;
+        };
+        // Trial splits are undone by truncating what they added.
+        let (nv, nc) = (net.vertices.len(), net.curves.len());
+        let plain = split(net, region.clone(), r, prims);
+        let folds = folded(net, &plain);
+        if folds > 0 {
+            net.truncate(nv, nc);
+            let strip_patches: Vec<EnvelopePatch> = strip(net, &region, long)
+                .into_iter()
+                .flat_map(|part| region_patches(net, part, r, prims))
+                .collect();
+            if folded(net, &strip_patches) < folds {
+                out.extend(strip_patches);
+                continue;
+            }
+            net.truncate(nv, nc);
+            out.extend(split(net, region, r, prims));
+            continue;
         }
+        out.extend(plain);
     }
     out
 }
