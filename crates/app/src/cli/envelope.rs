@@ -55,7 +55,14 @@ fn curves_obj(e: &Envelope, segments: usize) -> String {
         "# Prism envelope curve network: one polyline a curve, uniform in its parameter\n",
     );
     let mut base = 1;
-    for (i, c) in e.network.curves.iter().enumerate() {
+    // A needle's collapsed tip is a curve of one point: no polyline.
+    for (i, c) in e
+        .network
+        .curves
+        .iter()
+        .enumerate()
+        .filter(|(_, c)| !c.is_point())
+    {
         let kind = match c.kind {
             CurveKind::Edge => "primitive edge",
             CurveKind::Silhouette => "silhouette edge",
@@ -139,7 +146,7 @@ pub fn run(a: EnvelopeArgs) -> Result<(), CliError> {
         println!(
             "wrote {} ({} curves)",
             path.display(),
-            e.network.curves.len()
+            e.network.curves.iter().filter(|c| !c.is_point()).count()
         );
     }
     let doc = Document {

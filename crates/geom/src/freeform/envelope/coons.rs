@@ -38,6 +38,8 @@ pub struct Side {
     /// How far the cross derivative's part along the side goes from `h T` to the legs'
     /// parts along it interpolated as vectors ([`Side::short`]; 0: not at all).
     pub direct: f64,
+    /// A side collapsed to a point ([`Side::collapsed`]).
+    pub collapsed: bool,
 }
 
 impl Side {
@@ -58,6 +60,24 @@ impl Side {
             speed,
             legs: (a0, a1),
             direct: 0.0,
+            collapsed: false,
+        }
+    }
+
+    /// A side collapsed to the point `p`: the tip of a needle patched as one quad
+    /// (envelope.md, "Needles"). No patch lies across it, so it has no basis to be G1 with; its
+    /// cross derivative runs from the leg `a0` to the leg `a1` as vectors, and the patch fans
+    /// out from `p` between the two sides that meet there.
+    pub fn collapsed(p: DVec3, a0: DVec3, a1: DVec3) -> Side {
+        Side {
+            curve: RationalBezier::polynomial(vec![p; 4]).expect("a finite point"),
+            g: (DVec3::ZERO, DVec3::ZERO),
+            k: (0.0, 0.0),
+            h: (0.0, 0.0),
+            speed: (0.0, 0.0),
+            legs: (a0, a1),
+            direct: 0.0,
+            collapsed: true,
         }
     }
 
@@ -94,6 +114,9 @@ impl Side {
 
     /// The cross derivative and its s-derivative at s.
     pub fn cross(&self, s: f64) -> (DVec3, DVec3) {
+        if self.collapsed {
+            return (self.legs.0.lerp(self.legs.1, s), self.legs.1 - self.legs.0);
+        }
         let (x, dx) = self.fitted_cross(s);
         if self.direct == 0.0 {
             return (x, dx);

@@ -52,6 +52,12 @@ pub struct NetCurve {
 }
 
 impl NetCurve {
+    /// Whether it is a point: the collapsed side of a needle patched as one quad (its ends
+    /// are one vertex).
+    pub fn is_point(&self) -> bool {
+        self.ends[0] == self.ends[1]
+    }
+
     /// The basis at τ.
     pub fn basis_at(&self, t: f64) -> DVec3 {
         self.basis.0.lerp(self.basis.1, t)

@@ -34,7 +34,8 @@
 //! A sliver (five or more sides, two long ones not adjacent, the rest short) is also tried as
 //! a strip — one quad between the long sides, each chain of short sides closed by a curve
 //! across into a region of its own — and split so where that folds fewer cells than the split
-//! round P_i (envelope.md, "Slivers").
+//! round P_i (envelope.md, "Slivers"); a needle (three sides, one tiny) likewise as one quad
+//! whose fourth side is its tip collapsed to a point (envelope.md, "Needles").
 
 use super::coons::{Coons, Side};
 use super::edges::curved_edge;
@@ -74,6 +75,10 @@ const SHORT_FULL: f64 = 0.2;
 /// A region of five or more sides whose sides other than its two longest are all shorter
 /// than this share of the shorter of those is split as a strip ([`strip`]).
 const SLIVER: f64 = 0.45;
+
+/// A three-sided region whose shortest side is below this share of the shorter of the others
+/// is a needle ([`needle`]).
+const NEEDLE: f64 = 0.2;
 
 /// The widest sector (radians) the P_d and the insertion curves' tangents may leave between
 /// neighbours around P_i: a sub-quad's corner there must stay well below 180°.
@@ -123,6 +128,9 @@ fn fitted_sides(net: &Network, sides: &[PatchSide]) -> Vec<Side> {
             let a0 = -prev.derivatives(1.0).d1;
             let a1 = next.derivatives(0.0).d1;
             let c = &net.curves[sides[k].curve];
+            if c.is_point() {
+                return Side::collapsed(curves[k].eval(0.0), a0, a1);
+            }
             let g = (c.basis_at(sides[k].t0), c.basis_at(sides[k].t1));
             // A side much shorter than the patch's longest takes the short-side cross
             // derivative (envelope.md, "Short sides").
@@ -527,7 +535,42 @@ fn strip(net: &mut Network, region: &Region, (i, j): (usize, usize)) -> Vec<Regi
     parts
 }
 
-/// The patches of `region` (number `r`): one Coons patch if it is four-sided, else its split.
+/// The tiny side of a needle: a three-sided region whose shortest side (by chord) is under
+/// [`NEEDLE`] of the shorter of the other two; `None` for other regions.
+fn needle(net: &Network, region: &Region) -> Option<usize> {
+    if region.sides.len() != 3 {
+        return None;
+    }
+    let chords: Vec<f64> = region.sides.iter().map(|s| chord(net, s)).collect();
+    let k = (0..3)
+        .min_by(|&a, &b| chords[a].total_cmp(&chords[b]))
+        .expect("three");
+    let others = chords[(k + 1) % 3].min(chords[(k + 2) % 3]);
+    (chords[k] < NEEDLE * others).then_some(k)
+}
+
+/// A needle with tiny side `k` as one four-sided region whose side opposite the tiny one is
+/// its tip collapsed to a point (a network curve from the tip vertex to itself): the patch
+/// runs from the tiny side to the tip between the two long sides (envelope.md, "Needles").
+fn collapsed(net: &mut Network, region: &Region, k: usize) -> Region {
+    let [a, b, c] = [0, 1, 2].map(|i| region.sides[(k + i) % 3]);
+    let tip = net
+        .vertex_at(b.curve, b.t1)
+        .expect("a region corner is a vertex");
+    let p = net.vertices[tip].position;
+    let point = RationalBezier::polynomial(vec![p; 4]).expect("a finite point");
+    let curve = net.add_curve(point, tip, tip, CurveKind::Insertion);
+    Region {
+        sides: vec![a, b, PatchSide::whole(curve, true), c],
+        kind: region.kind,
+    }
+}
+
+/// The patches of `region` (number `r`): one Coons patch if it is four-sided, else its split
+/// round one inserted point — or, for a sliver ([`sliver`]) or a needle ([`needle`]) whose
+/// split folds, a strip ([`strip`]) or one quad with a collapsed tip ([`collapsed`]) where
+/// that folds fewer of its cells (envelope.md, "Slivers" and "Needles"). Trial patches are
+/// undone by truncating what they added to the network.
 fn region_patches(
     net: &mut Network,
     region: Region,
@@ -536,45 +579,44 @@ fn region_patches(
 ) -> Vec<EnvelopePatch> {
     if region.sides.len() == 4 {
         let quad: [PatchSide; 4] = region.sides.try_into().expect("four");
-        vec![patch(net, quad, r)]
-    } else {
-        split(net, region, r, prims)
+        return vec![patch(net, quad, r)];
     }
-}
-
-/// The patches of every region of `net`, splitting those that are not four-sided. A sliver
-/// ([`sliver`]) is split as a strip ([`strip`]) where that folds fewer of its cells than the
-/// split round one inserted point (envelope.md, "Slivers").
-pub fn build(net: &mut Network, prims: &[Primitive]) -> Vec<EnvelopePatch> {
-    let mut out = Vec::new();
+    let (long, tiny) = (sliver(net, &region), needle(net, &region));
+    if long.is_none() && tiny.is_none() {
+        return split(net, region, r, prims);
+    }
     let folded = |net: &Network, patches: &[EnvelopePatch]| {
         super::folds::folds(net, patches, super::folds::FOLD_CELLS).len()
     };
+    let (nv, nc) = (net.vertices.len(), net.curves.len());
+    let plain = split(net, region.clone(), r, prims);
+    let folds = folded(net, &plain);
+    if folds == 0 {
+        return plain;
+    }
+    net.truncate(nv, nc);
+    let parts = match (long, tiny) {
+        (Some(long), _) => strip(net, &region, long),
+        (None, Some(k)) => vec![collapsed(net, &region, k)],
+        (None, None) => unreachable!("checked above"),
+    };
+    let other: Vec<EnvelopePatch> = parts
+        .into_iter()
+        .flat_map(|part| region_patches(net, part, r, prims))
+        .collect();
+    if folded(net, &other) < folds {
+        return other;
+    }
+    net.truncate(nv, nc);
+    split(net, region, r, prims)
+}
+
+/// The patches of every region of `net` ([`region_patches`]).
+pub fn build(net: &mut Network, prims: &[Primitive]) -> Vec<EnvelopePatch> {
+    let mut out = Vec::new();
     for r in 0..net.regions.len() {
         let region = net.regions[r].clone();
-        let Some(long) = sliver(net, &region) else {
-            out.extend(region_patches(net, region, r, prims));
-            continue;
-        };
-        // Trial splits are undone by truncating what they added.
-        let (nv, nc) = (net.vertices.len(), net.curves.len());
-        let plain = split(net, region.clone(), r, prims);
-        let folds = folded(net, &plain);
-        if folds > 0 {
-            net.truncate(nv, nc);
-            let strip_patches: Vec<EnvelopePatch> = strip(net, &region, long)
-                .into_iter()
-                .flat_map(|part| region_patches(net, part, r, prims))
-                .collect();
-            if folded(net, &strip_patches) < folds {
-                out.extend(strip_patches);
-                continue;
-            }
-            net.truncate(nv, nc);
-            out.extend(split(net, region, r, prims));
-            continue;
-        }
-        out.extend(plain);
+        out.extend(region_patches(net, region, r, prims));
     }
     out
 }

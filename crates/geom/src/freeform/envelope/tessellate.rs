@@ -7,7 +7,8 @@
 //! itself; network vertices are shared by every curve through them. Each patch keeps its own
 //! K + 1 samples as its grid's border row and puts the other side's extra samples into its
 //! border cells, which become polygons: every mesh edge is in exactly two faces, so the mesh
-//! is closed with no T-junction crack.
+//! is closed with no T-junction crack. A needle's collapsed tip (a curve of one point) gives
+//! all its samples the tip's vertex, and the cells there drop the repeated corner (triangles).
 
 use super::network::Network;
 use super::patches::EnvelopePatch;
@@ -65,6 +66,8 @@ pub fn tessellate(net: &Network, patches: &[EnvelopePatch], k: usize) -> PolyMes
             .map(|t| {
                 let id = match net.vertex_at(c, t) {
                     Some(v) => v as u32,
+                    // A needle's collapsed tip: every sample is its vertex.
+                    None if curve.is_point() => curve.ends[0] as u32,
                     None => {
                         positions.push(curve.bezier.eval(t));
                         (positions.len() - 1) as u32
@@ -128,7 +131,14 @@ pub fn tessellate(net: &Network, patches: &[EnvelopePatch], k: usize) -> PolyMes
                         poly.extend(samples.between(ps.curve, ps.tau(a), ps.tau(b)));
                     }
                 }
-                faces.push(poly);
+                // Cells at a collapsed side lose their repeated corner (triangles).
+                poly.dedup();
+                if poly.len() > 1 && poly[0] == poly[poly.len() - 1] {
+                    poly.pop();
+                }
+                if poly.len() >= 3 {
+                    faces.push(poly);
+                }
             }
         }
     }
