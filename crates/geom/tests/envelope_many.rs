@@ -618,8 +618,8 @@ fn random_pairs_do_not_fold() {
 
 /// Random triples of equal axis-aligned cubes (the survey's second hundred, after its hundred
 /// pairs): no sampled cell folds at t = 1 or 0.5, and every envelope is G1. Two of them folded
-/// at both t before thin pentagons were split as strips (envelope.md, "Slivers"), two more at
-/// t = 0.5 before nearly hooked edge pieces took the section-tangent cubic.
+/// at both t before thin pentagons were split as strips (envelope.md, "Runs of short sides"),
+/// two more at t = 0.5 before nearly hooked edge pieces took the section-tangent cubic.
 #[test]
 fn random_triples_do_not_fold() {
     let mut rng = Lcg(4);
@@ -721,4 +721,60 @@ fn needles_with_a_tiny_side_are_patched_as_one_quad() {
         closed(&m).unwrap();
         assert_eq!(cells_facing_the_centre(&e), 0, "t = {t}");
     }
+}
+
+/// Random heaps of four and five equal axis-aligned cubes (the survey's third and fourth
+/// hundreds): no sampled cell folds at t = 1, and every envelope is G1 — 3 and 7 of them folded
+/// before slivers, needles and runs of short sides got their own patches (envelope.md,
+/// "Runs of short sides", "Needles").
+#[test]
+fn random_heaps_of_four_and_five_do_not_fold_at_t_1() {
+    let mut rng = Lcg(4);
+    for count in 2..=5 {
+        for scene in 0..100 {
+            let prims = random_cubes(&mut rng, count, 4.0);
+            if count < 4 {
+                continue;
+            }
+            let e = build(prims, 1.0);
+            assert_eq!(e.folds(), vec![], "{count} cubes, scene {scene}");
+            assert!(
+                e.largest_border_jump() < 1e-9,
+                "{count} cubes, scene {scene}"
+            );
+        }
+    }
+}
+
+/// A cube face cut into a triangle with clipped corners: chords about 1.70, 2.13, 0.53, 0.41,
+/// 0.13, 2.55 (the survey's 55th heap of four). Split round one point it folded at t = 1 (4
+/// cells); with its run of three short sides closed by a curve across, it is one quad for the
+/// run and one for the rest, nothing folds and the surface stays G1.
+#[test]
+fn a_run_of_short_sides_is_closed_off() {
+    let mut rng = Lcg(4);
+    for (count, scenes) in [(2, 100), (3, 100), (4, 54)] {
+        for _ in 0..scenes {
+            random_cubes(&mut rng, count, 4.0);
+        }
+    }
+    let e = build(random_cubes(&mut rng, 4, 4.0), 1.0);
+    let clipped: Vec<usize> = (0..e.network.regions.len())
+        .filter(|&r| {
+            let len: Vec<f64> = e.network.regions[r]
+                .sides
+                .iter()
+                .map(|s| {
+                    let c = &e.network.curves[s.curve].bezier;
+                    c.eval(s.t0).distance(c.eval(s.t1))
+                })
+                .collect();
+            len.len() == 6 && len.iter().filter(|&&l| l > 1.5).count() == 3
+        })
+        .collect();
+    assert_eq!(clipped.len(), 1);
+    let patches = e.patches.iter().filter(|p| p.region == clipped[0]).count();
+    assert_eq!(patches, 2);
+    assert_eq!(e.folds(), vec![]);
+    assert!(e.largest_border_jump() < 1e-9);
 }

@@ -31,10 +31,11 @@
 //! and square to the side (envelope.md, "Three-sided regions"); a regular triangle is the
 //! paper's.
 //!
-//! A sliver (five or more sides, two long ones not adjacent, the rest short) is also tried as
-//! a strip — one quad between the long sides, each chain of short sides closed by a curve
-//! across into a region of its own — and split so where that folds fewer cells than the split
-//! round P_i (envelope.md, "Slivers"); a needle (three sides, one tiny) likewise as one quad
+//! A region of five or more sides with runs of short sides (a sliver between two long sides,
+//! a triangle with clipped corners) is also tried with each run closed by a curve across into
+//! a region of its own — a sliver's rest is then a strip, one quad between its long sides —
+//! and split so where that folds fewer cells than the split round P_i and stays G1
+//! (envelope.md, "Runs of short sides"); a needle (three sides, one tiny) likewise as one quad
 //! whose fourth side is its tip collapsed to a point (envelope.md, "Needles").
 
 use super::coons::{Coons, Side};
@@ -72,9 +73,12 @@ const SHORT_FROM: f64 = 0.45;
 /// See [`SHORT_FROM`].
 const SHORT_FULL: f64 = 0.2;
 
-/// A region of five or more sides whose sides other than its two longest are all shorter
-/// than this share of the shorter of those is split as a strip ([`strip`]).
-const SLIVER: f64 = 0.45;
+/// A side under this share of its region's longest is short ([`short_runs`]).
+const SHORT_RUN: f64 = 0.45;
+
+/// The largest normal jump (degrees) across the curves that closing runs or collapsing a
+/// needle adds, for the result to be taken: G1 to rounding (elsewhere the jumps are about 10⁻¹⁰°).
+const G1_KEPT: f64 = 1e-6;
 
 /// A three-sided region whose shortest side is below this share of the shorter of the others
 /// is a needle ([`needle`]).
@@ -467,43 +471,61 @@ fn chord(net: &Network, s: &PatchSide) -> f64 {
     b.eval(s.t0).distance(b.eval(s.t1))
 }
 
-/// The two long sides of a sliver: a region of five or more sides whose two longest (by
-/// chord) are not adjacent and every other side is under [`SLIVER`] of the shorter of them;
-/// `None` for other regions.
-fn sliver(net: &Network, region: &Region) -> Option<(usize, usize)> {
+/// The runs of short sides of a region of five or more sides: (first side, count) of each
+/// maximal run of consecutive sides whose chords are under [`SHORT_RUN`] of the longest, for
+/// the runs of two or more; `None` when there is none (or every side is short).
+fn short_runs(net: &Network, region: &Region) -> Option<Vec<(usize, usize)>> {
     let n = region.sides.len();
     if n < 5 {
         return None;
     }
     let chords: Vec<f64> = region.sides.iter().map(|s| chord(net, s)).collect();
-    let mut order: Vec<usize> = (0..n).collect();
-    order.sort_by(|&a, &b| chords[b].total_cmp(&chords[a]).then(a.cmp(&b)));
-    let (i, j) = (order[0].min(order[1]), order[0].max(order[1]));
-    let long = chords[i].min(chords[j]);
-    let thin = order[2..].iter().all(|&k| chords[k] <= SLIVER * long);
-    (j - i != 1 && !(i == 0 && j == n - 1) && thin).then_some((i, j))
+    let longest = chords.iter().cloned().fold(0.0, f64::max);
+    let short: Vec<bool> = chords.iter().map(|&c| c < SHORT_RUN * longest).collect();
+    // Start after a long side, so that no run wraps round the start.
+    let first_long = (0..n).find(|&k| !short[k])?;
+    let mut runs = Vec::new();
+    let mut k = 1;
+    while k <= n {
+        let at = (first_long + k) % n;
+        if short[at] {
+            let len = (k..=n).take_while(|&m| short[(first_long + m) % n]).count();
+            if len >= 2 {
+                runs.push((at, len));
+            }
+            k += len;
+        } else {
+            k += 1;
+        }
+    }
+    // The rest must stay a region of three sides or more (then every part has fewer sides
+    // than the region, and closing runs in the parts ends).
+    let core = n - runs.iter().map(|&(_, len)| len - 1).sum::<usize>();
+    (!runs.is_empty() && core >= 3).then_some(runs)
 }
 
-/// A sliver with long sides `i` < `j` as a four-sided strip between them and the chains of
-/// short sides at its ends, each chain of two or more sides closed by a curve across into a
-/// region of its own (envelope.md, "Slivers"): the strip last. The curve across is a cubic
-/// with legs a third of its chord projected into its ends' tangent planes, with the rule (b)
-/// basis [`Network::add_curve`] gives it.
-fn strip(net: &mut Network, region: &Region, (i, j): (usize, usize)) -> Vec<Region> {
+/// A region with its runs of short sides ([`short_runs`]) each closed by a curve across into a
+/// region of its own, and the rest (the core) last (envelope.md, "Runs of short sides"): a sliver's core is
+/// the strip between its long sides, a triangle's with clipped corners one of fewer sides. The
+/// curve across is a cubic with legs a third of its chord projected into its ends' tangent
+/// planes, with the rule (b) basis [`Network::add_curve`] gives it.
+fn close_runs(net: &mut Network, region: &Region, runs: &[(usize, usize)]) -> Vec<Region> {
     let sides = &region.sides;
     let n = sides.len();
     let mut parts = Vec::new();
-    let mut ends = Vec::new();
-    for (from, to) in [(i, j), (j, i)] {
-        let chain: Vec<PatchSide> = (from + 1..)
-            .map(|k| sides[k % n])
-            .take((to + n - from - 1) % n)
-            .collect();
-        if let [single] = chain[..] {
-            ends.push(single);
+    let mut core = Vec::new();
+    let mut k = 0;
+    // Walk from the first run's start so that each run is contiguous.
+    let start = runs[0].0;
+    while k < n {
+        let at = (start + k) % n;
+        let Some(&(_, len)) = runs.iter().find(|r| r.0 == at) else {
+            core.push(sides[at]);
+            k += 1;
             continue;
-        }
-        let last = chain[chain.len() - 1];
+        };
+        let chain: Vec<PatchSide> = (0..len).map(|m| sides[(at + m) % n]).collect();
+        let last = chain[len - 1];
         let corner = |s: &PatchSide, tau: f64| {
             net.vertex_at(s.curve, tau)
                 .expect("a region corner is a vertex")
@@ -520,16 +542,17 @@ fn strip(net: &mut Network, region: &Region, (i, j): (usize, usize)) -> Vec<Regi
         ])
         .expect("finite points");
         let c = net.add_curve(bez, va, vb, CurveKind::Insertion);
-        ends.push(PatchSide::whole(c, true));
+        core.push(PatchSide::whole(c, true));
         let mut closed = chain;
         closed.push(PatchSide::whole(c, false));
         parts.push(Region {
             sides: closed,
             kind: region.kind,
         });
+        k += len;
     }
     parts.push(Region {
-        sides: vec![sides[i], ends[0], sides[j], ends[1]],
+        sides: core,
         kind: region.kind,
     });
     parts
@@ -567,10 +590,11 @@ fn collapsed(net: &mut Network, region: &Region, k: usize) -> Region {
 }
 
 /// The patches of `region` (number `r`): one Coons patch if it is four-sided, else its split
-/// round one inserted point — or, for a sliver ([`sliver`]) or a needle ([`needle`]) whose
-/// split folds, a strip ([`strip`]) or one quad with a collapsed tip ([`collapsed`]) where
-/// that folds fewer of its cells (envelope.md, "Slivers" and "Needles"). Trial patches are
-/// undone by truncating what they added to the network.
+/// round one inserted point — or, for a region with runs of short sides ([`short_runs`]) or a
+/// needle ([`needle`]) whose split folds, the runs closed off ([`close_runs`]) or one quad with
+/// a collapsed tip ([`collapsed`]) where that folds fewer of its cells and stays G1
+/// (envelope.md, "Runs of short sides" and "Needles"). Trial patches are undone by truncating
+/// what they added to the network.
 fn region_patches(
     net: &mut Network,
     region: Region,
@@ -581,8 +605,8 @@ fn region_patches(
         let quad: [PatchSide; 4] = region.sides.try_into().expect("four");
         return vec![patch(net, quad, r)];
     }
-    let (long, tiny) = (sliver(net, &region), needle(net, &region));
-    if long.is_none() && tiny.is_none() {
+    let (runs, tiny) = (short_runs(net, &region), needle(net, &region));
+    if runs.is_none() && tiny.is_none() {
         return split(net, region, r, prims);
     }
     let folded = |net: &Network, patches: &[EnvelopePatch]| {
@@ -595,8 +619,8 @@ fn region_patches(
         return plain;
     }
     net.truncate(nv, nc);
-    let parts = match (long, tiny) {
-        (Some(long), _) => strip(net, &region, long),
+    let parts = match (&runs, tiny) {
+        (Some(runs), _) => close_runs(net, &region, runs),
         (None, Some(k)) => vec![collapsed(net, &region, k)],
         (None, None) => unreachable!("checked above"),
     };
@@ -604,7 +628,8 @@ fn region_patches(
         .into_iter()
         .flat_map(|part| region_patches(net, part, r, prims))
         .collect();
-    if folded(net, &other) < folds {
+    // Taken where it folds less and stays G1 across the curves it adds.
+    if folded(net, &other) < folds && largest_border_jump(net, &other, 8) < G1_KEPT {
         return other;
     }
     net.truncate(nv, nc);
