@@ -1029,19 +1029,15 @@ fn envelope_builds_the_bundled_scenes_and_names_bad_ones() {
         "seven-01.obj",
         "envelope assets/table2-seven.envelope.json -o {} --resolution 4 --t 0.1",
     );
-    let folded: usize = so
-        .split_whitespace()
-        .find_map(|w| w.strip_prefix("folded="))
-        .unwrap()
-        .parse()
-        .unwrap();
+    let count = |key: &str| -> usize {
+        so.split_whitespace()
+            .find_map(|w| w.strip_prefix(key))
+            .unwrap()
+            .parse()
+            .unwrap()
+    };
+    let (folded, patches) = (count("folded="), count("patches="));
     assert!(folded > 0, "{so}");
-    let patches: usize = so
-        .split_whitespace()
-        .find_map(|w| w.strip_prefix("patches="))
-        .unwrap()
-        .parse()
-        .unwrap();
     assert!(
         se.contains(&format!(
             "warning: {folded} of {} sampled cells fold",

@@ -571,15 +571,8 @@ fn a_needle_triangle_does_not_fold() {
         let e = build(prims.clone(), t);
         let needles: Vec<usize> = (0..e.network.regions.len())
             .filter(|&r| {
-                let sides = &e.network.regions[r].sides;
-                let len: Vec<f64> = sides
-                    .iter()
-                    .map(|s| {
-                        let c = &e.network.curves[s.curve].bezier;
-                        c.eval(s.t0).distance(c.eval(s.t1))
-                    })
-                    .collect();
-                sides.len() == 3
+                let len = chords(&e, r);
+                len.len() == 3
                     && len.iter().cloned().fold(f64::INFINITY, f64::min) < 0.2
                     && len.iter().cloned().fold(0.0, f64::max) > 2.0
             })
@@ -605,14 +598,8 @@ fn a_needle_triangle_does_not_fold() {
 /// derivative; envelope.md, "Left"), and every envelope is G1.
 #[test]
 fn random_pairs_do_not_fold() {
-    let mut rng = Lcg(4);
     for scene in 0..100 {
-        let prims = random_cubes(&mut rng, 2, 4.0);
-        for t in [1.0, 0.5] {
-            let e = build(prims.clone(), t);
-            assert_eq!(e.folds(), vec![], "scene {scene} at t = {t}");
-            assert!(e.largest_border_jump() < 1e-9, "scene {scene} at t = {t}");
-        }
+        heap_does_not_fold(2, scene, &[1.0, 0.5]);
     }
 }
 
@@ -622,18 +609,49 @@ fn random_pairs_do_not_fold() {
 /// two more at t = 0.5 before nearly hooked edge pieces took the section-tangent cubic.
 #[test]
 fn random_triples_do_not_fold() {
-    let mut rng = Lcg(4);
-    for _ in 0..100 {
-        random_cubes(&mut rng, 2, 4.0);
-    }
     for scene in 0..100 {
-        let prims = random_cubes(&mut rng, 3, 4.0);
-        for t in [1.0, 0.5] {
-            let e = build(prims.clone(), t);
-            assert_eq!(e.folds(), vec![], "scene {scene} at t = {t}");
-            assert!(e.largest_border_jump() < 1e-9, "scene {scene} at t = {t}");
+        heap_does_not_fold(3, scene, &[1.0, 0.5]);
+    }
+}
+
+/// The survey's heap `scene` (0–99) of `count` (2–5) cubes: [`survey_random`] draws 100 heaps
+/// of each count in turn from `Lcg(4)`.
+fn survey_heap(count: usize, scene: usize) -> Vec<PrimitiveInput> {
+    let mut rng = Lcg(4);
+    for c in 2..count {
+        for _ in 0..100 {
+            random_cubes(&mut rng, c, 4.0);
         }
     }
+    for _ in 0..scene {
+        random_cubes(&mut rng, count, 4.0);
+    }
+    random_cubes(&mut rng, count, 4.0)
+}
+
+/// No sampled cell of the survey's heap folds at any of `ts`, and its envelope is G1.
+fn heap_does_not_fold(count: usize, scene: usize, ts: &[f64]) {
+    let prims = survey_heap(count, scene);
+    for &t in ts {
+        let e = build(prims.clone(), t);
+        assert_eq!(e.folds(), vec![], "{count} cubes, scene {scene}, t = {t}");
+        assert!(
+            e.largest_border_jump() < 1e-9,
+            "{count} cubes, scene {scene}, t = {t}"
+        );
+    }
+}
+
+/// The chords of region `r`'s sides.
+fn chords(e: &Envelope, r: usize) -> Vec<f64> {
+    e.network.regions[r]
+        .sides
+        .iter()
+        .map(|s| {
+            let c = &e.network.curves[s.curve].bezier;
+            c.eval(s.t0).distance(c.eval(s.t1))
+        })
+        .collect()
 }
 
 /// A cube face cut down to a thin strip along one of its edges: a pentagon with chords about
@@ -654,14 +672,7 @@ fn a_thin_pentagon_is_split_as_a_strip() {
         let e = build(prims.clone(), t);
         let slivers: Vec<usize> = (0..e.network.regions.len())
             .filter(|&r| {
-                let len: Vec<f64> = e.network.regions[r]
-                    .sides
-                    .iter()
-                    .map(|s| {
-                        let c = &e.network.curves[s.curve].bezier;
-                        c.eval(s.t0).distance(c.eval(s.t1))
-                    })
-                    .collect();
+                let len = chords(&e, r);
                 len.len() == 5
                     && len.iter().filter(|&&l| l > 1.9).count() == 2
                     && len.iter().filter(|&&l| l < 0.4).count() == 3
@@ -684,29 +695,15 @@ fn a_thin_pentagon_is_split_as_a_strip() {
 /// and the surface stays G1.
 #[test]
 fn needles_with_a_tiny_side_are_patched_as_one_quad() {
-    // The survey's 99th heap of four (centres about (3.99, 1.77, 2.40), (2.46, 3.28, 2.38),
-    // (1.96, 0.58, 2.11), (1.90, 1.14, 0.09)).
-    let mut rng = Lcg(4);
-    for (count, scenes) in [(2, 100), (3, 100), (4, 98)] {
-        for _ in 0..scenes {
-            random_cubes(&mut rng, count, 4.0);
-        }
-    }
-    let prims = random_cubes(&mut rng, 4, 4.0);
+    // Centres about (3.99, 1.77, 2.40), (2.46, 3.28, 2.38), (1.96, 0.58, 2.11), (1.90, 1.14, 0.09).
+    let prims = survey_heap(4, 98);
     for t in [1.0, 0.5] {
         let e = build(prims.clone(), t);
         let needles: Vec<usize> = (0..e.network.regions.len())
             .filter(|&r| {
-                let sides = &e.network.regions[r].sides;
-                let mut len: Vec<f64> = sides
-                    .iter()
-                    .map(|s| {
-                        let c = &e.network.curves[s.curve].bezier;
-                        c.eval(s.t0).distance(c.eval(s.t1))
-                    })
-                    .collect();
+                let mut len = chords(&e, r);
                 len.sort_by(f64::total_cmp);
-                sides.len() == 3 && len[0] < 0.05 * len[1]
+                len.len() == 3 && len[0] < 0.05 * len[1]
             })
             .collect();
         assert_eq!(needles.len(), 2, "t = {t}");
@@ -729,19 +726,9 @@ fn needles_with_a_tiny_side_are_patched_as_one_quad() {
 /// "Runs of short sides", "Needles").
 #[test]
 fn random_heaps_of_four_and_five_do_not_fold_at_t_1() {
-    let mut rng = Lcg(4);
-    for count in 2..=5 {
+    for count in [4, 5] {
         for scene in 0..100 {
-            let prims = random_cubes(&mut rng, count, 4.0);
-            if count < 4 {
-                continue;
-            }
-            let e = build(prims, 1.0);
-            assert_eq!(e.folds(), vec![], "{count} cubes, scene {scene}");
-            assert!(
-                e.largest_border_jump() < 1e-9,
-                "{count} cubes, scene {scene}"
-            );
+            heap_does_not_fold(count, scene, &[1.0]);
         }
     }
 }
@@ -752,23 +739,10 @@ fn random_heaps_of_four_and_five_do_not_fold_at_t_1() {
 /// run and one for the rest, nothing folds and the surface stays G1.
 #[test]
 fn a_run_of_short_sides_is_closed_off() {
-    let mut rng = Lcg(4);
-    for (count, scenes) in [(2, 100), (3, 100), (4, 54)] {
-        for _ in 0..scenes {
-            random_cubes(&mut rng, count, 4.0);
-        }
-    }
-    let e = build(random_cubes(&mut rng, 4, 4.0), 1.0);
+    let e = build(survey_heap(4, 54), 1.0);
     let clipped: Vec<usize> = (0..e.network.regions.len())
         .filter(|&r| {
-            let len: Vec<f64> = e.network.regions[r]
-                .sides
-                .iter()
-                .map(|s| {
-                    let c = &e.network.curves[s.curve].bezier;
-                    c.eval(s.t0).distance(c.eval(s.t1))
-                })
-                .collect();
+            let len = chords(&e, r);
             len.len() == 6 && len.iter().filter(|&&l| l > 1.5).count() == 3
         })
         .collect();

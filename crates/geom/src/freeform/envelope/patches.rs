@@ -473,7 +473,8 @@ fn chord(net: &Network, s: &PatchSide) -> f64 {
 
 /// The runs of short sides of a region of five or more sides: (first side, count) of each
 /// maximal run of consecutive sides whose chords are under [`SHORT_RUN`] of the longest, for
-/// the runs of two or more; `None` when there is none (or every side is short).
+/// the runs of two or more; `None` when there is none, every side is short, or closing the
+/// runs would leave fewer than three sides.
 fn short_runs(net: &Network, region: &Region) -> Option<Vec<(usize, usize)>> {
     let n = region.sides.len();
     if n < 5 {
@@ -505,9 +506,9 @@ fn short_runs(net: &Network, region: &Region) -> Option<Vec<(usize, usize)>> {
 }
 
 /// A region with its runs of short sides ([`short_runs`]) each closed by a curve across into a
-/// region of its own, and the rest (the core) last (envelope.md, "Runs of short sides"): a sliver's core is
-/// the strip between its long sides, a triangle's with clipped corners one of fewer sides. The
-/// curve across is a cubic with legs a third of its chord projected into its ends' tangent
+/// region of its own, and the rest (the core) last (envelope.md, "Runs of short sides"): a
+/// sliver's core is the strip between its long sides, a clipped triangle's one of fewer sides.
+/// The curve across is a cubic with legs a third of its chord projected into its ends' tangent
 /// planes, with the rule (b) basis [`Network::add_curve`] gives it.
 fn close_runs(net: &mut Network, region: &Region, runs: &[(usize, usize)]) -> Vec<Region> {
     let sides = &region.sides;
@@ -619,10 +620,13 @@ fn region_patches(
         return plain;
     }
     net.truncate(nv, nc);
-    let parts = match (&runs, tiny) {
-        (Some(runs), _) => close_runs(net, &region, runs),
-        (None, Some(k)) => vec![collapsed(net, &region, k)],
-        (None, None) => unreachable!("checked above"),
+    let parts = match &runs {
+        Some(runs) => close_runs(net, &region, runs),
+        None => vec![collapsed(
+            net,
+            &region,
+            tiny.expect("a needle, as checked above"),
+        )],
     };
     let other: Vec<EnvelopePatch> = parts
         .into_iter()
