@@ -195,7 +195,7 @@ impl Network {
     }
 
     /// Undoes every vertex and curve added after the first `vertices` and `curves` (a trial
-    /// split), with the pins those vertices left on the curves kept.
+    /// split), and removes the pins those vertices left on the curves that stay.
     pub(crate) fn truncate(&mut self, vertices: usize, curves: usize) {
         self.vertices.truncate(vertices);
         self.curves.truncate(curves);
