@@ -52,6 +52,23 @@ pub struct Layout {
 }
 
 impl Layout {
+    /// The centres that share a facet or an edge with `a`, ascending, `a` left out. The hull
+    /// of the others is the hull of these where it is nearest to `a`: the facets that replace
+    /// `a`'s when it is left out are the only ones it sees, and their corners are all among
+    /// these (every other centre stays a corner), so `a`'s distance to the hull of the rest is
+    /// its distance to the hull of these — a few centres instead of all of them.
+    pub fn around(&self, a: usize) -> Vec<usize> {
+        let mut n = self.neighbours(a);
+        for f in &self.facets {
+            if f.corners.contains(&a) {
+                n.extend(f.corners.iter().copied().filter(|&q| q != a));
+            }
+        }
+        n.sort_unstable();
+        n.dedup();
+        n
+    }
+
     /// The hull neighbours of primitive `a`, ascending.
     pub fn neighbours(&self, a: usize) -> Vec<usize> {
         let mut n: Vec<usize> = self
@@ -74,8 +91,11 @@ impl Layout {
 
 /// Strict 2D convex hull (no point on an edge between corners), counter-clockwise, by
 /// Andrew's monotone chain; `pts` are (x, y, index).
-fn hull_2d(pts: &[(f64, f64, usize)], tol: f64) -> Vec<usize> {
-    let mut p = pts.to_vec();
+pub(super) fn hull_2d(pts: &[(f64, f64, usize)], tol: f64) -> Vec<usize> {
+    // `+ 0.0` turns −0 into +0, which `total_cmp` would order apart: a centre on an edge
+    // between two others then sorted out of its column and stayed a corner.
+    let mut p: Vec<(f64, f64, usize)> =
+        pts.iter().map(|&(x, y, i)| (x + 0.0, y + 0.0, i)).collect();
     p.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.total_cmp(&b.1)));
     let cross = |o: &(f64, f64, usize), a: &(f64, f64, usize), b: &(f64, f64, usize)| {
         (a.0 - o.0) * (b.1 - o.1) - (a.1 - o.1) * (b.0 - o.0)
@@ -98,7 +118,7 @@ fn hull_2d(pts: &[(f64, f64, usize)], tol: f64) -> Vec<usize> {
 }
 
 /// Two unit vectors spanning the plane normal to unit `n`.
-fn plane_frame(n: DVec3) -> (DVec3, DVec3) {
+pub(super) fn plane_frame(n: DVec3) -> (DVec3, DVec3) {
     let a = if n.x.abs() < 0.9 { DVec3::X } else { DVec3::Y };
     let x = n.cross(a).normalize();
     (x, n.cross(x))
@@ -182,9 +202,40 @@ pub fn layout(c: &[DVec3], tol: f64) -> Layout {
         ];
         return finish(n, edges, facets);
     }
-    // Spatial: every plane through three centres with all the others behind it (within tol),
-    // merged when two triples span one plane; each facet's corners are the strict 2D hull of
-    // the centres on it.
+    // Spatial: the facets by gift wrapping, or by trying every triple where the wrap does not
+    // close (super::wrap).
+    let facets = super::wrap::facets(c, tol, extent).unwrap_or_else(|| exhaustive(c, tol, extent));
+    // Edges from the facets' sides; each side is in two facets.
+    let mut edges: Vec<HullEdge> = Vec::new();
+    for (fi, f) in facets.iter().enumerate() {
+        let m = f.corners.len();
+        for k in 0..m {
+            let (p, q) = (f.corners[k], f.corners[(k + 1) % m]);
+            let (a, b) = (p.min(q), p.max(q));
+            match edges.iter_mut().find(|e| e.a == a && e.b == b) {
+                Some(e) => {
+                    let first = e.facets.expect("set")[0];
+                    e.facets = Some([first, fi]);
+                    e.outward = (facets[first].normal + f.normal).normalize();
+                }
+                None => edges.push(HullEdge {
+                    a,
+                    b,
+                    facets: Some([fi, fi]),
+                    outward: f.normal,
+                }),
+            }
+        }
+    }
+    finish(n, edges, facets)
+}
+
+/// The facets of the hull of `c` (spanning space): every plane through three centres with all
+/// the others behind it (within `tol`), merged when two triples span one plane, in the order of
+/// their first triples; each facet's corners are the strict 2D hull of the centres on it.
+/// O(n⁴): [`super::wrap::facets`] finds the same ones in O(n²) and falls back to this.
+pub(super) fn exhaustive(c: &[DVec3], tol: f64, extent: f64) -> Vec<Facet> {
+    let n = c.len();
     let mut facets: Vec<Facet> = Vec::new();
     for i in 0..n {
         for j in i + 1..n {
@@ -219,29 +270,7 @@ pub fn layout(c: &[DVec3], tol: f64) -> Layout {
             }
         }
     }
-    // Edges from the facets' sides; each side is in two facets.
-    let mut edges: Vec<HullEdge> = Vec::new();
-    for (fi, f) in facets.iter().enumerate() {
-        let m = f.corners.len();
-        for k in 0..m {
-            let (p, q) = (f.corners[k], f.corners[(k + 1) % m]);
-            let (a, b) = (p.min(q), p.max(q));
-            match edges.iter_mut().find(|e| e.a == a && e.b == b) {
-                Some(e) => {
-                    let first = e.facets.expect("set")[0];
-                    e.facets = Some([first, fi]);
-                    e.outward = (facets[first].normal + f.normal).normalize();
-                }
-                None => edges.push(HullEdge {
-                    a,
-                    b,
-                    facets: Some([fi, fi]),
-                    outward: f.normal,
-                }),
-            }
-        }
-    }
-    finish(n, edges, facets)
+    facets
 }
 
 fn finish(n: usize, mut edges: Vec<HullEdge>, facets: Vec<Facet>) -> Layout {
@@ -344,8 +373,7 @@ pub fn layout_swallowing(c: &[DVec3], r: &[f64], tol: f64, swallow: f64) -> Layo
             .kept
             .iter()
             .map(|&i| {
-                let others: Vec<usize> = l.kept.iter().copied().filter(|&j| j != i).collect();
-                let d = hull_distance(c[i], c, &layout_of(c, &others, tol));
+                let d = hull_distance(c[i], c, &layout_of(c, &l.around(i), tol));
                 (d / r[i], i)
             })
             .min_by(|a, b| {
@@ -485,5 +513,90 @@ mod tests {
         ];
         let l = layout_swallowing(&c, &[1.7; 5], 1e-9, 0.1);
         assert_eq!(l.kept, vec![0, 1, 2, 3]);
+    }
+
+    /// Centres for the comparisons below: random in a ball, or drawn from a 3 × 3 × 3 lattice
+    /// (many on one facet, on facet edges and inside).
+    fn centres(seed: u64, n: usize, lattice: bool) -> Vec<DVec3> {
+        let mut s = seed;
+        let mut next = move || {
+            s = s
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (s >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let mut c: Vec<DVec3> = Vec::new();
+        while c.len() < n {
+            let p = if lattice {
+                let k = |x: f64| 2.0 * (3.0 * x).floor();
+                v(k(next()), k(next()), k(next()))
+            } else {
+                5.0 * v(2.0 * next() - 1.0, 2.0 * next() - 1.0, 2.0 * next() - 1.0)
+            };
+            if c.iter().all(|q| q.distance(p) > 1e-6) {
+                c.push(p);
+            }
+        }
+        c
+    }
+
+    /// Gift wrapping finds the facets the search over every triple finds, bit for bit and in
+    /// the same order, on random centres and on lattice centres with many per facet.
+    #[test]
+    fn the_wrap_finds_the_facets_of_the_search() {
+        let mut wrapped = 0;
+        for seed in 0..60u64 {
+            for lattice in [false, true] {
+                let n = if lattice {
+                    6 + (seed as usize % 20)
+                } else {
+                    4 + (seed as usize % 37)
+                };
+                let c = centres(seed, n, lattice);
+                let extent = c.iter().map(|p| p.distance(c[0])).fold(0.0, f64::max);
+                let tol = 1e-9 * extent;
+                let l = layout(&c, tol);
+                if l.facets.len() <= 2 {
+                    continue; // collinear or coplanar: no wrap
+                }
+                let search = exhaustive(&c, tol, extent);
+                let wrap = super::super::wrap::facets(&c, tol, extent);
+                assert_eq!(
+                    wrap.as_ref(),
+                    Some(&search),
+                    "seed {seed} lattice {lattice}"
+                );
+                assert_eq!(l.facets, search);
+                wrapped += 1;
+            }
+        }
+        assert!(wrapped > 100, "{wrapped}");
+    }
+
+    /// A centre's distance to the hull of the others is its distance to the hull of the
+    /// centres around it ([`Layout::around`]).
+    #[test]
+    fn the_distance_to_the_rest_needs_only_the_centres_around() {
+        for seed in 0..40u64 {
+            for lattice in [false, true] {
+                let n = if lattice {
+                    5 + seed as usize % 20
+                } else {
+                    5 + seed as usize % 30
+                };
+                let c = centres(seed + 100, n, lattice);
+                let tol = 1e-9 * 10.0;
+                let l = layout(&c, tol);
+                for &i in &l.kept {
+                    let rest: Vec<usize> = l.kept.iter().copied().filter(|&j| j != i).collect();
+                    let all = hull_distance(c[i], &c, &layout_of(&c, &rest, tol));
+                    let near = hull_distance(c[i], &c, &layout_of(&c, &l.around(i), tol));
+                    assert!(
+                        (all - near).abs() <= 1e-12 * (1.0 + all),
+                        "seed {seed} lattice {lattice} centre {i}: {all} against {near}"
+                    );
+                }
+            }
+        }
     }
 }

@@ -23,6 +23,7 @@ pub mod network;
 pub mod patches;
 pub mod primitive;
 pub mod tessellate;
+mod wrap;
 
 pub use network::{CurveKind, Network};
 pub use patches::EnvelopePatch;
