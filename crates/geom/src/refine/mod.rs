@@ -316,18 +316,21 @@ pub fn propagate(
     numbering: Numbering,
     mut child: impl FnMut(u32, &EdgeAttr, Option<u32>) -> Option<EdgeAttr>,
 ) -> EdgeAttrs {
-    let mut out = EdgeAttrs::new();
+    // Collected, then sorted and built at once: inserting each of thousands of child marks
+    // into the ordered map cost more than finding them.
+    let mut out = Vec::new();
     for (k, a) in attrs {
         let Some(e) = topo.find_edge(parent, k.0, k.1) else {
             continue;
         };
         numbering.edge_children(parent, topo, e, |key, end| {
             if let Some(c) = child(e, a, end) {
-                out.insert(key, c);
+                out.push((key, c));
             }
         });
     }
-    out
+    // Equal keys keep the last, as inserting them one by one did.
+    out.into_iter().collect()
 }
 
 /// Sizes of a child, to estimate its memory before building it and to report it.

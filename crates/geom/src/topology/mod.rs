@@ -360,15 +360,34 @@ impl Topology {
         }
     }
 
-    /// The edge joining vertices `a` and `b`, if there is one.
+    /// The edge joining vertices `a` and `b`, if there is one: the first in `a`'s ring
+    /// ([`Topology::vertex_ring_from`] from `vert_corner[a]`), walked without a list (edge
+    /// marks are handed down level by level through thousands of these).
     pub fn find_edge(&self, mesh: &PolyMesh, a: u32, b: u32) -> Option<u32> {
         if a as usize >= self.vert_corner.len() || b as usize >= self.vert_corner.len() {
             return None;
         }
-        let mut edges = Vec::new();
-        let mut faces = Vec::new();
-        self.vertex_ring_from(mesh, self.vert_corner[a as usize], &mut edges, &mut faces);
-        edges.iter().find(|&&(_, o)| o == b).map(|&(e, _)| e)
+        let start = self.vert_corner[a as usize];
+        if start == NONE {
+            return None;
+        }
+        let cv = &mesh.corner_verts;
+        let (mut c, mut walked) = (start, 0);
+        loop {
+            if cv[self.next[c as usize] as usize] == b {
+                return Some(self.corner_edge[c as usize]);
+            }
+            walked += 1;
+            let n = self.ring_next(c);
+            if n == NONE {
+                let p = self.prev[c as usize] as usize;
+                return (cv[p] == b).then(|| self.corner_edge[p]);
+            }
+            if n == start || walked > self.corner_face.len() {
+                return None;
+            }
+            c = n;
+        }
     }
 
     /// The two vertices of edge `e` as (a, b) in the direction of its first half-edge.
