@@ -50,18 +50,23 @@ pub fn smooth_corner_normals(
     fans(mesh, &topo, raw, &sharp)
 }
 
-/// Every corner gets its face's unit normal.
+/// Every corner gets its face's unit normal, written on every core in chunks of faces (one
+/// thread filling the corners of a 129k-face level was 2 ms of an edit's scene).
 pub fn flat_corner_normals(mesh: &PolyMesh, raw: &[DVec3]) -> Vec<DVec3> {
+    use crate::parallel::{face_chunks, filled, split_at_bounds};
     use rayon::prelude::*;
-    let unit: Vec<DVec3> = raw
-        .par_iter()
-        .with_min_len(4096)
-        .map(|&r| unit_or_zero(r))
-        .collect();
-    let mut n = vec![DVec3::ZERO; mesh.num_corners()];
-    for (f, &u) in unit.iter().enumerate() {
-        n[mesh.face_corners(f)].fill(u);
-    }
+    let (faces, bounds) = face_chunks(mesh);
+    let mut n = filled(mesh.num_corners(), DVec3::ZERO);
+    split_at_bounds(&mut n, &bounds)
+        .into_par_iter()
+        .zip(faces.par_windows(2))
+        .for_each(|(piece, w)| {
+            let first = mesh.face_corners(w[0]).start;
+            for (f, &r) in (w[0]..w[1]).zip(&raw[w[0]..w[1]]) {
+                let c = mesh.face_corners(f);
+                piece[c.start - first..c.end - first].fill(unit_or_zero(r));
+            }
+        });
     n
 }
 
