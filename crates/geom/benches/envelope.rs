@@ -3,9 +3,12 @@
 //! the K = 8 tessellation, for one cube (6 patches), one hexagonal prism (18), two cubes side by
 //! side (14), two cubes on a body diagonal (54) and the bundled scenes like the paper's Table 2
 //! (five primitives: 82 patches; seven: 130), and 20, 50 and 100 cubes on a sphere (all kept:
-//! about 380, 920 and 1,700 patches). Time per patch is the figure to compare as scenes grow.
+//! 376, 842 and 1,697 patches). Time per patch is the figure to compare as scenes grow.
 
 use prism_geom::freeform::envelope::{EnvelopeSpec, Placement, PrimitiveInput, Shape, envelope};
+
+#[path = "../tests/common/mod.rs"]
+mod common;
 
 fn main() {
     divan::main();
@@ -30,9 +33,9 @@ fn scene(name: &str) -> EnvelopeSpec {
         "table2-seven" => {
             return bundled(include_str!("../../../assets/table2-seven.envelope.json"));
         }
-        "sphere-20" => on_sphere(20),
-        "sphere-50" => on_sphere(50),
-        "sphere-100" => on_sphere(100),
+        "sphere-20" => common::cubes_on_a_sphere(20, 0.0),
+        "sphere-50" => common::cubes_on_a_sphere(50, 0.0),
+        "sphere-100" => common::cubes_on_a_sphere(100, 0.0),
         _ => vec![cube([0.0; 3]), cube([3.0, 3.0, 3.0])],
     };
     EnvelopeSpec {
@@ -41,24 +44,6 @@ fn scene(name: &str) -> EnvelopeSpec {
         resolution: 8,
         basis: Default::default(),
     }
-}
-
-/// `n` cubes of side 2 (the library cube at scale 1) spread evenly over a sphere of
-/// radius 1.2 √n (a Fibonacci lattice, about 4.3 apart), each a corner of the hull of the centres.
-fn on_sphere(n: usize) -> Vec<PrimitiveInput> {
-    let radius = 1.2 * (n as f64).sqrt();
-    (0..n)
-        .map(|i| {
-            let y = 1.0 - 2.0 * (i as f64 + 0.5) / n as f64;
-            let r = (1.0 - y * y).sqrt();
-            let phi = i as f64 * 2.399963229728653;
-            Shape::Cube.placed(&Placement {
-                centre: [radius * r * phi.cos(), radius * y, radius * r * phi.sin()],
-                scale: 1.0,
-                rotation: [0.0; 3],
-            })
-        })
-        .collect()
 }
 
 /// A bundled scene at t = 0.7, like the others.

@@ -753,30 +753,12 @@ fn a_run_of_short_sides_is_closed_off() {
     assert!(e.largest_border_jump() < 1e-9);
 }
 
-/// `n` cubes of side 2 spread evenly over a sphere (a Fibonacci lattice, about 4.3 apart),
-/// every one a corner of the hull of the centres, as in the envelope benchmark.
-fn cubes_on_a_sphere(n: usize) -> Vec<PrimitiveInput> {
-    let radius = 1.2 * (n as f64).sqrt();
-    (0..n)
-        .map(|i| {
-            let y = 1.0 - 2.0 * (i as f64 + 0.5) / n as f64;
-            let r = (1.0 - y * y).sqrt();
-            let phi = i as f64 * 2.399963229728653;
-            Shape::Cube.placed(&Placement {
-                centre: [radius * r * phi.cos(), radius * y, radius * r * phi.sin()],
-                scale: 1.0,
-                rotation: [10.0 * i as f64, 0.0, 0.0],
-            })
-        })
-        .collect()
-}
-
 /// A scene of many primitives (the hull of the centres found by gift wrapping, envelope.md
 /// "Finding the hull"): 24 cubes on a sphere are all kept, the envelope is closed, G1 and
 /// sound, and listing them backwards gives the same surface.
 #[test]
 fn two_dozen_cubes_on_a_sphere_are_all_kept_and_sound() {
-    let scene = cubes_on_a_sphere(24);
+    let scene = common::cubes_on_a_sphere(24, 10.0);
     let e = build(scene.clone(), 0.7);
     assert!(e.removed.is_empty(), "{:?}", e.removed);
     assert_sound(&e, false, "24 cubes");

@@ -33,3 +33,28 @@ pub fn winding(m: &PolyMesh, p: DVec3) -> f64 {
     }
     w / (4.0 * std::f64::consts::PI)
 }
+
+/// `n` cubes of side 2 (the library cube at scale 1) spread evenly over a sphere of radius
+/// 1.2 √n (a Fibonacci lattice, about 4.3 apart), each a corner of the hull of the centres;
+/// cube i turned by `turn_deg` · i about x. The envelope benchmark's scenes of many primitives
+/// (`benches/envelope.rs` includes this module) and a test's.
+#[allow(dead_code)] // not every test crate that includes this module uses it
+pub fn cubes_on_a_sphere(
+    n: usize,
+    turn_deg: f64,
+) -> Vec<prism_geom::freeform::envelope::PrimitiveInput> {
+    use prism_geom::freeform::envelope::{Placement, Shape};
+    let radius = 1.2 * (n as f64).sqrt();
+    (0..n)
+        .map(|i| {
+            let y = 1.0 - 2.0 * (i as f64 + 0.5) / n as f64;
+            let r = (1.0 - y * y).sqrt();
+            let phi = i as f64 * 2.399963229728653;
+            Shape::Cube.placed(&Placement {
+                centre: [radius * r * phi.cos(), radius * y, radius * r * phi.sin()],
+                scale: 1.0,
+                rotation: [turn_deg * i as f64, 0.0, 0.0],
+            })
+        })
+        .collect()
+}

@@ -91,7 +91,7 @@ impl Layout {
 
 /// Strict 2D convex hull (no point on an edge between corners), counter-clockwise, by
 /// Andrew's monotone chain; `pts` are (x, y, index).
-pub(super) fn hull_2d(pts: &[(f64, f64, usize)], tol: f64) -> Vec<usize> {
+fn hull_2d(pts: &[(f64, f64, usize)], tol: f64) -> Vec<usize> {
     // `+ 0.0` turns −0 into +0, which `total_cmp` would order apart: a centre on an edge
     // between two others then sorted out of its column and stayed a corner.
     let mut p: Vec<(f64, f64, usize)> =
@@ -118,7 +118,7 @@ pub(super) fn hull_2d(pts: &[(f64, f64, usize)], tol: f64) -> Vec<usize> {
 }
 
 /// Two unit vectors spanning the plane normal to unit `n`.
-pub(super) fn plane_frame(n: DVec3) -> (DVec3, DVec3) {
+fn plane_frame(n: DVec3) -> (DVec3, DVec3) {
     let a = if n.x.abs() < 0.9 { DVec3::X } else { DVec3::Y };
     let x = n.cross(a).normalize();
     (x, n.cross(x))
@@ -230,6 +230,27 @@ pub fn layout(c: &[DVec3], tol: f64) -> Layout {
     finish(n, edges, facets)
 }
 
+/// The centres within `tol` of the plane through `c[i]` with normal `nrm`, ascending, and
+/// their strict corners counter-clockwise about `nrm`.
+pub(super) fn on_plane(
+    c: &[DVec3],
+    i: usize,
+    nrm: DVec3,
+    tol: f64,
+    extent: f64,
+) -> (Vec<usize>, Vec<usize>) {
+    let on: Vec<usize> = (0..c.len())
+        .filter(|&q| (c[q] - c[i]).dot(nrm).abs() <= tol)
+        .collect();
+    let (x, y) = plane_frame(nrm);
+    let pts: Vec<(f64, f64, usize)> = on
+        .iter()
+        .map(|&q| ((c[q] - c[i]).dot(x), (c[q] - c[i]).dot(y), q))
+        .collect();
+    let corners = hull_2d(&pts, tol * extent);
+    (on, corners)
+}
+
 /// The facets of the hull of `c` (spanning space): every plane through three centres with all
 /// the others behind it (within `tol`), merged when two triples span one plane, in the order of
 /// their first triples; each facet's corners are the strict 2D hull of the centres on it.
@@ -253,17 +274,10 @@ pub(super) fn exhaustive(c: &[DVec3], tol: f64, extent: f64) -> Vec<Facet> {
                         continue;
                     }
                     if (0..n).all(|q| (c[q] - c[i]).dot(nrm) <= tol) {
-                        let on: Vec<usize> = (0..n)
-                            .filter(|&q| (c[q] - c[i]).dot(nrm).abs() <= tol)
-                            .collect();
-                        let (x, y) = plane_frame(nrm);
-                        let pts: Vec<(f64, f64, usize)> = on
-                            .iter()
-                            .map(|&q| ((c[q] - c[i]).dot(x), (c[q] - c[i]).dot(y), q))
-                            .collect();
+                        let (_, corners) = on_plane(c, i, nrm, tol, extent);
                         facets.push(Facet {
                             normal: nrm,
-                            corners: hull_2d(&pts, tol * extent),
+                            corners,
                         });
                     }
                 }

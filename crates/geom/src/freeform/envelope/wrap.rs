@@ -19,28 +19,13 @@
 //! the wrap does not close (an edge not shared by exactly two facets, a facet with no such
 //! triple: centres within rounding of the tolerance), the caller falls back to the search.
 
-use super::hull::{Facet, hull_2d, plane_frame};
+use super::hull::{Facet, on_plane};
 use glam::DVec3;
 use std::collections::HashMap;
 
 /// Whether the plane through `c[i]` with unit normal `nrm` has every centre behind it.
 fn supports(c: &[DVec3], i: usize, nrm: DVec3, tol: f64) -> bool {
     c.iter().all(|&q| (q - c[i]).dot(nrm) <= tol)
-}
-
-/// The centres within `tol` of the plane through `c[i]` with normal `nrm`, ascending, and
-/// their strict corners counter-clockwise about `nrm`.
-fn on_plane(c: &[DVec3], i: usize, nrm: DVec3, tol: f64, extent: f64) -> (Vec<usize>, Vec<usize>) {
-    let on: Vec<usize> = (0..c.len())
-        .filter(|&q| (c[q] - c[i]).dot(nrm).abs() <= tol)
-        .collect();
-    let (x, y) = plane_frame(nrm);
-    let pts: Vec<(f64, f64, usize)> = on
-        .iter()
-        .map(|&q| ((c[q] - c[i]).dot(x), (c[q] - c[i]).dot(y), q))
-        .collect();
-    let corners = hull_2d(&pts, tol * extent);
-    (on, corners)
 }
 
 /// The plane through the edge `p → q` turned from the one with outward normal `n` away from
