@@ -253,3 +253,45 @@ fn the_build_and_the_splits_are_the_same_on_any_number_of_threads() {
         }
     }
 }
+
+/// `find_edge` walks a vertex's ring without a list: it finds exactly the edges the ring
+/// lists (the first, in ring order), on a closed solid and on an open 3 × 3 grid whose
+/// boundary vertices end their rings at the closing boundary edge, and nothing for a pair
+/// that shares no edge or a vertex out of range.
+#[test]
+fn find_edge_finds_what_the_ring_lists() {
+    let mut grid_points = Vec::new();
+    for j in 0..4 {
+        for i in 0..4 {
+            grid_points.push(DVec3::new(i as f64, j as f64, 0.0));
+        }
+    }
+    let quads: Vec<Vec<u32>> = (0..3)
+        .flat_map(|j| (0..3).map(move |i| (i, j)))
+        .map(|(i, j)| {
+            let v = |a: u32, b: u32| 4 * (j + b) + i + a;
+            vec![v(0, 0), v(1, 0), v(1, 1), v(0, 1)]
+        })
+        .collect();
+    let grid = PolyMesh::from_polygons(grid_points, &quads);
+    for m in [crate::primitives::tripod(), grid] {
+        let t = Topology::build(&m).unwrap();
+        let n = m.num_vertices() as u32;
+        let (mut ring, mut corners) = (Vec::new(), Vec::new());
+        for a in 0..n {
+            t.vertex_ring_from(&m, t.vert_corner[a as usize], &mut ring, &mut corners);
+            for b in 0..n {
+                let listed = ring.iter().find(|&&(_, o)| o == b).map(|&(e, _)| e);
+                assert_eq!(t.find_edge(&m, a, b), listed, "{a}-{b}");
+            }
+            assert_eq!(t.find_edge(&m, a, n), None);
+        }
+        assert_eq!(t.find_edge(&m, n, 0), None);
+        // Every edge from both of its ends.
+        for e in 0..t.num_edges() {
+            let (a, b) = t.edge_verts(&m, e);
+            assert_eq!(t.find_edge(&m, a, b), Some(e as u32));
+            assert_eq!(t.find_edge(&m, b, a), Some(e as u32));
+        }
+    }
+}
