@@ -30,18 +30,18 @@ impl CurveSamples {
         p[i.min(p.len() - 1)].1
     }
 
-    /// The vertices strictly between τ = a and τ = b, in order from a to b.
-    fn between(&self, curve: usize, a: f64, b: f64) -> Vec<u32> {
+    /// Appends the vertices strictly between τ = a and τ = b to `out`, in order from a to b.
+    fn push_between(&self, out: &mut Vec<u32>, curve: usize, a: f64, b: f64) {
         let (lo, hi) = (a.min(b), a.max(b));
-        let mut v: Vec<u32> = self.params[curve]
-            .iter()
-            .filter(|&&(t, _)| t > lo + SAME && t < hi - SAME)
-            .map(|&(_, id)| id)
-            .collect();
+        let p = &self.params[curve];
+        let from = p.partition_point(|&(t, _)| t <= lo + SAME);
+        let to = p.partition_point(|&(t, _)| t < hi - SAME).max(from);
+        let inside = p[from..to].iter().map(|&(_, id)| id);
         if a > b {
-            v.reverse();
+            out.extend(inside.rev());
+        } else {
+            out.extend(inside);
         }
-        v
     }
 }
 
@@ -79,10 +79,16 @@ pub fn tessellate(net: &Network, patches: &[EnvelopePatch], k: usize) -> PolyMes
         params.push(list);
     }
     let samples = CurveSamples { params };
-    let mut faces: Vec<Vec<u32>> = Vec::with_capacity(patches.len() * k * k);
-    for p in patches {
+    // The patches' grids (half the work) on every core; the welding after them runs in patch
+    // order, so the mesh is the one a single thread makes.
+    let grids: Vec<Vec<DVec3>> = {
+        use rayon::prelude::*;
+        patches.par_iter().map(|p| p.coons.grid(k)).collect()
+    };
+    let mut mesh = PolyMesh::new();
+    let mut poly = Vec::with_capacity(4 * k);
+    for (p, inner) in patches.iter().zip(grids) {
         let n = k + 1;
-        let inner = p.coons.grid(k);
         let mut grid = vec![0u32; n * n];
         let at = |i: usize, j: usize| i + n * j;
         for i in 0..n {
@@ -123,12 +129,12 @@ pub fn tessellate(net: &Network, patches: &[EnvelopePatch], k: usize) -> PolyMes
                         _ => None,
                     }
                 };
-                let mut poly = Vec::with_capacity(4);
+                poly.clear();
                 for (e, &(ci, cj)) in corners.iter().enumerate() {
                     poly.push(grid[at(ci, cj)]);
                     if let Some((side, a, b)) = on_border(e) {
                         let ps = &p.sides[side];
-                        poly.extend(samples.between(ps.curve, ps.tau(a), ps.tau(b)));
+                        samples.push_between(&mut poly, ps.curve, ps.tau(a), ps.tau(b));
                     }
                 }
                 // Cells at a collapsed side lose their repeated corner (triangles).
@@ -137,10 +143,11 @@ pub fn tessellate(net: &Network, patches: &[EnvelopePatch], k: usize) -> PolyMes
                     poly.pop();
                 }
                 if poly.len() >= 3 {
-                    faces.push(poly);
+                    mesh.push_polygon(&poly);
                 }
             }
         }
     }
-    PolyMesh::from_polygons(positions, &faces)
+    mesh.positions = positions;
+    mesh
 }
