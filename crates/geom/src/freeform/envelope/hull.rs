@@ -251,6 +251,19 @@ pub(super) fn on_plane(
     (on, corners)
 }
 
+/// The unit normal of the plane through centres `i`, `j`, `k` (the order fixes its sign), or
+/// None where the three lie within `tol` of a line. The search and the wrap's canonical form
+/// ([`super::wrap`]) both take facet normals from here, so they agree bit for bit.
+pub(super) fn triple_normal(c: &[DVec3], [i, j, k]: [usize; 3], tol: f64) -> Option<DVec3> {
+    let m = (c[j] - c[i]).cross(c[k] - c[i]);
+    (m.length() > tol * (c[j] - c[i]).length().max((c[k] - c[i]).length())).then(|| m.normalize())
+}
+
+/// Whether the plane through `c[i]` with unit normal `nrm` has every centre behind it.
+pub(super) fn supports(c: &[DVec3], i: usize, nrm: DVec3, tol: f64) -> bool {
+    c.iter().all(|&q| (q - c[i]).dot(nrm) <= tol)
+}
+
 /// The facets of the hull of `c` (spanning space): every plane through three centres with all
 /// the others behind it (within `tol`), merged when two triples span one plane, in the order of
 /// their first triples; each facet's corners are the strict 2D hull of the centres on it.
@@ -261,11 +274,9 @@ pub(super) fn exhaustive(c: &[DVec3], tol: f64, extent: f64) -> Vec<Facet> {
     for i in 0..n {
         for j in i + 1..n {
             for k in j + 1..n {
-                let m = (c[j] - c[i]).cross(c[k] - c[i]);
-                if m.length() <= tol * (c[j] - c[i]).length().max((c[k] - c[i]).length()) {
+                let Some(m) = triple_normal(c, [i, j, k], tol) else {
                     continue;
-                }
-                let m = m.normalize();
+                };
                 for nrm in [m, -m] {
                     if facets.iter().any(|f| {
                         f.normal.dot(nrm) > 1.0 - 1e-12
@@ -273,7 +284,7 @@ pub(super) fn exhaustive(c: &[DVec3], tol: f64, extent: f64) -> Vec<Facet> {
                     }) {
                         continue;
                     }
-                    if (0..n).all(|q| (c[q] - c[i]).dot(nrm) <= tol) {
+                    if supports(c, i, nrm, tol) {
                         let (_, corners) = on_plane(c, i, nrm, tol, extent);
                         facets.push(Facet {
                             normal: nrm,

@@ -19,14 +19,9 @@
 //! the wrap does not close (an edge not shared by exactly two facets, a facet with no such
 //! triple: centres within rounding of the tolerance), the caller falls back to the search.
 
-use super::hull::{Facet, on_plane};
+use super::hull::{Facet, on_plane, supports, triple_normal};
 use glam::DVec3;
 use std::collections::HashMap;
-
-/// Whether the plane through `c[i]` with unit normal `nrm` has every centre behind it.
-fn supports(c: &[DVec3], i: usize, nrm: DVec3, tol: f64) -> bool {
-    c.iter().all(|&q| (q - c[i]).dot(nrm) <= tol)
-}
 
 /// The plane through the edge `p → q` turned from the one with outward normal `n` away from
 /// the side `f` (unit, square to the edge, in the plane) until it meets a centre: its outward
@@ -62,11 +57,9 @@ fn canonical(
     for (a, &i) in on.iter().enumerate() {
         for (b, &j) in on.iter().enumerate().skip(a + 1) {
             for &k in &on[b + 1..] {
-                let m = (c[j] - c[i]).cross(c[k] - c[i]);
-                if m.length() <= tol * (c[j] - c[i]).length().max((c[k] - c[i]).length()) {
+                let Some(m) = triple_normal(c, [i, j, k], tol) else {
                     continue;
-                }
-                let m = m.normalize();
+                };
                 for (s, nrm) in [m, -m].into_iter().enumerate() {
                     if supports(c, i, nrm, tol) {
                         let (_, corners) = on_plane(c, i, nrm, tol, extent);
