@@ -68,11 +68,14 @@ pub fn cut_width(r: f64, psi: f64) -> f64 {
 /// every edge searching the ordered map (2 ms of an edit at that level); a mark naming no edge
 /// of `mesh` is ignored.
 fn edge_radii(rule: &CornerRule, mesh: &PolyMesh, topo: &Topology, attrs: &EdgeAttrs) -> Vec<f64> {
-    let r = rule.radius().expect("the cylindrical family has a radius");
-    let mut radii = crate::parallel::filled(topo.num_edges(), r);
+    let radius = |attr| {
+        rule.edge_radius(attr)
+            .expect("the cylindrical family has a radius")
+    };
+    let mut radii = crate::parallel::filled(topo.num_edges(), radius(None));
     for (key, attr) in attrs {
-        if let (Some(own), Some(e)) = (attr.radius, topo.find_edge(mesh, key.0, key.1)) {
-            radii[e as usize] = own;
+        if let Some(e) = topo.find_edge(mesh, key.0, key.1) {
+            radii[e as usize] = radius(Some(attr));
         }
     }
     radii

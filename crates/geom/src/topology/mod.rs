@@ -336,25 +336,41 @@ impl Topology {
     ) {
         edges.clear();
         corners.clear();
+        self.walk_ring(mesh, start, |edge, other, corner| {
+            edges.push((edge, other));
+            corners.extend(corner);
+            false
+        });
+    }
+
+    /// Walks the ring from corner `start` in [`Topology::vertex_ring_from`]'s order, calling
+    /// `visit(edge, other vertex, corner)` for each edge (no corner for the closing boundary
+    /// edge) until it returns true; returns whether it did. The one walk both the listing and
+    /// [`Topology::find_edge`] use.
+    fn walk_ring(
+        &self,
+        mesh: &PolyMesh,
+        start: u32,
+        mut visit: impl FnMut(u32, u32, Option<u32>) -> bool,
+    ) -> bool {
         if start == NONE {
-            return;
+            return false;
         }
         let cv = &mesh.corner_verts;
-        let mut c = start;
+        let (mut c, mut walked) = (start, 0);
         loop {
-            edges.push((
-                self.corner_edge[c as usize],
-                cv[self.next[c as usize] as usize],
-            ));
-            corners.push(c);
+            let edge = self.corner_edge[c as usize];
+            if visit(edge, cv[self.next[c as usize] as usize], Some(c)) {
+                return true;
+            }
+            walked += 1;
             let n = self.ring_next(c);
             if n == NONE {
                 let p = self.prev[c as usize] as usize;
-                edges.push((self.corner_edge[p], cv[p]));
-                return;
+                return visit(self.corner_edge[p], cv[p], None);
             }
-            if n == start || corners.len() > self.corner_face.len() {
-                return;
+            if n == start || walked > self.corner_face.len() {
+                return false;
             }
             c = n;
         }
@@ -367,27 +383,12 @@ impl Topology {
         if a as usize >= self.vert_corner.len() || b as usize >= self.vert_corner.len() {
             return None;
         }
-        let start = self.vert_corner[a as usize];
-        if start == NONE {
-            return None;
-        }
-        let cv = &mesh.corner_verts;
-        let (mut c, mut walked) = (start, 0);
-        loop {
-            if cv[self.next[c as usize] as usize] == b {
-                return Some(self.corner_edge[c as usize]);
-            }
-            walked += 1;
-            let n = self.ring_next(c);
-            if n == NONE {
-                let p = self.prev[c as usize] as usize;
-                return (cv[p] == b).then(|| self.corner_edge[p]);
-            }
-            if n == start || walked > self.corner_face.len() {
-                return None;
-            }
-            c = n;
-        }
+        let mut found = None;
+        self.walk_ring(mesh, self.vert_corner[a as usize], |edge, other, _| {
+            found = (other == b).then_some(edge);
+            found.is_some()
+        });
+        found
     }
 
     /// The two vertices of edge `e` as (a, b) in the direction of its first half-edge.
