@@ -21,10 +21,10 @@
 //! - a side along an edge is the curved edge (whole), or the kept piece **rebuilt** with §6.3
 //!   between its ends so that its tangent at S is normal to S − G too; where the rebuilt piece
 //!   would hook — leave its end or arrive backwards, when no convex arc is normal to both radii
-//!   (`|A − G| cos γ > |S − G|`: small t, a plane cutting near a corner) — the edge's own piece
-//!   is kept (de Casteljau, the same curve) and S's tangent plane is the one through that
-//!   piece's tangent and the section's; where it nearly hooks (a leg under 5 % of the chord)
-//!   the polynomial cubic normal to both radii, legs a third of the chord;
+//!   (`|A − G| cos γ > |S − G|`: small t, a plane cutting near a corner) — or nearly does (a
+//!   leg under 5 % of the chord), the polynomial cubic normal to both radii, legs a third of
+//!   the chord (an inflection where it hooks), so that S keeps its tangent plane normal to
+//!   S − G, which holds d;
 //! - a side along Π_k is a **silhouette edge**, built in Π_k with §6.3 between its ends
 //!   (ρ = t·|P − G| at each), or, where that hooks or nearly does (a leg under 15 % of the
 //!   chord: a straight-looking curve whose parameter crowds at one end), the polynomial cubic
@@ -39,7 +39,6 @@
 use super::EnvelopeError;
 use super::edges::curved_edge;
 use super::network::{CurveKind, Network, PatchSide, Region, RegionKind};
-use super::patches::piece;
 use super::primitive::Primitive;
 use crate::freeform::bezier::RationalBezier;
 use glam::DVec3;
@@ -101,8 +100,6 @@ struct Corner {
 struct Located {
     position: DVec3,
     t: f64,
-    /// Parameter on the curved edge (a < b, from a to b) for a point on an edge.
-    tau: Option<f64>,
 }
 
 /// The root of `(C(τ) − G)·w` on a curve through direction u from G (w normal to u in the
@@ -266,7 +263,6 @@ impl Clipper<'_> {
         Ok(Located {
             position,
             t: self.p.t[a] + (self.p.t[b] - self.p.t[a]) * share,
-            tau: Some(tau),
         })
     }
 
@@ -290,7 +286,6 @@ impl Clipper<'_> {
                 ends.push(Located {
                     position: p.vertices[a],
                     t: p.t[a],
-                    tau: None,
                 });
             } else if sa * sb < 0.0 {
                 let flat = p.vertices[a] + (p.vertices[b] - p.vertices[a]) * (sa / (sa - sb));
@@ -334,7 +329,6 @@ impl Clipper<'_> {
         Ok(Located {
             position: g + u * (dist / count),
             t: t / count,
-            tau: None,
         })
     }
 
@@ -344,7 +338,6 @@ impl Clipper<'_> {
             At::Vertex(i) => Ok(Located {
                 position: self.p.vertices[i],
                 t: self.p.t[i],
-                tau: None,
             }),
             At::Edge { a, b, .. } => self.on_edge(a, b, (c.flat - g).normalize()),
             At::Inside { face, cuts } => self.inside(face, cuts, c.flat),
@@ -378,29 +371,6 @@ impl Clipper<'_> {
             .find(|p| p.1 == v)
             .map(|p| p.2)
             .expect("added")
-    }
-
-    /// The parameter of vertex `v` on curved edge (a, b).
-    fn tau_on(
-        &mut self,
-        net: &Network,
-        v: usize,
-        a: usize,
-        b: usize,
-    ) -> Result<f64, EnvelopeError> {
-        Ok(match self.at_of(v) {
-            At::Vertex(i) => {
-                if i == a {
-                    0.0
-                } else {
-                    1.0
-                }
-            }
-            _ => {
-                let u = (net.vertices[v].position - self.p.centre).normalize();
-                self.on_edge(a, b, u)?.tau.expect("on an edge")
-            }
-        })
     }
 
     /// The curve of a side from vertex x to vertex y along `along`, as a side of the region.
@@ -441,47 +411,22 @@ impl Clipper<'_> {
                 net.add_curve(bez, x, y, CurveKind::Silhouette)
             }
             Along::Edge(a, b) => {
-                let (lo, hi) = (a.min(b), a.max(b));
                 let (ax, ay) = (self.at_of(x), self.at_of(y));
                 let whole = matches!((ax, ay), (At::Vertex(_), At::Vertex(_)));
-                if whole {
-                    let bez = curved_edge(g, px, py, t_of(net, x), t_of(net, y))
-                        .ok_or_else(|| self.bad_edge(a, b))?;
-                    net.add_curve(bez, x, y, CurveKind::Edge)
+                // A whole edge, or the kept piece rebuilt with §6.3 between its ends.
+                let bez = curved_edge(g, px, py, t_of(net, x), t_of(net, y))
+                    .ok_or_else(|| self.bad_edge(a, b))?;
+                let bez = if !whole && hooks(&bez, py - px, NEAR_HOOK_EDGE) {
+                    // The piece hooks (no convex arc joins them normal to both radii) or nearly
+                    // does (a leg under NEAR_HOOK_EDGE of the chord, the parameter crowded at
+                    // that end): the cubic normal to both radii instead, an inflection where it
+                    // hooks; S keeps its tangent plane (envelope.md, "Where the rebuilt piece
+                    // would hook", "Nearly hooked pieces").
+                    third_cubic(g, (px - g).cross(py - g), px, py)
                 } else {
-                    let rebuilt = curved_edge(g, px, py, t_of(net, x), t_of(net, y))
-                        .ok_or_else(|| self.bad_edge(a, b))?;
-                    if hooks(&rebuilt, py - px, 0.0) {
-                        // No convex arc joins them normal to both radii: the edge's own piece,
-                        // and at each silhouette point the tangent plane through its tangent
-                        // and the section's.
-                        let full = self.full_edge(lo, hi)?;
-                        let (tx, ty) = (self.tau_on(net, x, lo, hi)?, self.tau_on(net, y, lo, hi)?);
-                        let bez = piece(&full, tx, ty);
-                        for (v, at, end) in [(x, ax, 0.0), (y, ay, 1.0)] {
-                            if let At::Edge { cut, .. } = at {
-                                let s = net.vertices[v].position;
-                                let sign = if end == 0.0 { -1.0 } else { 1.0 };
-                                let along = bez.derivatives(end).d1 * sign;
-                                let loop_dir = self.cuts[cut].cross(s - g);
-                                let mut n = loop_dir.cross(along).normalize();
-                                if n.dot(s - g) < 0.0 {
-                                    n = -n;
-                                }
-                                net.vertices[v].normal = n;
-                            }
-                        }
-                        net.add_curve(bez, x, y, CurveKind::Edge)
-                    } else if hooks(&rebuilt, py - px, NEAR_HOOK_EDGE) {
-                        // Nearly hooked: a leg under NEAR_HOOK_EDGE of the chord, the parameter
-                        // crowded at that end. The cubic normal to both radii instead; S keeps
-                        // its tangent plane (envelope.md, "Nearly hooked pieces").
-                        let bez = third_cubic(g, (px - g).cross(py - g), px, py);
-                        net.add_curve(bez, x, y, CurveKind::Edge)
-                    } else {
-                        net.add_curve(rebuilt, x, y, CurveKind::Edge)
-                    }
-                }
+                    bez
+                };
+                net.add_curve(bez, x, y, CurveKind::Edge)
             }
         };
         self.curves.insert(key, c);
