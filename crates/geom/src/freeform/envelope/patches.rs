@@ -36,7 +36,9 @@
 //! a region of its own — a sliver's rest is then a strip, one quad between its long sides —
 //! and split so where that folds fewer cells than the split round P_i and stays G1
 //! (envelope.md, "Runs of short sides"); a needle (three sides, one tiny) likewise as one quad
-//! whose fourth side is its tip collapsed to a point (envelope.md, "Needles").
+//! whose fourth side is its tip collapsed to a point (envelope.md, "Needles"); and a region of
+//! five or more sides whose split folds also with each diagonal that cuts off a fat triangle of
+//! two consecutive sides (envelope.md, "Diagonals"): the one that folds fewest is taken.
 
 use super::coons::{Coons, Side};
 use super::edges::curved_edge;
@@ -87,6 +89,10 @@ const NEEDLE: f64 = 0.2;
 /// The widest sector (radians) the P_d and the insertion curves' tangents may leave between
 /// neighbours around P_i: a sub-quad's corner there must stay well below 180°.
 const STAR: f64 = 150.0 * std::f64::consts::PI / 180.0;
+
+/// The widest corner (radians, 135°) between the two sides of a triangle that a diagonal cuts
+/// off ([`fat`]).
+const FLAT_APEX: f64 = 135.0 * std::f64::consts::PI / 180.0;
 
 /// One four-sided patch: its sides in the network and its Coons patch.
 #[derive(Debug, Clone, PartialEq)]
@@ -590,24 +596,84 @@ fn collapsed(net: &mut Network, region: &Region, k: usize) -> Region {
     }
 }
 
+/// Whether the triangle that a diagonal cuts off with consecutive sides `a` and `b` (from a's
+/// start to b's end) is worth trying ([`region_patches`]): neither chord under [`NEEDLE`] of the
+/// other (a needle, or a side of no length, leaves the curve across lying along the other
+/// side) and the corner between them at most [`FLAT_APEX`] (a flatter one leaves it along both).
+fn fat(net: &Network, a: PatchSide, b: PatchSide) -> bool {
+    let at = |s: &PatchSide, tau: f64| {
+        let v = net
+            .vertex_at(s.curve, tau)
+            .expect("a region corner is a vertex");
+        net.vertices[v].position
+    };
+    let apex = at(&b, b.t0);
+    let (u, v) = (at(&a, a.t0) - apex, at(&b, b.t1) - apex);
+    let (lu, lv) = (u.length(), v.length());
+    lu.min(lv) >= NEEDLE * lu.max(lv) && u.angle_between(v) <= FLAT_APEX
+}
+
+/// Another way to patch a region than the split round one inserted point, tried where that
+/// split folds.
+enum Partition {
+    /// Runs of sides, (first side, count) each, closed off by a curve across ([`close_runs`]).
+    Runs(Vec<(usize, usize)>),
+    /// A needle as one quad with its tip collapsed ([`collapsed`]); the tiny side.
+    Needle(usize),
+}
+
+/// The patches of `region` (number `r`) cut into the parts of `partition`, each patched by
+/// [`region_patches`].
+fn partitioned(
+    net: &mut Network,
+    region: &Region,
+    partition: &Partition,
+    r: usize,
+    prims: &[Primitive],
+) -> Vec<EnvelopePatch> {
+    let parts = match partition {
+        Partition::Runs(runs) => close_runs(net, region, runs),
+        Partition::Needle(k) => vec![collapsed(net, region, *k)],
+    };
+    parts
+        .into_iter()
+        .flat_map(|part| region_patches(net, part, r, prims))
+        .collect()
+}
+
 /// The patches of `region` (number `r`): one Coons patch if it is four-sided, else its split
-/// round one inserted point — or, for a region with runs of short sides ([`short_runs`]) or a
-/// needle ([`needle`]) whose split folds, the runs closed off ([`close_runs`]) or one quad with
-/// a collapsed tip ([`collapsed`]) where that folds fewer of its cells and stays G1
-/// (envelope.md, "Runs of short sides" and "Needles"). Trial patches are undone by truncating
-/// what they added to the network.
+/// round one inserted point — or, where that split folds, the partition that folds fewest of
+/// its cells and stays G1 across the curves it adds (envelope.md, "Runs of short sides",
+/// "Needles" and "Diagonals"), tried in this order: runs of short sides closed off
+/// ([`short_runs`], [`close_runs`]), a needle ([`needle`]) as one quad with a collapsed tip
+/// ([`collapsed`]), and for five or more sides each diagonal that cuts off the triangle of two
+/// consecutive sides. Trial patches are undone by truncating what they added to the network.
 fn region_patches(
     net: &mut Network,
     region: Region,
     r: usize,
     prims: &[Primitive],
 ) -> Vec<EnvelopePatch> {
-    if region.sides.len() == 4 {
+    let n = region.sides.len();
+    if n == 4 {
         let quad: [PatchSide; 4] = region.sides.try_into().expect("four");
         return vec![patch(net, quad, r)];
     }
-    let (runs, tiny) = (short_runs(net, &region), needle(net, &region));
-    if runs.is_none() && tiny.is_none() {
+    let mut tries = Vec::new();
+    if let Some(runs) = short_runs(net, &region) {
+        tries.push(Partition::Runs(runs));
+    }
+    if let Some(k) = needle(net, &region) {
+        tries.push(Partition::Needle(k));
+    }
+    if n >= 5 {
+        tries.extend(
+            (0..n)
+                .filter(|&k| fat(net, region.sides[k], region.sides[(k + 1) % n]))
+                .map(|k| Partition::Runs(vec![(k, 2)])),
+        );
+    }
+    if tries.is_empty() {
         return split(net, region, r, prims);
     }
     let folded = |net: &Network, patches: &[EnvelopePatch]| {
@@ -615,29 +681,28 @@ fn region_patches(
     };
     let (nv, nc) = (net.vertices.len(), net.curves.len());
     let plain = split(net, region.clone(), r, prims);
-    let folds = folded(net, &plain);
-    if folds == 0 {
+    let mut least = folded(net, &plain);
+    if least == 0 {
         return plain;
     }
     net.truncate(nv, nc);
-    let parts = match &runs {
-        Some(runs) => close_runs(net, &region, runs),
-        None => vec![collapsed(
-            net,
-            &region,
-            tiny.expect("a needle, as checked above"),
-        )],
-    };
-    let other: Vec<EnvelopePatch> = parts
-        .into_iter()
-        .flat_map(|part| region_patches(net, part, r, prims))
-        .collect();
-    // Taken where it folds less and stays G1 across the curves it adds.
-    if folded(net, &other) < folds && largest_border_jump(net, &other, 8) < G1_KEPT {
-        return other;
+    let mut best = None;
+    for (i, partition) in tries.iter().enumerate() {
+        let other = partitioned(net, &region, partition, r, prims);
+        let folds = folded(net, &other);
+        // Taken where it folds less and stays G1 across the curves it adds.
+        if folds < least && largest_border_jump(net, &other, 8) < G1_KEPT {
+            (least, best) = (folds, Some(i));
+        }
+        net.truncate(nv, nc);
+        if least == 0 {
+            break;
+        }
     }
-    net.truncate(nv, nc);
-    split(net, region, r, prims)
+    match best {
+        Some(i) => partitioned(net, &region, &tries[i], r, prims),
+        None => split(net, region, r, prims),
+    }
 }
 
 /// The patches of every region of `net` ([`region_patches`]).
