@@ -622,6 +622,33 @@ enum Partition {
     Needle(usize),
 }
 
+/// The order among partitions that fold alike ([`region_patches`]): the runs or the needle
+/// first, then the longest diagonal, then by the diagonal's ends' positions (coordinate by
+/// coordinate, the lower end first).
+fn rank(net: &Network, region: &Region, partition: &Partition) -> [f64; 8] {
+    let Partition::Runs(runs) = partition else {
+        return [0.0; 8];
+    };
+    let &[(k, 2)] = runs.as_slice() else {
+        return [0.0; 8];
+    };
+    let n = region.sides.len();
+    let at = |s: &PatchSide, tau: f64| {
+        let v = net
+            .vertex_at(s.curve, tau)
+            .expect("a region corner is a vertex");
+        net.vertices[v].position
+    };
+    let (a, b) = (region.sides[k], region.sides[(k + 1) % n]);
+    let (p, q) = (at(&a, a.t0), at(&b, b.t1));
+    let (p, q) = if p.to_array() <= q.to_array() {
+        (p, q)
+    } else {
+        (q, p)
+    };
+    [1.0, -p.distance(q), p.x, p.y, p.z, q.x, q.y, q.z]
+}
+
 /// The patches of `region` (number `r`) cut into the parts of `partition`, each patched by
 /// [`region_patches`].
 fn partitioned(
@@ -681,16 +708,33 @@ fn region_patches(
     };
     let (nv, nc) = (net.vertices.len(), net.curves.len());
     let plain = split(net, region.clone(), r, prims);
-    let mut least = folded(net, &plain);
+    let least = folded(net, &plain);
     if least == 0 {
         return plain;
     }
     net.truncate(nv, nc);
+    // The one that folds fewest; on a tie the runs or the needle, then the longest diagonal,
+    // then the one whose ends come first by position — never the listing's order, so that the
+    // surface does not depend on it. Tried in that order, so the first that folds nothing ends
+    // the search.
+    let mut order: Vec<(usize, [f64; 8])> = tries
+        .iter()
+        .enumerate()
+        .map(|(i, p)| (i, rank(net, &region, p)))
+        .collect();
+    order.sort_by(|a, b| {
+        a.1.iter()
+            .zip(&b.1)
+            .map(|(x, y)| x.total_cmp(y))
+            .find(|o| o.is_ne())
+            .unwrap_or(std::cmp::Ordering::Equal)
+    });
     let mut best = None;
-    for (i, partition) in tries.iter().enumerate() {
-        let other = partitioned(net, &region, partition, r, prims);
+    let mut least = least;
+    for (i, _) in order {
+        let other = partitioned(net, &region, &tries[i], r, prims);
         let folds = folded(net, &other);
-        // Taken where it folds less and stays G1 across the curves it adds.
+        // Taken where it folds less than the split and stays G1 across the curves it adds.
         if folds < least && largest_border_jump(net, &other, 8) < G1_KEPT {
             (least, best) = (folds, Some(i));
         }
