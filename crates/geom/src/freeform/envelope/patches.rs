@@ -596,19 +596,23 @@ fn collapsed(net: &mut Network, region: &Region, k: usize) -> Region {
     }
 }
 
-/// Whether the triangle that a diagonal cuts off with consecutive sides `a` and `b` (from a's
-/// start to b's end) is worth trying ([`region_patches`]): neither chord under [`NEEDLE`] of the
-/// other (a needle, or a side of no length, leaves the curve across lying along the other
-/// side) and the corner between them at most [`FLAT_APEX`] (a flatter one leaves it along both).
-fn fat(net: &Network, a: PatchSide, b: PatchSide) -> bool {
-    let at = |s: &PatchSide, tau: f64| {
-        let v = net
-            .vertex_at(s.curve, tau)
-            .expect("a region corner is a vertex");
+/// The triangle that the diagonal from the start of side `k` of `region` to the end of side
+/// k + 1 cuts off: that start, the corner between the two sides, that end.
+fn cut_off(net: &Network, region: &Region, k: usize) -> [DVec3; 3] {
+    let n = region.sides.len();
+    let (a, b) = (region.sides[k], region.sides[(k + 1) % n]);
+    [(a.curve, a.t0), (b.curve, b.t0), (b.curve, b.t1)].map(|(c, tau)| {
+        let v = net.vertex_at(c, tau).expect("a region corner is a vertex");
         net.vertices[v].position
-    };
-    let apex = at(&b, b.t0);
-    let (u, v) = (at(&a, a.t0) - apex, at(&b, b.t1) - apex);
+    })
+}
+
+/// Whether a triangle that a diagonal cuts off ([`cut_off`]) is worth trying
+/// ([`region_patches`]): neither of its two sides under [`NEEDLE`] of the other (a needle, or a
+/// side of no length, leaves the curve across lying along the other side) and the corner
+/// between them at most [`FLAT_APEX`] (a flatter one leaves it along both).
+fn fat([p, apex, q]: [DVec3; 3]) -> bool {
+    let (u, v) = (p - apex, q - apex);
     let (lu, lv) = (u.length(), v.length());
     lu.min(lv) >= NEEDLE * lu.max(lv) && u.angle_between(v) <= FLAT_APEX
 }
@@ -632,15 +636,7 @@ fn rank(net: &Network, region: &Region, partition: &Partition) -> [f64; 8] {
     let &[(k, 2)] = runs.as_slice() else {
         return [0.0; 8];
     };
-    let n = region.sides.len();
-    let at = |s: &PatchSide, tau: f64| {
-        let v = net
-            .vertex_at(s.curve, tau)
-            .expect("a region corner is a vertex");
-        net.vertices[v].position
-    };
-    let (a, b) = (region.sides[k], region.sides[(k + 1) % n]);
-    let (p, q) = (at(&a, a.t0), at(&b, b.t1));
+    let [p, _, q] = cut_off(net, region, k);
     let (p, q) = if p.to_array() <= q.to_array() {
         (p, q)
     } else {
@@ -696,7 +692,7 @@ fn region_patches(
     if n >= 5 {
         tries.extend(
             (0..n)
-                .filter(|&k| fat(net, region.sides[k], region.sides[(k + 1) % n]))
+                .filter(|&k| fat(cut_off(net, &region, k)))
                 .map(|k| Partition::Runs(vec![(k, 2)])),
         );
     }
@@ -708,7 +704,7 @@ fn region_patches(
     };
     let (nv, nc) = (net.vertices.len(), net.curves.len());
     let plain = split(net, region.clone(), r, prims);
-    let least = folded(net, &plain);
+    let mut least = folded(net, &plain);
     if least == 0 {
         return plain;
     }
@@ -730,18 +726,18 @@ fn region_patches(
             .unwrap_or(std::cmp::Ordering::Equal)
     });
     let mut best = None;
-    let mut least = least;
     for (i, _) in order {
         let other = partitioned(net, &region, &tries[i], r, prims);
         let folds = folded(net, &other);
-        // Taken where it folds less than the split and stays G1 across the curves it adds.
+        // Taken where it folds less than the split and stays G1 across the curves it adds;
+        // one that folds nothing is the pick, kept as built.
         if folds < least && largest_border_jump(net, &other, 8) < G1_KEPT {
+            if folds == 0 {
+                return other;
+            }
             (least, best) = (folds, Some(i));
         }
         net.truncate(nv, nc);
-        if least == 0 {
-            break;
-        }
     }
     match best {
         Some(i) => partitioned(net, &region, &tries[i], r, prims),
