@@ -3,8 +3,8 @@
 //!
 //! On one thread this is one pass. On several, the half-edges are cut into blocks: each
 //! block counts the edges it leads, the counts' prefix sums give every block its first edge
-//! number, each block numbers its own leading half-edges, and a last pass gives every other
-//! half-edge its twin's number. The numbers are the one pass's whatever the blocks.
+//! number, and each block numbers its own leading half-edges, writing each number to the
+//! leader and to its twin. The numbers are the one pass's whatever the blocks.
 
 use super::NONE;
 use crate::parallel::{filled, split_at_bounds};
@@ -59,32 +59,42 @@ pub(super) fn in_blocks(twin: &[u32], block: usize) -> (Vec<u32>, Vec<u32>) {
     for k in counts {
         bounds.push(bounds[bounds.len() - 1] + k);
     }
-    // The leading half-edges' numbers (the others' slots are not read).
-    let mut lead = filled(n, 0);
+    // Each block numbers its own leading half-edges and writes the number to the leader and
+    // to its twin, wherever that lies: every half-edge is written exactly once, by the leader
+    // of its edge (twins are mutual), so no slot is zeroed first or read back.
+    let mut corner_edge: Vec<u32> = Vec::with_capacity(n);
+    let slots = Slots(corner_edge.spare_capacity_mut().as_mut_ptr().cast::<u32>());
     let mut edge_corner = filled(bounds[bounds.len() - 1], 0);
-    lead.par_chunks_mut(block)
-        .zip(split_at_bounds(&mut edge_corner, &bounds))
+    split_at_bounds(&mut edge_corner, &bounds)
+        .into_par_iter()
         .enumerate()
-        .for_each(|(b, (lead, firsts))| {
+        .for_each(|(b, firsts)| {
+            let slots = &slots;
             let mut k = 0;
-            for (c, l) in range(b).zip(lead) {
+            for c in range(b) {
                 if leads(twin, c) {
-                    *l = (bounds[b] + k) as u32;
+                    let e = (bounds[b] + k) as u32;
                     firsts[k] = c as u32;
                     k += 1;
+                    // SAFETY: c < n and twin[c] < n lie in the allocation; each slot is
+                    // written by one leader only (above), so no two writes race.
+                    unsafe {
+                        slots.0.add(c).write(e);
+                        let t = twin[c];
+                        if t != NONE {
+                            slots.0.add(t as usize).write(e);
+                        }
+                    }
                 }
             }
         });
-    let corner_edge = (0..n)
-        .into_par_iter()
-        .with_min_len(block)
-        .map(|c| {
-            if leads(twin, c) {
-                lead[c]
-            } else {
-                lead[twin[c] as usize]
-            }
-        })
-        .collect();
+    // SAFETY: all n slots were written (every half-edge leads or is its leader's twin).
+    unsafe { corner_edge.set_len(n) };
     (corner_edge, edge_corner)
 }
+
+/// The slots of `corner_edge` that the blocks write at scattered places.
+struct Slots(*mut u32);
+// SAFETY: the blocks write disjoint slots (each half-edge by the leader of its edge) and
+// nothing reads them until every block has finished.
+unsafe impl Sync for Slots {}

@@ -17,6 +17,7 @@ use crate::parallel::{filled, first_where, split_at_bounds};
 use outgoing::Outgoing;
 use rayon::prelude::*;
 
+mod by_vertex;
 mod edges;
 mod outgoing;
 
@@ -42,6 +43,9 @@ pub struct Topology {
     pub vert_corner: Vec<u32>,
     /// Problems that do not stop the work.
     pub warnings: Vec<MeshWarning>,
+    /// Whether [`Topology::build`] found every vertex ring a single fan (it walks them while
+    /// pairing twins), so that [`Topology::require_single_fans`] need not walk them again.
+    fans_checked: bool,
 }
 
 /// Number of distinct vertex indices in a loop.
@@ -177,28 +181,17 @@ impl Topology {
         let cv = &mesh.corner_verts;
         let outgoing = Outgoing::new(nv, cv, &next);
 
-        // Every half-edge looks up its twin on its own, on every core; when each found twin
-        // points back and no half-edge without one has a same-way double, those are the
-        // pairs. Otherwise the serial pass below runs and names the first bad edge.
-        let twin = parallel_twins(cv, &next, &outgoing, nc);
-        let twin = match twin {
-            Some(t) => t,
-            None => serial_twins(cv, &next, &corner_face, &outgoing, nc)?,
+        // Every vertex pairs its outgoing half-edges with their twins, picks its ring start
+        // and walks its fan, on every core; when every pair is mutual and unique those are the
+        // twins. Otherwise the serial pass below runs and names the first bad edge.
+        let (twin, vert_corner, fans_checked) = match by_vertex::twins(cv, &prev, &outgoing) {
+            Some(found) => (found.twin, found.ring_start, found.single_fans),
+            None => {
+                let twin = serial_twins(cv, &next, &corner_face, &outgoing, nc)?;
+                let starts = ring_starts(&twin, &outgoing, nv);
+                (twin, starts, false)
+            }
         };
-
-        // One outgoing half-edge per vertex; on a boundary the one without a twin, so that
-        // walking the ring with `ring_next` from it visits the whole fan.
-        let vert_corner: Vec<u32> = (0..nv)
-            .into_par_iter()
-            .with_min_len(1 << 14)
-            .map(|v| {
-                let mut ring = outgoing.of(v as u32);
-                ring.clone()
-                    .find(|&(d, _)| twin[d as usize] == NONE)
-                    .or_else(|| ring.next())
-                    .map_or(NONE, |(d, _)| d)
-            })
-            .collect();
         let unused = vert_corner
             .par_iter()
             .with_min_len(1 << 14)
@@ -218,6 +211,7 @@ impl Topology {
 
         let mut topo = Topology::from_twins(twin, corner_face, next, prev, vert_corner);
         topo.warnings = warnings;
+        topo.fans_checked = fans_checked;
         Ok(topo)
     }
 
@@ -241,6 +235,7 @@ impl Topology {
             edge_corner,
             vert_corner,
             warnings: Vec::new(),
+            fans_checked: false,
         }
     }
 
@@ -280,6 +275,9 @@ impl Topology {
         // it never counts more than the vertex's valence; the fans' sizes add up to the
         // number of corners exactly when every vertex is a single fan. Only then is the
         // per-vertex count below skipped.
+        if self.fans_checked {
+            return Ok(());
+        }
         let nc = mesh.num_corners();
         let fan = |start: u32, bound: usize| {
             let mut k = 0usize;
@@ -404,42 +402,21 @@ impl Topology {
 #[cfg(test)]
 mod tests;
 
-/// The twin of every half-edge found by each on its own (in parallel), or `None` when the
-/// pairs are not all mutual and unique (a non-manifold edge, an inconsistent orientation):
-/// then [`serial_twins`] finds the first problem in corner order. When it gives pairs, they
-/// are the ones the serial pass gives.
-fn parallel_twins(cv: &[u32], next: &[u32], outgoing: &Outgoing, nc: usize) -> Option<Vec<u32>> {
-    use rayon::prelude::*;
-    const TWICE: u32 = NONE - 1;
-    let found: Vec<u32> = (0..nc)
+/// One outgoing half-edge per vertex, or [`NONE`] for an unused one: on a boundary the first
+/// without a twin, so that walking the ring with `ring_next` from it visits the whole fan;
+/// otherwise the first (the lists are in corner order).
+fn ring_starts(twin: &[u32], outgoing: &Outgoing, nv: usize) -> Vec<u32> {
+    (0..nv)
         .into_par_iter()
         .with_min_len(1 << 14)
-        .map(|c| {
-            let (a, b) = (cv[c], cv[next[c] as usize]);
-            let mut found = NONE;
-            for (d, dst) in outgoing.of(b) {
-                if dst == a {
-                    if found != NONE {
-                        return TWICE;
-                    }
-                    found = d;
-                }
-            }
-            found
+        .map(|v| {
+            let mut ring = outgoing.of(v as u32);
+            ring.clone()
+                .find(|&(d, _)| twin[d as usize] == NONE)
+                .or_else(|| ring.next())
+                .map_or(NONE, |(d, _)| d)
         })
-        .collect();
-    let sound = (0..nc).into_par_iter().with_min_len(1 << 14).all(|c| {
-        let t = found[c];
-        if t == TWICE {
-            return false;
-        }
-        if t != NONE {
-            return found[t as usize] == c as u32;
-        }
-        let (a, b) = (cv[c], cv[next[c] as usize]);
-        !outgoing.of(a).any(|(d, dst)| d as usize != c && dst == b)
-    });
-    sound.then_some(found)
+        .collect()
 }
 
 /// One pass in corner order pairs every half-edge with its twin, or names the first edge

@@ -6,11 +6,10 @@
 //! give every run its slots (per vertex, the runs in corner order), and each run writes its
 //! corners into its slots. Within a vertex the half-edges come in increasing corner order
 //! whatever the number of runs, so the lists are those of the one-thread sort bit for bit.
-//! The slots are atomics only so that the runs may write into one array at interleaved
-//! places (relaxed stores and loads: plain moves on x86 and ARM).
+//! The runs write into one array at interleaved places (disjoint slots, through a raw
+//! pointer), each slot once, with no zeroed buffer first.
 
 use rayon::prelude::*;
-use std::sync::atomic::{AtomicU64, Ordering::Relaxed};
 
 /// Vertices a task of the offset pass takes.
 const VERTEX_BLOCK: usize = 1 << 14;
@@ -22,7 +21,7 @@ pub(super) struct Outgoing {
     /// `start[v]..start[v + 1]` are vertex v's slots.
     start: Vec<u32>,
     /// Half-edge `d` and its destination vertex `w`, as `d | w << 32`.
-    slots: Vec<AtomicU64>,
+    slots: Vec<u64>,
 }
 
 impl Outgoing {
@@ -92,29 +91,52 @@ impl Outgoing {
                 }
             });
 
-        let slots: Vec<AtomicU64> = (0..nc)
-            .into_par_iter()
-            .with_min_len(MIN_RUN)
-            .map(|_| AtomicU64::new(0))
-            .collect();
+        // Every slot is written once, by the run that owns its corner, with no zeroed buffer
+        // first.
+        let mut slots: Vec<u64> = Vec::with_capacity(nc);
+        let out = Slots(slots.spare_capacity_mut().as_mut_ptr().cast::<u64>());
         counts.into_par_iter().enumerate().for_each(|(k, mut at)| {
+            let out = &out;
             for c in bound(k)..bound(k + 1) {
                 let v = cv[c] as usize;
                 let w = cv[next[c] as usize];
-                slots[at[v] as usize].store(c as u64 | (w as u64) << 32, Relaxed);
+                // SAFETY: the slots `at[v]` of the runs are disjoint and lie in 0..nc (the
+                // prefix sums of the counts above).
+                unsafe { out.0.add(at[v] as usize).write(c as u64 | (w as u64) << 32) };
                 at[v] += 1;
             }
         });
+        // SAFETY: the counts cover every corner, so all nc slots were written.
+        unsafe { slots.set_len(nc) };
         Outgoing { start, slots }
+    }
+
+    /// The number of vertices.
+    pub(super) fn vertices(&self) -> usize {
+        self.start.len() - 1
+    }
+
+    /// Vertex `v`'s outgoing half-edges in corner order, each with its destination vertex,
+    /// packed as [`Outgoing::of`] unpacks them.
+    #[inline]
+    pub(super) fn list(&self, v: u32) -> &[u64] {
+        &self.slots[self.start[v as usize] as usize..self.start[v as usize + 1] as usize]
     }
 
     /// Vertex `v`'s outgoing half-edges in corner order, each with its destination vertex.
     #[inline]
     pub(super) fn of(&self, v: u32) -> impl Iterator<Item = (u32, u32)> + Clone + '_ {
-        let r = self.start[v as usize] as usize..self.start[v as usize + 1] as usize;
-        self.slots[r].iter().map(|s| {
-            let s = s.load(Relaxed);
-            (s as u32, (s >> 32) as u32)
-        })
+        self.list(v).iter().map(|&s| unpack(s))
     }
 }
+
+/// A half-edge and its destination from a slot.
+#[inline]
+pub(super) fn unpack(s: u64) -> (u32, u32) {
+    (s as u32, (s >> 32) as u32)
+}
+
+/// The slots the runs write at interleaved places.
+struct Slots(*mut u64);
+// SAFETY: the runs write disjoint slots and nothing reads them until every run has finished.
+unsafe impl Sync for Slots {}

@@ -112,6 +112,60 @@ fn pinched_vertex_is_refused() {
     ));
 }
 
+/// Vertices of more than 16 half-edges look their neighbours up in a sorted list: two cones
+/// of 20 sides closed by their bases pair and walk like any vertex, and the same cones
+/// touching at their tips (40 half-edges at one vertex, two fans) are refused there.
+#[test]
+fn busy_vertices_pair_and_walk_their_fans() {
+    let n = 20u32;
+    let cone = |tip: DVec3, base: f64, flip: bool, offset: u32| {
+        let mut p = vec![tip];
+        for k in 0..n {
+            let a = std::f64::consts::TAU * k as f64 / n as f64;
+            p.push(DVec3::new(a.cos(), a.sin(), base));
+        }
+        let mut faces: Vec<Vec<u32>> = (0..n)
+            .map(|k| vec![offset, offset + 1 + k, offset + 1 + (k + 1) % n])
+            .collect();
+        faces.push((0..n).rev().map(|k| offset + 1 + k).collect());
+        if flip {
+            faces.iter_mut().for_each(|f| f.reverse());
+        }
+        (p, faces)
+    };
+    let (p, faces) = cone(DVec3::Z, 0.0, false, 0);
+    let m = PolyMesh::from_polygons(p.clone(), &faces);
+    let t = Topology::build(&m).unwrap();
+    assert!(t.fans_checked);
+    t.require_closed(&m).unwrap();
+    let outgoing = Outgoing::new(m.num_vertices(), &m.corner_verts, &t.next);
+    let serial = serial_twins(
+        &m.corner_verts,
+        &t.next,
+        &t.corner_face,
+        &outgoing,
+        m.num_corners(),
+    );
+    assert_eq!(serial.unwrap(), t.twin);
+    // The second cone below, sharing the tip (vertex 0).
+    let (q, lower) = cone(DVec3::ZERO, -1.0, true, 0);
+    let mut pts = p;
+    pts.extend_from_slice(&q[1..]);
+    let mut all = faces;
+    all.extend(lower.into_iter().map(|f| {
+        f.into_iter()
+            .map(|v| if v == 0 { 0 } else { v + n })
+            .collect::<Vec<u32>>()
+    }));
+    let m = PolyMesh::from_polygons(pts, &all);
+    let t = Topology::build(&m).unwrap();
+    assert!(!t.fans_checked);
+    assert!(matches!(
+        t.require_closed(&m),
+        Err(MeshError::NonManifoldVertex { vertex: 0, .. })
+    ));
+}
+
 /// The twins found on every core are the serial pass's, on a mesh big enough to be cut
 /// into many pieces (a 200 × 150 torus with a hole cut in it: boundary half-edges too); a
 /// mesh the parallel pass cannot pair falls back to the serial pass and its error.
@@ -145,7 +199,10 @@ fn twins_found_in_parallel_are_the_serial_ones() {
             }
             let serial = serial_twins(cv, &t.next, &t.corner_face, &outgoing, nc);
             assert_eq!(serial.unwrap(), t.twin);
+            // The ring starts picked while pairing are the ones a pass of their own picks.
+            assert_eq!(ring_starts(&t.twin, &outgoing, nv), t.vert_corner);
         }
+        assert!(t.fans_checked, "every vertex a single fan");
         // So does the edge numbering however the half-edges are cut into blocks.
         let one = edges::one_pass(&t.twin);
         assert_eq!((&one.0, &one.1), (&t.corner_edge, &t.edge_corner));
