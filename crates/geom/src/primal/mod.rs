@@ -320,7 +320,7 @@ fn refine(
     let positions = points::child_points(&level, scheme, numbering);
 
     // Split.
-    let (mut child, face_parent) = split.faces(mesh, &topo, numbering);
+    let mut child = split.faces(mesh, &topo, numbering);
     child.positions = positions;
 
     // Creases, corners and holes one level down.
@@ -349,6 +349,7 @@ fn refine(
     }
     // Only a parent with holes has child faces to look for (a pass over every child face).
     if sh.hole.iter().any(|&h| h) {
+        let face_parent = split.face_parent(mesh, &topo);
         child_tags.holes = (0..face_parent.len() as u32)
             .filter(|&f| sh.hole[face_parent[f as usize] as usize])
             .collect();
@@ -369,7 +370,7 @@ fn refine(
             &topo,
             Numbering::Primal(numbering),
             Vec::new(),
-            face_parent,
+            split.face_parent(mesh, &topo),
         )
     });
     Ok((

@@ -16,6 +16,7 @@ use crate::tags::SubdivTags;
 use crate::topology::{NONE, Topology};
 use glam::DVec3;
 use rayon::prelude::*;
+use std::mem::MaybeUninit;
 
 /// Meshes with at least this many faces are refined on rayon's thread pool (when it has
 /// more than one thread).
@@ -24,19 +25,28 @@ pub const PARALLEL_FACES: usize = 50_000;
 /// Points a task of rayon's pool computes at least.
 const MIN_BLOCK: usize = 4096;
 
-/// `[f(0), …, f(n − 1)]`, on rayon's pool when `parallel`. Each point is written once where
-/// it belongs, with no zeroed buffer filled in first: zeroing the ~100 MB of a 1M-quad
-/// level's points took one thread longer than computing them on two.
+/// Writes `f(i)` into slot i of `slots`, on rayon's pool when `parallel`. Each point is
+/// written once where it belongs, with no zeroed buffer filled in first: zeroing the ~100 MB
+/// of a 1M-quad level's points took one thread longer than computing them on two.
 #[inline(always)]
-fn collect<T: Send>(n: usize, parallel: bool, f: impl Fn(usize) -> T + Sync + Send) -> Vec<T> {
+fn fill<T: Send>(
+    slots: &mut [MaybeUninit<T>],
+    parallel: bool,
+    f: impl Fn(usize) -> T + Sync + Send,
+) {
     if parallel {
-        (0..n)
-            .into_par_iter()
-            .with_min_len(MIN_BLOCK)
-            .map(f)
-            .collect()
+        slots
+            .par_chunks_mut(MIN_BLOCK)
+            .enumerate()
+            .for_each(|(k, chunk)| {
+                for (i, s) in chunk.iter_mut().enumerate() {
+                    s.write(f(k * MIN_BLOCK + i));
+                }
+            });
     } else {
-        (0..n).map(f).collect()
+        for (i, s) in slots.iter_mut().enumerate() {
+            s.write(f(i));
+        }
     }
 }
 
@@ -61,13 +71,22 @@ pub(crate) fn child_points(lv: &Level, scheme: PrimalScheme, n: PrimalNumbering)
     let cc = scheme.family() == PrimalScheme::CatmullClark;
     let parallel = nf >= PARALLEL_FACES && rayon::current_num_threads() > 1;
 
-    // Face points, first: the edge and vertex points read them.
-    let face_pts = collect(n.face_points as usize, parallel, |f| {
+    // Face points, first, in their places at the end of the child's points: the edge and
+    // vertex points read them.
+    let ne = n.edges as usize;
+    let total = n.len();
+    debug_assert_eq!(n.edge_point(0) as usize, nv);
+    debug_assert_eq!(total, nv + ne + n.face_points as usize);
+    let mut out: Vec<DVec3> = Vec::with_capacity(total);
+    let (head, tail) = out.spare_capacity_mut()[..total].split_at_mut(nv + ne);
+    let face_point = |f: usize| {
         let r = mesh.face_corners(f);
         let k = r.len();
         catmark::face_point(cv[r].iter().map(|&v| p[v as usize]).sum(), k)
-    });
-    let face_pts = &face_pts[..];
+    };
+    fill(tail, parallel, face_point);
+    // SAFETY: `fill` wrote every slot of `tail`.
+    let face_pts: &[DVec3] = unsafe { &*(tail as *const [MaybeUninit<DVec3>] as *const [DVec3]) };
     let face_size = |f: u32| mesh.face_corners(f as usize).len();
 
     // Edge points.
@@ -165,29 +184,22 @@ pub(crate) fn child_points(lv: &Level, scheme: PrimalScheme, n: PrimalNumbering)
         sharp_vertex_point(lv, v, p_rule, scheme.circle_creases(), &smooth_point)
     };
 
-    // The child's points in the numbering's order: vertices, edges, faces.
-    let ne = n.edges as usize;
-    debug_assert_eq!(n.edge_point(0) as usize, nv);
+    // The child's points in the numbering's order: vertices, edges, then the face points
+    // already in place.
+    let (vert_slots, edge_slots) = head.split_at_mut(nv);
     if parallel {
-        (0..nv)
-            .into_par_iter()
-            .with_min_len(MIN_BLOCK)
-            .map(vertex_point)
-            .chain(
-                (0..ne)
-                    .into_par_iter()
-                    .with_min_len(MIN_BLOCK)
-                    .map(edge_point),
-            )
-            .chain(face_pts.par_iter().with_min_len(MIN_BLOCK).copied())
-            .collect()
+        rayon::join(
+            || fill(vert_slots, true, vertex_point),
+            || fill(edge_slots, true, edge_point),
+        );
     } else {
-        let mut out = Vec::with_capacity(n.len());
-        out.extend((0..nv).map(vertex_point));
-        out.extend((0..ne).map(edge_point));
-        out.extend_from_slice(face_pts);
-        out
+        fill(vert_slots, false, vertex_point);
+        fill(edge_slots, false, edge_point);
     }
+    // SAFETY: every one of the first `total` slots was written above (vertices, edges,
+    // faces).
+    unsafe { out.set_len(total) };
+    out
 }
 
 /// The point of a crease or corner vertex, blended with its child's rule where a

@@ -99,16 +99,20 @@ impl PrimalSplit {
         }
     }
 
-    /// The child's faces (no positions yet), and the parent face of each.
-    pub fn faces(
-        self,
-        mesh: &PolyMesh,
-        topo: &Topology,
-        n: PrimalNumbering,
-    ) -> (PolyMesh, Vec<u32>) {
+    /// The child's faces (no positions yet).
+    pub fn faces(self, mesh: &PolyMesh, topo: &Topology, n: PrimalNumbering) -> PolyMesh {
         match self {
             PrimalSplit::Quad => quad::faces(mesh, topo, n),
             PrimalSplit::Tri => tri::faces(mesh, topo, n),
+        }
+    }
+
+    /// The parent face of each child face (asked for only where it is used: provenance,
+    /// holes).
+    pub fn face_parent(self, mesh: &PolyMesh, topo: &Topology) -> Vec<u32> {
+        match self {
+            PrimalSplit::Quad => quad::face_parent(topo),
+            PrimalSplit::Tri => tri::face_parent(mesh),
         }
     }
 
@@ -281,17 +285,26 @@ pub(crate) fn uniform_faces(
 ) -> PolyMesh {
     use rayon::prelude::*;
     const BLOCK: usize = 1 << 12;
+    let n = parents * width;
     let mut child = PolyMesh::new();
-    child.corner_verts = crate::parallel::filled(parents * width, 0);
-    child
-        .corner_verts
+    child.corner_verts = Vec::with_capacity(n);
+    // Every slot is written once, where it belongs, with no zeroed buffer first (64 MB for
+    // a million quads' children).
+    child.corner_verts.spare_capacity_mut()[..n]
         .par_chunks_mut(BLOCK * width)
         .enumerate()
         .for_each(|(i, block)| {
-            for (j, out) in block.chunks_exact_mut(width).enumerate() {
-                fill(i * BLOCK + j, out);
+            let mut out = vec![0u32; width];
+            for (j, slots) in block.chunks_exact_mut(width).enumerate() {
+                fill(i * BLOCK + j, &mut out);
+                for (s, &v) in slots.iter_mut().zip(&out) {
+                    s.write(v);
+                }
             }
         });
+    // SAFETY: the chunks above cover slots 0..n (`chunks_exact_mut` of blocks whose length is
+    // a multiple of `width`, and n is one), and each was written.
+    unsafe { child.corner_verts.set_len(n) };
     let faces = parents * width / corners as usize;
     let starts = |step: u32| {
         (0..faces + 1)
@@ -386,13 +399,19 @@ mod tests {
                 &m,
                 &topo,
                 quad::numbering(&m, &topo),
-                quad::faces(&m, &topo, quad::numbering(&m, &topo)),
+                (
+                    quad::faces(&m, &topo, quad::numbering(&m, &topo)),
+                    quad::face_parent(&topo),
+                ),
             ),
             (
                 &tri_mesh,
                 &tri_topo,
                 tri::numbering(&tri_mesh, &tri_topo),
-                tri::faces(&tri_mesh, &tri_topo, tri::numbering(&tri_mesh, &tri_topo)),
+                (
+                    tri::faces(&tri_mesh, &tri_topo, tri::numbering(&tri_mesh, &tri_topo)),
+                    tri::face_parent(&tri_mesh),
+                ),
             ),
         ] {
             let num = Numbering::Primal(n);

@@ -40,23 +40,25 @@ pub fn counts(mesh: &PolyMesh, edges: usize) -> ChildCounts {
     }
 }
 
-/// The child's faces (no positions yet), and the parent face of each, on rayon's pool.
-pub fn faces(mesh: &PolyMesh, topo: &Topology, n: PrimalNumbering) -> (PolyMesh, Vec<u32>) {
-    use rayon::prelude::*;
+/// The child's faces (no positions yet), on rayon's pool.
+pub fn faces(mesh: &PolyMesh, topo: &Topology, n: PrimalNumbering) -> PolyMesh {
     let cv = &mesh.corner_verts;
-    let child = super::uniform_faces(mesh.num_corners(), 4, 4, |c, quad| {
+    super::uniform_faces(mesh.num_corners(), 4, 4, |c, quad| {
         quad[0] = n.vertex(cv[c]);
         quad[1] = n.edge_point(topo.corner_edge[c]);
         quad[2] = n.face_point(topo.corner_face[c]);
         quad[3] = n.edge_point(topo.corner_edge[topo.prev[c] as usize]);
-    });
-    let parent = topo
-        .corner_face
+    })
+}
+
+/// The parent face of each child face: child face c lies in the face of parent corner c.
+pub fn face_parent(topo: &Topology) -> Vec<u32> {
+    use rayon::prelude::*;
+    topo.corner_face
         .par_iter()
         .with_min_len(1 << 14)
         .copied()
-        .collect();
-    (child, parent)
+        .collect()
 }
 
 /// Topology of the child of `mesh` (with topology `topo`).

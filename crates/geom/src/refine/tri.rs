@@ -45,25 +45,27 @@ fn at(c: u32) -> (u32, u32) {
     (c / 3, c % 3)
 }
 
-/// The child's faces (no positions yet), and the parent face of each, on rayon's pool.
-pub fn faces(mesh: &PolyMesh, topo: &Topology, n: PrimalNumbering) -> (PolyMesh, Vec<u32>) {
-    use rayon::prelude::*;
-    let nf = mesh.num_faces();
+/// The child's faces (no positions yet), on rayon's pool.
+pub fn faces(mesh: &PolyMesh, topo: &Topology, n: PrimalNumbering) -> PolyMesh {
     let cv = &mesh.corner_verts;
-    let child = super::uniform_faces(nf, 12, 3, |f, four| {
+    super::uniform_faces(mesh.num_faces(), 12, 3, |f, four| {
         let c0 = mesh.face_corners(f).start;
         let v = [0, 1, 2].map(|k| n.vertex(cv[c0 + k]));
         let e = [0, 1, 2].map(|k| n.edge_point(topo.corner_edge[c0 + k]));
         four.copy_from_slice(&[
             v[0], e[0], e[2], v[1], e[1], e[0], v[2], e[2], e[1], e[0], e[1], e[2],
         ]);
-    });
-    let parent = (0..4 * nf)
+    })
+}
+
+/// The parent face of each child face: four children a triangle, in order.
+pub fn face_parent(mesh: &PolyMesh) -> Vec<u32> {
+    use rayon::prelude::*;
+    (0..4 * mesh.num_faces())
         .into_par_iter()
         .with_min_len(1 << 14)
         .map(|i| (i / 4) as u32)
-        .collect();
-    (child, parent)
+        .collect()
 }
 
 /// Topology of the child of the triangle mesh `mesh` (with topology `topo`).
