@@ -69,8 +69,8 @@ pub fn dissolve_flat_edges(
     let mut uf: Vec<u32> = (0..nf as u32).collect();
     for (e, &c) in topo.edge_corner.iter().enumerate() {
         if flat[e] {
-            let a = find(&mut uf, topo.corner_face[c as usize]);
-            let b = find(&mut uf, topo.corner_face[topo.twin[c as usize] as usize]);
+            let a = find(&mut uf, topo.corner_face(c as usize));
+            let b = find(&mut uf, topo.corner_face(topo.twin[c as usize] as usize));
             if a != b {
                 let (lo, hi) = (a.min(b), a.max(b));
                 uf[hi as usize] = lo;
@@ -80,9 +80,9 @@ pub fn dissolve_flat_edges(
     let is_boundary = |c: usize| !flat[topo.corner_edge[c] as usize];
     // Successor of a boundary half-edge: turn around its end vertex across flat edges.
     let succ = |c: usize| -> usize {
-        let mut h = topo.next[c] as usize;
+        let mut h = topo.next(c) as usize;
         while !is_boundary(h) {
-            h = topo.next[topo.twin[h] as usize] as usize;
+            h = topo.next(topo.twin[h] as usize) as usize;
         }
         h
     };

@@ -69,7 +69,7 @@ pub fn angle_between(a: DVec3, b: DVec3) -> f64 {
 pub fn vertex_normal_sums(mesh: &PolyMesh, topo: &Topology, unit_normals: &[DVec3]) -> Vec<DVec3> {
     let mut vsum = vec![DVec3::ZERO; mesh.num_vertices()];
     for c in 0..mesh.num_corners() {
-        vsum[mesh.corner_verts[c] as usize] += unit_normals[topo.corner_face[c] as usize];
+        vsum[mesh.corner_verts[c] as usize] += unit_normals[topo.corner_face(c) as usize];
     }
     vsum
 }
@@ -87,10 +87,10 @@ pub fn signed_bend_angles(mesh: &PolyMesh, topo: &Topology, unit_normals: &[DVec
             if t == NONE {
                 return 0.0;
             }
-            let nl = unit_normals[topo.corner_face[c as usize] as usize];
-            let nr = unit_normals[topo.corner_face[t as usize] as usize];
+            let nl = unit_normals[topo.corner_face(c as usize) as usize];
+            let nr = unit_normals[topo.corner_face(t as usize) as usize];
             let psi = angle_between(nl, nr);
-            let d = mesh.positions[cv[topo.next[c as usize] as usize] as usize]
+            let d = mesh.positions[cv[topo.next(c as usize) as usize] as usize]
                 - mesh.positions[cv[c as usize] as usize];
             if nl.cross(nr).dot(d) < 0.0 { -psi } else { psi }
         })

@@ -43,6 +43,7 @@ pub mod rules;
 pub mod scheme;
 pub mod solid;
 pub mod step;
+mod stream;
 pub mod tags;
 pub mod topology;
 pub mod triangulate;

@@ -34,7 +34,7 @@ pub fn smooth_corner_normals(
             }
             let (a, b) = (
                 mesh.corner_verts[c as usize],
-                mesh.corner_verts[topo.next[c as usize] as usize],
+                mesh.corner_verts[topo.next(c as usize) as usize],
             );
             if attrs
                 .get(&EdgeKey::new(a, b))
@@ -42,8 +42,8 @@ pub fn smooth_corner_normals(
             {
                 return true;
             }
-            let n1 = unit_or_zero(raw[topo.corner_face[c as usize] as usize]);
-            let n2 = unit_or_zero(raw[topo.corner_face[tw as usize] as usize]);
+            let n1 = unit_or_zero(raw[topo.corner_face(c as usize) as usize]);
+            let n2 = unit_or_zero(raw[topo.corner_face(tw as usize) as usize]);
             n1.dot(n2) < cos_limit
         })
         .collect();
@@ -72,10 +72,8 @@ pub fn flat_corner_normals(mesh: &PolyMesh, raw: &[DVec3]) -> Vec<DVec3> {
 
 /// Faces around a vertex averaged within each fan between sharp edges.
 fn fans(mesh: &PolyMesh, topo: &Topology, raw: &[DVec3], sharp: &[bool]) -> Vec<DVec3> {
-    let mut out: Vec<DVec3> = topo
-        .corner_face
-        .iter()
-        .map(|&f| unit_or_zero(raw[f as usize]))
+    let mut out: Vec<DVec3> = (0..topo.num_corners())
+        .map(|c| unit_or_zero(raw[topo.corner_face(c) as usize]))
         .collect();
     let (mut ring_e, mut ring_c) = (Vec::new(), Vec::new());
     for v in 0..mesh.num_vertices() {
@@ -98,7 +96,7 @@ fn fans(mesh: &PolyMesh, topo: &Topology, raw: &[DVec3], sharp: &[bool]) -> Vec<
             let i = (first + k) % n;
             let c = ring_c[i];
             group.push(c);
-            sum += raw[topo.corner_face[c as usize] as usize];
+            sum += raw[topo.corner_face(c as usize) as usize];
             let next_edge = ring_e[(i + 1) % ring_e.len()].0 as usize;
             let ends = k + 1 == n || sharp[next_edge];
             if ends {

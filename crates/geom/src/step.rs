@@ -274,8 +274,8 @@ pub fn check_children(
                     FaceKind::Face => parent_normals[p],
                     FaceKind::Edge => {
                         let c = topo.edge_corner[p] as usize;
-                        parent_normals[topo.corner_face[c] as usize]
-                            + parent_normals[topo.corner_face[topo.twin[c] as usize] as usize]
+                        parent_normals[topo.corner_face(c) as usize]
+                            + parent_normals[topo.corner_face(topo.twin[c] as usize) as usize]
                     }
                     FaceKind::Vertex => vsum[p],
                 };

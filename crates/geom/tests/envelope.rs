@@ -282,8 +282,8 @@ fn normals_converge_with_the_resolution() {
             let mut w = 0.0f64;
             for &c in &t.edge_corner {
                 let (fa, fb) = (
-                    t.corner_face[c as usize] as usize,
-                    t.corner_face[t.twin[c as usize] as usize] as usize,
+                    t.corner_face(c as usize) as usize,
+                    t.corner_face(t.twin[c as usize] as usize) as usize,
                 );
                 w = w.max(angle(face_normal(&m, fa).0, face_normal(&m, fb).0));
             }

@@ -122,7 +122,7 @@ fn vertex_neighbourhood(
     topo.vertex_ring_from(mesh, topo.vert_corner[n as usize], &mut ring_e, &mut ring_c);
     let normal: DVec3 = ring_c
         .iter()
-        .map(|&c| face_normal_raw(mesh, topo.corner_face[c as usize] as usize))
+        .map(|&c| face_normal_raw(mesh, topo.corner_face(c as usize) as usize))
         .sum();
     let shortest = ring_e
         .iter()

@@ -62,9 +62,9 @@ pub fn measure_fillet(
     let topo = Topology::build(original)?;
     let cv = &original.corner_verts;
     let c = (0..original.num_corners())
-        .find(|&c| cv[c] == a && cv[topo.next[c] as usize] == b)
+        .find(|&c| cv[c] == a && cv[topo.next(c) as usize] == b)
         .or_else(|| {
-            (0..original.num_corners()).find(|&c| cv[c] == b && cv[topo.next[c] as usize] == a)
+            (0..original.num_corners()).find(|&c| cv[c] == b && cv[topo.next(c) as usize] == a)
         })
         .ok_or(FilletError::NoSuchEdge { a, b })?;
     measure_at_corner(original, &topo, c, &Refined::new(refined), r)
@@ -105,7 +105,7 @@ pub fn measure_fillets(
         let c = c as usize;
         let (a, b) = (
             original.corner_verts[c],
-            original.corner_verts[topo.next[c] as usize],
+            original.corner_verts[topo.next(c) as usize],
         );
         let key = EdgeKey::new(a, b);
         let Some(r) = radius(key) else { continue };
@@ -176,18 +176,18 @@ fn measure_at_corner(
     r: f64,
 ) -> Result<FilletMeasure, FilletError> {
     let cv = &original.corner_verts;
-    let (a, b) = (cv[c], cv[topo.next[c] as usize]);
+    let (a, b) = (cv[c], cv[topo.next(c) as usize]);
     let t = topo.twin[c];
     if t == crate::topology::NONE {
         return Err(FilletError::NoSuchEdge { a, b });
     }
-    let nl = unit_or_zero(face_normal_raw(original, topo.corner_face[c] as usize));
+    let nl = unit_or_zero(face_normal_raw(original, topo.corner_face(c) as usize));
     let nr = unit_or_zero(face_normal_raw(
         original,
-        topo.corner_face[t as usize] as usize,
+        topo.corner_face(t as usize) as usize,
     ));
     let pa = original.positions[cv[c] as usize];
-    let pb = original.positions[cv[topo.next[c] as usize] as usize];
+    let pb = original.positions[cv[topo.next(c) as usize] as usize];
     let psi = crate::geometry::angle_between(nl, nr);
     if psi < 1e-9 {
         return Err(FilletError::FlatEdge { a, b });

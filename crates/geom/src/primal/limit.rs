@@ -103,7 +103,7 @@ pub fn limit_points_ordered(
         e_pts.extend(ring_e.iter().map(|&(_, o)| p[o as usize]));
         d_pts.clear();
         d_pts.extend(ring_c.iter().map(|&c| {
-            let n2 = topo.next[topo.next[c as usize] as usize];
+            let n2 = topo.next(topo.next(c as usize) as usize);
             p[cv[n2 as usize] as usize]
         }));
         es.clear();

@@ -93,22 +93,22 @@ pub(crate) fn child_points(lv: &Level, scheme: PrimalScheme, n: PrimalNumbering)
     let edge_point = |e: usize| {
         let c = topo.edge_corner[e] as usize;
         let t = topo.twin[c];
-        let (a, b) = (cv[c] as usize, cv[topo.next[c] as usize] as usize);
+        let (a, b) = (cv[c] as usize, cv[topo.next(c) as usize] as usize);
         let s = sh.edge[e];
         let crease_pt = 0.5 * (p[a] + p[b]);
         if t == NONE {
             return crease_pt;
         }
         let t = t as usize;
-        let (f0, f1) = (topo.corner_face[c], topo.corner_face[t]);
+        let (f0, f1) = (topo.corner_face(c), topo.corner_face(t));
         // Smooth mask as vertex weight, face weight and the two face terms.
         let (vw, fw, fsum) = if cc {
             let (vw, fw) =
                 catmark::edge_weights(lv.tags.triangles, || (face_size(f0), face_size(f1)));
             (vw, fw, face_pts[f0 as usize] + face_pts[f1 as usize])
         } else {
-            let o0 = cv[topo.prev[c] as usize] as usize;
-            let o1 = cv[topo.prev[t] as usize] as usize;
+            let o0 = cv[topo.prev(c) as usize] as usize;
+            let o1 = cv[topo.prev(t) as usize] as usize;
             let (vw, fw) = r#loop::EDGE_WEIGHTS;
             (vw, fw, p[o0] + p[o1])
         };
@@ -137,9 +137,9 @@ pub(crate) fn child_points(lv: &Level, scheme: PrimalScheme, n: PrimalNumbering)
         let mut count = vec![0u32; nv];
         for c in 0..mesh.num_corners() {
             let v = cv[c] as usize;
-            esum[v] += p[cv[topo.next[c] as usize] as usize];
+            esum[v] += p[cv[topo.next(c) as usize] as usize];
             if cc {
-                fsum[v] += face_pts[topo.corner_face[c] as usize];
+                fsum[v] += face_pts[topo.corner_face(c) as usize];
             }
             count[v] += 1;
         }
@@ -153,9 +153,9 @@ pub(crate) fn child_points(lv: &Level, scheme: PrimalScheme, n: PrimalNumbering)
                 let (mut esum, mut fsum, mut k) = (DVec3::ZERO, DVec3::ZERO, 0usize);
                 let mut c = start;
                 loop {
-                    esum += p[cv[topo.next[c as usize] as usize] as usize];
+                    esum += p[cv[topo.next(c as usize) as usize] as usize];
                     if cc {
-                        fsum += face_pts[topo.corner_face[c as usize] as usize];
+                        fsum += face_pts[topo.corner_face(c as usize) as usize];
                     }
                     k += 1;
                     c = topo.ring_next(c);

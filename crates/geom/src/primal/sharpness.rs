@@ -77,7 +77,7 @@ pub(crate) fn sharpness(
                     });
                     if open {
                         for &c in &ring_f {
-                            hole[topo.corner_face[c as usize] as usize] = true;
+                            hole[topo.corner_face(c as usize) as usize] = true;
                         }
                     }
                 }

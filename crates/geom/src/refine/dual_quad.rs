@@ -21,7 +21,7 @@
 use super::{Numbering, Provenance};
 use crate::edge_attrs::EdgeKey;
 use crate::mesh::PolyMesh;
-use crate::topology::{NONE, Topology};
+use crate::topology::{Listed, Loops, NONE, Topology};
 use glam::DVec3;
 
 /// Which of the three kinds a new face is.
@@ -38,7 +38,7 @@ pub enum FaceKind {
 pub fn edge_face_sides(topo: &Topology, e: u32) -> [EdgeKey; 4] {
     let c = topo.edge_corner[e as usize] as usize;
     let t = topo.twin[c] as usize;
-    let q = [topo.next[c], c as u32, topo.next[t], t as u32];
+    let q = [topo.next(c), c as u32, topo.next(t), t as u32];
     [0, 1, 2, 3].map(|i| EdgeKey::new(q[i], q[(i + 1) % 4]))
 }
 
@@ -85,7 +85,7 @@ pub fn split(
     for (e, &c) in topo.edge_corner.iter().enumerate() {
         let t = topo.twin[c as usize];
         out.corner_verts
-            .extend_from_slice(&[topo.next[c as usize], c, topo.next[t as usize], t]);
+            .extend_from_slice(&[topo.next(c as usize), c, topo.next(t as usize), t]);
         out.loop_starts.push(out.corner_verts.len() as u32);
         n_loops += 1;
         out.face_starts.push(n_loops);
@@ -131,9 +131,11 @@ pub fn topology(mesh: &PolyMesh, topo: &Topology) -> Topology {
     // VERTEX-face position of every parent corner, faces and cycles as the split writes them.
     let mut vpos = vec![NONE; nc];
     let mut corner_face: Vec<u32> = Vec::with_capacity(nc + 4 * ne + nc);
-    corner_face.extend_from_slice(&topo.corner_face[..nc]);
-    let mut next: Vec<u32> = topo.next.clone();
-    let mut prev: Vec<u32> = topo.prev.clone();
+    corner_face.extend((0..nc).map(|c| topo.corner_face(c)));
+    let mut next: Vec<u32> = Vec::with_capacity(nc + 4 * ne + nc);
+    next.extend((0..nc).map(|c| topo.next(c)));
+    let mut prev: Vec<u32> = Vec::with_capacity(nc + 4 * ne + nc);
+    prev.extend((0..nc).map(|c| topo.prev(c)));
     let nf = mesh.num_faces() as u32;
     for e in 0..ne as u32 {
         let b = edge_base(e);
@@ -180,8 +182,8 @@ pub fn topology(mesh: &PolyMesh, topo: &Topology) -> Topology {
     for (e, &c0) in topo.edge_corner.iter().enumerate() {
         let b = edge_base(e as u32) as usize;
         let t = topo.twin[c0 as usize];
-        let at_next_t = vpos[topo.next[t as usize] as usize];
-        let at_next_c0 = vpos[topo.next[c0 as usize] as usize];
+        let at_next_t = vpos[topo.next(t as usize) as usize];
+        let at_next_c0 = vpos[topo.next(c0 as usize) as usize];
         twin[b + 1] = at_next_t;
         twin[at_next_t as usize] = b as u32 + 1;
         twin[b + 3] = at_next_c0;
@@ -189,7 +191,12 @@ pub fn topology(mesh: &PolyMesh, topo: &Topology) -> Topology {
     }
     // Child vertex c's lowest corner is FACE-face corner c.
     let vert_corner = (0..nc as u32).collect();
-    Topology::from_twins(twin, corner_face, next, prev, vert_corner)
+    let loops = Loops::Listed(Listed {
+        corner_face,
+        next,
+        prev,
+    });
+    Topology::from_twins(twin, loops, vert_corner)
 }
 
 #[cfg(test)]
@@ -220,8 +227,7 @@ mod tests {
             // Written down, the child's topology equals the searched one.
             let wt = topology(&m, &t);
             assert_eq!(wt.twin, rt.twin);
-            assert_eq!((&wt.next, &wt.prev), (&rt.next, &rt.prev));
-            assert_eq!(wt.corner_face, rt.corner_face);
+            assert!(wt.loops().same(rt.loops(), rt.num_corners()));
             assert_eq!(
                 (&wt.corner_edge, &wt.edge_corner),
                 (&rt.corner_edge, &rt.edge_corner)

@@ -273,39 +273,34 @@ fn per_edge<const K: usize>(
         .into_flattened()
 }
 
-/// The child faces of a primal split: `parents` × `width` corner indices, `fill(p, out)`
-/// writing parent `p`'s children into its `width` slots, cut into one-loop faces of
-/// `corners` corners each. Written on rayon's pool in blocks of parents (each parent's
-/// children depend on it alone), so the fresh pages are also first touched on every core.
-pub(crate) fn uniform_faces(
+/// The child faces of a primal split: `parents` × `W` corner indices, `fill(p)` giving
+/// parent `p`'s children, cut into one-loop faces of `corners` corners each. Written on
+/// rayon's pool in blocks of parents (each parent's children depend on it alone), so the
+/// fresh pages are also first touched on every core.
+pub(crate) fn uniform_faces<const W: usize>(
     parents: usize,
-    width: usize,
     corners: u32,
-    fill: impl Fn(usize, &mut [u32]) + Sync,
+    fill: impl Fn(usize) -> [u32; W] + Sync,
 ) -> PolyMesh {
     use rayon::prelude::*;
     const BLOCK: usize = 1 << 12;
-    let n = parents * width;
-    let mut child = PolyMesh::new();
-    child.corner_verts = Vec::with_capacity(n);
+    let mut by_parent: Vec<[u32; W]> = Vec::with_capacity(parents);
     // Every slot is written once, where it belongs, with no zeroed buffer first (64 MB for
     // a million quads' children).
-    child.corner_verts.spare_capacity_mut()[..n]
-        .par_chunks_mut(BLOCK * width)
+    by_parent.spare_capacity_mut()[..parents]
+        .par_chunks_mut(BLOCK)
         .enumerate()
         .for_each(|(i, block)| {
-            let mut out = vec![0u32; width];
-            for (j, slots) in block.chunks_exact_mut(width).enumerate() {
-                fill(i * BLOCK + j, &mut out);
-                for (s, &v) in slots.iter_mut().zip(&out) {
-                    s.write(v);
-                }
+            for (j, slot) in block.iter_mut().enumerate() {
+                crate::stream::write(slot, fill(i * BLOCK + j));
             }
+            crate::stream::fence();
         });
-    // SAFETY: the chunks above cover slots 0..n (`chunks_exact_mut` of blocks whose length is
-    // a multiple of `width`, and n is one), and each was written.
-    unsafe { child.corner_verts.set_len(n) };
-    let faces = parents * width / corners as usize;
+    // SAFETY: the chunks above cover slots 0..parents, and each was written.
+    unsafe { by_parent.set_len(parents) };
+    let mut child = PolyMesh::new();
+    child.corner_verts = by_parent.into_flattened();
+    let faces = parents * W / corners as usize;
     let starts = |step: u32| {
         (0..faces + 1)
             .into_par_iter()

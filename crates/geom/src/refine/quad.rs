@@ -13,7 +13,7 @@
 use super::{ChildCounts, PrimalNumbering};
 use crate::mesh::PolyMesh;
 use crate::primal::RingOrder;
-use crate::topology::{NONE, Topology};
+use crate::topology::{Loops, NONE, Topology};
 
 /// The numbering of the quad split of `mesh`.
 pub fn numbering(mesh: &PolyMesh, topo: &Topology) -> PrimalNumbering {
@@ -43,21 +43,23 @@ pub fn counts(mesh: &PolyMesh, edges: usize) -> ChildCounts {
 /// The child's faces (no positions yet), on rayon's pool.
 pub fn faces(mesh: &PolyMesh, topo: &Topology, n: PrimalNumbering) -> PolyMesh {
     let cv = &mesh.corner_verts;
-    super::uniform_faces(mesh.num_corners(), 4, 4, |c, quad| {
-        quad[0] = n.vertex(cv[c]);
-        quad[1] = n.edge_point(topo.corner_edge[c]);
-        quad[2] = n.face_point(topo.corner_face[c]);
-        quad[3] = n.edge_point(topo.corner_edge[topo.prev[c] as usize]);
+    super::uniform_faces(mesh.num_corners(), 4, |c| {
+        [
+            n.vertex(cv[c]),
+            n.edge_point(topo.corner_edge[c]),
+            n.face_point(topo.corner_face(c)),
+            n.edge_point(topo.corner_edge[topo.prev(c) as usize]),
+        ]
     })
 }
 
 /// The parent face of each child face: child face c lies in the face of parent corner c.
 pub fn face_parent(topo: &Topology) -> Vec<u32> {
     use rayon::prelude::*;
-    topo.corner_face
-        .par_iter()
+    (0..topo.num_corners())
+        .into_par_iter()
         .with_min_len(1 << 14)
-        .copied()
+        .map(|c| topo.corner_face(c))
         .collect()
 }
 
@@ -68,19 +70,16 @@ pub(crate) fn topology(mesh: &PolyMesh, topo: &Topology) -> Topology {
     let mut twin = vec![NONE; n];
     for c in 0..nc {
         let t = topo.twin[c];
-        let tp = topo.twin[topo.prev[c] as usize];
+        let tp = topo.twin[topo.prev(c) as usize];
         twin[4 * c] = if t == NONE {
             NONE
         } else {
-            4 * topo.next[t as usize] + 3
+            4 * topo.next(t as usize) + 3
         };
-        twin[4 * c + 1] = 4 * topo.next[c] + 2;
-        twin[4 * c + 2] = 4 * topo.prev[c] + 1;
+        twin[4 * c + 1] = 4 * topo.next(c) + 2;
+        twin[4 * c + 2] = 4 * topo.prev(c) + 1;
         twin[4 * c + 3] = if tp == NONE { NONE } else { 4 * tp };
     }
-    let corner_face: Vec<u32> = (0..n as u32).map(|i| i / 4).collect();
-    let next: Vec<u32> = (0..n as u32).map(|i| (i & !3) | ((i + 1) & 3)).collect();
-    let prev: Vec<u32> = (0..n as u32).map(|i| (i & !3) | ((i + 3) & 3)).collect();
     let mut vert_corner =
         Vec::with_capacity(mesh.num_vertices() + topo.num_edges() + mesh.num_faces());
     vert_corner.extend(
@@ -90,15 +89,15 @@ pub(crate) fn topology(mesh: &PolyMesh, topo: &Topology) -> Topology {
     );
     for &c in &topo.edge_corner {
         let t = topo.twin[c as usize];
-        let a = (4 * c + 1).min(4 * topo.next[c as usize] + 3);
+        let a = (4 * c + 1).min(4 * topo.next(c as usize) + 3);
         vert_corner.push(if t == NONE {
-            4 * topo.next[c as usize] + 3
+            4 * topo.next(c as usize) + 3
         } else {
-            a.min(4 * t + 1).min(4 * topo.next[t as usize] + 3)
+            a.min(4 * t + 1).min(4 * topo.next(t as usize) + 3)
         });
     }
     vert_corner.extend((0..mesh.num_faces()).map(|f| 4 * mesh.face_corners(f).start as u32 + 2));
-    Topology::from_twins(twin, corner_face, next, prev, vert_corner)
+    Topology::from_twins(twin, Loops::Quads, vert_corner)
 }
 
 /// OpenSubdiv's ring order of the child (`Vtr::QuadRefinement`), given the parent's.
@@ -114,14 +113,14 @@ pub(crate) fn ring_order(order: &RingOrder, mesh: &PolyMesh, topo: &Topology) ->
             .map(|&s| if s == NONE { NONE } else { 4 * s }),
     );
     ring_start.extend(
-        (0..topo.num_edges()).map(|e| 4 * topo.next[order.first_of_edge(topo, e) as usize] + 3),
+        (0..topo.num_edges()).map(|e| 4 * topo.next(order.first_of_edge(topo, e) as usize) + 3),
     );
     ring_start.extend((0..mesh.num_faces()).map(|f| 4 * mesh.face_corners(f).start as u32 + 2));
     let mut first_half_edge = vec![false; 4 * nc];
     for c in 0..nc {
         first_half_edge[4 * c] = first[c];
         first_half_edge[4 * c + 1] = true;
-        first_half_edge[4 * c + 3] = first[topo.prev[c] as usize];
+        first_half_edge[4 * c + 3] = first[topo.prev(c) as usize];
     }
     RingOrder {
         ring_start,

@@ -13,7 +13,7 @@
 use super::{ChildCounts, PrimalNumbering};
 use crate::mesh::PolyMesh;
 use crate::primal::RingOrder;
-use crate::topology::{NONE, Topology};
+use crate::topology::{Loops, NONE, Topology};
 
 /// The numbering of the triangle split of `mesh`.
 pub fn numbering(mesh: &PolyMesh, topo: &Topology) -> PrimalNumbering {
@@ -48,13 +48,13 @@ fn at(c: u32) -> (u32, u32) {
 /// The child's faces (no positions yet), on rayon's pool.
 pub fn faces(mesh: &PolyMesh, topo: &Topology, n: PrimalNumbering) -> PolyMesh {
     let cv = &mesh.corner_verts;
-    super::uniform_faces(mesh.num_faces(), 12, 3, |f, four| {
+    super::uniform_faces(mesh.num_faces(), 3, |f| {
         let c0 = mesh.face_corners(f).start;
         let v = [0, 1, 2].map(|k| n.vertex(cv[c0 + k]));
         let e = [0, 1, 2].map(|k| n.edge_point(topo.corner_edge[c0 + k]));
-        four.copy_from_slice(&[
+        [
             v[0], e[0], e[2], v[1], e[1], e[0], v[2], e[2], e[1], e[0], e[1], e[2],
-        ]);
+        ]
     })
 }
 
@@ -85,7 +85,7 @@ pub(crate) fn topology(mesh: &PolyMesh, topo: &Topology) -> Topology {
                 3 * (4 * g + (m + 1) % 3) + 2
             };
             twin[tri as usize + 1] = 3 * (4 * f + 3) + (k + 2) % 3;
-            let tp = topo.twin[topo.prev[c as usize] as usize];
+            let tp = topo.twin[topo.prev(c as usize) as usize];
             twin[tri as usize + 2] = if tp == NONE {
                 NONE
             } else {
@@ -95,9 +95,6 @@ pub(crate) fn topology(mesh: &PolyMesh, topo: &Topology) -> Topology {
             twin[(3 * (4 * f + 3) + k) as usize] = 3 * (4 * f + (k + 1) % 3) + 1;
         }
     }
-    let corner_face: Vec<u32> = (0..n as u32).map(|i| i / 3).collect();
-    let next: Vec<u32> = (0..n as u32).map(|i| i - i % 3 + (i % 3 + 1) % 3).collect();
-    let prev: Vec<u32> = (0..n as u32).map(|i| i - i % 3 + (i % 3 + 2) % 3).collect();
     let mut vert_corner = Vec::with_capacity(mesh.num_vertices() + topo.num_edges());
     vert_corner.extend(topo.vert_corner.iter().map(|&s| {
         if s == NONE {
@@ -126,7 +123,7 @@ pub(crate) fn topology(mesh: &PolyMesh, topo: &Topology) -> Topology {
             mine.into_iter().chain(theirs).min().expect("six corners")
         });
     }
-    Topology::from_twins(twin, corner_face, next, prev, vert_corner)
+    Topology::from_twins(twin, Loops::Triangles, vert_corner)
 }
 
 /// OpenSubdiv's ring order of the child (`Vtr::TriRefinement`), given the parent's.
@@ -147,14 +144,14 @@ pub(crate) fn ring_order(order: &RingOrder, mesh: &PolyMesh, topo: &Topology) ->
     );
     ring_start.extend(
         (0..topo.num_edges())
-            .map(|e| 3 * tri(topo.next[order.first_of_edge(topo, e) as usize]) + 2),
+            .map(|e| 3 * tri(topo.next(order.first_of_edge(topo, e) as usize)) + 2),
     );
     let mut first_half_edge = vec![false; 4 * nc];
     for c in 0..nc {
         let t = 3 * tri(c as u32) as usize;
         first_half_edge[t] = first[c];
         first_half_edge[t + 1] = true;
-        first_half_edge[t + 2] = first[topo.prev[c] as usize];
+        first_half_edge[t + 2] = first[topo.prev(c) as usize];
     }
     RingOrder {
         ring_start,

@@ -18,7 +18,7 @@ const NEEDLE_BISECTOR: f64 = 1e-12;
 
 fn needle(input: &RuleInput, c: usize) -> RuleError {
     RuleError::NeedleCorner {
-        face: input.topo.corner_face[c],
+        face: input.topo.corner_face(c),
         vertex: input.mesh.corner_verts[c],
     }
 }
@@ -53,8 +53,8 @@ pub(super) fn vector_sum(
     let (m, t) = (input.mesh, input.topo);
     let at = |corner: u32| m.positions[m.corner_verts[corner as usize] as usize];
     let v = at(c as u32);
-    let (e1, e2) = (at(t.next[c]) - v, at(t.prev[c]) - v);
-    let face_normal = input.normals[t.corner_face[c] as usize];
+    let (e1, e2) = (at(t.next(c)) - v, at(t.prev(c)) - v);
+    let face_normal = input.normals[t.corner_face(c) as usize];
     let reflex_corner = face_normal != DVec3::ZERO && face_normal.dot(e1.cross(e2)) < 0.0;
     let sign = if reflex == ReflexMode::Inward && reflex_corner {
         -1.0

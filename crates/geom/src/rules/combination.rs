@@ -49,7 +49,7 @@ impl CombinationState {
         let mut edge_flag = vec![false; topo.num_edges()];
         let mut vert_flag = vec![false; mesh.num_vertices()];
         for c in 0..mesh.num_corners() {
-            if pf[topo.corner_face[c] as usize] {
+            if pf[topo.corner_face(c) as usize] {
                 edge_flag[topo.corner_edge[c] as usize] = true;
                 vert_flag[mesh.corner_verts[c] as usize] = true;
             }

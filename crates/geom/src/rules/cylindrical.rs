@@ -232,7 +232,7 @@ fn flat_edges(
     let blend = |c: u32| {
         c != crate::topology::NONE
             && flags
-                .get(topo.corner_face[c as usize] as usize)
+                .get(topo.corner_face(c as usize) as usize)
                 .copied()
                 .unwrap_or(false)
     };
@@ -287,7 +287,7 @@ fn flat_edges(
 fn widths(input: &RuleInput, c: usize) -> (f64, f64) {
     let t = input.topo;
     let x1 = input.cut_widths[t.corner_edge[c] as usize];
-    let x2 = input.cut_widths[t.corner_edge[t.prev[c] as usize] as usize];
+    let x2 = input.cut_widths[t.corner_edge[t.prev(c) as usize] as usize];
     (x1, x2)
 }
 
@@ -300,7 +300,7 @@ pub(super) fn simple(
     let (x1, x2) = widths(input, c);
     if 1.0 + fr.c < STRAIGHT_CORNER {
         return Err(RuleError::NeedleCorner {
-            face: input.topo.corner_face[c],
+            face: input.topo.corner_face(c),
             vertex: input.mesh.corner_verts[c],
         });
     }
@@ -312,9 +312,9 @@ pub(super) fn simple(
         let blend = |k: u32| {
             let tw = t.twin[k as usize];
             tw != crate::topology::NONE
-                && input.vertex_neighbourhood[t.corner_face[tw as usize] as usize]
+                && input.vertex_neighbourhood[t.corner_face(tw as usize) as usize]
         };
-        let (b1, b2) = (blend(c as u32), blend(t.prev[c]));
+        let (b1, b2) = (blend(c as u32), blend(t.prev(c)));
         if b1 || b2 {
             let a1 = if b2 { x2 } else { x2 / fr.sin_phi };
             let a2 = if b1 { x1 } else { x1 / fr.sin_phi };

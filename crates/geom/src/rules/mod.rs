@@ -174,10 +174,10 @@ pub(crate) struct CornerFrame {
 pub(crate) fn corner_frame(input: &RuleInput, corner: usize) -> Result<CornerFrame, RuleError> {
     let m = input.mesh;
     let t = input.topo;
-    let f = t.corner_face[corner] as usize;
+    let f = t.corner_face(corner) as usize;
     let v = m.positions[m.corner_verts[corner] as usize];
-    let vp = m.positions[m.corner_verts[t.next[corner] as usize] as usize];
-    let vm = m.positions[m.corner_verts[t.prev[corner] as usize] as usize];
+    let vp = m.positions[m.corner_verts[t.next(corner) as usize] as usize];
+    let vm = m.positions[m.corner_verts[t.prev(corner) as usize] as usize];
     let n = input.normals[f];
     let (e1, e2) = (vp - v, vm - v);
     let (l1, l2) = (e1.length(), e2.length());
@@ -237,7 +237,7 @@ pub fn corner_points(
     }
     if let Some(c) = crate::parallel::first_where(pts.len(), |c| !pts[c].is_finite()) {
         return Err(RuleError::NonFinite {
-            face: input.topo.corner_face[c],
+            face: input.topo.corner_face(c),
             vertex: m.corner_verts[c],
         });
     }

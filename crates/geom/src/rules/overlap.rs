@@ -118,7 +118,7 @@ pub fn fitting_scales(input: &RuleInput, widths: &[f64], skip: &[bool], room: f6
     let mut scale = vec![1.0f64; widths.len()];
     let cut = |c: usize| {
         !skip
-            .get(t.corner_face[c] as usize)
+            .get(t.corner_face(c) as usize)
             .copied()
             .unwrap_or(false)
     };
@@ -132,7 +132,7 @@ pub fn fitting_scales(input: &RuleInput, widths: &[f64], skip: &[bool], room: f6
     // the widths of E₂(c), E₁ and E₁(next(c)); formed again in each pass (usually there is
     // one) rather than stored.
     let constraint = |c: usize| {
-        let n = t.next[c] as usize;
+        let n = t.next(c) as usize;
         let (Some(kc), Some(kn)) = (ext[c], ext[n]) else {
             return None;
         };
@@ -140,7 +140,7 @@ pub fn fitting_scales(input: &RuleInput, widths: &[f64], skip: &[bool], room: f6
             - m.positions[m.corner_verts[c] as usize])
             .length();
         let edges = [
-            t.corner_edge[t.prev[c] as usize] as usize,
+            t.corner_edge[t.prev(c) as usize] as usize,
             t.corner_edge[c] as usize,
             t.corner_edge[n] as usize,
         ];

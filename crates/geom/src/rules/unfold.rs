@@ -107,13 +107,13 @@ pub(crate) fn unfold(
         for &c in &topo.edge_corner {
             let t = topo.twin[c as usize];
             let (fa, fb) = (
-                topo.corner_face[c as usize] as usize,
-                topo.corner_face[t as usize] as usize,
+                topo.corner_face(c as usize) as usize,
+                topo.corner_face(t as usize) as usize,
             );
             if blend[fa] && blend[fb] {
                 continue;
             }
-            let q = [topo.next[c as usize], c, topo.next[t as usize], t];
+            let q = [topo.next(c as usize), c, topo.next(t as usize), t];
             let n = newell(pts, q.iter().copied());
             if n.dot(normals[fa] + normals[fb]) < 0.0 {
                 mark(fa, &mut to_move, &mut any);
@@ -131,7 +131,7 @@ pub(crate) fn unfold(
             });
             if ring
                 .clone()
-                .all(|c| blend[topo.corner_face[c as usize] as usize])
+                .all(|c| blend[topo.corner_face(c as usize) as usize])
             {
                 continue;
             }
@@ -139,7 +139,7 @@ pub(crate) fn unfold(
             if n.dot(vsum[v]) < 0.0 || !star_shaped(pts, ring.clone(), n) {
                 for c in ring {
                     mark(
-                        topo.corner_face[c as usize] as usize,
+                        topo.corner_face(c as usize) as usize,
                         &mut to_move,
                         &mut any,
                     );

@@ -61,14 +61,14 @@ impl NewFaces<'_> {
         let t = self.topo;
         let c = t.edge_corner[e];
         let tw = t.twin[c as usize];
-        [t.next[c as usize], c, t.next[tw as usize], tw]
+        [t.next(c as usize), c, t.next(tw as usize), tw]
     }
 
     fn edge_flipped(&self, at: impl Fn(u32) -> DVec3, e: usize) -> bool {
         let t = self.topo;
         let c = t.edge_corner[e] as usize;
-        let np = self.normals[t.corner_face[c] as usize]
-            + self.normals[t.corner_face[t.twin[c] as usize] as usize];
+        let np = self.normals[t.corner_face(c) as usize]
+            + self.normals[t.corner_face(t.twin[c] as usize) as usize];
         newell_at(self.edge_corners(e).into_iter(), at).dot(np) < 0.0
     }
 
@@ -89,9 +89,9 @@ impl NewFaces<'_> {
     fn flipped_around(&self, pts: &[DVec3], c: usize, q: DVec3) -> usize {
         let t = self.topo;
         let at = |k: u32| if k as usize == c { q } else { pts[k as usize] };
-        let f = t.corner_face[c] as usize;
+        let f = t.corner_face(c) as usize;
         let face = self.normals[f] != DVec3::ZERO && self.face_flipped(at, f);
-        let edges = [t.corner_edge[c], t.corner_edge[t.prev[c] as usize]]
+        let edges = [t.corner_edge[c], t.corner_edge[t.prev(c) as usize]]
             .into_iter()
             .filter(|&e| self.edge_flipped(at, e as usize))
             .count();
@@ -106,9 +106,9 @@ impl NewFaces<'_> {
         let (mut fs, mut es, mut vs) = (Vec::new(), Vec::new(), Vec::new());
         for &c in members {
             let c = c as usize;
-            fs.push(t.corner_face[c]);
+            fs.push(t.corner_face(c));
             es.push(t.corner_edge[c]);
-            es.push(t.corner_edge[t.prev[c] as usize]);
+            es.push(t.corner_edge[t.prev(c) as usize]);
             vs.push(self.mesh.corner_verts[c]);
         }
         for l in [&mut fs, &mut es, &mut vs] {
@@ -141,11 +141,11 @@ const STEPS: [f64; 4] = [0.125, 0.25, 0.5, 1.0];
 
 /// The four neighbours of corner `c`'s point in the child.
 fn neighbours(t: &Topology, c: u32) -> [u32; 4] {
-    let p = t.prev[c as usize];
+    let p = t.prev(c as usize);
     [
-        t.next[c as usize],
+        t.next(c as usize),
         p,
-        t.next[t.twin[c as usize] as usize],
+        t.next(t.twin[c as usize] as usize),
         t.twin[p as usize],
     ]
 }

@@ -1,25 +1,29 @@
-//! Twins, ring starts and the single-fan check in one pass over the vertices, on every core.
+//! Twins, ring starts and the single-fan check in one pass over the vertices, on every core,
+//! each vertex reading only its own list of outgoing half-edges.
 //!
-//! Vertex a holds its outgoing half-edges `d: a → b` in corner order ([`Outgoing`]). The
-//! twin of d is the one half-edge `b → a` in b's list. Each vertex checks what it can see
-//! on its own: no destination twice in its list (two faces running a → b the same way, or
-//! a third use of the edge) and at most one `b → a` in each neighbour's list. When every
-//! vertex passes, the pairs are mutual (b's list holds the one `b → a`, a's the one
-//! `a → b`) and unique: the twins of the serial pass in `super::serial_twins`, which runs
-//! instead, naming the first bad edge, when one does not.
+//! Every half-edge `d: a → b` of vertex a's list ([`Outgoing`]) follows, in its loop, the
+//! half-edge `p = prev d: x → a` coming in; so a's list also gives every half-edge that ends
+//! at a, once. The twin of the incoming `p` is the outgoing `a → x`: a looks it up in its own
+//! list and writes `twin[p]`, and as every half-edge ends at exactly one vertex, every slot is
+//! written once. Each vertex checks what it sees: no destination twice among its outgoing
+//! half-edges and no origin twice among its incoming ones (else two faces run an edge the
+//! same way or an edge is used three times). When every vertex passes, the pairs are mutual
+//! (`twin[a → x]` is written by x, from the one `x → a`) and unique: the twins of the serial
+//! pass in `super::serial_twins`, which runs instead, naming the first bad edge, when one
+//! does not.
 //!
-//! The same list gives the ring start (the first half-edge without a twin, else the first)
-//! and the fan: `ring_next(c) = twin[prev[c]]`, and `prev[c]` runs `x → a`, so its twin is
-//! the half-edge `a → x` of a's own list. A vertex whose walk from its start does not visit
-//! its whole list is not a single fan; [`super::Topology::require_single_fans`] then walks
-//! again to name it.
+//! The same lookups give the ring start (the first outgoing half-edge that no incoming one
+//! pairs with, else the first) and the fan: `ring_next(d) = twin[prev d]`, the outgoing
+//! half-edge found for `prev d`. A vertex whose walk from its start does not visit its whole
+//! list is not a single fan; [`super::Topology::require_single_fans`] then walks again to
+//! name it.
 
-use super::NONE;
-use super::outgoing::{Outgoing, unpack};
+use super::outgoing::Outgoing;
+use super::{Loops, NONE};
 use rayon::prelude::*;
 use std::sync::atomic::{AtomicBool, Ordering::Relaxed};
 
-/// Lists longer than this look destinations up in a sorted copy instead of scanning.
+/// Lists longer than this look vertices up in a sorted copy instead of scanning.
 const SHORT: usize = 16;
 
 /// What the pass found.
@@ -31,9 +35,26 @@ pub(super) struct ByVertex {
     pub single_fans: bool,
 }
 
-/// The twins of the half-edges of corners `cv` (loops given by `prev`), or `None` when
-/// some pair is not mutual and unique.
-pub(super) fn twins(cv: &[u32], prev: &[u32], outgoing: &Outgoing) -> Option<ByVertex> {
+/// Scratch for the vertices with long lists, reused from vertex to vertex.
+#[derive(Default)]
+struct Scratch {
+    /// Origin of the incoming half-edge before each outgoing one.
+    from: Vec<u32>,
+    /// Index in the list of the outgoing half-edge paired with each incoming one, or NONE.
+    pair: Vec<u32>,
+    /// Whether each outgoing half-edge has a twin.
+    paired: Vec<bool>,
+    /// (vertex, index) sorted by vertex.
+    sorted: Vec<(u32, u32)>,
+}
+
+/// What one vertex found: its ring start and whether its faces form a single fan, or
+/// `None` when a pair is not mutual and unique.
+type Found = Option<(u32, bool)>;
+
+/// The twins of the half-edges of corners `cv` with loops `loops`, or `None` when some
+/// pair is not mutual and unique.
+pub(super) fn twins(cv: &[u32], loops: &Loops, outgoing: &Outgoing) -> Option<ByVertex> {
     let nc = cv.len();
     let nv = outgoing.vertices();
     let mut twin: Vec<u32> = Vec::with_capacity(nc);
@@ -43,69 +64,32 @@ pub(super) fn twins(cv: &[u32], prev: &[u32], outgoing: &Outgoing) -> Option<ByV
     let ring_start: Vec<u32> = (0..nv)
         .into_par_iter()
         .with_min_len(1 << 12)
-        .map_init(Vec::new, |scratch, a| {
-            let slots = &slots;
+        .map_init(Scratch::default, |scratch, a| {
             let list = outgoing.list(a as u32);
-            if list.is_empty() {
-                return NONE;
-            }
-            let Some(lookup) = Lookup::new(list, scratch) else {
-                sound.store(false, Relaxed);
-                return NONE;
+            let found = match list.len() {
+                0 => return NONE,
+                1..=SHORT => short(list, cv, loops, &slots),
+                _ => long(list, cv, loops, &slots, scratch),
             };
-            let (mut first_open, a) = (NONE, a as u32);
-            for &s in list {
-                let (d, b) = unpack(s);
-                let mut found = NONE;
-                for &s in outgoing.list(b) {
-                    let (t, dst) = unpack(s);
-                    if dst == a {
-                        if found != NONE {
-                            sound.store(false, Relaxed);
-                            return NONE;
-                        }
-                        found = t;
+            match found {
+                Some((start, single)) => {
+                    if !single {
+                        fans.store(false, Relaxed);
                     }
+                    start
                 }
-                if found == NONE && first_open == NONE {
-                    first_open = d;
-                }
-                // SAFETY: d < nc (a corner index); every corner lies in exactly one vertex's
-                // list, so this slot is written by this vertex only.
-                unsafe { slots.0.add(d as usize).write(found) };
-            }
-            let start = if first_open == NONE {
-                unpack(list[0]).0
-            } else {
-                first_open
-            };
-            // The fan from `start`: ring_next(c) is the half-edge a → cv[prev[c]] when a's
-            // list has it (its twin is then prev[c]), else the walk ends at a boundary.
-            let (mut c, mut k) = (start, 0);
-            loop {
-                k += 1;
-                let x = cv[prev[c as usize] as usize];
-                match lookup.find(list, x) {
-                    Some(n) if n != start && k < list.len() => c = n,
-                    Some(n) if n == start => break,
-                    Some(_) => {
-                        k = list.len() + 1;
-                        break;
-                    }
-                    None => break,
+                None => {
+                    sound.store(false, Relaxed);
+                    NONE
                 }
             }
-            if k != list.len() {
-                fans.store(false, Relaxed);
-            }
-            start
         })
         .collect();
     if !sound.load(Relaxed) {
         return None;
     }
-    // SAFETY: the lists hold every corner once (a counting sort of the corners), and every
-    // vertex wrote the slot of each of its half-edges.
+    // SAFETY: the lists hold every corner once (a counting sort of the corners), and each
+    // list's vertex wrote the slot of the half-edge before each of its corners: every slot.
     unsafe { twin.set_len(nc) };
     Some(ByVertex {
         twin,
@@ -114,52 +98,112 @@ pub(super) fn twins(cv: &[u32], prev: &[u32], outgoing: &Outgoing) -> Option<ByV
     })
 }
 
-/// Finds the half-edge of a list by its destination; `None` from [`Lookup::new`] when a
-/// destination comes twice.
-enum Lookup<'s> {
-    Scan,
-    Sorted(&'s [(u32, u32)]),
+/// A vertex of at most [`SHORT`] half-edges (nearly all): everything on the stack.
+#[inline(always)]
+fn short(list: &[u32], cv: &[u32], loops: &Loops, slots: &Slots) -> Found {
+    let n = list.len();
+    let (mut to, mut from) = ([0u32; SHORT], [0u32; SHORT]);
+    for (i, &d) in list.iter().enumerate() {
+        to[i] = cv[loops.next(d as usize) as usize];
+        from[i] = cv[loops.prev(d as usize) as usize];
+    }
+    let (to, from) = (&to[..n], &from[..n]);
+    if (1..n).any(|i| to[..i].contains(&to[i]) || from[..i].contains(&from[i])) {
+        return None;
+    }
+    let mut pair = [NONE; SHORT];
+    let mut paired = 0u32;
+    for i in 0..n {
+        let t = match to.iter().position(|&b| b == from[i]) {
+            Some(j) => {
+                pair[i] = j as u32;
+                paired |= 1 << j;
+                list[j]
+            }
+            None => NONE,
+        };
+        slots.write(loops.prev(list[i] as usize), t);
+    }
+    // The first outgoing half-edge without a twin, else the first.
+    let first = (!paired).trailing_zeros() as usize;
+    let first = if first < n { first } else { 0 };
+    Some((list[first], fan(&pair[..n], first) == n))
 }
 
-impl<'s> Lookup<'s> {
-    fn new(list: &[u64], scratch: &'s mut Vec<(u32, u32)>) -> Option<Lookup<'s>> {
-        if list.len() <= SHORT {
-            let twice = list
-                .iter()
-                .enumerate()
-                .any(|(i, &s)| list[..i].iter().any(|&x| x >> 32 == s >> 32));
-            return (!twice).then_some(Lookup::Scan);
-        }
-        scratch.clear();
-        scratch.extend(list.iter().map(|&s| {
-            let (d, b) = unpack(s);
-            (b, d)
-        }));
-        scratch.sort_unstable();
-        if scratch.windows(2).any(|w| w[0].0 == w[1].0) {
-            return None;
-        }
-        Some(Lookup::Sorted(scratch))
+/// A vertex of more than [`SHORT`] half-edges: lookups in a sorted copy.
+fn long(list: &[u32], cv: &[u32], loops: &Loops, slots: &Slots, s: &mut Scratch) -> Found {
+    let n = list.len();
+    s.from.clear();
+    s.from
+        .extend(list.iter().map(|&d| cv[loops.prev(d as usize) as usize]));
+    s.sorted.clear();
+    s.sorted.extend(s.from.iter().map(|&x| (x, 0)));
+    s.sorted.sort_unstable();
+    if s.sorted.windows(2).any(|w| w[0].0 == w[1].0) {
+        return None;
     }
+    s.sorted.clear();
+    s.sorted.extend(
+        list.iter()
+            .enumerate()
+            .map(|(i, &d)| (cv[loops.next(d as usize) as usize], i as u32)),
+    );
+    s.sorted.sort_unstable();
+    if s.sorted.windows(2).any(|w| w[0].0 == w[1].0) {
+        return None;
+    }
+    s.pair.clear();
+    s.paired.clear();
+    s.paired.resize(n, false);
+    for i in 0..n {
+        let j = s
+            .sorted
+            .binary_search_by_key(&s.from[i], |&(b, _)| b)
+            .map_or(NONE, |k| s.sorted[k].1);
+        s.pair.push(j);
+        let t = if j == NONE {
+            NONE
+        } else {
+            s.paired[j as usize] = true;
+            list[j as usize]
+        };
+        slots.write(loops.prev(list[i] as usize), t);
+    }
+    let first = s.paired.iter().position(|&p| !p).unwrap_or(0);
+    Some((list[first], fan(&s.pair, first) == n))
+}
 
-    /// The half-edge of `list` ending at `x`.
-    fn find(&self, list: &[u64], x: u32) -> Option<u32> {
-        match self {
-            Lookup::Scan => list
-                .iter()
-                .map(|&s| unpack(s))
-                .find(|&(_, b)| b == x)
-                .map(|(d, _)| d),
-            Lookup::Sorted(by_dst) => by_dst
-                .binary_search_by_key(&x, |&(b, _)| b)
-                .ok()
-                .map(|i| by_dst[i].1),
+/// The number of half-edges the fan walk from list index `first` visits, following `pair`
+/// (the next outgoing half-edge of the ring, NONE at a boundary); more than the list's length
+/// when it runs on.
+fn fan(pair: &[u32], first: usize) -> usize {
+    let (mut i, mut k) = (first, 0);
+    loop {
+        k += 1;
+        let j = pair[i];
+        if j == NONE || j as usize == first {
+            return k;
         }
+        if k >= pair.len() {
+            return pair.len() + 1;
+        }
+        i = j as usize;
     }
 }
 
 /// The twin slots, written at scattered places by the vertices.
 struct Slots(*mut u32);
-// SAFETY: the vertices write disjoint slots (each corner belongs to one vertex's list) and
-// nothing reads them until the pass has finished.
+// SAFETY: the vertices write disjoint slots (each corner ends at one vertex) and nothing
+// reads them until the pass has finished.
 unsafe impl Sync for Slots {}
+
+impl Slots {
+    /// Writes the twin of half-edge `p`, which ends at the calling vertex.
+    #[inline(always)]
+    fn write(&self, p: u32, t: u32) {
+        // SAFETY: p < nc, the capacity; every half-edge ends at exactly one vertex and comes
+        // before exactly one of that vertex's outgoing half-edges, so each slot is written by
+        // one call only, and none is read before the pass ends.
+        unsafe { self.0.add(p as usize).write(t) };
+    }
+}

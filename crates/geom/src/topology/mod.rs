@@ -13,13 +13,16 @@
 
 use crate::error::{MeshError, MeshWarning};
 use crate::mesh::PolyMesh;
-use crate::parallel::{filled, first_where, split_at_bounds};
+use crate::parallel::first_where;
 use outgoing::Outgoing;
 use rayon::prelude::*;
 
 mod by_vertex;
 mod edges;
+mod loops;
 mod outgoing;
+
+pub use loops::{Listed, Loops};
 
 /// Marks a missing index (no twin, unused vertex).
 pub const NONE: u32 = u32::MAX;
@@ -27,12 +30,9 @@ pub const NONE: u32 = u32::MAX;
 /// Half-edge topology of a [`PolyMesh`].
 #[derive(Debug, Clone, Default)]
 pub struct Topology {
-    /// Face of each corner.
-    pub corner_face: Vec<u32>,
-    /// Next corner in the same loop.
-    pub next: Vec<u32>,
-    /// Previous corner in the same loop.
-    pub prev: Vec<u32>,
+    /// Face, next and previous corner of each corner ([`Topology::corner_face`],
+    /// [`Topology::next`], [`Topology::prev`]).
+    loops: Loops,
     /// The opposite half-edge, or [`NONE`] on a boundary.
     pub twin: Vec<u32>,
     /// Edge of each half-edge.
@@ -117,25 +117,21 @@ impl Topology {
             });
         }
 
-        // Loops: face, next and previous corner of every corner, on every core in chunks of
-        // faces (each chunk owns its corners); the faces that need the full check (not a
-        // plain triangle or quad of distinct in-range vertices) are checked after, in order,
-        // so the first bad face is named as one pass would name it.
-        let mut corner_face = filled(nc, 0);
-        let mut next = filled(nc, 0);
-        let mut prev = filled(nc, 0);
+        // The faces, on every core in chunks: those that need the full check (not a plain
+        // triangle or quad of distinct in-range vertices) are checked after, in order, so the
+        // first bad face is named as one pass would name it; and whether every face is one
+        // loop of the same three or four corners (then the loops are arithmetic).
         let (first_faces, bounds) = crate::parallel::face_chunks(mesh);
-        let flagged: Vec<Vec<u32>> = split_at_bounds(&mut corner_face, &bounds)
+        let chunks: Vec<(Vec<u32>, Option<usize>)> = (0..first_faces.len() - 1)
             .into_par_iter()
-            .zip(split_at_bounds(&mut next, &bounds))
-            .zip(split_at_bounds(&mut prev, &bounds))
-            .enumerate()
-            .map(|(i, ((cf, nx), pv))| {
-                let base = bounds[i];
+            .map(|i| {
                 let mut flagged = Vec::new();
+                let mut uniform = None;
+                let mut mixed = false;
                 for f in first_faces[i]..first_faces[i + 1] {
                     let loops = mesh.face_loops(f);
-                    let vs = &mesh.corner_verts[mesh.face_corners(f)];
+                    let r = mesh.face_corners(f);
+                    let vs = &mesh.corner_verts[r.clone()];
                     let small = loops.len() == 1 && (3..=4).contains(&vs.len());
                     let ok = small
                         && vs.iter().all(|&v| (v as usize) < nv)
@@ -146,26 +142,21 @@ impl Topology {
                     if !ok {
                         flagged.push(f as u32);
                     }
-                    for l in loops {
-                        let r = mesh.loop_corners(l);
-                        for c in r.clone() {
-                            cf[c - base] = f as u32;
-                            nx[c - base] = (c + 1) as u32;
-                            pv[c - base] = c.wrapping_sub(1) as u32;
-                        }
-                        if !r.is_empty() {
-                            nx[r.end - 1 - base] = r.start as u32;
-                            pv[r.start - base] = (r.end - 1) as u32;
-                        }
-                    }
+                    let k = vs.len();
+                    mixed |= !small || r.start != k * f || uniform.is_some_and(|u| u != k);
+                    uniform = Some(k);
                 }
-                flagged
+                (flagged, if mixed { None } else { uniform })
             })
             .collect();
+        let uniform = chunks[0]
+            .1
+            .filter(|&k| chunks.iter().all(|c| c.1 == Some(k)));
+        let flagged = chunks.iter().flat_map(|c| &c.0);
         // Per-vertex stamp of the last face that used it: detects a vertex repeated in a
         // face with more than four corners (smaller ones compare their corners directly).
         let mut stamp = Vec::new();
-        for &f in flagged.iter().flatten() {
+        for &f in flagged {
             if mesh.face_loops(f as usize).is_empty() {
                 return Err(MeshError::EmptyFace { face: f });
             }
@@ -175,19 +166,21 @@ impl Topology {
             check_face(mesh, f as usize, &mut stamp)?;
         }
         drop(stamp);
+        drop(chunks);
+        let loops = Loops::of(mesh, uniform, &first_faces, &bounds);
 
         // Outgoing half-edges per vertex (CSR), each stored with its destination vertex so
         // that the twin search reads one contiguous run.
         let cv = &mesh.corner_verts;
-        let outgoing = Outgoing::new(nv, cv, &next);
+        let outgoing = Outgoing::new(nv, cv, &loops);
 
         // Every vertex pairs its outgoing half-edges with their twins, picks its ring start
         // and walks its fan, on every core; when every pair is mutual and unique those are the
         // twins. Otherwise the serial pass below runs and names the first bad edge.
-        let (twin, vert_corner, fans_checked) = match by_vertex::twins(cv, &prev, &outgoing) {
+        let (twin, vert_corner, fans_checked) = match by_vertex::twins(cv, &loops, &outgoing) {
             Some(found) => (found.twin, found.ring_start, found.single_fans),
             None => {
-                let twin = serial_twins(cv, &next, &corner_face, &outgoing, nc)?;
+                let twin = serial_twins(cv, &loops, &outgoing, nc)?;
                 let starts = ring_starts(&twin, &outgoing, nv);
                 (twin, starts, false)
             }
@@ -209,27 +202,19 @@ impl Topology {
             });
         }
 
-        let mut topo = Topology::from_twins(twin, corner_face, next, prev, vert_corner);
+        let mut topo = Topology::from_twins(twin, loops, vert_corner);
         topo.warnings = warnings;
         topo.fans_checked = fans_checked;
         Ok(topo)
     }
 
-    /// The half-edge topology from twins, faces, cycles and ring starts (found by
+    /// The half-edge topology from twins, loops and ring starts (found by
     /// [`Topology::build`] or written down by a split): edges numbered in the order of their
     /// smaller half-edge.
-    pub(crate) fn from_twins(
-        twin: Vec<u32>,
-        corner_face: Vec<u32>,
-        next: Vec<u32>,
-        prev: Vec<u32>,
-        vert_corner: Vec<u32>,
-    ) -> Topology {
+    pub(crate) fn from_twins(twin: Vec<u32>, loops: Loops, vert_corner: Vec<u32>) -> Topology {
         let (corner_edge, edge_corner) = edges::number_edges(&twin);
         Topology {
-            corner_face,
-            next,
-            prev,
+            loops,
             twin,
             corner_edge,
             edge_corner,
@@ -237,6 +222,34 @@ impl Topology {
             warnings: Vec::new(),
             fans_checked: false,
         }
+    }
+
+    /// The face of corner `c`.
+    #[inline]
+    pub fn corner_face(&self, c: usize) -> u32 {
+        self.loops.face(c)
+    }
+
+    /// The next corner of corner `c`'s loop.
+    #[inline]
+    pub fn next(&self, c: usize) -> u32 {
+        self.loops.next(c)
+    }
+
+    /// The previous corner of corner `c`'s loop.
+    #[inline]
+    pub fn prev(&self, c: usize) -> u32 {
+        self.loops.prev(c)
+    }
+
+    /// The loops: faces and neighbours of the corners, stored or arithmetic.
+    pub fn loops(&self) -> &Loops {
+        &self.loops
+    }
+
+    /// The number of corners (half-edges).
+    pub fn num_corners(&self) -> usize {
+        self.twin.len()
     }
 
     pub fn num_edges(&self) -> usize {
@@ -249,7 +262,7 @@ impl Topology {
     /// boundary.
     #[inline]
     pub fn ring_next(&self, c: u32) -> u32 {
-        self.twin[self.prev[c as usize] as usize]
+        self.twin[self.prev(c as usize) as usize]
     }
 
     /// Refuses an open mesh (naming a boundary edge) and a vertex whose faces do not form a
@@ -259,8 +272,8 @@ impl Topology {
             if t == NONE {
                 return Err(MeshError::BoundaryEdge {
                     a: mesh.corner_verts[c],
-                    b: mesh.corner_verts[self.next[c] as usize],
-                    face: self.corner_face[c],
+                    b: mesh.corner_verts[self.next(c) as usize],
+                    face: self.corner_face(c),
                 });
             }
         }
@@ -358,16 +371,16 @@ impl Topology {
         let (mut c, mut walked) = (start, 0);
         loop {
             let edge = self.corner_edge[c as usize];
-            if visit(edge, cv[self.next[c as usize] as usize], Some(c)) {
+            if visit(edge, cv[self.next(c as usize) as usize], Some(c)) {
                 return true;
             }
             walked += 1;
             let n = self.ring_next(c);
             if n == NONE {
-                let p = self.prev[c as usize] as usize;
+                let p = self.prev(c as usize) as usize;
                 return visit(self.corner_edge[p], cv[p], None);
             }
-            if n == start || walked > self.corner_face.len() {
+            if n == start || walked > self.num_corners() {
                 return false;
             }
             c = n;
@@ -394,7 +407,7 @@ impl Topology {
         let c = self.edge_corner[e] as usize;
         (
             mesh.corner_verts[c],
-            mesh.corner_verts[self.next[c] as usize],
+            mesh.corner_verts[self.next(c) as usize],
         )
     }
 }
@@ -423,8 +436,7 @@ fn ring_starts(twin: &[u32], outgoing: &Outgoing, nv: usize) -> Vec<u32> {
 /// used three times or run the same way by two faces.
 fn serial_twins(
     cv: &[u32],
-    next: &[u32],
-    corner_face: &[u32],
+    loops: &Loops,
     outgoing: &Outgoing,
     nc: usize,
 ) -> Result<Vec<u32>, MeshError> {
@@ -434,7 +446,7 @@ fn serial_twins(
             continue;
         }
         let a = cv[c];
-        let b = cv[next[c] as usize];
+        let b = cv[loops.next(c) as usize];
         let mut found = NONE;
         let mut count = 0;
         for (d, dst) in outgoing.of(b) {
@@ -450,7 +462,7 @@ fn serial_twins(
                 .of(b)
                 .filter(|&(_, dst)| dst == a)
                 .chain(outgoing.of(a).filter(|&(_, dst)| dst == b))
-                .map(|(e, _)| corner_face[e as usize])
+                .map(|(e, _)| loops.face(e as usize))
                 .collect();
             faces.sort_unstable();
             faces.dedup();
@@ -468,7 +480,7 @@ fn serial_twins(
             // same way: inconsistent orientation.
             for (d, dst) in outgoing.of(a) {
                 if d as usize != c && dst == b {
-                    let (f1, f2) = (corner_face[c], corner_face[d as usize]);
+                    let (f1, f2) = (loops.face(c), loops.face(d as usize));
                     return Err(MeshError::InconsistentOrientation {
                         a,
                         b,

@@ -1,5 +1,4 @@
-//! The outgoing half-edges of every vertex (CSR), each stored with its destination vertex so
-//! that the twin search reads one contiguous run: a counting sort of the corners by vertex,
+//! The outgoing half-edges of every vertex (CSR): a counting sort of the corners by vertex,
 //! on every core.
 //!
 //! The corners are cut into one run per thread; each run counts its own vertices, the counts
@@ -9,6 +8,7 @@
 //! The runs write into one array at interleaved places (disjoint slots, through a raw
 //! pointer), each slot once, with no zeroed buffer first.
 
+use super::Loops;
 use rayon::prelude::*;
 
 /// Vertices a task of the offset pass takes.
@@ -17,22 +17,25 @@ const VERTEX_BLOCK: usize = 1 << 14;
 const MIN_RUN: usize = 1 << 16;
 
 /// Outgoing half-edges per vertex.
-pub(super) struct Outgoing {
+pub(super) struct Outgoing<'a> {
     /// `start[v]..start[v + 1]` are vertex v's slots.
     start: Vec<u32>,
-    /// Half-edge `d` and its destination vertex `w`, as `d | w << 32`.
-    slots: Vec<u64>,
+    /// The half-edges (corners), vertex after vertex.
+    slots: Vec<u32>,
+    /// The corners' vertices and loops, for the destinations.
+    cv: &'a [u32],
+    loops: &'a Loops,
 }
 
-impl Outgoing {
-    /// The lists of the `nv` vertices of corners `cv` whose loops `next` gives.
-    pub(super) fn new(nv: usize, cv: &[u32], next: &[u32]) -> Outgoing {
+impl<'a> Outgoing<'a> {
+    /// The lists of the `nv` vertices of corners `cv` with loops `loops`.
+    pub(super) fn new(nv: usize, cv: &'a [u32], loops: &'a Loops) -> Outgoing<'a> {
         let runs = rayon::current_num_threads().min(cv.len() / MIN_RUN).max(1);
-        Self::in_runs(nv, cv, next, runs)
+        Self::in_runs(nv, cv, loops, runs)
     }
 
     /// The same, the corners cut into `runs` runs (at least one).
-    pub(super) fn in_runs(nv: usize, cv: &[u32], next: &[u32], runs: usize) -> Outgoing {
+    pub(super) fn in_runs(nv: usize, cv: &'a [u32], loops: &'a Loops, runs: usize) -> Outgoing<'a> {
         let nc = cv.len();
         let runs = runs.max(1);
         let bound = |k: usize| k * nc / runs;
@@ -93,22 +96,27 @@ impl Outgoing {
 
         // Every slot is written once, by the run that owns its corner, with no zeroed buffer
         // first.
-        let mut slots: Vec<u64> = Vec::with_capacity(nc);
-        let out = Slots(slots.spare_capacity_mut().as_mut_ptr().cast::<u64>());
+        let mut slots: Vec<u32> = Vec::with_capacity(nc);
+        let out = Slots(slots.spare_capacity_mut().as_mut_ptr().cast::<u32>());
         counts.into_par_iter().enumerate().for_each(|(k, mut at)| {
             let out = &out;
-            for c in bound(k)..bound(k + 1) {
-                let v = cv[c] as usize;
-                let w = cv[next[c] as usize];
+            let first = bound(k);
+            for (c, &v) in (first..).zip(&cv[first..bound(k + 1)]) {
+                let v = v as usize;
                 // SAFETY: the slots `at[v]` of the runs are disjoint and lie in 0..nc (the
                 // prefix sums of the counts above).
-                unsafe { out.0.add(at[v] as usize).write(c as u64 | (w as u64) << 32) };
+                unsafe { out.0.add(at[v] as usize).write(c as u32) };
                 at[v] += 1;
             }
         });
         // SAFETY: the counts cover every corner, so all nc slots were written.
         unsafe { slots.set_len(nc) };
-        Outgoing { start, slots }
+        Outgoing {
+            start,
+            slots,
+            cv,
+            loops,
+        }
     }
 
     /// The number of vertices.
@@ -116,27 +124,22 @@ impl Outgoing {
         self.start.len() - 1
     }
 
-    /// Vertex `v`'s outgoing half-edges in corner order, each with its destination vertex,
-    /// packed as [`Outgoing::of`] unpacks them.
+    /// Vertex `v`'s outgoing half-edges in corner order.
     #[inline]
-    pub(super) fn list(&self, v: u32) -> &[u64] {
+    pub(super) fn list(&self, v: u32) -> &[u32] {
         &self.slots[self.start[v as usize] as usize..self.start[v as usize + 1] as usize]
     }
 
     /// Vertex `v`'s outgoing half-edges in corner order, each with its destination vertex.
     #[inline]
     pub(super) fn of(&self, v: u32) -> impl Iterator<Item = (u32, u32)> + Clone + '_ {
-        self.list(v).iter().map(|&s| unpack(s))
+        self.list(v)
+            .iter()
+            .map(|&d| (d, self.cv[self.loops.next(d as usize) as usize]))
     }
 }
 
-/// A half-edge and its destination from a slot.
-#[inline]
-pub(super) fn unpack(s: u64) -> (u32, u32) {
-    (s as u32, (s >> 32) as u32)
-}
-
 /// The slots the runs write at interleaved places.
-struct Slots(*mut u64);
+struct Slots(*mut u32);
 // SAFETY: the runs write disjoint slots and nothing reads them until every run has finished.
 unsafe impl Sync for Slots {}

@@ -138,14 +138,8 @@ fn busy_vertices_pair_and_walk_their_fans() {
     let t = Topology::build(&m).unwrap();
     assert!(t.fans_checked);
     t.require_closed(&m).unwrap();
-    let outgoing = Outgoing::new(m.num_vertices(), &m.corner_verts, &t.next);
-    let serial = serial_twins(
-        &m.corner_verts,
-        &t.next,
-        &t.corner_face,
-        &outgoing,
-        m.num_corners(),
-    );
+    let outgoing = Outgoing::new(m.num_vertices(), &m.corner_verts, t.loops());
+    let serial = serial_twins(&m.corner_verts, t.loops(), &outgoing, m.num_corners());
     assert_eq!(serial.unwrap(), t.twin);
     // The second cone below, sharing the tip (vertex 0).
     let (q, lower) = cone(DVec3::ZERO, -1.0, true, 0);
@@ -189,15 +183,15 @@ fn twins_found_in_parallel_are_the_serial_ones() {
         let (nv, nc) = (mesh.num_vertices(), mesh.num_corners());
         let mut out: Vec<Vec<(u32, u32)>> = vec![Vec::new(); nv];
         for c in 0..nc {
-            out[cv[c] as usize].push((c as u32, cv[t.next[c] as usize]));
+            out[cv[c] as usize].push((c as u32, cv[t.next(c) as usize]));
         }
         // The counting sort gives these lists however the corners are cut into runs.
         for runs in [1, 2, 3, 7] {
-            let outgoing = Outgoing::in_runs(nv, cv, &t.next, runs);
+            let outgoing = Outgoing::in_runs(nv, cv, t.loops(), runs);
             for (v, list) in out.iter().enumerate() {
                 assert!(outgoing.of(v as u32).eq(list.iter().copied()), "vertex {v}");
             }
-            let serial = serial_twins(cv, &t.next, &t.corner_face, &outgoing, nc);
+            let serial = serial_twins(cv, t.loops(), &outgoing, nc);
             assert_eq!(serial.unwrap(), t.twin);
             // The ring starts picked while pairing are the ones a pass of their own picks.
             assert_eq!(ring_starts(&t.twin, &outgoing, nv), t.vert_corner);
@@ -265,9 +259,7 @@ fn the_build_and_the_splits_are_the_same_on_any_number_of_threads() {
     for (m, scheme) in cases {
         let (a, fa, ra) = on(1, m, scheme);
         let (b, fb, rb) = on(3, m, scheme);
-        assert_eq!(a.corner_face, b.corner_face);
-        assert_eq!(a.next, b.next);
-        assert_eq!(a.prev, b.prev);
+        assert!(a.loops().same(b.loops(), a.num_corners()));
         assert_eq!(a.twin, b.twin);
         assert_eq!(a.corner_edge, b.corner_edge);
         assert_eq!(a.edge_corner, b.edge_corner);
@@ -279,10 +271,10 @@ fn the_build_and_the_splits_are_the_same_on_any_number_of_threads() {
             for l in m.face_loops(f) {
                 let r = m.loop_corners(l);
                 for c in r.clone() {
-                    assert_eq!(a.corner_face[c], f as u32);
+                    assert_eq!(a.corner_face(c), f as u32);
                     let n = if c + 1 == r.end { r.start } else { c + 1 };
-                    assert_eq!(a.next[c], n as u32);
-                    assert_eq!(a.prev[n], c as u32);
+                    assert_eq!(a.next(c), n as u32);
+                    assert_eq!(a.prev(n), c as u32);
                 }
             }
         }
