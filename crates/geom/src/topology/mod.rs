@@ -117,46 +117,41 @@ impl Topology {
             });
         }
 
-        // The faces, on every core in chunks: those that need the full check (not a plain
-        // triangle or quad of distinct in-range vertices) are checked after, in order, so the
-        // first bad face is named as one pass would name it; and whether every face is one
-        // loop of the same three or four corners (then the loops are arithmetic).
+        // The faces that need the full check (not a plain triangle or quad of distinct
+        // in-range vertices) are checked after the parallel look, in order, so the first bad
+        // face is named as one pass would name it. A mesh of one-loop faces of three or four
+        // corners (then the loops are arithmetic) is told by its offsets alone.
         let (first_faces, bounds) = crate::parallel::face_chunks(mesh);
-        let chunks: Vec<(Vec<u32>, Option<usize>)> = (0..first_faces.len() - 1)
-            .into_par_iter()
-            .map(|i| {
-                let mut flagged = Vec::new();
-                let mut uniform = None;
-                let mut mixed = false;
-                for f in first_faces[i]..first_faces[i + 1] {
-                    let loops = mesh.face_loops(f);
-                    let r = mesh.face_corners(f);
-                    let vs = &mesh.corner_verts[r.clone()];
-                    let small = loops.len() == 1 && (3..=4).contains(&vs.len());
-                    let ok = small
-                        && vs.iter().all(|&v| (v as usize) < nv)
-                        && vs[0] != vs[1]
-                        && vs[0] != vs[2]
-                        && vs[1] != vs[2]
-                        && (vs.len() == 3 || (vs[3] != vs[0] && vs[3] != vs[1] && vs[3] != vs[2]));
-                    if !ok {
-                        flagged.push(f as u32);
+        let (uniform, flagged) = match uniform_layout(mesh) {
+            // Every face one loop of k corners, k = 3 or 4: only the corners are looked at;
+            // the first bad face, if any, gets the full check below, which names it.
+            Some(k) => {
+                let cv = &mesh.corner_verts;
+                let bad = |vs: &[u32]| match *vs {
+                    [a, b, c] => a.max(b).max(c) as usize >= nv || a == b || a == c || b == c,
+                    [a, b, c, d] => {
+                        a.max(b).max(c).max(d) as usize >= nv
+                            || a == b
+                            || a == c
+                            || a == d
+                            || b == c
+                            || b == d
+                            || c == d
                     }
-                    let k = vs.len();
-                    mixed |= !small || r.start != k * f || uniform.is_some_and(|u| u != k);
-                    uniform = Some(k);
-                }
-                (flagged, if mixed { None } else { uniform })
-            })
-            .collect();
-        let uniform = chunks[0]
-            .1
-            .filter(|&k| chunks.iter().all(|c| c.1 == Some(k)));
-        let flagged = chunks.iter().flat_map(|c| &c.0);
+                    _ => true,
+                };
+                let sound = cv
+                    .par_chunks(k << 12)
+                    .all(|chunk| !chunk.chunks_exact(k).any(bad));
+                let first = (!sound).then(|| cv.chunks_exact(k).position(bad)).flatten();
+                (Some(k), first.map(|f| f as u32).into_iter().collect())
+            }
+            None => (None, general_faces(mesh, &first_faces)),
+        };
         // Per-vertex stamp of the last face that used it: detects a vertex repeated in a
         // face with more than four corners (smaller ones compare their corners directly).
         let mut stamp = Vec::new();
-        for &f in flagged {
+        for &f in &flagged {
             if mesh.face_loops(f as usize).is_empty() {
                 return Err(MeshError::EmptyFace { face: f });
             }
@@ -166,11 +161,9 @@ impl Topology {
             check_face(mesh, f as usize, &mut stamp)?;
         }
         drop(stamp);
-        drop(chunks);
         let loops = Loops::of(mesh, uniform, &first_faces, &bounds);
 
-        // Outgoing half-edges per vertex (CSR), each stored with its destination vertex so
-        // that the twin search reads one contiguous run.
+        // Outgoing half-edges per vertex (CSR).
         let cv = &mesh.corner_verts;
         let outgoing = Outgoing::new(nv, cv, &loops);
 
@@ -492,4 +485,50 @@ fn serial_twins(
         }
     }
     Ok(twin)
+}
+
+/// `Some(k)` when every face of `mesh` is one loop of k = 3 or 4 corners, laid out in order
+/// (face f owns loop f, loop l corners k·l … k·l + k − 1): a test of the offsets alone, on
+/// every core.
+fn uniform_layout(mesh: &PolyMesh) -> Option<usize> {
+    let (nf, nc) = (mesh.num_faces(), mesh.num_corners());
+    let k = nc / nf.max(1);
+    if !(3..=4).contains(&k) || k * nf != nc || mesh.loop_starts.len() != nf + 1 {
+        return None;
+    }
+    let arithmetic = |a: &[u32], step: usize| {
+        a.par_chunks(1 << 16).enumerate().all(|(i, chunk)| {
+            let first = i << 16;
+            (first..).zip(chunk).all(|(j, &x)| x as usize == step * j)
+        })
+    };
+    (arithmetic(&mesh.face_starts, 1) && arithmetic(&mesh.loop_starts, k)).then_some(k)
+}
+
+/// The faces that need the full check (not a plain triangle or quad of distinct in-range
+/// vertices), in order, found on every core in chunks of faces.
+fn general_faces(mesh: &PolyMesh, first_faces: &[usize]) -> Vec<u32> {
+    let nv = mesh.num_vertices();
+    let chunks: Vec<Vec<u32>> = (0..first_faces.len() - 1)
+        .into_par_iter()
+        .map(|i| {
+            let mut flagged = Vec::new();
+            for f in first_faces[i]..first_faces[i + 1] {
+                let loops = mesh.face_loops(f);
+                let vs = &mesh.corner_verts[mesh.face_corners(f)];
+                let small = loops.len() == 1 && (3..=4).contains(&vs.len());
+                let ok = small
+                    && vs.iter().all(|&v| (v as usize) < nv)
+                    && vs[0] != vs[1]
+                    && vs[0] != vs[2]
+                    && vs[1] != vs[2]
+                    && (vs.len() == 3 || (vs[3] != vs[0] && vs[3] != vs[1] && vs[3] != vs[2]));
+                if !ok {
+                    flagged.push(f as u32);
+                }
+            }
+            flagged
+        })
+        .collect();
+    chunks.concat()
 }

@@ -344,3 +344,38 @@ fn find_edge_finds_what_the_ring_lists() {
         }
     }
 }
+
+/// A mesh of quads only, or of triangles only, is checked by its corners alone; the first
+/// bad face is named as on any other mesh.
+#[test]
+fn uniform_meshes_name_their_first_bad_face() {
+    let quads = crate::primitives::torus(20, 10, 3.0, 1.0);
+    let tris = crate::primitives::fan_triangulated(&quads);
+    for (m, k) in [(quads, 4), (tris, 3)] {
+        assert_eq!(uniform_layout(&m), Some(k));
+        let t = Topology::build(&m).unwrap();
+        assert!(matches!(t.loops(), Loops::Quads | Loops::Triangles));
+        assert!(t.loops().same(
+            &Loops::of(&m, None, &[0, m.num_faces()], &[0, m.num_corners()]),
+            m.num_corners()
+        ));
+        let mut bad = m.clone();
+        bad.corner_verts[k * 150 + 1] = bad.corner_verts[k * 150];
+        bad.corner_verts[k * 170] = 9999;
+        assert!(matches!(
+            Topology::build(&bad),
+            Err(MeshError::RepeatedVertex { face: 150, .. }
+                | MeshError::DegenerateLoop { face: 150, .. })
+        ));
+        let mut bad = m.clone();
+        bad.corner_verts[k * 170 + 2] = 9999;
+        assert!(matches!(
+            Topology::build(&bad),
+            Err(MeshError::IndexOutOfRange {
+                face: 170,
+                index: 9999,
+                ..
+            })
+        ));
+    }
+}
