@@ -12,13 +12,16 @@ use crate::error::OverBudget;
 use crate::geometry::signed_volume;
 use crate::memory;
 use crate::mesh::PolyMesh;
-use crate::primal::refine_primal_carrying;
+use crate::primal::{refine_primal_carrying, repoint};
 use crate::refine::Provenance;
 use crate::rules::Overlap;
 use crate::rules::{CombinationState, CornerRule};
 use crate::scheme::Scheme;
 use crate::step::{StepError, StepOptions, StepReport, biquadratic_step_carrying};
 use crate::tags::SubdivTags;
+use crate::topology::Topology;
+use glam::DVec3;
+use std::sync::Arc;
 use thiserror::Error;
 
 /// One computed level.
@@ -116,6 +119,20 @@ pub struct Pipeline {
     levels: Vec<Level>,
     pub options: StepOptions,
     pub keep: Keep,
+    /// The topology of level k, kept where step k is primal and every level is kept
+    /// ([`Keep::All`], the app): what [`Pipeline::moved`] hands on.
+    topologies: Vec<Option<Arc<Topology>>>,
+    /// For a pipeline made by [`Pipeline::moved`]: for the first primal steps, the
+    /// topology of level k and the level k + 1 computed before, whose faces, marks and tags
+    /// step k keeps, evaluating only the points again.
+    reuse: Vec<Option<Reused>>,
+}
+
+/// A level's topology and the level a primal step made from it, for moved points.
+#[derive(Debug, Clone)]
+struct Reused {
+    topo: Arc<Topology>,
+    child: Level,
 }
 
 impl Pipeline {
@@ -142,6 +159,8 @@ impl Pipeline {
             }],
             options: StepOptions::default(),
             keep: Keep::All,
+            topologies: Vec::new(),
+            reuse: Vec::new(),
         }
     }
 
@@ -172,7 +191,51 @@ impl Pipeline {
             levels: self.levels[..keep].to_vec(),
             options: self.options,
             keep: self.keep,
+            topologies: self.topologies.iter().take(keep).cloned().collect(),
+            reuse: self.reuse.iter().take(same).cloned().collect(),
         }
+    }
+
+    /// The same steps on the input with its vertices at `positions` (the same faces, marks
+    /// and tags: a cage vertex dragged). Its levels are computed again, but each primal step
+    /// from the input on (up to the first step of another family, whose faces may depend on
+    /// where the points lie) keeps the faces, marks, tags and topology it found here and
+    /// evaluates only the points ([`crate::primal::repoint`]): the same levels, bit for bit,
+    /// as a fresh pipeline gives.
+    pub fn moved(&self, positions: Vec<DVec3>) -> Pipeline {
+        let mut input = self.levels[0].clone();
+        assert_eq!(
+            positions.len(),
+            input.mesh.positions.len(),
+            "moved points keep the vertex count"
+        );
+        input.mesh.positions = positions;
+        let reuse = (0..self.steps.len())
+            .map_while(|k| {
+                let topo = self.topologies.get(k)?.as_ref()?;
+                let child = self.levels.get(k + 1)?;
+                matches!(self.steps[k], Scheme::Primal(_)).then(|| {
+                    Some(Reused {
+                        topo: topo.clone(),
+                        child: child.clone(),
+                    })
+                })
+            })
+            .collect();
+        Pipeline {
+            steps: self.steps.clone(),
+            levels: vec![input],
+            options: self.options,
+            keep: self.keep,
+            topologies: Vec::new(),
+            reuse,
+        }
+    }
+
+    /// How many steps, from the first, a [`Pipeline::moved`] pipeline will compute by
+    /// evaluating points only (those not computed yet).
+    pub fn reused_steps(&self) -> usize {
+        self.reuse.iter().filter(|r| r.is_some()).count()
     }
 
     /// Whether level `k` stays once the level after it exists ([`Keep`]).
@@ -181,8 +244,13 @@ impl Pipeline {
         self.keep == Keep::All || k == 0 || (rounds(k) && !rounds(k - 1))
     }
 
-    /// Releases every level [`Keep`] does not keep (after switching to [`Keep::Needed`]).
+    /// Releases every level [`Keep`] does not keep (after switching to [`Keep::Needed`]),
+    /// and the topologies kept for moved points.
     pub fn release_unneeded(&mut self) {
+        if self.keep == Keep::Needed {
+            self.topologies.clear();
+            self.reuse.clear();
+        }
         for k in 0..self.levels.len().saturating_sub(1) {
             if !self.kept_after_next(k) {
                 self.levels[k].release();
@@ -195,9 +263,22 @@ impl Pipeline {
         k + 1 < self.levels.len() && !self.kept_after_next(k)
     }
 
-    /// Bytes the levels kept now hold ([`memory::level_bytes`]).
+    /// Bytes the levels kept now hold ([`memory::level_bytes`]), with the topologies kept
+    /// for moved points and the levels a moved pipeline reuses.
     pub fn kept_bytes(&self) -> u64 {
-        self.levels.iter().map(memory::level_bytes).sum()
+        self.levels.iter().map(memory::level_bytes).sum::<u64>()
+            + self
+                .topologies
+                .iter()
+                .flatten()
+                .map(|t| t.heap_bytes())
+                .sum::<u64>()
+            + self
+                .reuse
+                .iter()
+                .flatten()
+                .map(|r| r.topo.heap_bytes() + memory::level_bytes(&r.child))
+                .sum::<u64>()
     }
 
     /// The most memory computing the remaining steps will hold at once, in bytes, estimated
@@ -224,6 +305,9 @@ impl Pipeline {
             let next = counts.after(s);
             let next_bytes = next.level_bytes(self.provenance(s));
             kept += next_bytes;
+            if self.keep == Keep::All && matches!(s, Scheme::Primal(_)) {
+                kept += counts.topology_bytes();
+            }
             if !self.kept_after_next(k) {
                 kept -= cur_bytes.min(kept);
             }
@@ -357,36 +441,63 @@ impl Pipeline {
                     }
                 }
                 Scheme::Primal(p) => {
-                    let provenance = self.provenance(&scheme);
-                    let (out, topo) = refine_primal_carrying(
-                        &prev.mesh,
-                        &prev.edge_attrs,
-                        &prev.tags,
-                        p,
-                        budget,
-                        provenance,
-                        carried.take(),
-                        k + 1 < upto && self.carries(k),
-                    )
-                    .map_err(|e| err(e.into()))?;
-                    carried = topo;
-                    let r = &out.report;
-                    let report = StepReport {
-                        vertices: r.vertices,
-                        edges: r.edges,
-                        faces: r.faces,
-                        volume: signed_volume(&out.mesh),
-                        millis: r.millis,
-                        ..StepReport::default()
+                    let started = std::time::Instant::now();
+                    let keep_topology = self.keep == Keep::All;
+                    let (level, topo) = match self.reuse.get_mut(k).and_then(Option::take) {
+                        // The faces, marks and topology found before; the points again.
+                        Some(Reused { topo, mut child }) => {
+                            let prev = &self.levels[k];
+                            child.mesh.positions =
+                                repoint(&prev.mesh, &topo, &prev.edge_attrs, &prev.tags, p)
+                                    .map_err(|e| err(e.into()))?;
+                            if let Some(r) = child.report.as_mut() {
+                                r.volume = signed_volume(&child.mesh);
+                                r.millis = started.elapsed().as_secs_f64() * 1e3;
+                            }
+                            carried = None;
+                            (child, Some(topo))
+                        }
+                        None => {
+                            let prev = &self.levels[k];
+                            let provenance = self.provenance(&scheme);
+                            let (out, child_topo, topo) = refine_primal_carrying(
+                                &prev.mesh,
+                                &prev.edge_attrs,
+                                &prev.tags,
+                                p,
+                                budget,
+                                provenance,
+                                carried.take(),
+                                k + 1 < upto && self.carries(k),
+                                keep_topology,
+                            )
+                            .map_err(|e| err(e.into()))?;
+                            carried = child_topo;
+                            let r = &out.report;
+                            let report = StepReport {
+                                vertices: r.vertices,
+                                edges: r.edges,
+                                faces: r.faces,
+                                volume: signed_volume(&out.mesh),
+                                millis: r.millis,
+                                ..StepReport::default()
+                            };
+                            let level = Level {
+                                mesh: out.mesh,
+                                edge_attrs: out.edge_attrs,
+                                tags: out.tags,
+                                provenance: out.provenance,
+                                combination: None,
+                                report: Some(report),
+                            };
+                            (level, topo.map(Arc::new))
+                        }
                     };
-                    Level {
-                        mesh: out.mesh,
-                        edge_attrs: out.edge_attrs,
-                        tags: out.tags,
-                        provenance: out.provenance,
-                        combination: None,
-                        report: Some(report),
+                    if keep_topology {
+                        self.topologies.resize(k + 1, None);
+                        self.topologies[k] = topo;
                     }
+                    level
                 }
             };
             self.levels.push(level);

@@ -279,3 +279,87 @@ fn a_pipeline_of_primal_steps_gives_the_single_steps_levels() {
         }
     }
 }
+
+/// A dragged cage vertex: the moved pipeline keeps each primal step's faces, marks and
+/// topology and evaluates only the points, and gives the levels of a fresh pipeline bit for
+/// bit — creases, corners, a hole and a boundary included, with Loop, and with a rounding
+/// step after the primal ones (computed afresh: its faces depend on the points); moved
+/// again, from the moved one, too. A moved point that is not finite is named.
+#[test]
+fn moved_points_give_a_fresh_pipelines_levels() {
+    use prism_geom::rules::CornerRule;
+    use prism_geom::{Pipeline, Scheme};
+    let mut open = primitives::torus(9, 7, 3.0, 1.0);
+    open.truncate_faces(open.num_faces() - 4);
+    let mut attrs = EdgeAttrs::new();
+    for (a, b, s) in [(0, 1, 2.5), (1, 2, 1.0), (9, 10, 4.0)] {
+        attrs.insert(
+            EdgeKey::new(a, b),
+            EdgeAttr {
+                crease: s,
+                ..EdgeAttr::default()
+            },
+        );
+    }
+    let mut tags = SubdivTags::default();
+    tags.corners.insert(20, 1.5);
+    tags.holes.insert(30);
+    let cc = Scheme::Primal(PrimalScheme::CatmullClark);
+    let lp = Scheme::Primal(PrimalScheme::Loop);
+    let round = Scheme::Biquadratic(CornerRule::Combination { r: 0.02 });
+    let closed = primitives::tripod();
+    for (mesh, attrs, tags, steps) in [
+        (open.clone(), attrs.clone(), tags.clone(), vec![cc, cc, cc]),
+        (
+            primitives::fan_triangulated(&open),
+            attrs.clone(),
+            SubdivTags::default(),
+            vec![lp, lp],
+        ),
+        (
+            closed,
+            EdgeAttrs::new(),
+            SubdivTags::default(),
+            vec![cc, round, cc],
+        ),
+    ] {
+        let clamp = prism_geom::rules::Overlap::Clamp;
+        let mut p = Pipeline::with_tags(mesh.clone(), attrs.clone(), tags.clone(), steps.clone());
+        p.options.overlap = clamp;
+        p.compute().unwrap();
+        let mut from = p;
+        for round in 1..=2 {
+            let mut moved = mesh.positions.clone();
+            moved[3] += DVec3::new(0.01, -0.02, 0.03) * round as f64;
+            moved[7].z -= 0.015 * round as f64;
+            let mut m = from.moved(moved.clone());
+            let primal_first = steps
+                .iter()
+                .take_while(|s| matches!(s, Scheme::Primal(_)))
+                .count();
+            assert_eq!(m.reused_steps(), primal_first);
+            m.compute().unwrap();
+            assert_eq!(m.reused_steps(), 0);
+            let mut fresh_mesh = mesh.clone();
+            fresh_mesh.positions = moved;
+            let mut fresh =
+                Pipeline::with_tags(fresh_mesh, attrs.clone(), tags.clone(), steps.clone());
+            fresh.options.overlap = clamp;
+            fresh.compute().unwrap();
+            for (k, (a, b)) in m.levels().iter().zip(fresh.levels()).enumerate() {
+                assert_eq!(a.mesh, b.mesh, "level {k}, move {round}, {steps:?}");
+                assert_eq!(a.edge_attrs, b.edge_attrs, "level {k}");
+                assert_eq!(a.tags, b.tags, "level {k}");
+                let volume = |l: &prism_geom::Level| l.report.as_ref().map(|r| r.volume);
+                assert_eq!(volume(a), volume(b), "level {k}");
+            }
+            from = m;
+        }
+    }
+    let mut p = Pipeline::new(primitives::tripod(), EdgeAttrs::new(), vec![cc, cc]);
+    p.compute().unwrap();
+    let mut moved = p.input().mesh.positions.clone();
+    moved[5].y = f64::NAN;
+    let err = p.moved(moved).compute().map(|_| ()).unwrap_err();
+    assert!(err.to_string().contains("vertex 5"), "{err}");
+}

@@ -134,7 +134,8 @@ pub fn run(a: BenchArgs) -> Result<(), CliError> {
 }
 
 /// `--edit`: vertex 0 moved by a thousandth of the solid's size (alternately up and back),
-/// then the levels and the last level's scene, as the app's view computes them.
+/// then the levels and the last level's scene, as the app's view computes them: the first
+/// run from scratch, every later one from the run before ([`Pipeline::moved`]).
 fn edit(
     doc: prism_geom::Level,
     steps: Vec<Scheme>,
@@ -147,19 +148,28 @@ fn edit(
     let (mut compute, mut scene, mut total) = (Vec::new(), Vec::new(), Vec::new());
     let mut faces = 0;
     let opts = prism_viewport::SceneOptions::default();
+    let mut last: Option<Pipeline> = None;
     for run in 1..=runs {
         if let Some(p) = mesh.positions.first_mut() {
             p.z += if run % 2 == 1 { nudge } else { -nudge };
         }
         let t = Instant::now();
-        let mut p = Pipeline::with_tags(
-            mesh.clone(),
-            doc.edge_attrs.clone(),
-            doc.tags.clone(),
-            steps.clone(),
-        );
-        p.options.memory_budget = budget;
-        p.options.overlap = prism_geom::rules::Overlap::Clamp;
+        // As the app does: from the pipeline before, keeping what the move leaves as it was
+        // (the primal steps' faces and topology), or afresh the first time.
+        let mut p = match last.take() {
+            Some(before) => Pipeline::moved(&before, mesh.positions.clone()),
+            None => {
+                let mut p = Pipeline::with_tags(
+                    mesh.clone(),
+                    doc.edge_attrs.clone(),
+                    doc.tags.clone(),
+                    steps.clone(),
+                );
+                p.options.memory_budget = budget;
+                p.options.overlap = prism_geom::rules::Overlap::Clamp;
+                p
+            }
+        };
         let result = p.compute().map(|_| ());
         let computed = t.elapsed().as_secs_f64() * 1e3;
         result.map_err(CliError::input)?;
@@ -175,6 +185,7 @@ fn edit(
         compute.push(computed);
         scene.push(all - computed);
         total.push(all);
+        last = Some(p);
     }
     let median = |v: &mut Vec<f64>| {
         v.sort_by(f64::total_cmp);

@@ -259,6 +259,34 @@ fn moving_a_control_vertex_recomputes_every_level_and_undoes_in_one_step() {
     assert!(a.model.views[0].pipeline.levels()[2].mesh == old);
 }
 
+/// Dragging a cage vertex under primal steps evaluates the points again on the faces and
+/// topology found before (`Pipeline::moved`): every level equals a fresh pipeline's.
+#[test]
+fn a_drag_under_primal_steps_gives_a_fresh_pipelines_levels() {
+    let mut a = app();
+    let steps = parse_pipeline("catmull-clark,catmull-clark,combination:r=0.05").unwrap();
+    a.run(Edit::SetPipeline {
+        view: 0,
+        steps: steps.clone(),
+    });
+    a.wait_idle();
+    let p0 = a.doc.state().mesh.positions[4];
+    for k in 1..=3 {
+        let to = vec![(4, p0 + glam::DVec3::new(0.02, -0.01, 0.05) * k as f64)];
+        a.run(Edit::DragVertices { drag: 7, to });
+        a.wait_idle();
+    }
+    let d = a.doc.state().clone();
+    let mut fresh = prism_geom::Pipeline::with_tags(d.mesh, d.edge_attrs, d.tags, steps);
+    fresh.options = a.model.views[0].pipeline.options;
+    fresh.compute().unwrap();
+    let shown = a.model.views[0].pipeline.levels();
+    assert_eq!(shown.len(), 4);
+    for (k, (x, y)) in shown.iter().zip(fresh.levels()).enumerate() {
+        assert!(x.mesh == y.mesh, "level {k}");
+    }
+}
+
 #[test]
 fn a_drag_along_an_axis_moves_along_that_axis_only() {
     let mut a = app();

@@ -180,13 +180,16 @@ pub fn refine_primal_with(
         provenance,
         None,
         false,
+        false,
     )
-    .map(|(o, _)| o)
+    .map(|(o, _, _)| o)
 }
 
 /// [`refine_primal_with`] from the parent's topology when the split before wrote it down
 /// (`known`), writing the child's down too when `child_topology` (the pipeline passes it on
-/// from one primal step to the next, as [`refine_primal_levels`] does).
+/// from one primal step to the next, as [`refine_primal_levels`] does). Returns the child,
+/// the child's topology (when asked for) and the parent's (when `keep_topology`: the app
+/// keeps it to move points without looking for the topology again, [`repoint`]).
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn refine_primal_carrying(
     mesh: &PolyMesh,
@@ -197,14 +200,57 @@ pub(crate) fn refine_primal_carrying(
     provenance: bool,
     known: Option<Topology>,
     child_topology: bool,
-) -> Result<(PrimalOutput, Option<Topology>), PrimalError> {
+    keep_topology: bool,
+) -> Result<(PrimalOutput, Option<Topology>, Option<Topology>), PrimalError> {
     let with = With {
         provenance,
         known_topology: known,
         child_topology,
+        keep_topology,
         ..With::default()
     };
-    refine(mesh, attrs, tags, scheme, memory_budget, with).map(|(o, _, t)| (o, t))
+    refine(mesh, attrs, tags, scheme, memory_budget, with).map(|r| (r.0, r.2, r.3))
+}
+
+/// The child's points of `mesh` under `scheme`, from the topology a step of the same
+/// connectivity, marks and tags found before (`topo`, [`refine_primal_carrying`]): where a
+/// designer drags a cage vertex, each level's faces, marks and topology stay, and only the
+/// points are evaluated again (OpenSubdiv's split of Far, the topology, from Osd, the
+/// evaluation). The points equal those of a full step bit for bit (tested).
+pub(crate) fn repoint(
+    mesh: &PolyMesh,
+    topo: &Topology,
+    attrs: &EdgeAttrs,
+    tags: &SubdivTags,
+    scheme: PrimalScheme,
+) -> Result<Vec<glam::DVec3>, PrimalError> {
+    if let Some(i) =
+        crate::parallel::first_where(mesh.num_vertices(), |i| !mesh.positions[i].is_finite())
+    {
+        let p = mesh.positions[i];
+        return Err(PrimalError::Mesh(MeshError::NonFinite {
+            vertex: i as u32,
+            x: p.x,
+            y: p.y,
+            z: p.z,
+        }));
+    }
+    let ring_start = |v: usize| topo.vert_corner[v];
+    let sh = sharpness::sharpness(mesh, topo, attrs, tags);
+    let child_sharpness = ChildSharpness::new(mesh, topo, &sh, tags.crease_method, &ring_start);
+    let level = points::Level {
+        mesh,
+        topo,
+        tags,
+        sh: &sh,
+        child: &child_sharpness,
+        ring_start: &ring_start,
+    };
+    Ok(points::child_points(
+        &level,
+        scheme,
+        scheme.split().numbering(mesh, topo),
+    ))
 }
 
 /// `levels` levels at once, only the last one kept. From the second level on the topology
@@ -224,9 +270,10 @@ pub fn refine_primal_levels(
         child_topology: k < levels,
         ..With::default()
     };
-    let (mut out, _, mut topo) = refine(mesh, attrs, tags, scheme, memory_budget, with(None, 1))?;
+    let (mut out, _, mut topo, _) =
+        refine(mesh, attrs, tags, scheme, memory_budget, with(None, 1))?;
     for k in 2..=levels {
-        let (o, _, t) = refine(
+        let (o, _, t, _) = refine(
             &out.mesh,
             &out.edge_attrs,
             &out.tags,
@@ -255,7 +302,7 @@ pub fn refine_primal_ordered(
         provenance: true,
         ..With::default()
     };
-    refine(mesh, attrs, tags, scheme, memory_budget, with).map(|(o, r, _)| (o, r.expect("tracked")))
+    refine(mesh, attrs, tags, scheme, memory_budget, with).map(|r| (r.0, r.1.expect("tracked")))
 }
 
 /// What a caller of [`refine`] wants besides the child.
@@ -269,6 +316,8 @@ struct With<'a> {
     child_topology: bool,
     /// Record the child's [`Provenance`].
     provenance: bool,
+    /// Return the parent's topology.
+    keep_topology: bool,
 }
 
 fn refine(
@@ -278,7 +327,7 @@ fn refine(
     scheme: PrimalScheme,
     memory_budget: u64,
     with: With,
-) -> Result<(PrimalOutput, Option<RingOrder>, Option<Topology>), PrimalError> {
+) -> Result<Refined, PrimalError> {
     let start = Instant::now();
     let order = with.order;
     let topo = match with.known_topology {
@@ -364,6 +413,7 @@ fn refine(
     };
     let child_order = order.map(|o| o.child(mesh, &topo, scheme));
     let child_topo = with.child_topology.then(|| split.topology(mesh, &topo));
+    let keep = with.keep_topology;
     let provenance = with.provenance.then(|| {
         Provenance::new(
             mesh,
@@ -383,8 +433,18 @@ fn refine(
         },
         child_order,
         child_topo,
+        keep.then_some(topo),
     ))
 }
+
+/// What [`refine`] gives: the child, OpenSubdiv's ring order of the child (when tracked),
+/// the child's topology (when written down) and the parent's (when kept).
+type Refined = (
+    PrimalOutput,
+    Option<RingOrder>,
+    Option<Topology>,
+    Option<Topology>,
+);
 
 #[cfg(test)]
 mod tests {

@@ -245,6 +245,19 @@ impl Topology {
         self.twin.len()
     }
 
+    /// Bytes its arrays hold.
+    pub fn heap_bytes(&self) -> u64 {
+        let listed = match &self.loops {
+            Loops::Listed(l) => l.corner_face.len() + l.next.len() + l.prev.len(),
+            Loops::Quads | Loops::Triangles => 0,
+        };
+        4 * (listed
+            + self.twin.len()
+            + self.corner_edge.len()
+            + self.edge_corner.len()
+            + self.vert_corner.len()) as u64
+    }
+
     pub fn num_edges(&self) -> usize {
         self.edge_corner.len()
     }

@@ -255,8 +255,21 @@ impl ModelTab {
             if same_input && same_options && v.pipeline.steps() == steps.as_slice() && !v.busy() {
                 continue;
             }
+            // Only vertices moved (a drag): the primal steps keep their faces and topology
+            // and evaluate the points again (Pipeline::moved).
+            let moved = !same_input
+                && same_options
+                && v.pipeline.steps() == steps.as_slice()
+                && input.edge_attrs == d.edge_attrs
+                && input.tags == d.tags
+                && input.mesh.positions.len() == d.mesh.positions.len()
+                && input.mesh.corner_verts == d.mesh.corner_verts
+                && input.mesh.loop_starts == d.mesh.loop_starts
+                && input.mesh.face_starts == d.mesh.face_starts;
             let next = if same_input && same_options {
                 v.pipeline.rebased(steps.clone())
+            } else if moved {
+                v.pipeline.moved(d.mesh.positions.clone())
             } else {
                 fresh()
             };
