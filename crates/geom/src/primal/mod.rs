@@ -30,7 +30,7 @@ use crate::mesh::PolyMesh;
 use crate::refine::{self, Numbering, PrimalSplit, Provenance};
 use crate::rules::primal::crease;
 use crate::tags::SubdivTags;
-use crate::topology::Topology;
+use crate::topology::{Loops, Topology};
 use sharpness::ChildSharpness;
 use std::time::Instant;
 use thiserror::Error;
@@ -338,7 +338,16 @@ fn refine(
             t
         }
     };
-    check_faces(mesh, scheme)?;
+    // One-loop quads pass Catmull–Clark's check and one-loop triangles either scheme's,
+    // as the loops already say.
+    let passes = match topo.loops() {
+        Loops::Triangles => true,
+        Loops::Quads => scheme.family() == PrimalScheme::CatmullClark,
+        Loops::Listed(_) => false,
+    };
+    if !passes {
+        check_faces(mesh, scheme)?;
+    }
     let split = scheme.split();
     // The child's sizes: a step that would not fit is refused before any work.
     let counts = split.counts(mesh, topo.num_edges());

@@ -301,16 +301,33 @@ pub(crate) fn uniform_faces<const W: usize>(
     let mut child = PolyMesh::new();
     child.corner_verts = by_parent.into_flattened();
     let faces = parents * W / corners as usize;
-    let starts = |step: u32| {
-        (0..faces + 1)
-            .into_par_iter()
-            .with_min_len(1 << 14)
-            .map(|i| step * i as u32)
-            .collect()
-    };
-    child.loop_starts = starts(corners);
-    child.face_starts = starts(1);
+    child.loop_starts = multiples(faces + 1, corners);
+    child.face_starts = multiples(faces + 1, 1);
     child
+}
+
+/// `[0, step, 2·step, …]`, `n` of them, written in blocks of eight past the cache on every
+/// core (the offsets of a million quads' children are 32 MB).
+fn multiples(n: usize, step: u32) -> Vec<u32> {
+    use rayon::prelude::*;
+    const LANES: usize = 8;
+    let blocks = n.div_ceil(LANES);
+    let mut v: Vec<[u32; LANES]> = Vec::with_capacity(blocks);
+    v.spare_capacity_mut()[..blocks]
+        .par_chunks_mut(1 << 12)
+        .enumerate()
+        .for_each(|(i, chunk)| {
+            for (j, slot) in chunk.iter_mut().enumerate() {
+                let first = ((i << 12) + j) * LANES;
+                crate::stream::write(slot, std::array::from_fn(|k| step * (first + k) as u32));
+            }
+            crate::stream::fence();
+        });
+    // SAFETY: the chunks cover slots 0..blocks, each written.
+    unsafe { v.set_len(blocks) };
+    let mut v = v.into_flattened();
+    v.truncate(n);
+    v
 }
 
 /// Hands edge attributes down one split: every child edge lying on an attributed parent edge

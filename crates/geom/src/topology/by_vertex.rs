@@ -102,32 +102,60 @@ pub(super) fn twins(cv: &[u32], loops: &Loops, outgoing: &Outgoing) -> Option<By
 #[inline(always)]
 fn short(list: &[u32], cv: &[u32], loops: &Loops, slots: &Slots) -> Found {
     let n = list.len();
-    let (mut to, mut from) = ([0u32; SHORT], [0u32; SHORT]);
+    // Past n, `to` holds NONE, which no vertex is: the lookups below compare all 16 lanes at
+    // once.
+    let (mut to, mut from) = ([NONE; SHORT], [0u32; SHORT]);
     for (i, &d) in list.iter().enumerate() {
         to[i] = cv[loops.next(d as usize) as usize];
         from[i] = cv[loops.prev(d as usize) as usize];
     }
-    let (to, from) = (&to[..n], &from[..n]);
-    if (1..n).any(|i| to[..i].contains(&to[i]) || from[..i].contains(&from[i])) {
-        return None;
-    }
+    let from = &from[..n];
+    // Pair each incoming half-edge (from[i] → a) with the outgoing one back (a → from[i]).
+    // A destination found twice, or an outgoing half-edge taken twice, is an edge used three
+    // times or run twice the same way; so is an origin or a destination twice among the
+    // half-edges left without a partner, which the pairing does not see.
     let mut pair = [NONE; SHORT];
-    let mut paired = 0u32;
+    let (mut paired, mut open) = (0u32, 0u32);
     for i in 0..n {
-        let t = match to.iter().position(|&b| b == from[i]) {
-            Some(j) => {
-                pair[i] = j as u32;
-                paired |= 1 << j;
-                list[j]
+        let hits = lanes_equal(&to, from[i]);
+        let t = if hits == 0 {
+            open |= 1 << i;
+            NONE
+        } else {
+            if hits & (hits - 1) != 0 || paired & hits != 0 {
+                return None;
             }
-            None => NONE,
+            paired |= hits;
+            let j = hits.trailing_zeros() as usize;
+            pair[i] = j as u32;
+            list[j]
         };
         slots.write(loops.prev(list[i] as usize), t);
+    }
+    let all = (1u32 << n) - 1; // n ≤ 16
+    if open | (all & !paired) != 0 {
+        let twice = |vs: &[u32], mask: u32| {
+            (0..n)
+                .any(|i| mask >> i & 1 == 1 && (0..i).any(|j| mask >> j & 1 == 1 && vs[j] == vs[i]))
+        };
+        if twice(from, open) || twice(&to[..n], all & !paired) {
+            return None;
+        }
     }
     // The first outgoing half-edge without a twin, else the first.
     let first = (!paired).trailing_zeros() as usize;
     let first = if first < n { first } else { 0 };
     Some((list[first], fan(&pair[..n], first) == n))
+}
+
+/// Bit j set where `to[j] == x`.
+#[inline(always)]
+fn lanes_equal(to: &[u32; SHORT], x: u32) -> u32 {
+    let mut hits = 0u32;
+    for (j, &b) in to.iter().enumerate() {
+        hits |= u32::from(b == x) << j;
+    }
+    hits
 }
 
 /// A vertex of more than [`SHORT`] half-edges: lookups in a sorted copy.
