@@ -46,3 +46,23 @@ pub(crate) fn fence() {
         std::arch::x86_64::_mm_sfence()
     };
 }
+
+/// `[f(0), …, f(n − 1)]`, written past the cache on rayon's pool in chunks of 4,096, each
+/// value once where it belongs (no zeroed buffer first), each chunk fenced.
+pub(crate) fn collect<T: Copy + Send>(n: usize, f: impl Fn(usize) -> T + Sync) -> Vec<T> {
+    use rayon::prelude::*;
+    const CHUNK: usize = 1 << 12;
+    let mut v: Vec<T> = Vec::with_capacity(n);
+    v.spare_capacity_mut()[..n]
+        .par_chunks_mut(CHUNK)
+        .enumerate()
+        .for_each(|(i, chunk)| {
+            for (j, slot) in chunk.iter_mut().enumerate() {
+                write(slot, f(i * CHUNK + j));
+            }
+            fence();
+        });
+    // SAFETY: the chunks cover slots 0..n, and each was written.
+    unsafe { v.set_len(n) };
+    v
+}

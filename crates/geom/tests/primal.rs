@@ -236,9 +236,8 @@ proptest! {
 /// written-down topology on to the next primal step instead of searching the child again:
 /// every level is the one single steps give, bit for bit, on an open mesh with creases and
 /// from Loop on to Catmull–Clark.
-#[test]
-fn a_pipeline_of_primal_steps_gives_the_single_steps_levels() {
-    use prism_geom::{Pipeline, Scheme};
+/// A 9 × 7 torus with four faces cut away (a boundary) and three semi-sharp creases.
+fn open_torus_with_creases() -> (PolyMesh, EdgeAttrs) {
     let mut open = primitives::torus(9, 7, 3.0, 1.0);
     open.truncate_faces(open.num_faces() - 4);
     let mut attrs = EdgeAttrs::new();
@@ -251,6 +250,13 @@ fn a_pipeline_of_primal_steps_gives_the_single_steps_levels() {
             },
         );
     }
+    (open, attrs)
+}
+
+#[test]
+fn a_pipeline_of_primal_steps_gives_the_single_steps_levels() {
+    use prism_geom::{Pipeline, Scheme};
+    let (open, attrs) = open_torus_with_creases();
     let cc = Scheme::Primal(PrimalScheme::CatmullClark);
     let lp = Scheme::Primal(PrimalScheme::Loop);
     for (mesh, steps) in [
@@ -289,18 +295,7 @@ fn a_pipeline_of_primal_steps_gives_the_single_steps_levels() {
 fn moved_points_give_a_fresh_pipelines_levels() {
     use prism_geom::rules::CornerRule;
     use prism_geom::{Pipeline, Scheme};
-    let mut open = primitives::torus(9, 7, 3.0, 1.0);
-    open.truncate_faces(open.num_faces() - 4);
-    let mut attrs = EdgeAttrs::new();
-    for (a, b, s) in [(0, 1, 2.5), (1, 2, 1.0), (9, 10, 4.0)] {
-        attrs.insert(
-            EdgeKey::new(a, b),
-            EdgeAttr {
-                crease: s,
-                ..EdgeAttr::default()
-            },
-        );
-    }
+    let (open, attrs) = open_torus_with_creases();
     let mut tags = SubdivTags::default();
     tags.corners.insert(20, 1.5);
     tags.holes.insert(30);

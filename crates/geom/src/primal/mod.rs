@@ -224,17 +224,7 @@ pub(crate) fn repoint(
     tags: &SubdivTags,
     scheme: PrimalScheme,
 ) -> Result<Vec<glam::DVec3>, PrimalError> {
-    if let Some(i) =
-        crate::parallel::first_where(mesh.num_vertices(), |i| !mesh.positions[i].is_finite())
-    {
-        let p = mesh.positions[i];
-        return Err(PrimalError::Mesh(MeshError::NonFinite {
-            vertex: i as u32,
-            x: p.x,
-            y: p.y,
-            z: p.z,
-        }));
-    }
+    crate::topology::check_finite(mesh)?;
     let ring_start = |v: usize| topo.vert_corner[v];
     let sh = sharpness::sharpness(mesh, topo, attrs, tags);
     let child_sharpness = ChildSharpness::new(mesh, topo, &sh, tags.crease_method, &ring_start);

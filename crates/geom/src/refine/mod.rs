@@ -282,22 +282,9 @@ pub(crate) fn uniform_faces<const W: usize>(
     corners: u32,
     fill: impl Fn(usize) -> [u32; W] + Sync,
 ) -> PolyMesh {
-    use rayon::prelude::*;
-    const BLOCK: usize = 1 << 12;
-    let mut by_parent: Vec<[u32; W]> = Vec::with_capacity(parents);
     // Every slot is written once, where it belongs, with no zeroed buffer first (64 MB for
     // a million quads' children).
-    by_parent.spare_capacity_mut()[..parents]
-        .par_chunks_mut(BLOCK)
-        .enumerate()
-        .for_each(|(i, block)| {
-            for (j, slot) in block.iter_mut().enumerate() {
-                crate::stream::write(slot, fill(i * BLOCK + j));
-            }
-            crate::stream::fence();
-        });
-    // SAFETY: the chunks above cover slots 0..parents, and each was written.
-    unsafe { by_parent.set_len(parents) };
+    let by_parent = crate::stream::collect(parents, fill);
     let mut child = PolyMesh::new();
     child.corner_verts = by_parent.into_flattened();
     let faces = parents * W / corners as usize;
@@ -309,22 +296,10 @@ pub(crate) fn uniform_faces<const W: usize>(
 /// `[0, step, 2·step, …]`, `n` of them, written in blocks of eight past the cache on every
 /// core (the offsets of a million quads' children are 32 MB).
 fn multiples(n: usize, step: u32) -> Vec<u32> {
-    use rayon::prelude::*;
     const LANES: usize = 8;
-    let blocks = n.div_ceil(LANES);
-    let mut v: Vec<[u32; LANES]> = Vec::with_capacity(blocks);
-    v.spare_capacity_mut()[..blocks]
-        .par_chunks_mut(1 << 12)
-        .enumerate()
-        .for_each(|(i, chunk)| {
-            for (j, slot) in chunk.iter_mut().enumerate() {
-                let first = ((i << 12) + j) * LANES;
-                crate::stream::write(slot, std::array::from_fn(|k| step * (first + k) as u32));
-            }
-            crate::stream::fence();
-        });
-    // SAFETY: the chunks cover slots 0..blocks, each written.
-    unsafe { v.set_len(blocks) };
+    let v = crate::stream::collect(n.div_ceil(LANES), |b| {
+        std::array::from_fn::<u32, LANES, _>(|k| step * (b * LANES + k) as u32)
+    });
     let mut v = v.into_flattened();
     v.truncate(n);
     v

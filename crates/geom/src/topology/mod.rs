@@ -107,15 +107,7 @@ impl Topology {
         if nf == 0 {
             return Err(MeshError::NoFaces);
         }
-        if let Some(i) = first_where(nv, |i| !mesh.positions[i].is_finite()) {
-            let p = mesh.positions[i];
-            return Err(MeshError::NonFinite {
-                vertex: i as u32,
-                x: p.x,
-                y: p.y,
-                z: p.z,
-            });
-        }
+        check_finite(mesh)?;
 
         // The faces that need the full check (not a plain triangle or quad of distinct
         // in-range vertices) are checked after the parallel look, in order, so the first bad
@@ -127,19 +119,7 @@ impl Topology {
             // the first bad face, if any, gets the full check below, which names it.
             Some(k) => {
                 let cv = &mesh.corner_verts;
-                let bad = |vs: &[u32]| match *vs {
-                    [a, b, c] => a.max(b).max(c) as usize >= nv || a == b || a == c || b == c,
-                    [a, b, c, d] => {
-                        a.max(b).max(c).max(d) as usize >= nv
-                            || a == b
-                            || a == c
-                            || a == d
-                            || b == c
-                            || b == d
-                            || c == d
-                    }
-                    _ => true,
-                };
+                let bad = |vs: &[u32]| needs_full_check(vs, nv);
                 let sound = cv
                     .par_chunks(k << 12)
                     .all(|chunk| !chunk.chunks_exact(k).any(bad));
@@ -518,6 +498,42 @@ fn uniform_layout(mesh: &PolyMesh) -> Option<usize> {
     (arithmetic(&mesh.face_starts, 1) && arithmetic(&mesh.loop_starts, k)).then_some(k)
 }
 
+/// Whether the corners `vs` of a one-loop face are anything but a plain triangle or quad of
+/// distinct vertices below `nv`: such a face gets [`check_face`], which names what is wrong.
+#[inline]
+fn needs_full_check(vs: &[u32], nv: usize) -> bool {
+    match *vs {
+        [a, b, c] => a.max(b).max(c) as usize >= nv || a == b || a == c || b == c,
+        [a, b, c, d] => {
+            a.max(b).max(c).max(d) as usize >= nv
+                || a == b
+                || a == c
+                || a == d
+                || b == c
+                || b == d
+                || c == d
+        }
+        _ => true,
+    }
+}
+
+/// Refuses a mesh with a coordinate that is not finite, naming the first such vertex (on
+/// every core; the one place both the topology build and a repointed step look).
+pub(crate) fn check_finite(mesh: &PolyMesh) -> Result<(), MeshError> {
+    match first_where(mesh.num_vertices(), |i| !mesh.positions[i].is_finite()) {
+        Some(i) => {
+            let p = mesh.positions[i];
+            Err(MeshError::NonFinite {
+                vertex: i as u32,
+                x: p.x,
+                y: p.y,
+                z: p.z,
+            })
+        }
+        None => Ok(()),
+    }
+}
+
 /// The faces that need the full check (not a plain triangle or quad of distinct in-range
 /// vertices), in order, found on every core in chunks of faces.
 fn general_faces(mesh: &PolyMesh, first_faces: &[usize]) -> Vec<u32> {
@@ -527,16 +543,8 @@ fn general_faces(mesh: &PolyMesh, first_faces: &[usize]) -> Vec<u32> {
         .map(|i| {
             let mut flagged = Vec::new();
             for f in first_faces[i]..first_faces[i + 1] {
-                let loops = mesh.face_loops(f);
                 let vs = &mesh.corner_verts[mesh.face_corners(f)];
-                let small = loops.len() == 1 && (3..=4).contains(&vs.len());
-                let ok = small
-                    && vs.iter().all(|&v| (v as usize) < nv)
-                    && vs[0] != vs[1]
-                    && vs[0] != vs[2]
-                    && vs[1] != vs[2]
-                    && (vs.len() == 3 || (vs[3] != vs[0] && vs[3] != vs[1] && vs[3] != vs[2]));
-                if !ok {
+                if mesh.face_loops(f).len() != 1 || needs_full_check(vs, nv) {
                     flagged.push(f as u32);
                 }
             }
