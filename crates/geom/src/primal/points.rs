@@ -128,44 +128,24 @@ pub(crate) fn child_points(lv: &Level, scheme: PrimalScheme, n: PrimalNumbering)
     };
 
     // Vertex points. A smooth vertex (always interior: boundary vertices are creases or
-    // corners) needs the sums of its neighbours and of its face points. On one thread they
-    // are accumulated in one streaming pass over the corners; on several, each vertex
-    // gathers them around its ring.
-    let scattered = (!parallel).then(|| {
-        let mut esum = vec![DVec3::ZERO; nv];
-        let mut fsum = vec![DVec3::ZERO; if cc { nv } else { 0 }];
-        let mut count = vec![0u32; nv];
-        for c in 0..mesh.num_corners() {
-            let v = cv[c] as usize;
-            esum[v] += p[cv[topo.next(c) as usize] as usize];
-            if cc {
-                fsum[v] += face_pts[topo.corner_face(c) as usize];
-            }
-            count[v] += 1;
-        }
-        (esum, fsum, count)
-    });
+    // corners) needs the sums of its neighbours and of its face points, gathered around its
+    // ring from its ring start, on one thread as on several (the order of the sums fixes the
+    // last bits).
     let smooth_point = |v: usize| -> DVec3 {
-        let (esum, fsum, k) = match &scattered {
-            Some((e, f, k)) => (e[v], if cc { f[v] } else { DVec3::ZERO }, k[v] as usize),
-            None => {
-                let start = topo.vert_corner[v];
-                let (mut esum, mut fsum, mut k) = (DVec3::ZERO, DVec3::ZERO, 0usize);
-                let mut c = start;
-                loop {
-                    esum += p[cv[topo.next(c as usize) as usize] as usize];
-                    if cc {
-                        fsum += face_pts[topo.corner_face(c as usize) as usize];
-                    }
-                    k += 1;
-                    c = topo.ring_next(c);
-                    if c == start || c == NONE {
-                        break;
-                    }
-                }
-                (esum, fsum, k)
+        let start = topo.vert_corner[v];
+        let (mut esum, mut fsum, mut k) = (DVec3::ZERO, DVec3::ZERO, 0usize);
+        let mut c = start;
+        loop {
+            esum += p[cv[topo.next(c as usize) as usize] as usize];
+            if cc {
+                fsum += face_pts[topo.corner_face(c as usize) as usize];
             }
-        };
+            k += 1;
+            c = topo.ring_next(c);
+            if c == start || c == NONE {
+                break;
+            }
+        }
         if cc {
             catmark::vertex_point(p[v], esum, fsum, k)
         } else {

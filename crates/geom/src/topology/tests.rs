@@ -219,14 +219,16 @@ fn t_has_boundary(m: &PolyMesh) -> bool {
 }
 
 /// Everything the build writes on rayon's pool (loops, ring starts, the fan check) and the
-/// primal splits are the same on one thread as on several, field for field, on a mesh cut
-/// into many pieces with n-gons, holes and boundaries in it; the first bad face is named
+/// primal splits are the same on one thread as on several, field for field and bit for bit,
+/// on a mesh cut into many pieces with n-gons, holes and boundaries in it, big enough for
+/// the points to be computed on the pool (`PARALLEL_FACES`); the first bad face is named
 /// the same way.
 #[test]
 fn the_build_and_the_splits_are_the_same_on_any_number_of_threads() {
-    use crate::primal::{PrimalScheme, refine_primal};
+    use crate::primal::{PARALLEL_FACES, PrimalScheme, refine_primal};
     use crate::tags::SubdivTags;
-    let torus = crate::primitives::torus(150, 100, 3.0, 1.0);
+    let torus = crate::primitives::torus(300, 200, 3.0, 1.0);
+    assert!(torus.num_faces() > PARALLEL_FACES);
     let holed =
         crate::primitives::union_disjoint(&[torus.clone(), crate::primitives::holed_block()]);
     let mut open = crate::primitives::union_disjoint(&[
