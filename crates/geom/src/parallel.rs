@@ -16,7 +16,12 @@ pub(crate) fn filled<T: Clone + Send + Sync>(n: usize, x: T) -> Vec<T> {
 /// a check that usually passes costs one parallel pass and names what one pass would
 /// (rayon's `position_first` costs several times a plain pass).
 pub(crate) fn first_where(n: usize, bad: impl Fn(usize) -> bool + Sync + Send) -> Option<usize> {
-    if (0..n).into_par_iter().with_min_len(1 << 14).any(&bad) {
+    // Each block looks at every element without stopping (no branch per element, so the
+    // look compiles to vector code where `bad` allows); the blocks stop early.
+    const BLOCK: usize = 1 << 14;
+    let block_bad =
+        |b: usize| (b * BLOCK..((b + 1) * BLOCK).min(n)).fold(false, |acc, i| acc | bad(i));
+    if (0..n.div_ceil(BLOCK)).into_par_iter().any(block_bad) {
         (0..n).find(|&i| bad(i))
     } else {
         None

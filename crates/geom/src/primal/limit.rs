@@ -107,9 +107,9 @@ pub fn limit_points_ordered(
             p[cv[n2 as usize] as usize]
         }));
         es.clear();
-        es.extend(ring_e.iter().map(|&(e, _)| sh.edge[e as usize]));
+        es.extend(ring_e.iter().map(|&(e, _)| sh.edge(e as usize)));
         let n_faces = ring_c.len();
-        let rule = vertex_rule(sh.vert[v], sh.sharp_edges[v] as usize);
+        let rule = vertex_rule(sh.vert(v), sh.sharp_edges(v));
         let cc = scheme.family() == PrimalScheme::CatmullClark;
         let (pos, t1, t2) = match rule {
             Rule::Smooth | Rule::Dart if cc && n_faces == 2 => corner(pv, &e_pts, 1.0),

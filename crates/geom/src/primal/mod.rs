@@ -396,10 +396,10 @@ fn refine(
         }
     }
     // Only a parent with holes has child faces to look for (a pass over every child face).
-    if sh.hole.iter().any(|&h| h) {
+    if sh.any_hole() {
         let face_parent = split.face_parent(mesh, &topo);
         child_tags.holes = (0..face_parent.len() as u32)
-            .filter(|&f| sh.hole[face_parent[f as usize] as usize])
+            .filter(|&f| sh.hole(face_parent[f as usize] as usize))
             .collect();
     }
 

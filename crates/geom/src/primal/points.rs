@@ -13,7 +13,7 @@ use crate::refine::PrimalNumbering;
 use crate::rules::primal::crease::{self, Rule, is_sharp, vertex_rule};
 use crate::rules::primal::{catmark, r#loop};
 use crate::tags::SubdivTags;
-use crate::topology::{NONE, Topology};
+use crate::topology::{CornerLoops, NONE, Topology, with_loops};
 use glam::DVec3;
 use rayon::prelude::*;
 use std::mem::MaybeUninit;
@@ -63,6 +63,16 @@ pub(crate) struct Level<'a> {
 
 /// Every child point of `lv` under `scheme`, at the indices of `n`.
 pub(crate) fn child_points(lv: &Level, scheme: PrimalScheme, n: PrimalNumbering) -> Vec<DVec3> {
+    with_loops!(lv.topo.loops(), l => child_points_in(lv, scheme, n, l))
+}
+
+/// [`child_points`], compiled for one kind of loops.
+fn child_points_in<L: CornerLoops>(
+    lv: &Level,
+    scheme: PrimalScheme,
+    n: PrimalNumbering,
+    l: L,
+) -> Vec<DVec3> {
     let (mesh, topo, sh) = (lv.mesh, lv.topo, lv.sh);
     let nv = mesh.num_vertices();
     let nf = mesh.num_faces();
@@ -80,35 +90,35 @@ pub(crate) fn child_points(lv: &Level, scheme: PrimalScheme, n: PrimalNumbering)
     let mut out: Vec<DVec3> = Vec::with_capacity(total);
     let (head, tail) = out.spare_capacity_mut()[..total].split_at_mut(nv + ne);
     let face_point = |f: usize| {
-        let r = mesh.face_corners(f);
+        let r = l.face_corners(mesh, f);
         let k = r.len();
         catmark::face_point(cv[r].iter().map(|&v| p[v as usize]).sum(), k)
     };
     fill(tail, parallel, face_point);
     // SAFETY: `fill` wrote every slot of `tail`.
     let face_pts: &[DVec3] = unsafe { &*(tail as *const [MaybeUninit<DVec3>] as *const [DVec3]) };
-    let face_size = |f: u32| mesh.face_corners(f as usize).len();
+    let face_size = |f: u32| l.face_corners(mesh, f as usize).len();
 
     // Edge points.
     let edge_point = |e: usize| {
         let c = topo.edge_corner[e] as usize;
         let t = topo.twin[c];
-        let (a, b) = (cv[c] as usize, cv[topo.next(c) as usize] as usize);
-        let s = sh.edge[e];
+        let (a, b) = (cv[c] as usize, cv[l.next(c) as usize] as usize);
+        let s = sh.edge(e);
         let crease_pt = 0.5 * (p[a] + p[b]);
         if t == NONE {
             return crease_pt;
         }
         let t = t as usize;
-        let (f0, f1) = (topo.corner_face(c), topo.corner_face(t));
+        let (f0, f1) = (l.face(c), l.face(t));
         // Smooth mask as vertex weight, face weight and the two face terms.
         let (vw, fw, fsum) = if cc {
             let (vw, fw) =
                 catmark::edge_weights(lv.tags.triangles, || (face_size(f0), face_size(f1)));
             (vw, fw, face_pts[f0 as usize] + face_pts[f1 as usize])
         } else {
-            let o0 = cv[topo.prev(c) as usize] as usize;
-            let o1 = cv[topo.prev(t) as usize] as usize;
+            let o0 = cv[l.prev(c) as usize] as usize;
+            let o1 = cv[l.prev(t) as usize] as usize;
             let (vw, fw) = r#loop::EDGE_WEIGHTS;
             (vw, fw, p[o0] + p[o1])
         };
@@ -136,12 +146,12 @@ pub(crate) fn child_points(lv: &Level, scheme: PrimalScheme, n: PrimalNumbering)
         let (mut esum, mut fsum, mut k) = (DVec3::ZERO, DVec3::ZERO, 0usize);
         let mut c = start;
         loop {
-            esum += p[cv[topo.next(c as usize) as usize] as usize];
+            esum += p[cv[l.next(c as usize) as usize] as usize];
             if cc {
-                fsum += face_pts[topo.corner_face(c as usize) as usize];
+                fsum += face_pts[l.face(c as usize) as usize];
             }
             k += 1;
-            c = topo.ring_next(c);
+            c = topo.twin[l.prev(c as usize) as usize];
             if c == start || c == NONE {
                 break;
             }
@@ -157,7 +167,7 @@ pub(crate) fn child_points(lv: &Level, scheme: PrimalScheme, n: PrimalNumbering)
         if topo.vert_corner[v] == NONE {
             return p[v];
         }
-        let p_rule = vertex_rule(sh.vert[v], sh.sharp_edges[v] as usize);
+        let p_rule = vertex_rule(sh.vert(v), sh.sharp_edges(v));
         if matches!(p_rule, Rule::Smooth | Rule::Dart) {
             return smooth_point(v);
         }
@@ -197,7 +207,7 @@ fn sharp_vertex_point(
     let (mut ring_e, mut ring_c) = (Vec::new(), Vec::new());
     lv.topo
         .vertex_ring_from(mesh, (lv.ring_start)(v), &mut ring_e, &mut ring_c);
-    let ps: Vec<f32> = ring_e.iter().map(|&(e, _)| sh.edge[e as usize]).collect();
+    let ps: Vec<f32> = ring_e.iter().map(|&(e, _)| sh.edge(e as usize)).collect();
     let rule_point = |rule: Rule, sharp: &[f32]| -> DVec3 {
         match rule {
             Rule::Smooth | Rule::Dart => smooth_point(v),
@@ -210,17 +220,17 @@ fn sharp_vertex_point(
         }
     };
     let parent_pt = rule_point(p_rule, &ps);
-    if !sh.semi[v] {
+    if !sh.semi(v) {
         return parent_pt;
     }
     let mut cs = Vec::new();
     child_sharpness_around(method, &ps, &mut cs);
-    let c_vert = crease::decrement(sh.vert[v]);
+    let c_vert = crease::decrement(sh.vert(v));
     let c_rule = vertex_rule(c_vert, cs.iter().filter(|&&s| is_sharp(s)).count());
     if c_rule == p_rule {
         return parent_pt;
     }
     let child_pt = rule_point(c_rule, &cs);
-    let pw = crease::fractional_weight(method, sh.vert[v], c_vert, &ps, &cs) as f64;
+    let pw = crease::fractional_weight(method, sh.vert(v), c_vert, &ps, &cs) as f64;
     pw * parent_pt + (1.0 - pw) * child_pt
 }

@@ -16,15 +16,54 @@ use crate::tags::{BoundaryInterpolation, CreaseMethod, SubdivTags};
 use crate::topology::{NONE, Topology};
 use rayon::prelude::*;
 
-/// Sharpness of every edge and vertex of one level, boundary rules applied.
+/// Sharpness of every edge and vertex of one level, boundary rules applied. An empty array
+/// stands for all zeros: a smooth closed level (the usual one: no crease, corner or hole
+/// tagged, no boundary) holds none, and is told in one look.
 pub(crate) struct Sharpness {
-    pub(crate) edge: Vec<f32>,
-    pub(crate) vert: Vec<f32>,
+    edge: Vec<f32>,
+    vert: Vec<f32>,
     /// Number of sharp edges at each vertex.
-    pub(crate) sharp_edges: Vec<u32>,
+    sharp_edges: Vec<u32>,
     /// Vertex semi-sharp or touching a semi-sharp edge: its rule may change.
-    pub(crate) semi: Vec<bool>,
-    pub(crate) hole: Vec<bool>,
+    semi: Vec<bool>,
+    hole: Vec<bool>,
+}
+
+impl Sharpness {
+    /// The sharpness of edge `e`.
+    #[inline]
+    pub(crate) fn edge(&self, e: usize) -> f32 {
+        self.edge.get(e).copied().unwrap_or(0.0)
+    }
+
+    /// The sharpness of vertex `v`.
+    #[inline]
+    pub(crate) fn vert(&self, v: usize) -> f32 {
+        self.vert.get(v).copied().unwrap_or(0.0)
+    }
+
+    /// The number of sharp edges at vertex `v`.
+    #[inline]
+    pub(crate) fn sharp_edges(&self, v: usize) -> usize {
+        self.sharp_edges.get(v).map_or(0, |&k| k as usize)
+    }
+
+    /// Whether vertex `v` is semi-sharp or touches a semi-sharp edge.
+    #[inline]
+    pub(crate) fn semi(&self, v: usize) -> bool {
+        self.semi.get(v).copied().unwrap_or(false)
+    }
+
+    /// Whether face `f` is a hole.
+    #[inline]
+    pub(crate) fn hole(&self, f: usize) -> bool {
+        self.hole.get(f).copied().unwrap_or(false)
+    }
+
+    /// Whether any face is a hole.
+    pub(crate) fn any_hole(&self) -> bool {
+        self.hole.par_iter().with_min_len(1 << 14).any(|&h| h)
+    }
 }
 
 pub(crate) fn sharpness(
@@ -33,6 +72,20 @@ pub(crate) fn sharpness(
     attrs: &EdgeAttrs,
     tags: &SubdivTags,
 ) -> Sharpness {
+    // Nothing tagged and no boundary: every array would be zeros.
+    let smooth = topo.is_closed()
+        && tags.holes.is_empty()
+        && tags.corners.values().all(|&s| s.is_nan() || s <= 0.0)
+        && attrs.values().all(|a| a.crease.is_nan() || a.crease <= 0.0);
+    if smooth {
+        return Sharpness {
+            edge: Vec::new(),
+            vert: Vec::new(),
+            sharp_edges: Vec::new(),
+            semi: Vec::new(),
+            hole: Vec::new(),
+        };
+    }
     let nv = mesh.num_vertices();
     let ne = topo.num_edges();
     let mut edge = filled(ne, 0.0f32);
@@ -152,11 +205,11 @@ fn semi_sums(
     let mut ring_e = Vec::new();
     let mut ring_f = Vec::new();
     for v in 0..mesh.num_vertices() {
-        if !sh.semi[v] {
+        if !sh.semi(v) {
             continue;
         }
         topo.vertex_ring_from(mesh, ring_start(v), &mut ring_e, &mut ring_f);
-        let (sum, count) = crease::semi_sharp_sum(ring_e.iter().map(|&(e, _)| sh.edge[e as usize]));
+        let (sum, count) = crease::semi_sharp_sum(ring_e.iter().map(|&(e, _)| sh.edge(e as usize)));
         out[v] = (sum, count, ring_e.len() as u32);
     }
     out
@@ -189,7 +242,7 @@ impl<'a> ChildSharpness<'a> {
     /// Child sharpness of edge `e` at its end vertex `v`.
     #[inline]
     pub(crate) fn edge(&self, e: usize, v: usize) -> f32 {
-        let s = self.sh.edge[e];
+        let s = self.sh.edge(e);
         if self.method == CreaseMethod::Chaikin {
             let (sum, count, edges) = self.sums[v];
             crease::child_edge_sharpness(self.method, s, edges as usize, sum, count)

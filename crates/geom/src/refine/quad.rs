@@ -13,7 +13,7 @@
 use super::{ChildCounts, PrimalNumbering};
 use crate::mesh::PolyMesh;
 use crate::primal::RingOrder;
-use crate::topology::{Loops, NONE, Topology};
+use crate::topology::{CornerLoops, Loops, NONE, Topology, with_loops};
 
 /// The numbering of the quad split of `mesh`.
 pub fn numbering(mesh: &PolyMesh, topo: &Topology) -> PrimalNumbering {
@@ -43,14 +43,15 @@ pub fn counts(mesh: &PolyMesh, edges: usize) -> ChildCounts {
 /// The child's faces (no positions yet), on rayon's pool.
 pub fn faces(mesh: &PolyMesh, topo: &Topology, n: PrimalNumbering) -> PolyMesh {
     let cv = &mesh.corner_verts;
-    super::uniform_faces(mesh.num_corners(), 4, |c| {
+    let ce = &topo.corner_edge;
+    with_loops!(topo.loops(), l => super::uniform_faces(mesh.num_corners(), 4, |c| {
         [
             n.vertex(cv[c]),
-            n.edge_point(topo.corner_edge[c]),
-            n.face_point(topo.corner_face(c)),
-            n.edge_point(topo.corner_edge[topo.prev(c) as usize]),
+            n.edge_point(ce[c]),
+            n.face_point(l.face(c)),
+            n.edge_point(ce[l.prev(c) as usize]),
         ]
-    })
+    }))
 }
 
 /// The parent face of each child face: child face c lies in the face of parent corner c.

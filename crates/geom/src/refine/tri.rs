@@ -13,7 +13,7 @@
 use super::{ChildCounts, PrimalNumbering};
 use crate::mesh::PolyMesh;
 use crate::primal::RingOrder;
-use crate::topology::{Loops, NONE, Topology};
+use crate::topology::{CornerLoops, Loops, NONE, Topology, with_loops};
 
 /// The numbering of the triangle split of `mesh`.
 pub fn numbering(mesh: &PolyMesh, topo: &Topology) -> PrimalNumbering {
@@ -48,14 +48,15 @@ fn at(c: u32) -> (u32, u32) {
 /// The child's faces (no positions yet), on rayon's pool.
 pub fn faces(mesh: &PolyMesh, topo: &Topology, n: PrimalNumbering) -> PolyMesh {
     let cv = &mesh.corner_verts;
-    super::uniform_faces(mesh.num_faces(), 3, |f| {
-        let c0 = mesh.face_corners(f).start;
+    let ce = &topo.corner_edge;
+    with_loops!(topo.loops(), l => super::uniform_faces(mesh.num_faces(), 3, |f| {
+        let c0 = l.face_corners(mesh, f).start;
         let v = [0, 1, 2].map(|k| n.vertex(cv[c0 + k]));
-        let e = [0, 1, 2].map(|k| n.edge_point(topo.corner_edge[c0 + k]));
+        let e = [0, 1, 2].map(|k| n.edge_point(ce[c0 + k]));
         [
             v[0], e[0], e[2], v[1], e[1], e[0], v[2], e[2], e[1], e[0], e[1], e[2],
         ]
-    })
+    }))
 }
 
 /// The parent face of each child face: four children a triangle, in order.

@@ -19,12 +19,14 @@
 //! name it.
 
 use super::outgoing::Outgoing;
-use super::{Loops, NONE};
+use super::{CornerLoops, Loops, NONE, with_loops};
 use rayon::prelude::*;
 use std::sync::atomic::{AtomicBool, Ordering::Relaxed};
 
 /// Lists longer than this look vertices up in a sorted copy instead of scanning.
 const SHORT: usize = 16;
+/// Lists up to this long (valence 8: nearly every vertex) scan half the lanes.
+const SHORTER: usize = 8;
 
 /// What the pass found.
 pub(super) struct ByVertex {
@@ -55,6 +57,11 @@ type Found = Option<(u32, bool)>;
 /// The twins of the half-edges of corners `cv` with loops `loops`, or `None` when some
 /// pair is not mutual and unique.
 pub(super) fn twins(cv: &[u32], loops: &Loops, outgoing: &Outgoing) -> Option<ByVertex> {
+    with_loops!(loops, l => twins_in(cv, l, outgoing))
+}
+
+/// [`twins`], compiled for one kind of loops.
+fn twins_in<L: CornerLoops>(cv: &[u32], loops: L, outgoing: &Outgoing) -> Option<ByVertex> {
     let nc = cv.len();
     let nv = outgoing.vertices();
     let mut twin: Vec<u32> = Vec::with_capacity(nc);
@@ -68,7 +75,8 @@ pub(super) fn twins(cv: &[u32], loops: &Loops, outgoing: &Outgoing) -> Option<By
             let list = outgoing.list(a as u32);
             let found = match list.len() {
                 0 => return NONE,
-                1..=SHORT => short(list, cv, loops, &slots),
+                n if n <= SHORTER => short::<L, SHORTER>(list, cv, loops, &slots),
+                n if n <= SHORT => short::<L, SHORT>(list, cv, loops, &slots),
                 _ => long(list, cv, loops, &slots, scratch),
             };
             match found {
@@ -98,13 +106,18 @@ pub(super) fn twins(cv: &[u32], loops: &Loops, outgoing: &Outgoing) -> Option<By
     })
 }
 
-/// A vertex of at most [`SHORT`] half-edges (nearly all): everything on the stack.
+/// A vertex of at most `N` ≤ 16 half-edges (nearly all): everything on the stack.
 #[inline(always)]
-fn short(list: &[u32], cv: &[u32], loops: &Loops, slots: &Slots) -> Found {
+fn short<L: CornerLoops, const N: usize>(
+    list: &[u32],
+    cv: &[u32],
+    loops: L,
+    slots: &Slots,
+) -> Found {
     let n = list.len();
-    // Past n, `to` holds NONE, which no vertex is: the lookups below compare all 16 lanes at
+    // Past n, `to` holds NONE, which no vertex is: the lookups below compare all N lanes at
     // once.
-    let (mut to, mut from) = ([NONE; SHORT], [0u32; SHORT]);
+    let (mut to, mut from) = ([NONE; N], [0u32; N]);
     for (i, &d) in list.iter().enumerate() {
         to[i] = cv[loops.next(d as usize) as usize];
         from[i] = cv[loops.prev(d as usize) as usize];
@@ -114,7 +127,7 @@ fn short(list: &[u32], cv: &[u32], loops: &Loops, slots: &Slots) -> Found {
     // A destination found twice, or an outgoing half-edge taken twice, is an edge used three
     // times or run twice the same way; so is an origin or a destination twice among the
     // half-edges left without a partner, which the pairing does not see.
-    let mut pair = [NONE; SHORT];
+    let mut pair = [NONE; N];
     let (mut paired, mut open) = (0u32, 0u32);
     for i in 0..n {
         let hits = lanes_equal(&to, from[i]);
@@ -150,7 +163,7 @@ fn short(list: &[u32], cv: &[u32], loops: &Loops, slots: &Slots) -> Found {
 
 /// Bit j set where `to[j] == x`.
 #[inline(always)]
-fn lanes_equal(to: &[u32; SHORT], x: u32) -> u32 {
+fn lanes_equal<const N: usize>(to: &[u32; N], x: u32) -> u32 {
     let mut hits = 0u32;
     for (j, &b) in to.iter().enumerate() {
         hits |= u32::from(b == x) << j;
@@ -159,7 +172,13 @@ fn lanes_equal(to: &[u32; SHORT], x: u32) -> u32 {
 }
 
 /// A vertex of more than [`SHORT`] half-edges: lookups in a sorted copy.
-fn long(list: &[u32], cv: &[u32], loops: &Loops, slots: &Slots, s: &mut Scratch) -> Found {
+fn long<L: CornerLoops>(
+    list: &[u32],
+    cv: &[u32],
+    loops: L,
+    slots: &Slots,
+    s: &mut Scratch,
+) -> Found {
     let n = list.len();
     s.from.clear();
     s.from

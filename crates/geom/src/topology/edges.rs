@@ -5,6 +5,9 @@
 //! block counts the edges it leads, the counts' prefix sums give every block its first edge
 //! number, and each block numbers its own leading half-edges, writing each number to the
 //! leader and to its twin. The numbers are the one pass's whatever the blocks.
+//!
+//! The count also gives the number of half-edges without a twin (the boundary edges), which
+//! tells a closed level from an open one without another pass.
 
 use super::NONE;
 use crate::parallel::{filled, split_at_bounds};
@@ -13,8 +16,16 @@ use rayon::prelude::*;
 /// Half-edges a block of the parallel numbering takes.
 const BLOCK: usize = 1 << 16;
 
-/// `(corner_edge, edge_corner)` of the half-edges whose twins are `twin`.
-pub(super) fn number_edges(twin: &[u32]) -> (Vec<u32>, Vec<u32>) {
+/// What the numbering gives.
+pub(super) struct Numbered {
+    pub corner_edge: Vec<u32>,
+    pub edge_corner: Vec<u32>,
+    /// Half-edges without a twin.
+    pub open: usize,
+}
+
+/// The numbering of the half-edges whose twins are `twin`.
+pub(super) fn number_edges(twin: &[u32]) -> Numbered {
     if rayon::current_num_threads() > 1 && twin.len() >= 4 * BLOCK {
         in_blocks(twin, BLOCK)
     } else {
@@ -29,10 +40,11 @@ fn leads(twin: &[u32], c: usize) -> bool {
     t == NONE || (c as u32) < t
 }
 
-pub(super) fn one_pass(twin: &[u32]) -> (Vec<u32>, Vec<u32>) {
+pub(super) fn one_pass(twin: &[u32]) -> Numbered {
     let n = twin.len();
     let mut corner_edge = vec![NONE; n];
     let mut edge_corner = Vec::with_capacity(n / 2 + 1);
+    let mut open = 0;
     for c in 0..n {
         if leads(twin, c) {
             let e = edge_corner.len() as u32;
@@ -41,23 +53,42 @@ pub(super) fn one_pass(twin: &[u32]) -> (Vec<u32>, Vec<u32>) {
             let t = twin[c];
             if t != NONE {
                 corner_edge[t as usize] = e;
+            } else {
+                open += 1;
             }
         }
     }
-    (corner_edge, edge_corner)
+    Numbered {
+        corner_edge,
+        edge_corner,
+        open,
+    }
 }
 
-pub(super) fn in_blocks(twin: &[u32], block: usize) -> (Vec<u32>, Vec<u32>) {
+pub(super) fn in_blocks(twin: &[u32], block: usize) -> Numbered {
     let n = twin.len();
     let range = |b: usize| b * block..((b + 1) * block).min(n);
-    let counts: Vec<usize> = (0..n.div_ceil(block))
+    // Per block: the edges it leads and its half-edges without a twin (a half-edge leads
+    // when its index is below its twin's, NONE being above every index).
+    let counts: Vec<(usize, usize)> = (0..n.div_ceil(block))
         .into_par_iter()
-        .map(|b| range(b).filter(|&c| leads(twin, c)).count())
+        .map(|b| {
+            let r = range(b);
+            let ts = &twin[r.clone()];
+            let lead = ts
+                .iter()
+                .zip(r.start as u32..)
+                .filter(|&(&t, c)| c < t)
+                .count();
+            (lead, ts.iter().filter(|&&t| t == NONE).count())
+        })
         .collect();
     let mut bounds = Vec::with_capacity(counts.len() + 1);
     bounds.push(0);
-    for k in counts {
+    let mut open = 0;
+    for (k, o) in counts {
         bounds.push(bounds[bounds.len() - 1] + k);
+        open += o;
     }
     // Each block numbers its own leading half-edges and writes the number to the leader and
     // to its twin, wherever that lies: every half-edge is written exactly once, by the leader
@@ -90,7 +121,11 @@ pub(super) fn in_blocks(twin: &[u32], block: usize) -> (Vec<u32>, Vec<u32>) {
         });
     // SAFETY: all n slots were written (every half-edge leads or is its leader's twin).
     unsafe { corner_edge.set_len(n) };
-    (corner_edge, edge_corner)
+    Numbered {
+        corner_edge,
+        edge_corner,
+        open,
+    }
 }
 
 /// The slots of `corner_edge` that the blocks write at scattered places.

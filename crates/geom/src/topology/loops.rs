@@ -36,13 +36,115 @@ impl Default for Loops {
     }
 }
 
+/// Face and loop neighbours of the corners, by arithmetic or from the lists: the hot passes
+/// are compiled once per kind of [`Loops`] (`with_loops!`), so that the
+/// arithmetic inlines into them with no branch on the kind per corner.
+pub trait CornerLoops: Copy + Send + Sync {
+    /// The next corner of corner `c`'s loop.
+    fn next(self, c: usize) -> u32;
+    /// The previous corner of corner `c`'s loop.
+    fn prev(self, c: usize) -> u32;
+    /// The face of corner `c`.
+    fn face(self, c: usize) -> u32;
+    /// The corners of face `f` of `mesh` (whose loops these are).
+    fn face_corners(self, mesh: &PolyMesh, f: usize) -> std::ops::Range<usize>;
+}
+
+/// [`Loops::Quads`]: corners 4f … 4f + 3.
+#[derive(Debug, Clone, Copy)]
+pub struct QuadLoops;
+
+/// [`Loops::Triangles`]: corners 3f … 3f + 2.
+#[derive(Debug, Clone, Copy)]
+pub struct TriLoops;
+
+impl CornerLoops for QuadLoops {
+    #[inline(always)]
+    fn next(self, c: usize) -> u32 {
+        ((c & !3) | ((c + 1) & 3)) as u32
+    }
+    #[inline(always)]
+    fn prev(self, c: usize) -> u32 {
+        ((c & !3) | ((c + 3) & 3)) as u32
+    }
+    #[inline(always)]
+    fn face(self, c: usize) -> u32 {
+        (c / 4) as u32
+    }
+    #[inline(always)]
+    fn face_corners(self, _: &PolyMesh, f: usize) -> std::ops::Range<usize> {
+        4 * f..4 * f + 4
+    }
+}
+
+impl CornerLoops for TriLoops {
+    #[inline(always)]
+    fn next(self, c: usize) -> u32 {
+        (if c % 3 == 2 { c - 2 } else { c + 1 }) as u32
+    }
+    #[inline(always)]
+    fn prev(self, c: usize) -> u32 {
+        (if c.is_multiple_of(3) { c + 2 } else { c - 1 }) as u32
+    }
+    #[inline(always)]
+    fn face(self, c: usize) -> u32 {
+        (c / 3) as u32
+    }
+    #[inline(always)]
+    fn face_corners(self, _: &PolyMesh, f: usize) -> std::ops::Range<usize> {
+        3 * f..3 * f + 3
+    }
+}
+
+impl CornerLoops for &Listed {
+    #[inline(always)]
+    fn next(self, c: usize) -> u32 {
+        self.next[c]
+    }
+    #[inline(always)]
+    fn prev(self, c: usize) -> u32 {
+        self.prev[c]
+    }
+    #[inline(always)]
+    fn face(self, c: usize) -> u32 {
+        self.corner_face[c]
+    }
+    #[inline(always)]
+    fn face_corners(self, mesh: &PolyMesh, f: usize) -> std::ops::Range<usize> {
+        mesh.face_corners(f)
+    }
+}
+
+/// Runs `$body` with `$l` bound to the [`CornerLoops`] of `$loops` (a `&Loops`), the body
+/// compiled once per kind.
+macro_rules! with_loops {
+    ($loops:expr, $l:ident => $body:expr) => {
+        match $loops {
+            $crate::topology::Loops::Quads => {
+                let $l = $crate::topology::QuadLoops;
+                $body
+            }
+            $crate::topology::Loops::Triangles => {
+                let $l = $crate::topology::TriLoops;
+                $body
+            }
+            $crate::topology::Loops::Listed(listed) => {
+                let $l = listed;
+                $body
+            }
+        }
+    };
+}
+
+pub(crate) use with_loops;
+
 impl Loops {
     /// The next corner of corner `c`'s loop.
     #[inline]
     pub fn next(&self, c: usize) -> u32 {
         match self {
-            Loops::Quads => ((c & !3) | ((c + 1) & 3)) as u32,
-            Loops::Triangles => (if c % 3 == 2 { c - 2 } else { c + 1 }) as u32,
+            Loops::Quads => QuadLoops.next(c),
+            Loops::Triangles => TriLoops.next(c),
             Loops::Listed(l) => l.next[c],
         }
     }
@@ -51,8 +153,8 @@ impl Loops {
     #[inline]
     pub fn prev(&self, c: usize) -> u32 {
         match self {
-            Loops::Quads => ((c & !3) | ((c + 3) & 3)) as u32,
-            Loops::Triangles => (if c.is_multiple_of(3) { c + 2 } else { c - 1 }) as u32,
+            Loops::Quads => QuadLoops.prev(c),
+            Loops::Triangles => TriLoops.prev(c),
             Loops::Listed(l) => l.prev[c],
         }
     }
@@ -61,8 +163,8 @@ impl Loops {
     #[inline]
     pub fn face(&self, c: usize) -> u32 {
         match self {
-            Loops::Quads => (c / 4) as u32,
-            Loops::Triangles => (c / 3) as u32,
+            Loops::Quads => QuadLoops.face(c),
+            Loops::Triangles => TriLoops.face(c),
             Loops::Listed(l) => l.corner_face[c],
         }
     }

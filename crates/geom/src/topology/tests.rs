@@ -199,9 +199,20 @@ fn twins_found_in_parallel_are_the_serial_ones() {
         assert!(t.fans_checked, "every vertex a single fan");
         // So does the edge numbering however the half-edges are cut into blocks.
         let one = edges::one_pass(&t.twin);
-        assert_eq!((&one.0, &one.1), (&t.corner_edge, &t.edge_corner));
+        assert_eq!(
+            (&one.corner_edge, &one.edge_corner),
+            (&t.corner_edge, &t.edge_corner)
+        );
+        let open = t.twin.iter().filter(|&&x| x == NONE).count();
+        assert_eq!(one.open, open);
+        assert_eq!(t.is_closed(), open == 0);
         for block in [1, 7, 4096, 1 << 16] {
-            assert_eq!(edges::in_blocks(&t.twin, block), one, "blocks of {block}");
+            let b = edges::in_blocks(&t.twin, block);
+            assert_eq!(
+                (b.corner_edge, b.edge_corner, b.open),
+                (one.corner_edge.clone(), one.edge_corner.clone(), one.open),
+                "blocks of {block}"
+            );
         }
     }
     assert!(t_has_boundary(&cut));
