@@ -112,43 +112,44 @@ impl Topology {
         check_finite(mesh)?;
 
         // The faces that need the full check (not a plain triangle or quad of distinct
-        // in-range vertices) are checked after the parallel look, in order, so the first bad
+        // in-range vertices) are checked after a parallel look, in order, so the first bad
         // face is named as one pass would name it. A mesh of one-loop faces of three or four
-        // corners (then the loops are arithmetic) is told by its offsets alone.
+        // corners (then the loops are arithmetic) is told by its offsets alone, and its
+        // faces are looked at while their corners are counted.
         let (first_faces, bounds) = crate::parallel::face_chunks(mesh);
-        let (uniform, flagged) = match uniform_layout(mesh) {
-            // Every face one loop of k corners, k = 3 or 4: only the corners are looked at;
-            // the first bad face, if any, gets the full check below, which names it.
-            Some(k) => {
-                let cv = &mesh.corner_verts;
-                let bad = |vs: &[u32]| needs_full_check(vs, nv);
-                let sound = match k {
-                    4 => plain_faces::<4>(cv, nv),
-                    _ => plain_faces::<3>(cv, nv),
-                };
-                let first = (!sound).then(|| cv.chunks_exact(k).position(bad)).flatten();
-                (Some(k), first.map(|f| f as u32).into_iter().collect())
-            }
-            None => (None, general_faces(mesh, &first_faces)),
-        };
-        // Per-vertex stamp of the last face that used it: detects a vertex repeated in a
-        // face with more than four corners (smaller ones compare their corners directly).
-        let mut stamp = Vec::new();
-        for &f in &flagged {
-            if mesh.face_loops(f as usize).is_empty() {
-                return Err(MeshError::EmptyFace { face: f });
-            }
-            if stamp.is_empty() {
-                stamp = vec![NONE; nv];
-            }
-            check_face(mesh, f as usize, &mut stamp)?;
-        }
-        drop(stamp);
+        let cv = &mesh.corner_verts;
+        let uniform = uniform_layout(mesh);
         let loops = Loops::of(mesh, uniform, &first_faces, &bounds);
 
-        // Outgoing half-edges per vertex (CSR).
-        let cv = &mesh.corner_verts;
-        let outgoing = Outgoing::new(nv, cv, &loops);
+        // Outgoing half-edges per vertex (CSR). Every face one loop of k corners, k = 3 or
+        // 4: the faces are looked at as their corners are counted; the first that is not
+        // plain, if any, gets the full check below, which names it.
+        let plain = |vs: &[u32]| !needs_full_check(vs, nv);
+        let counted = match uniform {
+            Some(4) => Outgoing::of_uniform::<4>(nv, cv, &loops, |f| plain(f)),
+            Some(_) => Outgoing::of_uniform::<3>(nv, cv, &loops, |f| plain(f)),
+            None => None,
+        };
+        let outgoing = match counted {
+            Some(outgoing) => outgoing,
+            None => {
+                // Per-vertex stamp of the last face that used it: detects a vertex repeated
+                // in a face with more than four corners (smaller ones compare their corners
+                // directly).
+                let mut stamp = Vec::new();
+                for f in general_faces(mesh, &first_faces) {
+                    if mesh.face_loops(f as usize).is_empty() {
+                        return Err(MeshError::EmptyFace { face: f });
+                    }
+                    if stamp.is_empty() {
+                        stamp = vec![NONE; nv];
+                    }
+                    check_face(mesh, f as usize, &mut stamp)?;
+                }
+                drop(stamp);
+                Outgoing::new(nv, cv, &loops)
+            }
+        };
 
         // Every vertex pairs its outgoing half-edges with their twins, picks its ring start
         // and walks its fan, on every core; when every pair is mutual and unique those are the
@@ -513,19 +514,6 @@ fn uniform_layout(mesh: &PolyMesh) -> Option<usize> {
 
 /// Whether the corners `vs` of a one-loop face are anything but a plain triangle or quad of
 /// distinct vertices below `nv`: such a face gets [`check_face`], which names what is wrong.
-/// Whether every face of `K` corners in `cv` is plain ([`needs_full_check`] false), on every
-/// core, the corner count known to the compiler (vector code: a third of the time of a
-/// look with the count at run time).
-fn plain_faces<const K: usize>(cv: &[u32], nv: usize) -> bool {
-    cv.par_chunks(K << 12).all(|chunk| {
-        !chunk
-            .as_chunks::<K>()
-            .0
-            .iter()
-            .fold(false, |acc, vs| acc | needs_full_check(vs, nv))
-    })
-}
-
 /// No branch per compare: vector code over many faces.
 #[inline(always)]
 fn needs_full_check(vs: &[u32], nv: usize) -> bool {

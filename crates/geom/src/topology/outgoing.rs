@@ -38,18 +38,62 @@ impl<'a> Outgoing<'a> {
     pub(super) fn in_runs(nv: usize, cv: &'a [u32], loops: &'a Loops, runs: usize) -> Outgoing<'a> {
         let nc = cv.len();
         let runs = runs.max(1);
-        let bound = |k: usize| k * nc / runs;
-        let mut counts: Vec<Vec<u32>> = (0..runs)
+        let bounds: Vec<usize> = (0..=runs).map(|k| k * nc / runs).collect();
+        let counts: Vec<Vec<u32>> = (0..runs)
             .into_par_iter()
             .map(|k| {
                 let mut count = vec![0u32; nv];
-                for &v in &cv[bound(k)..bound(k + 1)] {
+                for &v in &cv[bounds[k]..bounds[k + 1]] {
                     count[v as usize] += 1;
                 }
                 count
             })
             .collect();
+        Self::from_counts(nv, cv, loops, &bounds, counts)
+    }
 
+    /// The lists of a mesh whose faces are all one loop of `K` corners, looking at each
+    /// face as it is counted: `None` when some face is not a plain triangle or quad of
+    /// distinct vertices below `nv` (`plain`; the caller then looks for the first such face
+    /// and names what is wrong). One read of the corners where a look of its own took
+    /// another.
+    pub(super) fn of_uniform<const K: usize>(
+        nv: usize,
+        cv: &'a [u32],
+        loops: &'a Loops,
+        plain: impl Fn(&[u32; K]) -> bool + Sync,
+    ) -> Option<Outgoing<'a>> {
+        let nf = cv.len() / K;
+        let runs = rayon::current_num_threads().min(cv.len() / MIN_RUN).max(1);
+        let bounds: Vec<usize> = (0..=runs).map(|k| k * nf / runs * K).collect();
+        let counts: Vec<Vec<u32>> = (0..runs)
+            .into_par_iter()
+            .map(|k| {
+                let mut count = vec![0u32; nv];
+                for face in cv[bounds[k]..bounds[k + 1]].as_chunks::<K>().0 {
+                    if !plain(face) {
+                        return None;
+                    }
+                    for &v in face {
+                        count[v as usize] += 1;
+                    }
+                }
+                Some(count)
+            })
+            .collect::<Option<_>>()?;
+        Some(Self::from_counts(nv, cv, loops, &bounds, counts))
+    }
+
+    /// The lists from each run's counts (run k holds corners `bounds[k]..bounds[k + 1]`).
+    fn from_counts(
+        nv: usize,
+        cv: &'a [u32],
+        loops: &'a Loops,
+        bounds: &[usize],
+        mut counts: Vec<Vec<u32>>,
+    ) -> Outgoing<'a> {
+        let nc = cv.len();
+        let runs = counts.len();
         // Block totals, their prefix sums, then per vertex its start and each run's first
         // slot (the counts become the runs' write positions).
         let blocks = nv.div_ceil(VERTEX_BLOCK);
@@ -100,8 +144,8 @@ impl<'a> Outgoing<'a> {
         let out = Slots(slots.spare_capacity_mut().as_mut_ptr().cast::<u32>());
         counts.into_par_iter().enumerate().for_each(|(k, mut at)| {
             let out = &out;
-            let first = bound(k);
-            for (c, &v) in (first..).zip(&cv[first..bound(k + 1)]) {
+            let first = bounds[k];
+            for (c, &v) in (first..).zip(&cv[first..bounds[k + 1]]) {
                 let v = v as usize;
                 // SAFETY: the slots `at[v]` of the runs are disjoint and lie in 0..nc (the
                 // prefix sums of the counts above).
