@@ -16,7 +16,8 @@
 //! pairs with, else the first) and the fan: `ring_next(d) = twin[prev d]`, the outgoing
 //! half-edge found for `prev d`. A vertex whose walk from its start does not visit its whole
 //! list is not a single fan; [`super::Topology::require_single_fans`] then walks again to
-//! name it.
+//! name it. As it writes each twin, a task counts the half-edges that lead their edge per
+//! block of corners ([`Leads`]), which spares the edge numbering a counting pass.
 
 use super::outgoing::Outgoing;
 use super::{CornerLoops, Loops, NONE, with_loops};
@@ -35,6 +36,8 @@ pub(super) struct ByVertex {
     pub ring_start: Vec<u32>,
     /// Whether every vertex's faces form a single fan.
     pub single_fans: bool,
+    /// The leading half-edges per block, for the edge numbering.
+    pub leads: Leads,
 }
 
 /// Scratch for a vertex with a long list (rare: a fresh one each, which keeps the hot loop
@@ -69,30 +72,53 @@ fn twins_in<L: CornerLoops>(cv: &[u32], loops: L, outgoing: &Outgoing) -> Option
     let slots = Slots(twin.spare_capacity_mut().as_mut_ptr().cast::<u32>());
     let sound = AtomicBool::new(true);
     let fans = AtomicBool::new(true);
-    let ring_start: Vec<u32> = (0..nv)
-        .into_par_iter()
-        .with_min_len(1 << 12)
-        .map(|a| {
-            let list = outgoing.list(a as u32);
-            let found = match list.len() {
-                0 => return NONE,
-                n if n <= SHORTER => short::<L, SHORTER>(list, cv, loops, &slots),
-                _ => longer(list, cv, loops, &slots),
-            };
-            match found {
-                Some((start, single)) => {
-                    if !single {
-                        fans.store(false, Relaxed);
-                    }
-                    start
+    let blocks = nc.div_ceil(LEAD_BLOCK);
+    let vertex = |a: usize, w: &mut Writer| {
+        let list = outgoing.list(a as u32);
+        let found = match list.len() {
+            0 => return NONE,
+            n if n <= SHORTER => short::<L, SHORTER>(list, cv, loops, w),
+            _ => longer(list, cv, loops, w),
+        };
+        match found {
+            Some((start, single)) => {
+                if !single {
+                    fans.store(false, Relaxed);
                 }
-                None => {
-                    sound.store(false, Relaxed);
-                    NONE
-                }
+                start
             }
+            None => {
+                sound.store(false, Relaxed);
+                NONE
+            }
+        }
+    };
+    // Each task of vertices writes their ring starts and counts the leading half-edges it
+    // paired per block of corners.
+    let mut ring_start: Vec<u32> = Vec::with_capacity(nv);
+    let (leads, open) = ring_start.spare_capacity_mut()[..nv]
+        .par_chunks_mut(VERTEX_TASK)
+        .enumerate()
+        .map(|(k, chunk)| {
+            let mut w = Writer {
+                slots: &slots,
+                leads: vec![0; blocks],
+                open: 0,
+            };
+            for (i, slot) in chunk.iter_mut().enumerate() {
+                slot.write(vertex(k * VERTEX_TASK + i, &mut w));
+            }
+            (w.leads, w.open)
         })
-        .collect();
+        .reduce(
+            || (vec![0; blocks], 0),
+            |(mut a, oa), (b, ob)| {
+                a.iter_mut().zip(b).for_each(|(x, y)| *x += y);
+                (a, oa + ob)
+            },
+        );
+    // SAFETY: the chunks cover all nv slots and each was written.
+    unsafe { ring_start.set_len(nv) };
     if !sound.load(Relaxed) {
         return None;
     }
@@ -103,7 +129,44 @@ fn twins_in<L: CornerLoops>(cv: &[u32], loops: L, outgoing: &Outgoing) -> Option
         twin,
         ring_start,
         single_fans: fans.load(Relaxed),
+        leads: Leads {
+            per_block: leads,
+            open,
+        },
     })
+}
+
+/// Vertices a task of the pass takes.
+const VERTEX_TASK: usize = 1 << 12;
+
+/// Corners a block of the edge numbering's counts holds.
+pub(super) const LEAD_BLOCK: usize = super::edges::BLOCK;
+
+/// The half-edges that lead their edge (a smaller index than the twin's, or no twin), counted
+/// per block of [`LEAD_BLOCK`] corners while pairing, and those without a twin: what the edge
+/// numbering would otherwise count in a pass of its own.
+pub(super) struct Leads {
+    pub per_block: Vec<u32>,
+    pub open: usize,
+}
+
+/// A task's writes of twins, with its counts.
+struct Writer<'a> {
+    slots: &'a Slots,
+    leads: Vec<u32>,
+    open: usize,
+}
+
+impl Writer<'_> {
+    /// Writes the twin `t` of half-edge `p`, which ends at the calling vertex, and counts
+    /// `p` if it leads its edge.
+    #[inline(always)]
+    fn write(&mut self, p: u32, t: u32) {
+        self.slots.write(p, t);
+        // NONE is above every index: a half-edge without a twin leads.
+        self.leads[p as usize / LEAD_BLOCK] += u32::from(p < t);
+        self.open += usize::from(t == NONE);
+    }
 }
 
 /// A vertex of at most `N` ≤ 16 half-edges (nearly all): everything on the stack.
@@ -112,7 +175,7 @@ fn short<L: CornerLoops, const N: usize>(
     list: &[u32],
     cv: &[u32],
     loops: L,
-    slots: &Slots,
+    w: &mut Writer,
 ) -> Found {
     let n = list.len();
     // Past n, `to` holds NONE, which no vertex is: the lookups below compare all N lanes at
@@ -143,7 +206,7 @@ fn short<L: CornerLoops, const N: usize>(
             pair[i] = j as u32;
             list[j]
         };
-        slots.write(loops.prev(list[i] as usize), t);
+        w.write(loops.prev(list[i] as usize), t);
     }
     let all = (1u32 << n) - 1; // n ≤ 16
     if open | (all & !paired) != 0 {
@@ -164,11 +227,11 @@ fn short<L: CornerLoops, const N: usize>(
 /// A vertex of more than [`SHORTER`] half-edges, out of the hot loop (inlined with a
 /// scratch per task, the pass took a tenth longer).
 #[inline(never)]
-fn longer<L: CornerLoops>(list: &[u32], cv: &[u32], loops: L, slots: &Slots) -> Found {
+fn longer<L: CornerLoops>(list: &[u32], cv: &[u32], loops: L, w: &mut Writer) -> Found {
     if list.len() <= SHORT {
-        short::<L, SHORT>(list, cv, loops, slots)
+        short::<L, SHORT>(list, cv, loops, w)
     } else {
-        long(list, cv, loops, slots, &mut Scratch::default())
+        long(list, cv, loops, w, &mut Scratch::default())
     }
 }
 
@@ -187,7 +250,7 @@ fn long<L: CornerLoops>(
     list: &[u32],
     cv: &[u32],
     loops: L,
-    slots: &Slots,
+    w: &mut Writer,
     s: &mut Scratch,
 ) -> Found {
     let n = list.len();
@@ -225,7 +288,7 @@ fn long<L: CornerLoops>(
             s.paired[j as usize] = true;
             list[j as usize]
         };
-        slots.write(loops.prev(list[i] as usize), t);
+        w.write(loops.prev(list[i] as usize), t);
     }
     let first = s.paired.iter().position(|&p| !p).unwrap_or(0);
     Some((list[first], fan(&s.pair, first) == n))

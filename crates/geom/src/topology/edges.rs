@@ -7,14 +7,16 @@
 //! leader and to its twin. The numbers are the one pass's whatever the blocks.
 //!
 //! The count also gives the number of half-edges without a twin (the boundary edges), which
-//! tells a closed level from an open one without another pass.
+//! tells a closed level from an open one without another pass. Where the twins were paired
+//! vertex by vertex (`super::by_vertex`), the pairing counted both per block as it wrote
+//! each twin, and the numbering starts from those counts: one pass over the half-edges.
 
 use super::NONE;
 use crate::parallel::{filled, split_at_bounds};
 use rayon::prelude::*;
 
 /// Half-edges a block of the parallel numbering takes.
-const BLOCK: usize = 1 << 16;
+pub(super) const BLOCK: usize = 1 << 16;
 
 /// What the numbering gives.
 pub(super) struct Numbered {
@@ -24,10 +26,17 @@ pub(super) struct Numbered {
     pub open: usize,
 }
 
-/// The numbering of the half-edges whose twins are `twin`.
-pub(super) fn number_edges(twin: &[u32]) -> Numbered {
+/// The numbering of the half-edges whose twins are `twin`, from the counts per block of
+/// [`BLOCK`] half-edges when the pairing made them (leading half-edges, and those without a
+/// twin).
+pub(super) fn number_edges(twin: &[u32], counted: Option<(&[u32], usize)>) -> Numbered {
     if rayon::current_num_threads() > 1 && twin.len() >= 4 * BLOCK {
-        in_blocks(twin, BLOCK)
+        match counted {
+            Some((per_block, open)) => {
+                from_counts(twin, BLOCK, per_block.iter().map(|&k| k as usize), open)
+            }
+            None => in_blocks(twin, BLOCK),
+        }
     } else {
         one_pass(twin)
     }
@@ -83,12 +92,23 @@ pub(super) fn in_blocks(twin: &[u32], block: usize) -> Numbered {
             (lead, ts.iter().filter(|&&t| t == NONE).count())
         })
         .collect();
-    let mut bounds = Vec::with_capacity(counts.len() + 1);
+    let open = counts.iter().map(|&(_, o)| o).sum();
+    from_counts(twin, block, counts.into_iter().map(|(k, _)| k), open)
+}
+
+/// The numbering from the leading half-edges of each block of `block` half-edges.
+pub(super) fn from_counts(
+    twin: &[u32],
+    block: usize,
+    per_block: impl ExactSizeIterator<Item = usize>,
+    open: usize,
+) -> Numbered {
+    let n = twin.len();
+    let range = |b: usize| b * block..((b + 1) * block).min(n);
+    let mut bounds = Vec::with_capacity(per_block.len() + 1);
     bounds.push(0);
-    let mut open = 0;
-    for (k, o) in counts {
+    for k in per_block {
         bounds.push(bounds[bounds.len() - 1] + k);
-        open += o;
     }
     // Each block numbers its own leading half-edges and writes the number to the leader and
     // to its twin, wherever that lies: every half-edge is written exactly once, by the leader

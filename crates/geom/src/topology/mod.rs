@@ -154,12 +154,18 @@ impl Topology {
         // Every vertex pairs its outgoing half-edges with their twins, picks its ring start
         // and walks its fan, on every core; when every pair is mutual and unique those are the
         // twins. Otherwise the serial pass below runs and names the first bad edge.
-        let (twin, vert_corner, fans_checked) = match by_vertex::twins(cv, &loops, &outgoing) {
-            Some(found) => (found.twin, found.ring_start, found.single_fans),
+        let (twin, vert_corner, fans_checked, leads) = match by_vertex::twins(cv, &loops, &outgoing)
+        {
+            Some(found) => (
+                found.twin,
+                found.ring_start,
+                found.single_fans,
+                Some(found.leads),
+            ),
             None => {
                 let twin = serial_twins(cv, &loops, &outgoing, nc)?;
                 let starts = ring_starts(&twin, &outgoing, nv);
-                (twin, starts, false)
+                (twin, starts, false, None)
             }
         };
         let unused = vert_corner
@@ -179,7 +185,8 @@ impl Topology {
             });
         }
 
-        let mut topo = Topology::from_twins(twin, loops, vert_corner);
+        let counted = leads.as_ref().map(|l| (&l.per_block[..], l.open));
+        let mut topo = Topology::numbered(twin, loops, vert_corner, counted);
         topo.warnings = warnings;
         topo.fans_checked = fans_checked;
         Ok(topo)
@@ -189,7 +196,18 @@ impl Topology {
     /// [`Topology::build`] or written down by a split): edges numbered in the order of their
     /// smaller half-edge.
     pub(crate) fn from_twins(twin: Vec<u32>, loops: Loops, vert_corner: Vec<u32>) -> Topology {
-        let numbered = edges::number_edges(&twin);
+        Topology::numbered(twin, loops, vert_corner, None)
+    }
+
+    /// [`Topology::from_twins`], with the leading half-edges per block of the numbering
+    /// and the open ones when the pairing counted them.
+    fn numbered(
+        twin: Vec<u32>,
+        loops: Loops,
+        vert_corner: Vec<u32>,
+        counted: Option<(&[u32], usize)>,
+    ) -> Topology {
+        let numbered = edges::number_edges(&twin, counted);
         Topology {
             loops,
             twin,

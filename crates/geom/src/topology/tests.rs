@@ -215,6 +215,16 @@ fn twins_found_in_parallel_are_the_serial_ones() {
         let open = t.twin.iter().filter(|&&x| x == NONE).count();
         assert_eq!(one.open, open);
         assert_eq!(t.is_closed(), open == 0);
+        // And the numbering from the leading half-edges counted while pairing.
+        let outgoing = Outgoing::new(nv, cv, t.loops());
+        let leads = by_vertex::twins(cv, t.loops(), &outgoing).unwrap().leads;
+        assert!(leads.per_block.len() > 1);
+        let per_block = leads.per_block.iter().map(|&k| k as usize);
+        let counted = edges::from_counts(&t.twin, edges::BLOCK, per_block, leads.open);
+        assert_eq!(
+            (counted.corner_edge, counted.edge_corner, counted.open),
+            (one.corner_edge.clone(), one.edge_corner.clone(), one.open)
+        );
         for block in [1, 7, 4096, 1 << 16] {
             let b = edges::in_blocks(&t.twin, block);
             assert_eq!(
