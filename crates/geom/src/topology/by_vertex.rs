@@ -17,8 +17,9 @@
 //! half-edge found for `prev d`. A vertex whose walk from its start does not visit its whole
 //! list is not a single fan; [`super::Topology::require_single_fans`] then walks again to
 //! name it. As it writes each twin, a task counts the half-edges that lead their edge per
-//! block of corners ([`Leads`]), which spares the edge numbering a counting pass.
+//! block of corners (`super::edges::Leads`), which spares the edge numbering a counting pass.
 
+use super::edges::{Leads, leads};
 use super::outgoing::Outgoing;
 use super::{CornerLoops, Loops, NONE, with_loops};
 use rayon::prelude::*;
@@ -140,15 +141,7 @@ fn twins_in<L: CornerLoops>(cv: &[u32], loops: L, outgoing: &Outgoing) -> Option
 const VERTEX_TASK: usize = 1 << 12;
 
 /// Corners a block of the edge numbering's counts holds.
-pub(super) const LEAD_BLOCK: usize = super::edges::BLOCK;
-
-/// The half-edges that lead their edge (a smaller index than the twin's, or no twin), counted
-/// per block of [`LEAD_BLOCK`] corners while pairing, and those without a twin: what the edge
-/// numbering would otherwise count in a pass of its own.
-pub(super) struct Leads {
-    pub per_block: Vec<u32>,
-    pub open: usize,
-}
+const LEAD_BLOCK: usize = super::edges::BLOCK;
 
 /// A task's writes of twins, with its counts.
 struct Writer<'a> {
@@ -163,8 +156,7 @@ impl Writer<'_> {
     #[inline(always)]
     fn write(&mut self, p: u32, t: u32) {
         self.slots.write(p, t);
-        // NONE is above every index: a half-edge without a twin leads.
-        self.leads[p as usize / LEAD_BLOCK] += u32::from(p < t);
+        self.leads[p as usize / LEAD_BLOCK] += u32::from(leads(p, t));
         self.open += usize::from(t == NONE);
     }
 }

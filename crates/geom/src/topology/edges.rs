@@ -26,15 +26,19 @@ pub(super) struct Numbered {
     pub open: usize,
 }
 
+/// The half-edges that lead their edge per block of half-edges, and those without a twin:
+/// counted by the numbering's first pass, or by the pairing as it writes the twins.
+pub(super) struct Leads {
+    pub per_block: Vec<u32>,
+    pub open: usize,
+}
+
 /// The numbering of the half-edges whose twins are `twin`, from the counts per block of
-/// [`BLOCK`] half-edges when the pairing made them (leading half-edges, and those without a
-/// twin).
-pub(super) fn number_edges(twin: &[u32], counted: Option<(&[u32], usize)>) -> Numbered {
+/// [`BLOCK`] half-edges when the pairing made them.
+pub(super) fn number_edges(twin: &[u32], counted: Option<&Leads>) -> Numbered {
     if rayon::current_num_threads() > 1 && twin.len() >= 4 * BLOCK {
         match counted {
-            Some((per_block, open)) => {
-                from_counts(twin, BLOCK, per_block.iter().map(|&k| k as usize), open)
-            }
+            Some(leads) => from_counts(twin, BLOCK, leads),
             None => in_blocks(twin, BLOCK),
         }
     } else {
@@ -42,11 +46,11 @@ pub(super) fn number_edges(twin: &[u32], counted: Option<(&[u32], usize)>) -> Nu
     }
 }
 
-/// Whether half-edge `c` numbers its edge.
-#[inline]
-fn leads(twin: &[u32], c: usize) -> bool {
-    let t = twin[c];
-    t == NONE || (c as u32) < t
+/// Whether half-edge `c` with twin `t` numbers its edge: the smaller index of the two, or no
+/// twin (NONE is above every index).
+#[inline(always)]
+pub(super) fn leads(c: u32, t: u32) -> bool {
+    c < t
 }
 
 pub(super) fn one_pass(twin: &[u32]) -> Numbered {
@@ -55,7 +59,7 @@ pub(super) fn one_pass(twin: &[u32]) -> Numbered {
     let mut edge_corner = Vec::with_capacity(n / 2 + 1);
     let mut open = 0;
     for c in 0..n {
-        if leads(twin, c) {
+        if leads(c as u32, twin[c]) {
             let e = edge_corner.len() as u32;
             edge_corner.push(c as u32);
             corner_edge[c] = e;
@@ -77,9 +81,8 @@ pub(super) fn one_pass(twin: &[u32]) -> Numbered {
 pub(super) fn in_blocks(twin: &[u32], block: usize) -> Numbered {
     let n = twin.len();
     let range = |b: usize| b * block..((b + 1) * block).min(n);
-    // Per block: the edges it leads and its half-edges without a twin (a half-edge leads
-    // when its index is below its twin's, NONE being above every index).
-    let counts: Vec<(usize, usize)> = (0..n.div_ceil(block))
+    // Per block: the edges it leads and its half-edges without a twin.
+    let counts: Vec<(u32, usize)> = (0..n.div_ceil(block))
         .into_par_iter()
         .map(|b| {
             let r = range(b);
@@ -87,28 +90,26 @@ pub(super) fn in_blocks(twin: &[u32], block: usize) -> Numbered {
             let lead = ts
                 .iter()
                 .zip(r.start as u32..)
-                .filter(|&(&t, c)| c < t)
+                .filter(|&(&t, c)| leads(c, t))
                 .count();
-            (lead, ts.iter().filter(|&&t| t == NONE).count())
+            (lead as u32, ts.iter().filter(|&&t| t == NONE).count())
         })
         .collect();
-    let open = counts.iter().map(|&(_, o)| o).sum();
-    from_counts(twin, block, counts.into_iter().map(|(k, _)| k), open)
+    let counted = Leads {
+        per_block: counts.iter().map(|&(k, _)| k).collect(),
+        open: counts.iter().map(|&(_, o)| o).sum(),
+    };
+    from_counts(twin, block, &counted)
 }
 
 /// The numbering from the leading half-edges of each block of `block` half-edges.
-pub(super) fn from_counts(
-    twin: &[u32],
-    block: usize,
-    per_block: impl ExactSizeIterator<Item = usize>,
-    open: usize,
-) -> Numbered {
+pub(super) fn from_counts(twin: &[u32], block: usize, counted: &Leads) -> Numbered {
     let n = twin.len();
     let range = |b: usize| b * block..((b + 1) * block).min(n);
-    let mut bounds = Vec::with_capacity(per_block.len() + 1);
+    let mut bounds = Vec::with_capacity(counted.per_block.len() + 1);
     bounds.push(0);
-    for k in per_block {
-        bounds.push(bounds[bounds.len() - 1] + k);
+    for &k in &counted.per_block {
+        bounds.push(bounds[bounds.len() - 1] + k as usize);
     }
     // Each block numbers its own leading half-edges and writes the number to the leader and
     // to its twin, wherever that lies: every half-edge is written exactly once, by the leader
@@ -123,7 +124,7 @@ pub(super) fn from_counts(
             let slots = &slots;
             let mut k = 0;
             for c in range(b) {
-                if leads(twin, c) {
+                if leads(c as u32, twin[c]) {
                     let e = (bounds[b] + k) as u32;
                     firsts[k] = c as u32;
                     k += 1;
@@ -144,7 +145,7 @@ pub(super) fn from_counts(
     Numbered {
         corner_edge,
         edge_corner,
-        open,
+        open: counted.open,
     }
 }
 

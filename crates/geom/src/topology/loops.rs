@@ -142,31 +142,19 @@ impl Loops {
     /// The next corner of corner `c`'s loop.
     #[inline]
     pub fn next(&self, c: usize) -> u32 {
-        match self {
-            Loops::Quads => QuadLoops.next(c),
-            Loops::Triangles => TriLoops.next(c),
-            Loops::Listed(l) => l.next[c],
-        }
+        with_loops!(self, l => l.next(c))
     }
 
     /// The previous corner of corner `c`'s loop.
     #[inline]
     pub fn prev(&self, c: usize) -> u32 {
-        match self {
-            Loops::Quads => QuadLoops.prev(c),
-            Loops::Triangles => TriLoops.prev(c),
-            Loops::Listed(l) => l.prev[c],
-        }
+        with_loops!(self, l => l.prev(c))
     }
 
     /// The face of corner `c`.
     #[inline]
     pub fn face(&self, c: usize) -> u32 {
-        match self {
-            Loops::Quads => QuadLoops.face(c),
-            Loops::Triangles => TriLoops.face(c),
-            Loops::Listed(l) => l.corner_face[c],
-        }
+        with_loops!(self, l => l.face(c))
     }
 
     /// Whether `self` and `other` give every one of `corners` corners the same face and

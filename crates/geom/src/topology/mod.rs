@@ -124,10 +124,9 @@ impl Topology {
         // Outgoing half-edges per vertex (CSR). Every face one loop of k corners, k = 3 or
         // 4: the faces are looked at as their corners are counted; the first that is not
         // plain, if any, gets the full check below, which names it.
-        let plain = |vs: &[u32]| !needs_full_check(vs, nv);
         let counted = match uniform {
-            Some(4) => Outgoing::of_uniform::<4>(nv, cv, &loops, |f| plain(f)),
-            Some(_) => Outgoing::of_uniform::<3>(nv, cv, &loops, |f| plain(f)),
+            Some(4) => Outgoing::of_uniform::<4>(nv, cv, &loops),
+            Some(_) => Outgoing::of_uniform::<3>(nv, cv, &loops),
             None => None,
         };
         let outgoing = match counted {
@@ -185,8 +184,7 @@ impl Topology {
             });
         }
 
-        let counted = leads.as_ref().map(|l| (&l.per_block[..], l.open));
-        let mut topo = Topology::numbered(twin, loops, vert_corner, counted);
+        let mut topo = Topology::numbered(twin, loops, vert_corner, leads.as_ref());
         topo.warnings = warnings;
         topo.fans_checked = fans_checked;
         Ok(topo)
@@ -205,7 +203,7 @@ impl Topology {
         twin: Vec<u32>,
         loops: Loops,
         vert_corner: Vec<u32>,
-        counted: Option<(&[u32], usize)>,
+        counted: Option<&edges::Leads>,
     ) -> Topology {
         let numbered = edges::number_edges(&twin, counted);
         Topology {

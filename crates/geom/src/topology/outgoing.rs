@@ -8,13 +8,18 @@
 //! The runs write into one array at interleaved places (disjoint slots, through a raw
 //! pointer), each slot once, with no zeroed buffer first.
 
-use super::Loops;
+use super::{Loops, needs_full_check};
 use rayon::prelude::*;
 
 /// Vertices a task of the offset pass takes.
 const VERTEX_BLOCK: usize = 1 << 14;
 /// Corners a run takes at least.
 const MIN_RUN: usize = 1 << 16;
+
+/// The runs the corners are cut into: one per thread, none shorter than [`MIN_RUN`].
+fn runs(corners: usize) -> usize {
+    rayon::current_num_threads().min(corners / MIN_RUN).max(1)
+}
 
 /// Outgoing half-edges per vertex.
 pub(super) struct Outgoing<'a> {
@@ -30,8 +35,7 @@ pub(super) struct Outgoing<'a> {
 impl<'a> Outgoing<'a> {
     /// The lists of the `nv` vertices of corners `cv` with loops `loops`.
     pub(super) fn new(nv: usize, cv: &'a [u32], loops: &'a Loops) -> Outgoing<'a> {
-        let runs = rayon::current_num_threads().min(cv.len() / MIN_RUN).max(1);
-        Self::in_runs(nv, cv, loops, runs)
+        Self::in_runs(nv, cv, loops, runs(cv.len()))
     }
 
     /// The same, the corners cut into `runs` runs (at least one).
@@ -53,25 +57,24 @@ impl<'a> Outgoing<'a> {
     }
 
     /// The lists of a mesh whose faces are all one loop of `K` corners, looking at each
-    /// face as it is counted: `None` when some face is not a plain triangle or quad of
-    /// distinct vertices below `nv` (`plain`; the caller then looks for the first such face
-    /// and names what is wrong). One read of the corners where a look of its own took
-    /// another.
+    /// face as it is counted: `None` when some face needs the full check (not a plain
+    /// triangle or quad of distinct vertices below `nv`; the caller then looks for the first
+    /// such face and names what is wrong). One read of the corners where a look of its own
+    /// took another.
     pub(super) fn of_uniform<const K: usize>(
         nv: usize,
         cv: &'a [u32],
         loops: &'a Loops,
-        plain: impl Fn(&[u32; K]) -> bool + Sync,
     ) -> Option<Outgoing<'a>> {
         let nf = cv.len() / K;
-        let runs = rayon::current_num_threads().min(cv.len() / MIN_RUN).max(1);
+        let runs = runs(cv.len());
         let bounds: Vec<usize> = (0..=runs).map(|k| k * nf / runs * K).collect();
         let counts: Vec<Vec<u32>> = (0..runs)
             .into_par_iter()
             .map(|k| {
                 let mut count = vec![0u32; nv];
                 for face in cv[bounds[k]..bounds[k + 1]].as_chunks::<K>().0 {
-                    if !plain(face) {
+                    if needs_full_check(face, nv) {
                         return None;
                     }
                     for &v in face {

@@ -189,8 +189,7 @@ fn twins_found_in_parallel_are_the_serial_ones() {
         // The counting while looking at each face (every face a quad: the torus) gives the
         // same lists.
         if mesh.num_corners() == 4 * mesh.num_faces() {
-            let plain = |f: &[u32; 4]| !needs_full_check(f, nv);
-            let outgoing = Outgoing::of_uniform::<4>(nv, cv, t.loops(), plain).unwrap();
+            let outgoing = Outgoing::of_uniform::<4>(nv, cv, t.loops()).unwrap();
             for (v, list) in out.iter().enumerate() {
                 assert!(outgoing.of(v as u32).eq(list.iter().copied()), "vertex {v}");
             }
@@ -219,8 +218,7 @@ fn twins_found_in_parallel_are_the_serial_ones() {
         let outgoing = Outgoing::new(nv, cv, t.loops());
         let leads = by_vertex::twins(cv, t.loops(), &outgoing).unwrap().leads;
         assert!(leads.per_block.len() > 1);
-        let per_block = leads.per_block.iter().map(|&k| k as usize);
-        let counted = edges::from_counts(&t.twin, edges::BLOCK, per_block, leads.open);
+        let counted = edges::from_counts(&t.twin, edges::BLOCK, &leads);
         assert_eq!(
             (counted.corner_edge, counted.edge_corner, counted.open),
             (one.corner_edge.clone(), one.edge_corner.clone(), one.open)
