@@ -479,6 +479,27 @@ fn skew_cubes_and_the_order_of_the_pair() {
     }
 }
 
+/// The same turned pair at small t: where a cut passes near a corner the kept edge piece hooks
+/// and is the cubic normal to both radii. With legs a third of the chord at every t it bulged
+/// between edges hugging their chords, ten times their speed at the corner, and a cell folded
+/// at t = 0.1 (envelope.md, "Hooked pieces at small t"); with legs shrinking as 2t below ½
+/// nothing folds, and the surface is closed and faces away from the centres' segment.
+#[test]
+fn a_turned_pair_at_small_t_does_not_fold() {
+    let gb = [2.5, 1.0, 0.5];
+    for t in [0.3, 0.2, 0.1] {
+        let e = pair(
+            cube_at([0.0; 3], [0.0; 3]),
+            cube_at(gb, [20.0, 35.0, 10.0]),
+            t,
+        );
+        assert_eq!(e.folds(), vec![], "t = {t}");
+        assert!(e.largest_border_jump() < 1e-9);
+        let m = e.tessellate(6).unwrap();
+        assert_closed_outward_from(&m, DVec3::ZERO, DVec3::from_array(gb), &format!("t = {t}"));
+    }
+}
+
 /// Two primitives with one centre have no view vector between them: refused, naming both
 /// (also when others are in the scene).
 #[test]

@@ -181,21 +181,27 @@ fn the_t_sweep_shows_the_three_t() {
     );
 }
 
-/// Folds are shown in the summary: none on a bundled sample at its own t or at t = 0.5; the
-/// seven-primitive sample at t = 0.1 has cells turned by more than 90°, counted, with where the
-/// first lies.
+/// Folds are shown in the summary: none on the seven-primitive sample at its own t, at 0.5 or
+/// at 0.1, where the slider stops; a heap of four cubes with a thin four-sided region has cells
+/// turned by more than 90° at t = 0.5, counted, with where the first lies.
 #[test]
 fn the_summary_counts_folds() {
     let k = envelope::ENVELOPE_SAMPLES
         .iter()
         .position(|s| s.1 == "table2-seven.envelope.json")
         .unwrap();
-    for (t, folded) in [(None, false), (Some(0.5), false), (Some(0.1), true)] {
+    let heap: prism_geom::freeform::envelope::EnvelopeSpec = serde_json::from_str(include_str!(
+        "../../../geom/tests/data/envelope/thin-quad-heap.envelope.json"
+    ))
+    .unwrap();
+    let seven = envelope::sample(k).unwrap();
+    for (spec, folded) in [
+        (seven.clone(), false),
+        (envelope::with_uniform_t(&seven, 0.5), false),
+        (envelope::with_uniform_t(&seven, 0.1), false),
+        (heap, true),
+    ] {
         let mut a = app();
-        let mut spec = envelope::sample(k).unwrap();
-        if let Some(t) = t {
-            spec = envelope::with_uniform_t(&spec, t);
-        }
         a.run(Command::Edit(Edit::SetEnvelope {
             spec: Some(spec),
             gesture: None,
@@ -206,7 +212,7 @@ fn the_summary_counts_folds() {
             Some((n, text)) => {
                 assert!(folded && *n > 0);
                 assert_eq!(b.fold_points.len(), *n);
-                assert!(text.contains("the first on primitive 6 face 3"), "{text}");
+                assert!(text.contains("the first on primitive 2 face 3"), "{text}");
             }
             None => assert!(!folded && b.fold_points.is_empty()),
         }

@@ -23,7 +23,8 @@
 //!   would hook — leave its end or arrive backwards, when no convex arc is normal to both radii
 //!   (`|A − G| cos γ > |S − G|`: small t, a plane cutting near a corner) — or nearly does (a
 //!   leg under 5 % of the chord), the polynomial cubic normal to both radii, legs a third of
-//!   the chord (an inflection where it hooks), so that S keeps its tangent plane normal to
+//!   the chord for t ≥ ½ and 2t thirds below (an inflection where it hooks; tending to the
+//!   chord as t → 0 like the edges beside it), so that S keeps its tangent plane normal to
 //!   S − G, which holds d;
 //! - a side along Π_k is a **silhouette edge**, built in Π_k with §6.3 between its ends
 //!   (ρ = t·|P − G| at each), or, where that hooks or nearly does (a leg under 15 % of the
@@ -133,16 +134,26 @@ fn hooks(c: &RationalBezier, chord: DVec3, near: f64) -> bool {
         || p[3].distance(p[2]) < least
 }
 
+/// The share of a third of the chord that a hooked edge piece's legs take at curvature
+/// parameter `t` (the mean of its ends'): all of it from t = ½ up, in proportion to t below,
+/// so that as t → 0 the piece tends to its chord as every other edge does. Legs a third of the
+/// chord at any t left the piece bulging between edges that hug their chords, with end speeds
+/// ten times theirs at t = 0.1, and the patch at the corner folded (envelope.md, "Hooked
+/// pieces at small t").
+fn legs_for(t: f64) -> f64 {
+    (2.0 * t).min(1.0)
+}
+
 /// The polynomial cubic from `px` to `py` in the plane through `g` normal to `plane`, leaving
-/// and reaching each end normal to its radius (towards the other end), legs a third of the
-/// chord: where a §6.3 piece hooks or nearly does.
-fn third_cubic(g: DVec3, plane: DVec3, px: DVec3, py: DVec3) -> RationalBezier {
+/// and reaching each end normal to its radius (towards the other end), legs `scale` × a third
+/// of the chord: where a §6.3 piece hooks or nearly does.
+fn third_cubic(g: DVec3, plane: DVec3, px: DVec3, py: DVec3, scale: f64) -> RationalBezier {
     let chord = py - px;
     let along = |p: DVec3| {
         let t = plane.cross(p - g).normalize();
         if t.dot(chord) < 0.0 { -t } else { t }
     };
-    let l = chord.length() / 3.0;
+    let l = scale * chord.length() / 3.0;
     RationalBezier::polynomial(vec![px, px + l * along(px), py - l * along(py), py])
         .expect("finite points")
 }
@@ -404,7 +415,7 @@ impl Clipper<'_> {
                     // parameter room. The cubic that leaves and reaches them along the
                     // section's tangents, a third of the chord long, instead (an inflection,
                     // not a hook; envelope.md).
-                    third_cubic(g, self.cuts[k], px, py)
+                    third_cubic(g, self.cuts[k], px, py, 1.0)
                 } else {
                     bez
                 };
@@ -422,7 +433,8 @@ impl Clipper<'_> {
                     // that end): the cubic normal to both radii instead, an inflection where it
                     // hooks; S keeps its tangent plane (envelope.md, "Where the rebuilt piece
                     // would hook", "Nearly hooked pieces").
-                    third_cubic(g, (px - g).cross(py - g), px, py)
+                    let t = 0.5 * (t_of(net, x) + t_of(net, y));
+                    third_cubic(g, (px - g).cross(py - g), px, py, legs_for(t))
                 } else {
                     bez
                 };

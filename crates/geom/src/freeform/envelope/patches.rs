@@ -75,6 +75,13 @@ const SHORT_FROM: f64 = 0.45;
 /// See [`SHORT_FROM`].
 const SHORT_FULL: f64 = 0.2;
 
+/// Cells along each side of a patch that [`region_patches`] samples to judge whether a split
+/// folds: finer than the report's [`super::folds::FOLD_CELLS`], so that a fold in the corner
+/// cell at a primitive's vertex, a twelfth of the patch wide at t = 0.1, is not missed between
+/// samples (the seven-primitive scene's hexagonal cap: 8 × 8 saw none, 16 × 16 four cells, and
+/// the tessellation had a face turned inwards there; envelope.md, "Hooked pieces at small t").
+const CHOICE_CELLS: usize = 12;
+
 /// A side under this share of its region's longest is short ([`short_runs`]).
 const SHORT_RUN: f64 = 0.45;
 
@@ -700,7 +707,7 @@ fn region_patches(
         return split(net, region, r, prims);
     }
     let folded = |net: &Network, patches: &[EnvelopePatch]| {
-        super::folds::folds(net, patches, super::folds::FOLD_CELLS).len()
+        super::folds::folds(net, patches, CHOICE_CELLS).len()
     };
     let (nv, nc) = (net.vertices.len(), net.curves.len());
     let plain = split(net, region.clone(), r, prims);
