@@ -76,11 +76,36 @@ const SHORT_FROM: f64 = 0.45;
 const SHORT_FULL: f64 = 0.2;
 
 /// Cells along each side of a patch that [`region_patches`] samples to judge whether a split
-/// folds: finer than the report's [`super::folds::FOLD_CELLS`], so that a fold in the corner
-/// cell at a primitive's vertex, a twelfth of the patch wide at t = 0.1, is not missed between
-/// samples (the seven-primitive scene's hexagonal cap: 8 × 8 saw none, 16 × 16 four cells, and
-/// the tessellation had a face turned inwards there; envelope.md, "Hooked pieces at small t").
-const CHOICE_CELLS: usize = 12;
+/// folds where a corner of the region has t below [`FINE_BELOW`]: finer than the report's
+/// [`super::folds::FOLD_CELLS`], so that a fold in the corner cell at a primitive's vertex, a
+/// twelfth of the patch wide at t = 0.1, is not missed between samples (the seven-primitive
+/// scene's hexagonal cap: 8 × 8 saw none, 16 × 16 four cells, and the tessellation had a face
+/// turned inwards there; envelope.md, "Hooked pieces at small t"). The edges' end zones, where
+/// such folds sit, are about t·r long, so at larger t the report's cells do.
+const FINE_CELLS: usize = 12;
+
+/// See [`FINE_CELLS`].
+const FINE_BELOW: f64 = 0.3;
+
+/// The cells a side that [`region_patches`] samples for `region`: [`FINE_CELLS`] where one of
+/// its corners on a primitive has t below [`FINE_BELOW`], else the report's.
+fn choice_cells(net: &Network, region: &Region, prims: &[Primitive]) -> usize {
+    let RegionKind::Primitive { primitive, .. } = region.kind else {
+        return super::folds::FOLD_CELLS;
+    };
+    let g = prims[primitive].centre;
+    let small = region.sides.iter().any(|s| {
+        net.vertex_at(s.curve, s.t0).is_some_and(|v| {
+            let p = &net.vertices[v];
+            p.rho < FINE_BELOW * p.position.distance(g)
+        })
+    });
+    if small {
+        FINE_CELLS
+    } else {
+        super::folds::FOLD_CELLS
+    }
+}
 
 /// A side under this share of its region's longest is short ([`short_runs`]).
 const SHORT_RUN: f64 = 0.45;
@@ -706,9 +731,9 @@ fn region_patches(
     if tries.is_empty() {
         return split(net, region, r, prims);
     }
-    let folded = |net: &Network, patches: &[EnvelopePatch]| {
-        super::folds::folds(net, patches, CHOICE_CELLS).len()
-    };
+    let cells = choice_cells(net, &region, prims);
+    let folded =
+        |net: &Network, patches: &[EnvelopePatch]| super::folds::folds(net, patches, cells).len();
     let (nv, nc) = (net.vertices.len(), net.curves.len());
     let plain = split(net, region.clone(), r, prims);
     let mut least = folded(net, &plain);
