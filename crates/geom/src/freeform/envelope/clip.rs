@@ -38,7 +38,7 @@
 //! which end inside the solid and are not curves of the network).
 
 use super::EnvelopeError;
-use super::edges::curved_edge;
+use super::edges::{curved_edge, legs_for};
 use super::network::{CurveKind, Network, PatchSide, Region, RegionKind};
 use super::primitive::Primitive;
 use crate::freeform::bezier::RationalBezier;
@@ -132,16 +132,6 @@ fn hooks(c: &RationalBezier, chord: DVec3, near: f64) -> bool {
         || c.derivatives(1.0).d1.dot(chord) <= 0.0
         || p[0].distance(p[1]) < least
         || p[3].distance(p[2]) < least
-}
-
-/// The share of a third of the chord that a hooked edge piece's legs take at curvature
-/// parameter `t` (the mean of its ends'): all of it from t = ½ up, in proportion to t below,
-/// so that as t → 0 the piece tends to its chord as every other edge does. Legs a third of the
-/// chord at any t left the piece bulging between edges that hug their chords, with end speeds
-/// ten times theirs at t = 0.1, and the patch at the corner folded (envelope.md, "Hooked
-/// pieces at small t").
-fn legs_for(t: f64) -> f64 {
-    (2.0 * t).min(1.0)
 }
 
 /// The polynomial cubic from `px` to `py` in the plane through `g` normal to `plane`, leaving

@@ -17,6 +17,17 @@
 use crate::freeform::bezier::RationalBezier;
 use glam::DVec3;
 
+/// The share of a third of its chord that a polynomial network curve's leg takes at an end
+/// whose curvature parameter is `t`: all of it from t = ½ up, in proportion to t below, so that
+/// as t → 0 the curve tends to its chord as every curved edge does. Used by the cubic that
+/// replaces a hooked edge piece (`clip.rs`) and by fusion edges (`fusion.rs`); legs of a third
+/// at every t left them bulging between edges that hug their chords, with ten times their
+/// speed at a shared corner at t = 0.1, and the patches there folded (envelope.md, "Hooked
+/// pieces at small t", "Fusion edges at small t").
+pub(super) fn legs_for(t: f64) -> f64 {
+    (2.0 * t).min(1.0)
+}
+
 /// The curved edge from `a` to `b` about centre `g`, with curvature parameters `ta`, `tb`
 /// (> 0). `None` when the edge is degenerate (zero length, or through or opposite the centre).
 pub fn curved_edge(g: DVec3, a: DVec3, b: DVec3, ta: f64, tb: f64) -> Option<RationalBezier> {

@@ -12,9 +12,11 @@
 //! the edge's tangent and d (every silhouette edge's basis is ±d).
 //!
 //! The **fusion edge** from P (on A's loop) to Q (on B's) is the polynomial cubic
-//! `P, P + (L/3)T_P, Q − (L/3)T_Q, Q` with `T_P = unit((Q − P) − ((Q − P)·n_P)n_P)`, n_P the
-//! tangent-plane normal at P (T_Q likewise), L = |Q − P|: it leaves each end in that end's
-//! tangent plane (§8.1), and for equal polar angles along d. Consecutive pairs bound a fusion
+//! `P, P + λ_P(L/3)T_P, Q − λ_Q(L/3)T_Q, Q` with `T_P = unit((Q − P) − ((Q − P)·n_P)n_P)`, n_P
+//! the tangent-plane normal at P (T_Q likewise), L = |Q − P|, λ = min(1, 2t) of the end's t
+//! (ALGORITHMS §11.5 has λ = 1; shorter below t = ½ so that the edge tends to its chord as
+//! t → 0, like the primitives' edges: envelope.md, "Fusion edges at small t"): it leaves each
+//! end in that end's tangent plane (§8.1), and for equal polar angles along d. Consecutive pairs bound a fusion
 //! quad: A's loop from angle α_k to α_(k+1), the fusion edge there, B's loop back, the fusion
 //! edge at α_k backwards — counter-clockwise seen from outside. A chain is paired the same
 //! way from its first ray to its last, which are a vertex pair of their own (the paper's
@@ -23,6 +25,7 @@
 //! chains, and it makes the two-primitive rule a special case (and the fusion surface of equal
 //! aligned primitives exactly translational).
 
+use super::edges::legs_for;
 use super::network::{CurveKind, Network, PatchSide, Region, RegionKind};
 use crate::freeform::bezier::RationalBezier;
 use glam::DVec3;
@@ -132,7 +135,13 @@ fn walk(
             if n.dot(p - g) < 0.0 {
                 n = -n;
             }
-            let rho = net.vertices[va].rho; // unused by fusion regions; kept for completeness
+            // t between the edge's ends by its parameter (the same whichever way round the
+            // edge or the scene is listed); the fusion edge's leg there reads it.
+            let [e0, e1] = net.curves[c].ends.map(|e| {
+                let v = &net.vertices[e];
+                v.rho / v.position.distance(g)
+            });
+            let rho = (e0 + (e1 - e0) * tau) * p.distance(g);
             let v = net.add_vertex(p, n, rho);
             net.pin(c, tau, v);
             stops.push((tau, v, (start_a + off).rem_euclid(TAU)));
@@ -176,16 +185,20 @@ fn walk(
     Walk { pieces }
 }
 
-/// The fusion edge from network vertex p (on A's section) to q (on B's).
-fn fusion_edge(net: &mut Network, p: usize, q: usize, d: DVec3) -> usize {
+/// The fusion edge from network vertex p (on A's section, centre `ga`) to q (on B's, `gb`).
+fn fusion_edge(net: &mut Network, p: usize, q: usize, d: DVec3, (ga, gb): (DVec3, DVec3)) -> usize {
     let (pp, pq) = (net.vertices[p].position, net.vertices[q].position);
+    // Each leg a third of the chord, shorter below t = ½ (`legs_for`, t of its own end).
+    let lp = legs_for(net.vertices[p].rho / pp.distance(ga));
+    let lq = legs_for(net.vertices[q].rho / pq.distance(gb));
     let (np, nq) = (net.vertices[p].normal, net.vertices[q].normal);
     let pq_v = pq - pp;
     let l = pq_v.length();
     let tp = (pq_v - pq_v.dot(np) * np).normalize_or(d);
     let tq = (pq_v - pq_v.dot(nq) * nq).normalize_or(d);
-    let bez = RationalBezier::polynomial(vec![pp, pp + l / 3.0 * tp, pq - l / 3.0 * tq, pq])
-        .expect("finite points");
+    let bez =
+        RationalBezier::polynomial(vec![pp, pp + lp * l / 3.0 * tp, pq - lq * l / 3.0 * tq, pq])
+            .expect("finite points");
     net.add_curve(bez, p, q, CurveKind::Fusion)
 }
 
@@ -319,7 +332,7 @@ pub fn fuse(
         } else {
             point(&wb, k)
         };
-        fusion.push(fusion_edge(net, p, q, d));
+        fusion.push(fusion_edge(net, p, q, d, (ga, gb)));
     }
     for k in 0..n {
         let j = (k + 1) % count;
