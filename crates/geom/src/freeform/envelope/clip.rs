@@ -387,8 +387,7 @@ impl Clipper<'_> {
             return Ok(PatchSide::whole(c, net.curves[c].ends[0] == x));
         }
         let g = self.p.centre;
-        let t_of =
-            |net: &Network, v: usize| net.vertices[v].rho / net.vertices[v].position.distance(g);
+        let t_of = |net: &Network, v: usize| net.vertices[v].t_about(g);
         let (px, py) = (net.vertices[x].position, net.vertices[y].position);
         let c = match along {
             Along::Cut(k) => {

@@ -137,10 +137,7 @@ fn walk(
             }
             // t between the edge's ends by its parameter (the same whichever way round the
             // edge or the scene is listed); the fusion edge's leg there reads it.
-            let [e0, e1] = net.curves[c].ends.map(|e| {
-                let v = &net.vertices[e];
-                v.rho / v.position.distance(g)
-            });
+            let [e0, e1] = net.curves[c].ends.map(|e| net.vertices[e].t_about(g));
             let rho = (e0 + (e1 - e0) * tau) * p.distance(g);
             let v = net.add_vertex(p, n, rho);
             net.pin(c, tau, v);
@@ -189,8 +186,8 @@ fn walk(
 fn fusion_edge(net: &mut Network, p: usize, q: usize, d: DVec3, (ga, gb): (DVec3, DVec3)) -> usize {
     let (pp, pq) = (net.vertices[p].position, net.vertices[q].position);
     // Each leg a third of the chord, shorter below t = ½ (`legs_for`, t of its own end).
-    let lp = legs_for(net.vertices[p].rho / pp.distance(ga));
-    let lq = legs_for(net.vertices[q].rho / pq.distance(gb));
+    let lp = legs_for(net.vertices[p].t_about(ga));
+    let lq = legs_for(net.vertices[q].t_about(gb));
     let (np, nq) = (net.vertices[p].normal, net.vertices[q].normal);
     let pq_v = pq - pp;
     let l = pq_v.length();

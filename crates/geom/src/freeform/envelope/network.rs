@@ -37,6 +37,13 @@ pub struct NetVertex {
     pub rho: f64,
 }
 
+impl NetVertex {
+    /// Its curvature parameter t = ρ/|P − G| about its primitive's centre `g`.
+    pub fn t_about(&self, g: DVec3) -> f64 {
+        self.rho / self.position.distance(g)
+    }
+}
+
 /// A network curve from `ends[0]` (τ = 0) to `ends[1]` (τ = 1).
 #[derive(Debug, Clone, PartialEq)]
 pub struct NetCurve {

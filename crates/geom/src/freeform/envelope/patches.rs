@@ -95,10 +95,8 @@ fn choice_cells(net: &Network, region: &Region, prims: &[Primitive]) -> usize {
     };
     let g = prims[primitive].centre;
     let small = region.sides.iter().any(|s| {
-        net.vertex_at(s.curve, s.t0).is_some_and(|v| {
-            let p = &net.vertices[v];
-            p.rho < FINE_BELOW * p.position.distance(g)
-        })
+        net.vertex_at(s.curve, s.t0)
+            .is_some_and(|v| net.vertices[v].t_about(g) < FINE_BELOW)
     });
     if small {
         FINE_CELLS
@@ -267,8 +265,7 @@ fn place(
                 .iter()
                 .map(|&v| {
                     let c = net.vertices[v].position;
-                    let t = net.vertices[v].rho / c.distance(g);
-                    virtual_crossing(g, c, u, t)
+                    virtual_crossing(g, c, u, net.vertices[v].t_about(g))
                 })
                 .sum::<f64>()
                 / corners.len() as f64;
