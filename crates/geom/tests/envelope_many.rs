@@ -762,6 +762,45 @@ fn needles_with_a_tiny_side_are_patched_as_one_quad() {
     }
 }
 
+/// Five primitives turned at random (a triangular and a hexagonal prism, two tetrahedra, a box;
+/// from the scratch stress run) leave a three-sided fusion region between three of them with a
+/// 14° corner (chords about 2.89, 2.31, 0.87: no needle). Split round a point, its sub-quad at
+/// that corner folded (8, 5, 4 and 1 cells at t = 1, 0.5, 0.3, 0.2); tried as one quad with
+/// the narrow corner collapsed, like a needle, nothing folds from t = 1 to 0.1 and the surface
+/// stays closed and G1 (envelope.md, "Narrow corners as tips").
+#[test]
+fn a_narrow_fusion_triangle_is_patched_as_one_quad() {
+    let spec: EnvelopeSpec = serde_json::from_str(include_str!(
+        "data/envelope/narrow-fusion-triangle.envelope.json"
+    ))
+    .unwrap();
+    for t in [1.0, 0.5, 0.3, 0.2, 0.1] {
+        let e = envelope(&EnvelopeSpec { t, ..spec.clone() }).unwrap();
+        assert_eq!(e.folds(), vec![], "t = {t}");
+        assert!(e.largest_border_jump() < 1e-9, "t = {t}");
+        closed(&e.tessellate(4).unwrap()).unwrap();
+        if t == 1.0 {
+            let tips = (0..e.network.regions.len())
+                .filter(|&r| {
+                    let region = &e.network.regions[r];
+                    let len = chords(&e, r);
+                    let shortest = len.iter().cloned().fold(f64::MAX, f64::min);
+                    let mut one = e.patches.iter().filter(|p| p.region == r);
+                    region.kind == RegionKind::Fusion
+                        && len.len() == 3
+                        && shortest > 0.2 * len.iter().cloned().fold(0.0, f64::max)
+                        && one
+                            .next()
+                            .is_some_and(|p| p.coons.sides.iter().any(|s| s.collapsed))
+                        && one.next().is_none()
+                })
+                .count();
+            assert_eq!(tips, 1);
+            assert_eq!(inward_faces(&e.tessellate(8).unwrap()), 0);
+        }
+    }
+}
+
 /// Random heaps of four and five equal axis-aligned cubes (the survey's third and fourth
 /// hundreds): no sampled cell folds at t = 1, and every envelope is G1 — 3 and 7 of them folded
 /// before slivers, needles and runs of short sides got their own patches (envelope.md,

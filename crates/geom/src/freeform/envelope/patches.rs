@@ -35,8 +35,9 @@
 //! a triangle with clipped corners) is also tried with each run closed by a curve across into
 //! a region of its own — a sliver's rest is then a strip, one quad between its long sides —
 //! and split so where that folds fewer cells than the split round P_i and stays G1
-//! (envelope.md, "Runs of short sides"); a needle (three sides, one tiny) likewise as one quad
-//! whose fourth side is its tip collapsed to a point (envelope.md, "Needles"); and a region of
+//! (envelope.md, "Runs of short sides"); a three-sided region likewise as one quad whose
+//! fourth side is a corner under 60° collapsed to a point, each such corner tried
+//! (envelope.md, "Needles", "Narrow corners as tips"); and a region of
 //! five or more sides whose split folds also with each diagonal that cuts off a fat triangle of
 //! two consecutive sides (envelope.md, "Diagonals"): the one that folds fewest is taken.
 
@@ -112,13 +113,19 @@ const SHORT_RUN: f64 = 0.45;
 /// needle adds, for the result to be taken: G1 to rounding (elsewhere the jumps are about 10⁻¹⁰°).
 const G1_KEPT: f64 = 1e-6;
 
-/// A three-sided region whose shortest side is below this share of the shorter of the others
-/// is a needle ([`needle`]).
+/// A side under this share of another is as good as none beside it: a triangle with such a
+/// side is a needle, and a diagonal along such a side is not tried ([`fat`]).
 const NEEDLE: f64 = 0.2;
 
 /// The widest sector (radians) the P_d and the insertion curves' tangents may leave between
 /// neighbours around P_i: a sub-quad's corner there must stay well below 180°.
 const STAR: f64 = 150.0 * std::f64::consts::PI / 180.0;
+
+/// The widest corner (radians, 60°) of a three-sided region that [`region_patches`] tries as
+/// the collapsed tip of one quad: every triangle but an equilateral one has one narrower, and
+/// a fan over a wider corner gave faces turned inwards where the split round P_i had none
+/// (envelope.md, "Narrow corners as tips").
+const NARROW_TIP: f64 = 60.0 * std::f64::consts::PI / 180.0;
 
 /// The widest corner (radians, 135°) between the two sides of a triangle that a diagonal cuts
 /// off ([`fat`]).
@@ -594,23 +601,9 @@ fn close_runs(net: &mut Network, region: &Region, runs: &[(usize, usize)]) -> Ve
     parts
 }
 
-/// The tiny side of a needle: a three-sided region whose shortest side (by chord) is under
-/// [`NEEDLE`] of the shorter of the other two; `None` for other regions.
-fn needle(net: &Network, region: &Region) -> Option<usize> {
-    if region.sides.len() != 3 {
-        return None;
-    }
-    let chords: Vec<f64> = region.sides.iter().map(|s| chord(net, s)).collect();
-    let k = (0..3)
-        .min_by(|&a, &b| chords[a].total_cmp(&chords[b]))
-        .expect("three");
-    let others = chords[(k + 1) % 3].min(chords[(k + 2) % 3]);
-    (chords[k] < NEEDLE * others).then_some(k)
-}
-
-/// A needle with tiny side `k` as one four-sided region whose side opposite the tiny one is
-/// its tip collapsed to a point (a network curve from the tip vertex to itself): the patch
-/// runs from the tiny side to the tip between the two long sides (envelope.md, "Needles").
+/// A three-sided region as one four-sided region whose side opposite side `k` is its tip
+/// collapsed to a point (a network curve from the tip vertex to itself): the patch runs from
+/// side k to the tip between the two other sides (envelope.md, "Needles").
 fn collapsed(net: &mut Network, region: &Region, k: usize) -> Region {
     let [a, b, c] = [0, 1, 2].map(|i| region.sides[(k + i) % 3]);
     let tip = net
@@ -651,16 +644,22 @@ fn fat([p, apex, q]: [DVec3; 3]) -> bool {
 enum Partition {
     /// Runs of sides, (first side, count) each, closed off by a curve across ([`close_runs`]).
     Runs(Vec<(usize, usize)>),
-    /// A needle as one quad with its tip collapsed ([`collapsed`]); the tiny side.
-    Needle(usize),
+    /// A triangle as one quad with the corner opposite this side collapsed ([`collapsed`]).
+    Tip(usize),
 }
 
-/// The order among partitions that fold alike ([`region_patches`]): the runs or the needle
-/// first, then the longest diagonal, then by the diagonal's ends' positions (coordinate by
-/// coordinate, the lower end first).
+/// The order among partitions that fold alike ([`region_patches`]): the runs first, then the
+/// longest diagonal, then by the diagonal's ends' positions (coordinate by coordinate, the
+/// lower end first); a triangle's tips by the side opposite, shortest first (a needle's tip),
+/// then by the tip's position.
 fn rank(net: &Network, region: &Region, partition: &Partition) -> [f64; 8] {
-    let Partition::Runs(runs) = partition else {
-        return [0.0; 8];
+    let runs = match partition {
+        Partition::Runs(runs) => runs,
+        &Partition::Tip(k) => {
+            let tip = cut_off(net, region, (k + 1) % 3)[1];
+            let opposite = chord(net, &region.sides[k]);
+            return [0.0, opposite, tip.x, tip.y, tip.z, 0.0, 0.0, 0.0];
+        }
     };
     let &[(k, 2)] = runs.as_slice() else {
         return [0.0; 8];
@@ -685,7 +684,7 @@ fn partitioned(
 ) -> Vec<EnvelopePatch> {
     let parts = match partition {
         Partition::Runs(runs) => close_runs(net, region, runs),
-        Partition::Needle(k) => vec![collapsed(net, region, *k)],
+        Partition::Tip(k) => vec![collapsed(net, region, *k)],
     };
     parts
         .into_iter()
@@ -696,10 +695,11 @@ fn partitioned(
 /// The patches of `region` (number `r`): one Coons patch if it is four-sided, else its split
 /// round one inserted point — or, where that split folds, the partition that folds fewest of
 /// its cells and stays G1 across the curves it adds (envelope.md, "Runs of short sides",
-/// "Needles" and "Diagonals"), tried in this order: runs of short sides closed off
-/// ([`short_runs`], [`close_runs`]), a needle ([`needle`]) as one quad with a collapsed tip
-/// ([`collapsed`]), and for five or more sides each diagonal that cuts off the triangle of two
-/// consecutive sides. Trial patches are undone by truncating what they added to the network.
+/// "Needles" and "Diagonals"), tried in [`rank`]'s order: runs of short sides closed off
+/// ([`short_runs`], [`close_runs`]), a triangle as one quad with a corner collapsed
+/// ([`collapsed`], each corner under [`NARROW_TIP`]), and for five or more sides each
+/// diagonal that cuts off the triangle of two consecutive sides. Trial patches are undone by
+/// truncating what they added to the network.
 fn region_patches(
     net: &mut Network,
     region: Region,
@@ -715,8 +715,16 @@ fn region_patches(
     if let Some(runs) = short_runs(net, &region) {
         tries.push(Partition::Runs(runs));
     }
-    if let Some(k) = needle(net, &region) {
-        tries.push(Partition::Needle(k));
+    if n == 3 {
+        // Each narrow corner as the tip of one quad (envelope.md, "Narrow corners as tips").
+        tries.extend(
+            (0..3)
+                .filter(|&k| {
+                    let [p, tip, q] = cut_off(net, &region, (k + 1) % 3);
+                    (p - tip).angle_between(q - tip) < NARROW_TIP
+                })
+                .map(Partition::Tip),
+        );
     }
     if n >= 5 {
         tries.extend(
@@ -738,10 +746,10 @@ fn region_patches(
         return plain;
     }
     net.truncate(nv, nc);
-    // The one that folds fewest; on a tie the runs or the needle, then the longest diagonal,
-    // then the one whose ends come first by position — never the listing's order, so that the
-    // surface does not depend on it. Tried in that order, so the first that folds nothing ends
-    // the search.
+    // The one that folds fewest; on a tie the runs, a triangle's tip across its shortest side,
+    // the longest diagonal, then by position ([`rank`]) — never the listing's order, so that
+    // the surface does not depend on it. Tried in that order, so the first that folds nothing
+    // ends the search.
     let mut order: Vec<(usize, [f64; 8])> = tries
         .iter()
         .enumerate()
