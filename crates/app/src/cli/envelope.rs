@@ -55,7 +55,7 @@ fn curves_obj(e: &Envelope, segments: usize) -> String {
         "# Prism envelope curve network: one polyline a curve, uniform in its parameter\n",
     );
     let mut base = 1;
-    // A needle's collapsed tip is a curve of one point: no polyline.
+    // A triangle's collapsed tip is a curve of one point: no polyline.
     for (i, c) in e
         .network
         .curves

@@ -110,7 +110,8 @@ fn choice_cells(net: &Network, region: &Region, prims: &[Primitive]) -> usize {
 const SHORT_RUN: f64 = 0.45;
 
 /// The largest normal jump (degrees) across the curves that closing runs or collapsing a
-/// needle adds, for the result to be taken: G1 to rounding (elsewhere the jumps are about 10⁻¹⁰°).
+/// triangle's tip adds, for the result to be taken: G1 to rounding (elsewhere the jumps are
+/// about 10⁻¹⁰°).
 const G1_KEPT: f64 = 1e-6;
 
 /// A side under this share of another is as good as none beside it: a triangle with such a
@@ -601,9 +602,10 @@ fn close_runs(net: &mut Network, region: &Region, runs: &[(usize, usize)]) -> Ve
     parts
 }
 
-/// A three-sided region as one four-sided region whose side opposite side `k` is its tip
-/// collapsed to a point (a network curve from the tip vertex to itself): the patch runs from
-/// side k to the tip between the two other sides (envelope.md, "Needles").
+/// A three-sided region as one four-sided region: the corner opposite side `k`, the tip,
+/// becomes a fourth side collapsed to a point (a network curve from the tip vertex to itself),
+/// and the patch runs from side k to the tip between the two other sides (envelope.md,
+/// "Needles", "Narrow corners as tips").
 fn collapsed(net: &mut Network, region: &Region, k: usize) -> Region {
     let [a, b, c] = [0, 1, 2].map(|i| region.sides[(k + i) % 3]);
     let tip = net
