@@ -321,11 +321,17 @@ fn thin_fusion_strips_do_not_fold_at_small_t() {
     ))
     .unwrap();
     for t in [1.0, 0.5, 0.3, 0.2, 0.1] {
-        let e = envelope(&EnvelopeSpec { t, ..spec.clone() }).unwrap();
-        assert_eq!(e.folds(), vec![], "t = {t}");
-        assert!(e.largest_border_jump() < 1e-9, "t = {t}");
-        closed(&e.tessellate(4).unwrap()).unwrap();
+        fold_free_at(&spec, t);
     }
+}
+
+/// `spec` at `t`, asserted to fold nowhere, to be G1 (10⁻⁹°) and to tessellate closed (K = 4).
+fn fold_free_at(spec: &EnvelopeSpec, t: f64) -> Envelope {
+    let e = envelope(&EnvelopeSpec { t, ..spec.clone() }).unwrap();
+    assert_eq!(e.folds(), vec![], "t = {t}");
+    assert!(e.largest_border_jump() < 1e-9, "t = {t}");
+    closed(&e.tessellate(4).unwrap()).unwrap();
+    e
 }
 
 /// Folds are found patch by patch (envelope.md, "Folds, reported"): none on single
@@ -775,10 +781,7 @@ fn a_narrow_fusion_triangle_is_patched_as_one_quad() {
     ))
     .unwrap();
     for t in [1.0, 0.5, 0.3, 0.2, 0.1] {
-        let e = envelope(&EnvelopeSpec { t, ..spec.clone() }).unwrap();
-        assert_eq!(e.folds(), vec![], "t = {t}");
-        assert!(e.largest_border_jump() < 1e-9, "t = {t}");
-        closed(&e.tessellate(4).unwrap()).unwrap();
+        let e = fold_free_at(&spec, t);
         if t == 1.0 {
             let tips = (0..e.network.regions.len())
                 .filter(|&r| {

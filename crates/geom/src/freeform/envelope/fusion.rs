@@ -18,12 +18,12 @@
 //! t → 0, like the primitives' edges: envelope.md, "Fusion edges at small t"): it leaves each
 //! end in that end's tangent plane (§8.1), and for equal polar angles along d. Consecutive
 //! pairs bound a fusion quad: A's loop from angle α_k to α_(k+1), the fusion edge there, B's
-//! loop back, the fusion edge at α_k backwards — counter-clockwise seen from outside. A chain is paired the same
-//! way from its first ray to its last, which are a vertex pair of their own (the paper's
-//! straight-edge vertices, §5.2 b): the paper pairs the curved chains by a normalised
-//! parameter, which it leaves open; the polar angle is one over the same angular range on both
-//! chains, and it makes the two-primitive rule a special case (and the fusion surface of equal
-//! aligned primitives exactly translational).
+//! loop back, the fusion edge at α_k backwards — counter-clockwise seen from outside. A chain
+//! is paired the same way from its first ray to its last, which are a vertex pair of their own
+//! (the paper's straight-edge vertices, §5.2 b): the paper pairs the curved chains by a
+//! normalised parameter, which it leaves open; the polar angle is one over the same angular
+//! range on both chains, and it makes the two-primitive rule a special case (and the fusion
+//! surface of equal aligned primitives exactly translational).
 
 use super::edges::legs_for;
 use super::network::{CurveKind, Network, PatchSide, Region, RegionKind};
