@@ -1,7 +1,8 @@
 //! Coons patches with Gregory's variable twist (seed 004 §6.2; ALGORITHMS §9;
 //! docs/algorithms/envelope.md), fed with four rational boundary curves and four
-//! cross-derivative functions `X(s) = k(s)·g(s) + h(s)·C′(s)` (k, h linear, g the border's
-//! virtual basis, ALGORITHMS §8.2–8.3).
+//! cross-derivative functions `X(s) = k(s)·g(s) + a(s)·unit(C′(s))` (k linear, a the paper's
+//! `h·|C′|` fitted at the corners and monotone between them, g the border's virtual basis,
+//! ALGORITHMS §8.2–8.3).
 //!
 //! With the cubic Hermite functions `H₀, H₁, G₀, G₁`,
 //! `S = L_u + L_v − T`, `L_u = H₀(u)d₀(v) + H₁(u)d₁(v) + G₀(u)f₀(v) + G₁(u)f₁(v)`, `L_v` likewise
@@ -22,20 +23,19 @@ use glam::DVec3;
 const INWARD_FLOOR: f64 = 0.25;
 
 /// One border of a patch: its curve (parametrised along the side) and its inward cross
-/// derivative `X(s) = (k₀(1−s) + k₁s)·g(s) + (h₀(1−s) + h₁s)·T(s)`, `g(s) = (1−s)g₀ + s g₁`,
-/// where `T(s) = unit(C′(s))·((1−s)|C′(0)| + s|C′(1)|)` is the curve's tangent with its speed
-/// interpolated between the ends ([`Side::tangent`]).
+/// derivative `X(s) = (k₀(1−s) + k₁s)·g(s) + a(s)·unit(C′(s))`, `g(s) = (1−s)g₀ + s g₁`,
+/// where the part along the side runs from `h₀|C′(0)|` to `h₁|C′(1)|` ([`Side::along`]).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Side {
     pub curve: RationalBezier,
     pub g: (DVec3, DVec3),
     pub k: (f64, f64),
     pub h: (f64, f64),
-    /// |C′| at s = 0 and s = 1, which T interpolates.
+    /// |C′| at s = 0 and s = 1, the speeds the part along the side interpolates.
     pub speed: (f64, f64),
     /// The corner legs the cross derivative was fitted to.
     pub legs: (DVec3, DVec3),
-    /// How far the cross derivative's part along the side goes from `h T` to the legs'
+    /// How far the cross derivative's part along the side goes from `a·unit(C′)` to the legs'
     /// parts along it interpolated as vectors ([`Side::short`]; 0: not at all).
     pub direct: f64,
     /// A side collapsed to a point ([`Side::collapsed`]).
@@ -46,7 +46,7 @@ impl Side {
     /// A side whose cross derivative is fitted to the legs `a0` (at s = 0) and `a1` (at
     /// s = 1), the neighbouring sides' derivatives leaving those corners into the patch.
     pub fn fitted(curve: RationalBezier, g: (DVec3, DVec3), a0: DVec3, a1: DVec3) -> Side {
-        // T = C′ at both ends.
+        // The fits are the paper's: k g + h C′ at both ends.
         let d0 = curve.derivatives(0.0).d1;
         let d1 = curve.derivatives(1.0).d1;
         let (k0, h0) = fit(a0, g.0, d0);
@@ -81,28 +81,9 @@ impl Side {
         }
     }
 
-    /// The tangent `T(s)` the cross derivative uses along the side, and its s-derivative:
-    /// C′'s direction with the speed interpolated linearly between the ends. It equals C′ at
-    /// the ends (so the corner fits are the paper's) but, unlike C′, does not outgrow the end
-    /// legs in the middle of a curve whose weights are small (t → 0: the end speeds vanish
-    /// while the middle crosses the chord at speed ≈ 3|chord|, and `h·C′` would shear the
-    /// patch until it folds).
-    pub fn tangent(&self, s: f64) -> (DVec3, DVec3) {
-        let d = self.curve.derivatives(s);
-        let (m0, m1) = self.speed;
-        let speed = d.d1.length();
-        if speed == 0.0 {
-            return (DVec3::ZERO, DVec3::ZERO);
-        }
-        let dir = d.d1 / speed;
-        let m = m0 + (m1 - m0) * s;
-        let ddir = (d.d2 - d.d2.dot(dir) * dir) / speed;
-        (m * dir, (m1 - m0) * dir + m * ddir)
-    }
-
     /// This side with its cross derivative blended towards the short-side form by `direct`
     /// (0 to 1). On a side much shorter than its neighbours the corner legs are long against
-    /// its own speed, `h` is large and `h T` swings with the side's direction; the short-side
+    /// its own speed, `h` is large and `a·unit(C′)` swings with the side's direction; the short-side
     /// form keeps the fitted part across the side (`k g` less its part along the side, at
     /// least a quarter of it inwards) and takes the part along the side from the legs
     /// interpolated as vectors, which stays within them. It equals the fit at both ends and
@@ -128,14 +109,10 @@ impl Side {
 
     /// The short-side form of the cross derivative ([`Side::short`]) and its s-derivative.
     fn short_cross(&self, s: f64) -> (DVec3, DVec3) {
-        let d = self.curve.derivatives(s);
-        let speed = d.d1.length();
-        if speed == 0.0 {
+        let (t, dt) = unit_tangent(&self.curve, s);
+        if t == DVec3::ZERO {
             return (DVec3::ZERO, DVec3::ZERO);
         }
-        // Unit tangent t and its derivative.
-        let t = d.d1 / speed;
-        let dt = (d.d2 - d.d2.dot(t) * t) / speed;
         let (g, dg) = (self.g.0.lerp(self.g.1, s), self.g.1 - self.g.0);
         let (k, dk) = (self.k.0 + (self.k.1 - self.k.0) * s, self.k.1 - self.k.0);
         // The fitted part across the side, its length and direction.
@@ -160,17 +137,49 @@ impl Side {
         (beta * dir + along, d_beta * dir + beta * d_dir + d_along)
     }
 
-    /// `k g + h T`, the paper's form, and its s-derivative.
+    /// The cross derivative's part along the side, `a(s)` in `k g + a·unit(C′)`, and its
+    /// s-derivative. At the corners `a = h·|C′|`, the fits' (the paper's `h C′`); in between
+    /// the paper's `h(s)·|C′(s)|` is replaced by `h(s)·m(s)` with m the end speeds
+    /// interpolated, `a₀(1−s) + a₁s − c·s(1−s)` with `c = (h₁−h₀)(m₁−m₀)`, whose bump `c` is
+    /// flattened by λ = min(1, |a₁−a₀|/|c|) so that a runs monotonically from a₀ to a₁.
+    /// Without λ a side that is slow at one end and whose h grows towards that end (a half
+    /// edge at a primitive's vertex for small t: speeds 2.3 and 0.025, h 0 and 0.5) carries
+    /// an along part 25 × its end values in the middle and shears the patch past the vertex.
+    fn along(&self, s: f64) -> (f64, f64) {
+        let (a0, a1) = (self.h.0 * self.speed.0, self.h.1 * self.speed.1);
+        let c = (self.h.1 - self.h.0) * (self.speed.1 - self.speed.0);
+        let lambda = if c.abs() <= (a1 - a0).abs() {
+            1.0
+        } else {
+            (a1 - a0).abs() / c.abs()
+        };
+        let a = a0 + (a1 - a0) * s - lambda * c * s * (1.0 - s);
+        let da = (a1 - a0) - lambda * c * (1.0 - 2.0 * s);
+        (a, da)
+    }
+
+    /// `k g + a·unit(C′)` ([`Side::along`]) and its s-derivative.
     fn fitted_cross(&self, s: f64) -> (DVec3, DVec3) {
-        let (t, dt) = self.tangent(s);
         let g = self.g.0.lerp(self.g.1, s);
         let dg = self.g.1 - self.g.0;
         let k = self.k.0 + (self.k.1 - self.k.0) * s;
-        let h = self.h.0 + (self.h.1 - self.h.0) * s;
-        let x = k * g + h * t;
-        let dx = (self.k.1 - self.k.0) * g + k * dg + (self.h.1 - self.h.0) * t + h * dt;
+        let (dir, ddir) = unit_tangent(&self.curve, s);
+        let (a, da) = self.along(s);
+        let x = k * g + a * dir;
+        let dx = (self.k.1 - self.k.0) * g + k * dg + da * dir + a * ddir;
         (x, dx)
     }
+}
+
+/// The curve's unit tangent at s and its s-derivative (zero where the curve stands still).
+fn unit_tangent(curve: &RationalBezier, s: f64) -> (DVec3, DVec3) {
+    let d = curve.derivatives(s);
+    let speed = d.d1.length();
+    if speed == 0.0 {
+        return (DVec3::ZERO, DVec3::ZERO);
+    }
+    let dir = d.d1 / speed;
+    (dir, (d.d2 - d.d2.dot(dir) * dir) / speed)
 }
 
 /// A Coons patch with variable twist over four sides.
@@ -354,6 +363,58 @@ mod tests {
                 "{s}: {fd} {dx}"
             );
         }
+    }
+
+    /// The part along a side fits the paper's `h C′` at both corners and runs monotonically
+    /// between them, also where `h(s)·|C′|` interpolated would bulge (a half edge at a vertex
+    /// for small t: fast at its middle end, slow at the vertex, h growing towards it); where
+    /// that product is monotone it is kept. Its s-derivative is its difference quotient.
+    #[test]
+    fn the_part_along_a_side_is_monotone_between_the_corner_fits() {
+        // Weights small in the middle: speed ≈ 2.3 at s = 0, ≈ 0.02 at s = 1.
+        let curve = RationalBezier::new(
+            vec![
+                DVec3::ZERO,
+                DVec3::new(0.75, 0.0, 0.0),
+                DVec3::new(0.99, 0.001, 0.0),
+                DVec3::new(1.0, 0.0, 0.0),
+            ],
+            vec![1.0, 1.0, 0.1, 1.0],
+        )
+        .unwrap();
+        let g = (DVec3::Y, DVec3::Y);
+        let m1 = curve.derivatives(1.0).d1;
+        let a0 = 0.07 * DVec3::Y;
+        let a1 = 0.02 * DVec3::Y + 0.5 * m1;
+        let side = Side::fitted(curve.clone(), g, a0, a1);
+        assert!(side.speed.0 > 50.0 * side.speed.1, "{:?}", side.speed);
+        assert!((side.cross(0.0).0 - a0).length() < 1e-12);
+        assert!((side.cross(1.0).0 - a1).length() < 1e-12);
+        let ends = (side.along(0.0).0, side.along(1.0).0);
+        let mut last = ends.0;
+        for i in 1..=40 {
+            let s = i as f64 / 40.0;
+            let (a, da) = side.along(s);
+            assert!(
+                a >= last - 1e-15 && a <= ends.1 + 1e-15,
+                "{s}: {a} after {last}"
+            );
+            last = a;
+            let h = 1e-6;
+            let fd = (side.along(s).0 - side.along(s - h).0) / h;
+            assert!((fd - da).abs() < 1e-5, "{s}: {fd} {da}");
+        }
+        // The product would have reached about 0.3 in the middle, 25 × the vertex end.
+        let (h, m) = (side.h, side.speed);
+        let product = 0.5 * (h.0 + h.1) * 0.5 * (m.0 + m.1);
+        assert!(product > 10.0 * ends.1, "{product} {}", ends.1);
+        // Where h grows towards the fast end the product is monotone, and kept.
+        let m0 = curve.derivatives(0.0).d1;
+        let even = Side::fitted(curve, g, 0.07 * DVec3::Y + 0.5 * m0, 0.02 * DVec3::Y);
+        let (h, m) = (even.h, even.speed);
+        let s = 0.3;
+        let product = (h.0 + (h.1 - h.0) * s) * (m.0 + (m.1 - m.0) * s);
+        assert!((even.along(s).0 - product).abs() < 1e-12);
     }
 
     fn line(a: DVec3, b: DVec3) -> RationalBezier {

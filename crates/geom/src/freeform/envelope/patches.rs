@@ -2,8 +2,9 @@
 //! docs/algorithms/envelope.md).
 //!
 //! **G1.** Every border takes the virtual basis of its curve, `g(τ) = (1 − τ)g₀ + τg₁`, on
-//! both sides; each side's cross derivative is `X(s) = k(s)g(s) + h(s)C′(s)` with k, h linear
-//! and fitted at the corners to the neighbouring sides' legs. Both sides' X lie in
+//! both sides; each side's cross derivative is `X(s) = k(s)g(s) + a(s)·unit(C′(s))`, k linear
+//! and `a = h|C′|` at the corners, fitted there to the neighbouring sides' legs (`k g + h C′`,
+//! the paper's), a monotone between them (`coons.rs`, `Side::along`). Both sides' X lie in
 //! span(g, C′): one tangent plane along the whole border, whatever the numbering. A side that
 //! is part of a curve takes the restriction of the curve's g (linear in τ is linear in s).
 //!
@@ -25,7 +26,9 @@
 //!    k + 1, insertion k + 1 backwards. The insertion curve's basis is rule (a) at P_d (the
 //!    boundary runs on through P_d) and rule (b) at P_i.
 //!
-//! A three-sided region is split at the feet of its incentre instead of the middles, with
+//! A three-sided region is split at the feet of its incentre on its sides (where a side is
+//! square to the line from the incentre, not the nearest point: for t > 1 the sides bulge
+//! and the nearest points are the corners) instead of the middles, with
 //! `b_k` square to the side, and as its smallest corner narrows from 50° to 20° its insertion
 //! curves turn from the paper's into cubics a third long at both ends, straight at the foot
 //! and square to the side (envelope.md, "Three-sided regions"); a regular triangle is the
@@ -213,6 +216,49 @@ fn virtual_crossing(g: DVec3, c: DVec3, u: DVec3, t: f64) -> f64 {
     }
 }
 
+/// The parameter in [SPLIT_MIN, 1 − SPLIT_MIN] of the foot of `p` on `c`: where the curve is
+/// square to the line from p, `(c(u) − p)·c′(u) = 0`, the root nearest the point over the
+/// foot of p on the chord. On a curve that bends towards p that is the nearest point; on one
+/// that bulges away from p more than its ends lie from it (a triangle's edges for t above 1:
+/// the nearest points are then the corners) it is the curve's farthest point from p near the
+/// chord's foot, so the split stays in the side's middle. No root: the nearest point.
+fn foot_parameter(c: &RationalBezier, p: DVec3) -> f64 {
+    let (a, z) = (c.eval(0.0), c.eval(1.0));
+    let chord = z - a;
+    let len2 = chord.length_squared();
+    let over = |u: f64| (c.eval(u) - a).dot(chord) / len2;
+    let target = ((p - a).dot(chord) / len2).clamp(SPLIT_MIN, 1.0 - SPLIT_MIN);
+    let bisect = |f: &dyn Fn(f64) -> f64, mut lo: f64, mut hi: f64| {
+        let flo = f(lo) < 0.0;
+        for _ in 0..60 {
+            let mid = 0.5 * (lo + hi);
+            if (f(mid) < 0.0) == flo {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        0.5 * (lo + hi)
+    };
+    let u_over = if (over(SPLIT_MIN) - target) * (over(1.0 - SPLIT_MIN) - target) < 0.0 {
+        bisect(&|u| over(u) - target, SPLIT_MIN, 1.0 - SPLIT_MIN)
+    } else {
+        target
+    };
+    let square = |u: f64| {
+        let d = c.derivatives(u);
+        (d.point - p).dot(d.d1)
+    };
+    let steps = 24;
+    let grid = |i: usize| SPLIT_MIN + (1.0 - 2.0 * SPLIT_MIN) * i as f64 / steps as f64;
+    let root = (0..steps)
+        .filter(|&i| square(grid(i)) * square(grid(i + 1)) <= 0.0)
+        .map(|i| bisect(&square, grid(i), grid(i + 1)))
+        .min_by(|x, y| (x - u_over).abs().total_cmp(&(y - u_over).abs()));
+    let u = root.unwrap_or_else(|| nearest_parameter(c, p));
+    if (u - 0.5).abs() < 1e-6 { 0.5 } else { u }
+}
+
 /// The parameter in [SPLIT_MIN, 1 − SPLIT_MIN] of the point of `c` nearest `p`: the best
 /// of 13 samples, then golden-section steps around it. The search finds a minimum to about
 /// 1e-8 (the distance is flat there), so a result within 1e-6 of the middle is the middle:
@@ -396,7 +442,7 @@ fn split(net: &mut Network, region: Region, r: usize, prims: &[Primitive]) -> Ve
             .sum::<DVec3>()
             / perimeter;
         for (k, s) in fitted.iter().enumerate() {
-            split_at[k] = nearest_parameter(&s.curve, incentre);
+            split_at[k] = foot_parameter(&s.curve, incentre);
         }
     }
     let (pd, mut b, tangent_d) = at(&split_at);
