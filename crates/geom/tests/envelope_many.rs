@@ -877,3 +877,19 @@ fn a_grazing_cut_keeps_the_surface_g1() {
         }
     }
 }
+
+/// Six primitives turned at random (from the scratch stress run) cut a hexagon on a box face
+/// with a side 0.005 long. Split round P_i, the insertion curve to that side's middle left it
+/// with a leg far under a ninth of its chord (the side's cross derivative there is tiny), the
+/// sub-quads'
+/// cross derivatives along the side's halves were fitted to it and pinched them against the
+/// border: 3 and 9 folded cells at t = 0.2 and 0.1. With the leg lengthened to a ninth of the
+/// chord (envelope.md, "Short legs at P_d") nothing folds from t = 1 to 0.1.
+#[test]
+fn a_short_leg_at_a_split_point_is_lengthened() {
+    let spec: EnvelopeSpec =
+        serde_json::from_str(include_str!("data/envelope/short-leg-heap.envelope.json")).unwrap();
+    for t in [1.0, 0.5, 0.3, 0.2, 0.1] {
+        fold_free_at(&spec, t);
+    }
+}

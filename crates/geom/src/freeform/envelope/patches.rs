@@ -22,6 +22,8 @@
 //! 5. insertion curve k, with `λ_k = ((P_i − P_d)·n)/(b_k·n)`, `λ̂ = max(λ_k, ¼)` and Π the
 //!    projection onto that plane: `P_i, P_i + ⅔Π(P_d + λ̂b_k − P_i), P_d + ⅔λ̂b_k, P_d` — the
 //!    paper's elevated quadratic whenever λ_k ≥ ¼, and always leaving P_d into the region;
+//!    A leg at P_d under a ninth of the insertion chord (and under half the region's mean leg
+//!    at P_d) is lengthened to that along itself (envelope.md, "Short legs at P_d");
 //! 6. sub-quad k = insertion k, the second half of boundary k, the first half of boundary
 //!    k + 1, insertion k + 1 backwards. The insertion curve's basis is rule (a) at P_d (the
 //!    boundary runs on through P_d) and rule (b) at P_i.
@@ -58,6 +60,16 @@ const LAMBDA_MIN: f64 = 0.25;
 /// control point P_m keeps: larger λ would put P_m past P_i, and the curve would leave P_i
 /// away from its P_d (a sub-quad with a negative angle at P_i: a fold).
 const LEAVE: f64 = 0.3;
+
+/// The least leg (control point's offset) an insertion curve leaves P_d with, as a share of
+/// its chord |P_i − P_d| ([`split`]; envelope.md, "Short legs at P_d") — but no more than
+/// [`LEG_SHARE`] of the region's mean leg at its P_d, so that a region whose legs are all
+/// short (every face of a primitive at small t, where the edges' cross derivatives shrink
+/// with t) keeps them.
+const LEG_FLOOR: f64 = 1.0 / 9.0;
+
+/// See [`LEG_FLOOR`].
+const LEG_SHARE: f64 = 0.5;
 
 /// The split point of a three-sided region's side (the foot of its incentre) stays this far
 /// from the side's ends (a share of its parameter).
@@ -490,6 +502,17 @@ fn split(net: &mut Network, region: Region, r: usize, prims: &[Primitive]) -> Ve
         let third = pd[k].distance(pi_) / 3.0;
         let square = (w / 3.0, third * b[k].normalize_or_zero());
         legs.push((paper.0.lerp(square.0, thin), paper.1.lerp(square.1, thin)));
+    }
+    // A leg at P_d far shorter than the region's others is lengthened along itself
+    // (envelope.md, "Short legs at P_d"): the sub-quads' cross derivatives along the boundary
+    // halves at P_d are fitted to it, and a tiny one pinches them against the border.
+    let mean_d = legs.iter().map(|l| l.1.length()).sum::<f64>() / n as f64;
+    for (k, leg) in legs.iter_mut().enumerate() {
+        let least = (LEG_FLOOR * pd[k].distance(pi_)).min(LEG_SHARE * mean_d);
+        let len = leg.1.length();
+        if len > 0.0 && len < least {
+            leg.1 *= least / len;
+        }
     }
     // Legs that do not go round P_i with every sector below STAR point straight at their P_d
     // (projected) instead, keeping their length.
