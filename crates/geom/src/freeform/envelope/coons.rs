@@ -83,10 +83,10 @@ impl Side {
 
     /// This side with its cross derivative blended towards the short-side form by `direct`
     /// (0 to 1). On a side much shorter than its neighbours the corner legs are long against
-    /// its own speed, `h` is large and `a·unit(C′)` swings with the side's direction; the short-side
-    /// form keeps the fitted part across the side (`k g` less its part along the side, at
-    /// least a quarter of it inwards) and takes the part along the side from the legs
-    /// interpolated as vectors, which stays within them. It equals the fit at both ends and
+    /// its own speed, `h` is large and `a·unit(C′)` swings with the side's direction; the
+    /// short-side form keeps the fitted part across the side (`k g` less its part along the
+    /// side, at least a quarter of it inwards) and takes the part along the side from the
+    /// legs interpolated as vectors, which stays within them. It equals the fit at both ends and
     /// lies in the plane of g and C′, so G1 along the border is untouched.
     pub fn short(mut self, direct: f64) -> Side {
         self.direct = direct.clamp(0.0, 1.0);
