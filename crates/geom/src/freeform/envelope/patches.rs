@@ -263,8 +263,9 @@ fn foot_parameter(c: &RationalBezier, p: DVec3) -> f64 {
     };
     let steps = 24;
     let grid = |i: usize| SPLIT_MIN + (1.0 - 2.0 * SPLIT_MIN) * i as f64 / steps as f64;
+    let at: Vec<f64> = (0..=steps).map(|i| square(grid(i))).collect();
     let root = (0..steps)
-        .filter(|&i| square(grid(i)) * square(grid(i + 1)) <= 0.0)
+        .filter(|&i| at[i] * at[i + 1] <= 0.0)
         .map(|i| bisect(&square, grid(i), grid(i + 1)))
         .min_by(|x, y| (x - u_over).abs().total_cmp(&(y - u_over).abs()));
     let u = root.unwrap_or_else(|| nearest_parameter(c, p));
