@@ -11,6 +11,7 @@
 //! is recomputed on a worker thread from the first step that changed.
 
 pub mod compare;
+pub mod crossing_check;
 mod overlay;
 mod panels;
 pub mod pick;
@@ -307,7 +308,9 @@ impl ModelTab {
     }
 
     pub fn busy(&self) -> bool {
-        self.views.iter().any(|v| v.busy() || v.preparing())
+        self.views
+            .iter()
+            .any(|v| v.busy() || v.preparing() || v.checking())
     }
 
     /// Step >>: appends the next step to the active view's pipeline.

@@ -31,6 +31,8 @@ impl ModelTab {
         let opts = self.display.scene_options();
         for i in 0..self.views.len() {
             self.views[i].refresh_scene(&opts, &self.waker);
+            let w = self.waker.clone();
+            self.views[i].check_crossings(&w);
             let limit = self.limit_scheme(i).and_then(|s| {
                 let w = self.waker.clone();
                 self.views[i].limit_points(s, &w)

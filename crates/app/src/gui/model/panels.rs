@@ -2,6 +2,7 @@
 //! status bar. Panels read the document and queue commands; they write only the tab's own
 //! state (selection, tool, display, the level shown).
 
+use super::crossing_check::Crossings;
 use super::scheme_editor::scheme_editor;
 use super::{Coloring, ModelTab, Tool};
 use crate::gui::command::{Command, EdgeMark, Edit};
@@ -410,6 +411,56 @@ impl ModelTab {
         }
     }
 
+    /// "N pairs of faces pass through each other": a menu like the flipped faces' one; or
+    /// that the check is running, or a button to run it on a big level.
+    fn crossings_status(&mut self, ui: &mut egui::Ui, crossings: Crossings) {
+        match crossings {
+            Crossings::Waiting => {}
+            Crossings::Checking => {
+                ui.weak("checking for faces that pass through each other…");
+            }
+            Crossings::Ask { faces } => {
+                if ui
+                    .button("Check for faces that pass through each other")
+                    .on_hover_text(format!(
+                        "{faces} faces: a few seconds on a thread (levels up to {} faces are checked by themselves)",
+                        super::crossing_check::AUTO_FACES
+                    ))
+                    .clicked()
+                {
+                    self.views[self.active].ask_crossings();
+                }
+            }
+            Crossings::Done(pairs) if pairs.is_empty() => {}
+            Crossings::Done(pairs) => {
+                let red = egui::Color32::from_rgb(240, 90, 80);
+                let title = egui::RichText::new(format!(
+                    "{} pair(s) of faces pass through each other: show",
+                    pairs.len()
+                ))
+                .color(red);
+                let menu = ui.menu_button(title, |ui| {
+                    ui.label("The surface crosses itself there (drawn in red). Click a pair to frame it:");
+                    egui::ScrollArea::vertical()
+                        .max_height(240.0)
+                        .show(ui, |ui| {
+                            for &(f, g) in pairs.iter().take(100) {
+                                if ui.button(format!("faces {f} and {g}")).clicked() {
+                                    self.frame_face(f);
+                                }
+                            }
+                            if pairs.len() > 100 {
+                                ui.label(format!("… and {} more", pairs.len() - 100));
+                            }
+                        });
+                });
+                if menu.response.clicked() {
+                    self.frame_face(pairs[0].0);
+                }
+            }
+        }
+    }
+
     pub(super) fn status(&mut self, ui: &mut egui::Ui, note: Option<&str>) {
         let (_, _, far) = self.views[self.active].frame_sphere();
         let v = &self.views[self.active];
@@ -458,14 +509,17 @@ impl ModelTab {
             .map(|r| r.flipped.clone())
             .unwrap_or_default();
         let error = v.error.clone();
+        let crossings = v.crossings();
+        // The alarms first: the text after them can be wider than the window.
         ui.horizontal(|ui| {
-            ui.label(text);
             if !flipped.is_empty() {
                 self.flipped_menu(ui, &flipped);
             }
+            self.crossings_status(ui, crossings);
             if let Some(e) = &error {
                 ui.colored_label(egui::Color32::from_rgb(240, 110, 90), e);
             }
+            ui.label(text);
             if let Some(n) = note {
                 ui.separator();
                 ui.label(n);

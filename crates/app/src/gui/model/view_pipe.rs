@@ -4,6 +4,7 @@
 //! limit points). Every cache is keyed on what it was made from — the result's generation,
 //! the level, the display options — so nothing has to remember to mark it stale.
 
+use super::crossing_check::{CrossingCheck, Crossings, faces_of};
 use super::worker::{Finished, Job, over_budget};
 use prism_geom::ancestry::edge_origins;
 use prism_geom::error::OverBudget;
@@ -116,6 +117,8 @@ pub struct ViewPipe {
     origins: Option<(LevelKey, Arc<Origins>)>,
     /// Limit points of a level: computed on a thread, then kept.
     limits: Option<(LevelKey, LimitSlot)>,
+    /// Whether the level shown passes through itself: checked on a thread.
+    pub crossing: CrossingCheck,
     /// The framing sphere of the installed scene ([`ViewPipe::frame_sphere`]).
     sphere: std::sync::OnceLock<(glam::Vec3, f32, usize)>,
     /// Cached fillet measure and what it was made from.
@@ -151,6 +154,7 @@ impl ViewPipe {
             edges: None,
             origins: None,
             limits: None,
+            crossing: CrossingCheck::default(),
             sphere: std::sync::OnceLock::new(),
             fillet: None,
             edit_started: None,
@@ -426,5 +430,44 @@ impl ViewPipe {
         });
         self.limits = Some((key, LimitSlot::Computing(rx)));
         None
+    }
+
+    /// Whether the shown level passes through itself ([`CrossingCheck::poll`]); once the
+    /// answer is in, its faces are painted red over the scene on screen (again on every new
+    /// scene of that level).
+    pub fn check_crossings(&mut self, wake: &Waker) -> Crossings {
+        let key = (self.generation, self.shown());
+        let idle = !self.busy();
+        let out = self
+            .crossing
+            .poll(key, &self.pipeline.levels()[key.1], idle, wake);
+        if let Crossings::Done(pairs) = &out
+            && !pairs.is_empty()
+            && self.scene_key.as_ref().is_some_and(|k| (k.0, k.1) == key)
+            && self.crossing.painted != Some(self.scene_serial)
+        {
+            let mesh = &self.pipeline.levels()[key.1].mesh;
+            Arc::make_mut(&mut self.scene).paint_faces(mesh, &faces_of(pairs), FLIPPED_COLOR);
+            self.crossing.painted = Some(self.scene_serial);
+            self.version += 1;
+        }
+        out
+    }
+
+    /// [`ViewPipe::check_crossings`]'s answer as it stands.
+    pub fn crossings(&self) -> Crossings {
+        let k = self.shown();
+        let faces = self.pipeline.levels()[k].mesh.num_faces();
+        self.crossing.state((self.generation, k), faces)
+    }
+
+    /// Whether the shown level is being checked for crossings.
+    pub fn checking(&self) -> bool {
+        self.crossings() == Crossings::Checking
+    }
+
+    /// Checks the shown level even though it is big.
+    pub fn ask_crossings(&mut self) {
+        self.crossing.ask((self.generation, self.shown()));
     }
 }
