@@ -4,15 +4,17 @@
 //! ears of vector sum as printed at a reflex corner (docs/algorithms/chamfers.md).
 //!
 //! Faces are triangulated as the renderer does ([`crate::triangulate`]); candidate pairs
-//! come from a uniform grid of face boxes ([`super::face_grid::FaceGrid`]) and must have
-//! overlapping boxes; each pair of their triangles is tested as Möller (1997, "A fast
+//! are the faces whose boxes overlap, found cell by cell in a uniform grid of face boxes
+//! ([`FaceGrid::overlapping_pairs`]: 0.1 s rather than 1.2 s for the
+//! 129,066 faces of the Computer room after five combination steps, where a query per face
+//! sorted the big faces' list each time); each pair of their triangles is tested as Möller (1997, "A fast
 //! triangle–triangle intersection test") does: each triangle must straddle the other's
 //! plane, and the two segments in which they cut the line where the planes meet must
 //! overlap by more than a relative 1e-9. Coplanar pairs and pairs that only touch are not
 //! counted — so neighbours that share an edge never count, and faces that share a vertex
 //! count only when they pass through each other beyond it (a fold at that vertex).
 
-use super::face_grid::{FaceGrid, face_box};
+use super::face_grid::FaceGrid;
 use crate::mesh::PolyMesh;
 use crate::triangulate::face_vertex_triangles;
 use glam::DVec3;
@@ -28,33 +30,9 @@ pub fn crossings(mesh: &PolyMesh) -> Vec<(u32, u32)> {
         .into_par_iter()
         .map(|f| face_vertex_triangles(mesh, f))
         .collect();
-    // The grid keeps no boxes when a face has no finite one (it then lists every face).
-    let box_of = |f: usize| {
-        grid.boxes
-            .get(f)
-            .copied()
-            .unwrap_or_else(|| face_box(mesh, f))
-    };
-    let mut out: Vec<(u32, u32)> = (0..mesh.num_faces())
-        .into_par_iter()
-        .flat_map_iter(|f| {
-            let (lo, hi) = box_of(f);
-            let centre = 0.5 * (lo + hi);
-            let reach = 0.5 * (hi - lo).length();
-            let found: Vec<(u32, u32)> = grid
-                .faces_near(centre, reach)
-                .into_iter()
-                .filter(|&g| g > f)
-                .filter(|&g| {
-                    let (a, b) = box_of(g);
-                    a.cmple(hi).all() && lo.cmple(b).all()
-                })
-                .filter(|&g| faces_cross(mesh, &tris[f], &tris[g]))
-                .map(|g| (f as u32, g as u32))
-                .collect();
-            found
-        })
-        .collect();
+    let mut out = grid.overlapping_pairs(mesh, |f, g| {
+        faces_cross(mesh, &tris[f as usize], &tris[g as usize])
+    });
     out.sort_unstable();
     out
 }

@@ -138,6 +138,104 @@ impl FaceGrid {
         }
     }
 
+    /// The index of the cell that holds `p` (clamped into the grid).
+    fn cell_of(&self, p: DVec3) -> usize {
+        let (a, _) = self.range(p, p);
+        (a[2] * self.dims[1] + a[1]) * self.dims[0] + a[0]
+    }
+
+    /// Every pair of faces `(f, g)`, `f < g`, whose boxes overlap or touch and that `keep`
+    /// accepts, each once, in no particular order (only the kept pairs are stored). Two listed faces are paired only in the cell that holds the low
+    /// corner of their boxes' overlap (both are listed there), so no pair is found twice and
+    /// no list is sorted; a big face is paired with the small faces of the cells its box
+    /// covers — or, when those are more than the faces, by a scan — and with the other big
+    /// ones directly. When the grid keeps no boxes (a face of `mesh`, the mesh it was made
+    /// from, has no finite one), every pair is tested: the faces' own boxes, a scan.
+    pub fn overlapping_pairs(
+        &self,
+        mesh: &PolyMesh,
+        keep: impl Fn(u32, u32) -> bool + Sync,
+    ) -> Vec<(u32, u32)> {
+        use rayon::prelude::*;
+        let keep = &keep;
+        let overlap_of =
+            |(a, b): (DVec3, DVec3), (c, d): (DVec3, DVec3)| a.cmple(d).all() && c.cmple(b).all();
+        if self.boxes.is_empty() {
+            let boxes: Vec<_> = (0..mesh.num_faces()).map(|f| face_box(mesh, f)).collect();
+            return (0..boxes.len())
+                .into_par_iter()
+                .flat_map_iter(|f| {
+                    let boxes = &boxes;
+                    (f + 1..boxes.len())
+                        .filter(move |&g| overlap_of(boxes[f], boxes[g]))
+                        .map(move |g| (f as u32, g as u32))
+                        .filter(move |&(f, g)| keep(f, g))
+                })
+                .collect();
+        }
+        let overlap = |f: usize, g: usize| overlap_of(self.boxes[f], self.boxes[g]);
+        let low = |f: usize, g: usize| self.boxes[f].0.max(self.boxes[g].0);
+        let cells = self.start.len() - 1;
+        let mut pairs: Vec<(u32, u32)> = (0..cells)
+            .into_par_iter()
+            .flat_map_iter(|i| {
+                // Filled in increasing face order: f < g below.
+                let cell = &self.faces[self.start[i] as usize..self.start[i + 1] as usize];
+                let mut out = Vec::new();
+                for (k, &f) in cell.iter().enumerate() {
+                    for &g in &cell[k + 1..] {
+                        let (f, g) = (f as usize, g as usize);
+                        if overlap(f, g) && self.cell_of(low(f, g)) == i && keep(f as u32, g as u32)
+                        {
+                            out.push((f as u32, g as u32));
+                        }
+                    }
+                }
+                out
+            })
+            .collect();
+        let n = self.boxes.len();
+        let big_pairs: Vec<(u32, u32)> = self
+            .big
+            .par_iter()
+            .flat_map_iter(|&b| {
+                let b = b as usize;
+                let (lo, hi) = self.range(self.boxes[b].0, self.boxes[b].1);
+                let mut out = Vec::new();
+                if Self::span(lo, hi) < n {
+                    self.for_cells(lo, hi, |i| {
+                        let cell = &self.faces[self.start[i] as usize..self.start[i + 1] as usize];
+                        for &g in cell {
+                            let g = g as usize;
+                            let pair = (b.min(g) as u32, b.max(g) as u32);
+                            if overlap(b, g) && self.cell_of(low(b, g)) == i && keep(pair.0, pair.1)
+                            {
+                                out.push(pair);
+                            }
+                        }
+                    });
+                } else {
+                    let small = (0..n).filter(|g| self.big.binary_search(&(*g as u32)).is_err());
+                    for g in small {
+                        let pair = (b.min(g) as u32, b.max(g) as u32);
+                        if overlap(b, g) && keep(pair.0, pair.1) {
+                            out.push(pair);
+                        }
+                    }
+                }
+                for &g in &self.big {
+                    let g = g as usize;
+                    if g > b && overlap(b, g) && keep(b as u32, g as u32) {
+                        out.push((b as u32, g as u32));
+                    }
+                }
+                out
+            })
+            .collect();
+        pairs.extend(big_pairs);
+        pairs
+    }
+
     /// Whether face `f`'s box comes within `reach` of `p`.
     pub fn near(&self, f: usize, p: DVec3, reach: f64) -> bool {
         match self.boxes.get(f) {
@@ -184,5 +282,61 @@ mod tests {
                 .collect();
             assert_eq!(g.faces_near(p, reach), scan, "{p} {reach}");
         }
+    }
+
+    /// The pairs of overlapping boxes found cell by cell are those of a scan, each once: a
+    /// fine torus (small faces) through two large boxes (faces on the big list, which
+    /// overlap each other too), and a face with no finite box (no grid).
+    #[test]
+    fn overlapping_pairs_are_those_of_a_scan() {
+        let mut m = primitives::union_disjoint(&[
+            primitives::torus(120, 80, 3.0, 1.0),
+            primitives::cuboid(DVec3::new(-40.0, -0.5, -3.0), DVec3::new(40.0, 0.5, 3.0)),
+            primitives::cuboid(DVec3::new(-0.5, -40.0, -3.0), DVec3::new(0.5, 40.0, 3.0)),
+        ]);
+        let scan = |m: &PolyMesh| {
+            let b: Vec<_> = (0..m.num_faces()).map(|f| face_box(m, f)).collect();
+            let mut out = Vec::new();
+            for f in 0..b.len() {
+                for g in f + 1..b.len() {
+                    if b[f].0.cmple(b[g].1).all() && b[g].0.cmple(b[f].1).all() {
+                        out.push((f as u32, g as u32));
+                    }
+                }
+            }
+            out
+        };
+        let g = FaceGrid::new(&m);
+        assert!(g.big.len() >= 4, "{}", g.big.len());
+        let mut pairs = g.overlapping_pairs(&m, |_, _| true);
+        pairs.sort_unstable();
+        assert_eq!(pairs, scan(&m));
+        // A coarse torus through a large thin plate: the plate's faces span more cells than
+        // there are faces, so they are paired by a scan.
+        let plate = primitives::union_disjoint(&[
+            primitives::torus(40, 12, 3.0, 1.0),
+            primitives::cuboid(DVec3::new(-50.0, -50.0, 0.0), DVec3::new(50.0, 50.0, 0.01)),
+        ]);
+        let g = FaceGrid::new(&plate);
+        let spans: Vec<usize> = (480..486)
+            .map(|f| {
+                let (lo, hi) = g.range(g.boxes[f].0, g.boxes[f].1);
+                FaceGrid::span(lo, hi)
+            })
+            .collect();
+        assert!(
+            spans.iter().any(|&s| s >= plate.num_faces() && s > BIG),
+            "{spans:?} {}",
+            g.cell
+        );
+        let mut pairs = g.overlapping_pairs(&plate, |_, _| true);
+        pairs.sort_unstable();
+        assert_eq!(pairs, scan(&plate));
+        m.positions[0].x = f64::NAN;
+        let g = FaceGrid::new(&m);
+        assert!(g.boxes.is_empty());
+        let mut pairs = g.overlapping_pairs(&m, |_, _| true);
+        pairs.sort_unstable();
+        assert_eq!(pairs, scan(&m));
     }
 }
