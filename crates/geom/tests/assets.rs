@@ -55,3 +55,33 @@ fn the_creased_rim_sample_is_the_cube_with_four_creases_and_its_pipeline() {
         "catmull-clark-circle,catmull-clark-circle,catmull-clark-circle,catmull-clark-circle"
     );
 }
+
+/// The bare scene files open as documents holding just their block (the app opens what
+/// `prism envelope` and `prism skin` read): every `.envelope.json` and `.skin.json` sample;
+/// a JSON with neither a version nor such a block is still a document error.
+#[test]
+fn bare_scene_files_open_as_documents() {
+    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../assets");
+    let mut seen = (0, 0);
+    for entry in std::fs::read_dir(&dir).unwrap() {
+        let path = entry.unwrap().path();
+        let name = path.file_name().unwrap().to_string_lossy().to_string();
+        let (doc, _) = if name.ends_with(".envelope.json") || name.ends_with(".skin.json") {
+            io::load(&path).unwrap_or_else(|e| panic!("{name}: {e}"))
+        } else {
+            continue;
+        };
+        assert_eq!(doc.mesh.num_faces(), 0, "{name}");
+        if name.ends_with(".envelope.json") {
+            let spec = io::scene_from_str(&path, &std::fs::read_to_string(&path).unwrap()).unwrap();
+            assert_eq!(doc.envelope, Some(spec), "{name}");
+            seen.0 += 1;
+        } else {
+            assert!(doc.skin.is_some_and(|s| !s.sections.is_empty()), "{name}");
+            seen.1 += 1;
+        }
+    }
+    assert_eq!(seen, (6, 3));
+    let e = io::load_str(std::path::Path::new("x.prism.json"), r#"{"t": 1.0}"#).unwrap_err();
+    assert!(e.to_string().contains("missing field `version`"), "{e}");
+}

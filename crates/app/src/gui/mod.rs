@@ -242,6 +242,7 @@ impl PrismApp {
         );
         model.sel_edges = launch.select_edges.into_iter().collect();
         let last_file = origin.path.clone().or(settings.last_file);
+        let first_tab = tab_for(&state);
         let doc = Document::new(state, origin);
         model.sync(&doc);
         let mut envelope = envelope::EnvelopeTab::default();
@@ -250,7 +251,7 @@ impl PrismApp {
         Ok(PrismApp {
             autosave,
             doc,
-            tab: launch.tab.unwrap_or_default(),
+            tab: launch.tab.or(first_tab).unwrap_or_default(),
             model,
             curves: curves::CurvesTab::default(),
             skin: skin::SkinTab::default(),
@@ -465,6 +466,9 @@ impl PrismApp {
     fn opened(&mut self, loaded: Result<(document::DocState, document::Origin), String>) {
         match loaded {
             Ok((state, origin)) => {
+                if let Some(tab) = tab_for(&state) {
+                    self.tab = tab;
+                }
                 self.replace_document(state, origin);
                 self.autosave.opened(self.doc.generation());
             }
@@ -700,6 +704,20 @@ impl eframe::App for PrismApp {
         if self.screenshot.is_none() {
             eframe::set_value(storage, SETTINGS_KEY, &self.settings());
         }
+    }
+}
+
+/// The tab a document with no solid opens on: an envelope scene's or a skin's (a bare
+/// `.envelope.json` or `.skin.json` opened).
+fn tab_for(state: &document::DocState) -> Option<Tab> {
+    if state.mesh.num_faces() > 0 {
+        None
+    } else if state.envelope.is_some() {
+        Some(Tab::Envelope)
+    } else if state.skin.is_some() {
+        Some(Tab::Skin)
+    } else {
+        None
     }
 }
 

@@ -83,12 +83,49 @@ struct VersionOnly {
     version: u64,
 }
 
+/// A bare envelope scene (`{"t": …, "primitives": […]}`, the `.envelope.json` samples) or
+/// skin specification (`{"sections": […], …}`, `.skin.json`) without a document's `version`:
+/// a document holding just that block, so that the app opens what `prism envelope` and
+/// `prism skin` read. None when the text is anything else (read as a document).
+fn bare_spec(path: &Path, text: &str) -> Result<Option<Document>, IoError> {
+    #[derive(Deserialize)]
+    struct Keys {
+        version: Option<serde::de::IgnoredAny>,
+        primitives: Option<serde::de::IgnoredAny>,
+        sections: Option<serde::de::IgnoredAny>,
+    }
+    let Ok(k) = serde_json::from_str::<Keys>(text) else {
+        return Ok(None);
+    };
+    if k.version.is_some() {
+        return Ok(None);
+    }
+    Ok(if k.primitives.is_some() {
+        let spec = serde_json::from_str(text).map_err(|e| json_err(path, e))?;
+        Some(Document {
+            envelope: Some(spec),
+            ..Document::default()
+        })
+    } else if k.sections.is_some() {
+        let spec = serde_json::from_str(text).map_err(|e| json_err(path, e))?;
+        Some(Document {
+            skin: Some(spec),
+            ..Document::default()
+        })
+    } else {
+        None
+    })
+}
+
 fn json_err(path: &Path, e: serde_json::Error) -> IoError {
     super::inputs::json_error(path, &e, "")
 }
 
 /// Parses a document from text.
 pub fn document_from_str(path: &Path, text: &str) -> Result<Document, IoError> {
+    if let Some(d) = bare_spec(path, text)? {
+        return Ok(d);
+    }
     let v: VersionOnly = serde_json::from_str(text).map_err(|e| json_err(path, e))?;
     if v.version != DOCUMENT_VERSION {
         return Err(IoError::UnknownVersion {
