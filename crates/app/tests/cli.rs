@@ -1046,6 +1046,18 @@ fn envelope_builds_the_bundled_scenes_and_names_bad_ones() {
         )) && se.contains("the first on primitive 2 face 3"),
         "{se}"
     );
+    assert!(so.contains(" crossings=0 "), "{so}");
+    // Per-vertex t a thousand times apart on one octahedron: no cell folds, but at 12 quads a
+    // patch side the written surface passes through itself beside the sharp vertex.
+    let (_, so, se) = succeeds_to(
+        "apart.obj",
+        "envelope crates/geom/tests/data/envelope/vertex-t-apart.envelope.json -o {}",
+    );
+    assert!(so.contains(" folded=0 crossings=16 "), "{so}");
+    assert!(
+        se.contains("warning: the surface passes through itself at 16 pair(s) of faces of its tessellation at 12×12 quads a patch, the first near (0.2"),
+        "{se}"
+    );
     let (_, so, _) = succeeds_to(
         "five.obj",
         "envelope assets/table2-five.envelope.json -o {} --resolution 4",

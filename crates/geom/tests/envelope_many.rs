@@ -893,3 +893,29 @@ fn a_short_leg_at_a_split_point_is_lengthened() {
         fold_free_at(&spec, t);
     }
 }
+
+/// Per-vertex t a thousand times apart on one octahedron (0.0017 beside 2.2 and 2.5): near
+/// the sharp vertex the four patches fold over within their corners' tangent planes, which
+/// the fold check does not see (no cell folded) and the crossing check of the tessellation
+/// does — at 12 quads a patch side, not at 8 (envelope.md, "Left"). The same octahedron
+/// with its t 300 times apart at most crosses nowhere.
+#[test]
+fn per_vertex_t_far_apart_is_found_by_the_crossing_check() {
+    use prism_geom::freeform::envelope::folds::crossings;
+    let spec: EnvelopeSpec =
+        serde_json::from_str(include_str!("data/envelope/vertex-t-apart.envelope.json")).unwrap();
+    let e = envelope(&spec).unwrap();
+    assert!(e.folds().is_empty());
+    let at12 = crossings(&e.tessellate(12).unwrap());
+    assert_eq!(at12.len(), 16);
+    // All of them beside the vertex with t = 0.0017 (vertex 3).
+    let sharp = DVec3::from_array(spec.primitives[0].vertices[3]);
+    assert!(at12.iter().all(|p| p.distance(sharp) < 0.1), "{at12:?}");
+    assert!(crossings(&e.tessellate(8).unwrap()).is_empty());
+    let mut closer = spec.clone();
+    for t in closer.primitives[0].vertex_t.as_mut().unwrap() {
+        *t = t.max(2.5 / 300.0);
+    }
+    let e = envelope(&closer).unwrap();
+    assert!(crossings(&e.tessellate(12).unwrap()).is_empty());
+}

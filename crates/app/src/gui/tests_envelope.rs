@@ -218,3 +218,52 @@ fn the_summary_counts_folds() {
         }
     }
 }
+
+/// Faces that pass through each other (per-vertex t a thousand times apart on one
+/// octahedron, 12 quads a patch side) are found on a thread after the build, counted in the
+/// summary with where the first lies, and marked; the seven-primitive sample has none.
+#[test]
+fn the_summary_counts_crossings() {
+    let apart: prism_geom::freeform::envelope::EnvelopeSpec = serde_json::from_str(include_str!(
+        "../../../geom/tests/data/envelope/vertex-t-apart.envelope.json"
+    ))
+    .unwrap();
+    let k = envelope::ENVELOPE_SAMPLES
+        .iter()
+        .position(|s| s.1 == "table2-seven.envelope.json")
+        .unwrap();
+    for (spec, pairs) in [(apart, 16), (envelope::sample(k).unwrap(), 0)] {
+        let mut a = app();
+        a.run(Command::Edit(Edit::SetEnvelope {
+            spec: Some(spec),
+            gesture: None,
+        }));
+        let done = loop {
+            a.envelope.sync(a.doc.state().envelope.as_ref());
+            let b = a.envelope.built().expect("built");
+            if let envelope::build::Crossings::Done(p, w) = &b.crossings {
+                break (p.len(), w.clone());
+            }
+            std::thread::sleep(std::time::Duration::from_millis(2));
+        };
+        assert_eq!(done.0, pairs);
+        match done.1 {
+            Some(w) => assert!(pairs > 0 && w.contains("16 pair(s)"), "{w}"),
+            None => assert_eq!(pairs, 0),
+        }
+    }
+}
+
+/// `prism assets/two-cubes.envelope.json`: a bare scene file opens on the Envelope tab with
+/// its scene (a skin's on the Skin tab), not as "missing field `version`".
+#[test]
+fn a_bare_scene_file_opens_on_its_tab() {
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../assets");
+    let a = super::tests::opened(&dir.join("two-cubes.envelope.json"));
+    assert_eq!(a.tab, Tab::Envelope);
+    let spec = a.doc.state().envelope.clone().expect("the scene");
+    assert_eq!(spec.primitives.len(), 2);
+    let a = super::tests::opened(&dir.join("spout.skin.json"));
+    assert_eq!(a.tab, Tab::Skin);
+    assert!(a.doc.state().skin.is_some());
+}

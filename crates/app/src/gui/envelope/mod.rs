@@ -6,7 +6,7 @@
 //! Any number of primitives: those the others swallow (their centre is not a corner of the
 //! hull of the centres) are named in the summary.
 
-mod build;
+pub(crate) mod build;
 
 use super::command::{Command, Edit};
 use super::gestures::Gestures;
@@ -212,6 +212,15 @@ impl EnvelopeTab {
         let fresh = self.built.as_ref().is_none_or(|b| &b.spec != spec);
         if fresh {
             self.built = Some(Built::new(spec));
+        }
+        // The crossings' marks join the overlay when the check's answer comes.
+        if let Some(b) = self.built.as_mut()
+            && b.poll_crossings()
+            && !fresh
+            && self.shown == Some((self.picked, self.overlays))
+        {
+            self.view
+                .show(build::scenes(b, self.picked, &self.overlays));
         }
         if let Some((p, v)) = self.picked
             && spec.primitives.get(p).is_none_or(|x| v >= x.vertices.len())
@@ -470,6 +479,29 @@ impl EnvelopeTab {
                     None => {
                         ui.label("Folds: none (every sampled cell faces like its patch's corners)");
                     }
+                }
+                match &b.crossings {
+                    build::Crossings::Checking(_) => {
+                        ui.weak("Crossings: checking…");
+                        ui.ctx()
+                            .request_repaint_after(std::time::Duration::from_millis(30));
+                    }
+                    build::Crossings::Done(_, Some(text)) => {
+                        ui.colored_label(
+                            egui::Color32::from_rgb(255, 120, 100),
+                            format!(
+                                "Crossings: {} pair(s) of faces pass through each other, marked with red crosses",
+                                b.crossing_points().len()
+                            ),
+                        )
+                        .on_hover_text(text.clone());
+                    }
+                    build::Crossings::Done(_, None) => {
+                        ui.label(
+                            "Crossings: none (no two faces of the surface pass through each other)",
+                        );
+                    }
+                    build::Crossings::None => {}
                 }
             }
             Err(e) => {

@@ -8,10 +8,12 @@
 //! so the test needs no other part of the surface and costs one grid per patch. It sees
 //! folds that a winding-number test at a step off the face misses (a cell tilted by 95° in a
 //! pleat is outside-facing enough to pass that one); it does not see two distant parts of
-//! the surface passing through each other.
+//! the surface passing through each other, nor a patch folding over within its corners'
+//! tangent planes — [`crossings`] of the tessellation does.
 
 use super::network::Network;
 use super::patches::EnvelopePatch;
+use crate::mesh::PolyMesh;
 use glam::DVec3;
 
 /// Cells along each side of a patch that the check samples.
@@ -64,4 +66,23 @@ pub fn folds(net: &Network, patches: &[EnvelopePatch], k: usize) -> Vec<Fold> {
         }
     }
     out
+}
+
+/// Where a tessellation passes through itself: its pairs of faces that cross
+/// ([`crate::analysis::crossings`]), each as the midpoint of the two faces' centroids. Per-vertex
+/// t a thousand times apart on one octahedron folds a patch over within its corners' tangent
+/// planes near the sharper vertex: 16 pairs at 12 × 12 quads a patch, none at 8 × 8, no cell
+/// folded at 8 (docs/algorithms/envelope.md, "Left").
+pub fn crossings(mesh: &PolyMesh) -> Vec<DVec3> {
+    let centroid = |f: u32| {
+        let c = mesh.face_corners(f as usize);
+        let n = c.len().max(1) as f64;
+        c.map(|c| mesh.positions[mesh.corner_verts[c] as usize])
+            .sum::<DVec3>()
+            / n
+    };
+    crate::analysis::crossings(mesh)
+        .into_iter()
+        .map(|(f, g)| 0.5 * (centroid(f) + centroid(g)))
+        .collect()
 }

@@ -259,6 +259,19 @@ impl Envelope {
         ))
     }
 
+    /// The warning for [`folds::crossings`] of its tessellation at `k` quads a patch side
+    /// (none when there are none): how many pairs and where the first lies.
+    pub fn crossing_warning(&self, points: &[DVec3], k: usize) -> Option<String> {
+        let p = points.first()?;
+        Some(format!(
+            "the surface passes through itself at {} pair(s) of faces of its tessellation at {k}×{k} quads a patch, the first near ({:.4}, {:.4}, {:.4}); per-vertex t closer together (or a larger t) usually clears it",
+            points.len(),
+            p.x,
+            p.y,
+            p.z,
+        ))
+    }
+
     /// What region `r` lies on, in words: "primitive P face F", or "region R (between
     /// primitives)" for a fusion strip's quad or a lid.
     pub fn describe_region(&self, r: usize) -> String {
