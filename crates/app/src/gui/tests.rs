@@ -887,6 +887,7 @@ fn the_model_tab_fits_1280_by_800() {
     inside(&h, "4 views");
     let header = inside(&h, "ms per level");
     inside(&h, "fillet radius reached");
+    inside(&h, "crossing");
     // The fourth row is on screen, below the header.
     let row = inside(&h, "4");
     assert!(row.top() > header.bottom(), "{row:?}");

@@ -1,5 +1,6 @@
 //! The table under the compare split: per view, its pipeline, counts of the level shown,
-//! flipped faces, the fillet radius reached and the time of every level.
+//! flipped faces, pairs of faces through each other, the fillet radius reached and the time of
+//! every level.
 //!
 //! The fillet radius is measured on one control edge ([`prism_geom::analysis::measure_fillet`]:
 //! a circle fitted to the section through the edge's midpoint): the selected edge when
@@ -8,6 +9,7 @@
 //! own, or the step's). The Edges tool shows the same for the selected edge.
 
 use super::ModelTab;
+use super::crossing_check::Crossings;
 use crate::gui::document::DocState;
 use prism_geom::EdgeKey;
 use prism_geom::analysis::measure_fillet;
@@ -89,13 +91,19 @@ impl ModelTab {
     }
 
     pub(super) fn compare_table(&mut self, ui: &mut egui::Ui, doc: &DocState) {
-        let rows: Vec<[String; 7]> = (0..self.views.len())
+        let rows: Vec<[String; 8]> = (0..self.views.len())
             .map(|i| {
                 let fillet = self.fillet_text(i, doc);
                 let v = &self.views[i];
                 let k = v.shown();
                 let lv = &v.pipeline.levels()[k];
                 let flipped = lv.report.as_ref().map_or(0, |r| r.flipped.len());
+                // Pairs of faces through each other (checked on a thread; "…" meanwhile).
+                let crossing = match v.crossings() {
+                    Crossings::Done(p) => p.len().to_string(),
+                    Crossings::Ask { .. } => "not checked".to_string(),
+                    Crossings::Waiting | Crossings::Checking => "…".to_string(),
+                };
                 let times: Vec<String> = v.pipeline.levels()[1..]
                     .iter()
                     .map(|l| {
@@ -113,6 +121,7 @@ impl ModelTab {
                     lv.mesh.num_vertices().to_string(),
                     lv.mesh.num_faces().to_string(),
                     flipped.to_string(),
+                    crossing,
                     fillet,
                     times.join(" / "),
                 ]
@@ -121,7 +130,7 @@ impl ModelTab {
         egui::ScrollArea::both().show(ui, |ui| {
             egui::Grid::new("compare-table")
                 .striped(true)
-                .num_columns(7)
+                .num_columns(8)
                 .show(ui, |ui| {
                     for h in [
                         "view",
@@ -129,6 +138,7 @@ impl ModelTab {
                         "vertices",
                         "faces",
                         "flipped",
+                        "crossing",
                         "fillet radius reached",
                         "ms per level",
                     ] {
@@ -147,7 +157,8 @@ impl ModelTab {
                                     ui.set_max_width(250.0);
                                     ui.add(egui::Label::new(cell).wrap());
                                 });
-                            } else if c == 4 && cell != "0" {
+                            } else if (c == 4 || c == 5) && cell.parse().is_ok_and(|n: usize| n > 0)
+                            {
                                 ui.colored_label(egui::Color32::from_rgb(240, 110, 90), cell);
                             } else {
                                 ui.label(cell);
