@@ -468,6 +468,8 @@ impl PrismApp {
             Ok((state, origin)) => {
                 if let Some(tab) = tab_for(&state) {
                     self.tab = tab;
+                    self.envelope.reframe();
+                    self.skin.reframe();
                 }
                 self.replace_document(state, origin);
                 self.autosave.opened(self.doc.generation());

@@ -266,4 +266,11 @@ fn a_bare_scene_file_opens_on_its_tab() {
     let a = super::tests::opened(&dir.join("spout.skin.json"));
     assert_eq!(a.tab, Tab::Skin);
     assert!(a.doc.state().skin.is_some());
+    // File ▸ Open from another tab too.
+    let mut a = super::tests::opened(&dir.join("tripod.obj"));
+    assert_eq!(a.tab, Tab::Model);
+    a.run(Command::Open(dir.join("two-cubes.envelope.json")));
+    a.wait_idle();
+    assert_eq!(a.tab, Tab::Envelope);
+    assert_eq!(a.doc.state().envelope.as_ref().unwrap().primitives.len(), 2);
 }
