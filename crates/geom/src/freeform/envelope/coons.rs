@@ -1,8 +1,8 @@
 //! Coons patches with Gregory's variable twist (seed 004 §6.2; ALGORITHMS §9;
 //! docs/algorithms/envelope.md), fed with four rational boundary curves and four
-//! cross-derivative functions `X(s) = k(s)·g(s) + a(s)·unit(C′(s))` (k linear, a the paper's
-//! `h·|C′|` fitted at the corners and monotone between them, g the border's virtual basis,
-//! ALGORITHMS §8.2–8.3).
+//! cross-derivative functions `X(s) = k(s)·g(s) + a(s)·unit(C′(s))` (k linear or eased into a
+//! short leg's corner, a the paper's `h·|C′|` fitted at the corners and monotone between
+//! them, g the border's virtual basis, ALGORITHMS §8.2–8.3).
 //!
 //! With the cubic Hermite functions `H₀, H₁, G₀, G₁`,
 //! `S = L_u + L_v − T`, `L_u = H₀(u)d₀(v) + H₁(u)d₁(v) + G₀(u)f₀(v) + G₁(u)f₁(v)`, `L_v` likewise
@@ -22,9 +22,14 @@ use glam::DVec3;
 /// derivative keeps pointing into the patch ([`Side::short`]).
 const INWARD_FLOOR: f64 = 0.25;
 
+/// Legs at a side's two corners this many times apart start easing k into the shorter one;
+/// the square of it apart, fully ([`Side::k_share`]).
+const EASE_FROM: f64 = 8.0;
+
 /// One border of a patch: its curve (parametrised along the side) and its inward cross
-/// derivative `X(s) = (k₀(1−s) + k₁s)·g(s) + a(s)·unit(C′(s))`, `g(s) = (1−s)g₀ + s g₁`,
-/// where the part along the side runs from `h₀|C′(0)|` to `h₁|C′(1)|` ([`Side::along`]).
+/// derivative `X(s) = (k₀ + (k₁ − k₀)φ(s))·g(s) + a(s)·unit(C′(s))`, `g(s) = (1−s)g₀ + s g₁`,
+/// φ the share of [`Side::k_share`] (s itself unless the corner legs are far apart), where the
+/// part along the side runs from `h₀|C′(0)|` to `h₁|C′(1)|` ([`Side::along`]).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Side {
     pub curve: RationalBezier,
@@ -158,15 +163,33 @@ impl Side {
         (a, da)
     }
 
+    /// The share `φ(s) = s + μ·s(1 − s)` of the way from k₀ to k₁ at s, and φ′. Linear
+    /// (μ = 0) unless one corner's leg is far shorter than the other's: then k eases into that
+    /// corner (μ → ±1, φ′ → 0 there), so that the cross derivative does not change fast where
+    /// it is tiny — the twist that folded the corner cells at a vertex of t = 0.0017 beside
+    /// vertices of t ≈ 2 (envelope.md, "Left"). Any k(s) keeps X in the plane of g and C′.
+    fn k_share(&self, s: f64) -> (f64, f64) {
+        let (l0, l1) = (self.legs.0.length(), self.legs.1.length());
+        let q = l0 / l1;
+        let mu = if !(q.is_finite() && q > 0.0) || (1.0 / EASE_FROM..=EASE_FROM).contains(&q) {
+            0.0
+        } else {
+            let r = q.ln() / EASE_FROM.ln();
+            r.signum() * (r.abs() - 1.0).clamp(0.0, 1.0)
+        };
+        (s + mu * s * (1.0 - s), 1.0 + mu * (1.0 - 2.0 * s))
+    }
+
     /// `k g + a·unit(C′)` ([`Side::along`]) and its s-derivative.
     fn fitted_cross(&self, s: f64) -> (DVec3, DVec3) {
         let g = self.g.0.lerp(self.g.1, s);
         let dg = self.g.1 - self.g.0;
-        let k = self.k.0 + (self.k.1 - self.k.0) * s;
+        let (phi, dphi) = self.k_share(s);
+        let k = self.k.0 + (self.k.1 - self.k.0) * phi;
         let (dir, ddir) = unit_tangent(&self.curve, s);
         let (a, da) = self.along(s);
         let x = k * g + a * dir;
-        let dx = (self.k.1 - self.k.0) * g + k * dg + da * dir + a * ddir;
+        let dx = (self.k.1 - self.k.0) * dphi * g + k * dg + da * dir + a * ddir;
         (x, dx)
     }
 }

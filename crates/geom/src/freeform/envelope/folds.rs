@@ -69,10 +69,11 @@ pub fn folds(net: &Network, patches: &[EnvelopePatch], k: usize) -> Vec<Fold> {
 }
 
 /// Where a tessellation passes through itself: its pairs of faces that cross
-/// ([`crate::analysis::crossings`]), each as the midpoint of the two faces' centroids. Per-vertex
-/// t a thousand times apart on one octahedron folds a patch over within its corners' tangent
-/// planes near the sharper vertex: 16 pairs at 12 × 12 quads a patch, none at 8 × 8, no cell
-/// folded at 8 (docs/algorithms/envelope.md, "Left").
+/// ([`crate::analysis::crossings`]), each as the midpoint of the two faces' centroids. It sees
+/// what the fold check cannot: a patch folded over within its corners' tangent planes (per-vertex
+/// t a thousand times apart on an octahedron did so at 12 quads a side, not at 8, before k was
+/// eased into short legs) and parts of the surface through each other in a heap
+/// (docs/algorithms/envelope.md, "Folds, reported").
 pub fn crossings(mesh: &PolyMesh) -> Vec<DVec3> {
     let centroid = |f: u32| {
         let c = mesh.face_corners(f as usize);

@@ -3,7 +3,8 @@
 //!
 //! **G1.** Every border takes the virtual basis of its curve, `g(τ) = (1 − τ)g₀ + τg₁`, on
 //! both sides; each side's cross derivative is `X(s) = k(s)g(s) + a(s)·unit(C′(s))`, k linear
-//! and `a = h|C′|` at the corners, fitted there to the neighbouring sides' legs (`k g + h C′`,
+//! (eased into a corner whose leg is far the shorter, `Side::k_share`) and `a = h|C′|` at the
+//! corners, fitted there to the neighbouring sides' legs (`k g + h C′`,
 //! the paper's), a monotone between them (`coons.rs`, `Side::along`). Both sides' X lie in
 //! span(g, C′): one tangent plane along the whole border, whatever the numbering. A side that
 //! is part of a curve takes the restriction of the curve's g (linear in τ is linear in s).
