@@ -293,9 +293,7 @@ pub fn run(a: RenderArgs) -> Result<(), CliError> {
     }
     if matches!(a.color_by, ColorArg::Crossings) {
         let pairs = prism_geom::analysis::crossings(&last.mesh);
-        let mut faces: Vec<u32> = pairs.iter().flat_map(|&(f, g)| [f, g]).collect();
-        faces.sort_unstable();
-        faces.dedup();
+        let faces = prism_geom::analysis::crossing_faces(&pairs);
         scene.paint_faces(&last.mesh, &faces, FLIPPED_COLOR);
         println!(
             "{} face(s) that pass through another drawn in red ({} pair(s))",

@@ -163,7 +163,7 @@ fn faces_that_pass_through_each_other_are_found_and_painted() {
     let v = &a.model.views[0];
     let lv = &v.pipeline.levels()[4];
     assert!(lv.report.as_ref().unwrap().flipped.is_empty());
-    let faces = super::model::crossing_check::faces_of(&pairs);
+    let faces = prism_geom::analysis::crossing_faces(&pairs);
     let corners: usize = faces
         .iter()
         .map(|&f| lv.mesh.face_corners(f as usize).len())

@@ -145,9 +145,9 @@ impl FaceGrid {
     }
 
     /// Every pair of faces `(f, g)`, `f < g`, whose boxes overlap or touch and that `keep`
-    /// accepts, each once, in no particular order (only the kept pairs are stored). Two listed faces are paired only in the cell that holds the low
-    /// corner of their boxes' overlap (both are listed there), so no pair is found twice and
-    /// no list is sorted; a big face is paired with the small faces of the cells its box
+    /// accepts, each once, in no particular order (only the kept pairs are stored). Two listed
+    /// faces are paired only in the cell that holds the low corner of their boxes' overlap
+    /// (both are listed there), so no pair is found twice and no list is sorted; a big face is paired with the small faces of the cells its box
     /// covers — or, when those are more than the faces, by a scan — and with the other big
     /// ones directly. When the grid keeps no boxes (a face of `mesh`, the mesh it was made
     /// from, has no finite one), every pair is tested: the faces' own boxes, a scan.

@@ -9,6 +9,6 @@ mod face_grid;
 mod fillet;
 
 pub use counts::{MeshCounts, counts};
-pub use crossings::{crossings, triangles_cross};
+pub use crossings::{crossing_faces, crossings, triangles_cross};
 pub use curvature::mean_curvature;
 pub use fillet::{FilletError, FilletMeasure, FilletSummary, measure_fillet, measure_fillets};

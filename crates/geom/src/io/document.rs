@@ -101,9 +101,8 @@ fn bare_spec(path: &Path, text: &str) -> Result<Option<Document>, IoError> {
         return Ok(None);
     }
     Ok(if k.primitives.is_some() {
-        let spec = serde_json::from_str(text).map_err(|e| json_err(path, e))?;
         Some(Document {
-            envelope: Some(spec),
+            envelope: Some(super::scene_from_str(path, text)?),
             ..Document::default()
         })
     } else if k.sections.is_some() {

@@ -78,12 +78,14 @@ pub enum Crossings {
     Checking(Receiver<Vec<DVec3>>),
     /// The midpoints of the pairs of faces that pass through each other, and the warning.
     Done(Vec<DVec3>, Option<String>),
-    /// No surface to check.
+    /// No surface, or not checked (the t sweep's views).
     None,
 }
 
 impl Built {
-    pub fn new(spec: &EnvelopeSpec) -> Built {
+    /// The envelope of `spec`, its folds, and — when `check_crossings` (the view the summary
+    /// describes; the t sweep's views show no summary) — a crossing check started on a thread.
+    pub fn new(spec: &EnvelopeSpec, check_crossings: bool) -> Built {
         let start = Instant::now();
         let e = envelope(spec);
         let millis = start.elapsed().as_secs_f64() * 1e3;
@@ -107,7 +109,7 @@ impl Built {
             Err(_) => (None, Vec::new()),
         };
         let crossings = match &result {
-            Ok((_, m)) => {
+            Ok((_, m)) if check_crossings => {
                 let (tx, rx) = std::sync::mpsc::channel();
                 let m = m.clone();
                 std::thread::spawn(move || {
@@ -115,7 +117,7 @@ impl Built {
                 });
                 Crossings::Checking(rx)
             }
-            Err(_) => Crossings::None,
+            _ => Crossings::None,
         };
         Built {
             spec: spec.clone(),

@@ -211,7 +211,7 @@ impl EnvelopeTab {
         };
         let fresh = self.built.as_ref().is_none_or(|b| &b.spec != spec);
         if fresh {
-            self.built = Some(Built::new(spec));
+            self.built = Some(Built::new(spec, true));
         }
         // The crossings' marks join the overlay when the check's answer comes.
         if let Some(b) = self.built.as_mut()
@@ -239,7 +239,7 @@ impl EnvelopeTab {
             self.sweep_views = SWEEP
                 .iter()
                 .map(|&t| {
-                    let built = Built::new(&with_uniform_t(spec, t));
+                    let built = Built::new(&with_uniform_t(spec, t), false);
                     let (scene, overlay) = build::scenes(&built, None, &self.overlays);
                     SweepView {
                         t,

@@ -121,11 +121,3 @@ impl CrossingCheck {
         self.asked = Some(key);
     }
 }
-
-/// The faces of `pairs`, each once, ascending.
-pub fn faces_of(pairs: &[(u32, u32)]) -> Vec<u32> {
-    let mut f: Vec<u32> = pairs.iter().flat_map(|&(a, b)| [a, b]).collect();
-    f.sort_unstable();
-    f.dedup();
-    f
-}

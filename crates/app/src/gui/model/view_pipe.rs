@@ -4,7 +4,7 @@
 //! limit points). Every cache is keyed on what it was made from — the result's generation,
 //! the level, the display options — so nothing has to remember to mark it stale.
 
-use super::crossing_check::{CrossingCheck, Crossings, faces_of};
+use super::crossing_check::{CrossingCheck, Crossings};
 use super::worker::{Finished, Job, over_budget};
 use prism_geom::ancestry::edge_origins;
 use prism_geom::error::OverBudget;
@@ -447,7 +447,11 @@ impl ViewPipe {
             && self.crossing.painted != Some(self.scene_serial)
         {
             let mesh = &self.pipeline.levels()[key.1].mesh;
-            Arc::make_mut(&mut self.scene).paint_faces(mesh, &faces_of(pairs), FLIPPED_COLOR);
+            Arc::make_mut(&mut self.scene).paint_faces(
+                mesh,
+                &prism_geom::analysis::crossing_faces(pairs),
+                FLIPPED_COLOR,
+            );
             self.crossing.painted = Some(self.scene_serial);
             self.version += 1;
         }
