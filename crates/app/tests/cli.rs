@@ -558,8 +558,8 @@ fn render_shows_flipped_faces_close_up() {
     let out = tmp("cube-flipped.png");
     let line = "render assets/cube.obj -o {} --scheme cylindrical --radius 0.45 --levels 4 --frame-vertex 0 --fov 8 --size 300x200";
     let (so, se) = succeeds(run_with(&format!("{line} --color-by flipped"), &[&out]));
-    assert!(so.contains("48 flipped face(s) drawn in red"), "{so}");
-    assert!(se.contains("level 4: 48 face(s) flipped"), "{se}");
+    assert!(so.contains("72 flipped face(s) drawn in red"), "{so}");
+    assert!(se.contains("level 4: 72 face(s) flipped"), "{se}");
     let red = red_pixels(&out);
     assert!(red > 80, "{red} red pixels");
     succeeds(run_with(line, &[&out]));

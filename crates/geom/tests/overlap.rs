@@ -358,12 +358,14 @@ fn steps(text: &str) -> Vec<Scheme> {
     prism_geom::scheme::parse_pipeline(text).unwrap()
 }
 
-/// Doubly smoothed inputs (docs/algorithms/cylindrical.md, "Untangling"): two Catmull–Clark
-/// steps leave slivers on the tripod whose normals are noise, and the combination steps after
-/// them folded EDGE-faces 2.5e-4–1e-3 of the solid long (12 flipped at levels 5–7) where
-/// even Doo–Sabin points fold. Their points are smoothed now, each less than 1 % of the
-/// solid's size; nothing is flipped through level 7. The same on the Computer room after one
-/// Catmull–Clark step (16 and 8 flipped at levels 5 and 6 before).
+/// Doubly smoothed inputs (docs/algorithms/cylindrical.md, "Untangling" and "The corner
+/// plane"): two Catmull–Clark steps leave warped faces and slivers on the tripod. With the cut
+/// points on each face's mean plane, the combination steps after them folded EDGE-faces (12
+/// flipped at levels 5–7, smoothed away by untangling) and passed faces through each other
+/// (3, 21, 24 and 87 pairs at levels 4–7). With each corner's points in the plane of its own
+/// two edges, nothing is flipped, crossing or untangled through level 6. The untangling is
+/// still what keeps the Computer room sound after combination (r = 0.4), Catmull–Clark and
+/// three combination steps (r = 0.3): 68 points at level 5, moved less than 1 % of its size.
 #[test]
 fn doubly_smoothed_inputs_round_without_a_flip() {
     let mut s = steps("catmull-clark,catmull-clark");
@@ -371,6 +373,19 @@ fn doubly_smoothed_inputs_round_without_a_flip() {
     let p = run(primitives::tripod(), EdgeAttrs::new(), s, Overlap::Clamp);
     assert_eq!(p.levels().len(), 8);
     assert_sound_inside(&p, 2);
+    for (k, lv) in p.levels().iter().enumerate().take(7).skip(3) {
+        let crossing = prism_geom::analysis::crossings(&lv.mesh).len();
+        assert_eq!(
+            crossing, 0,
+            "level {k}: {crossing} pairs through each other"
+        );
+        assert_eq!(lv.report.as_ref().unwrap().untangled.points, 0, "level {k}");
+    }
+    let mut s = steps("combination:r=0.4,catmull-clark");
+    s.extend(combination(3, 0.3));
+    let p = run(computer_room(), EdgeAttrs::new(), s, Overlap::Clamp);
+    assert_eq!(p.levels().len(), 6);
+    assert_sound_inside(&p, 0);
     let d = p.levels()[2].mesh.bbox_diagonal();
     let untangled: Vec<_> = p.levels()[3..]
         .iter()
@@ -383,11 +398,30 @@ fn doubly_smoothed_inputs_round_without_a_flip() {
     for u in &untangled {
         assert!(u.largest_move <= 1e-2 * d, "{u:?}");
     }
+    assert!(prism_geom::analysis::crossings(&p.levels()[5].mesh).is_empty());
+}
+
+/// The bundled Computer room after Catmull–Clark and four combination steps (r = 0.2), a
+/// pipeline a designer runs (docs/algorithms/cylindrical.md, "The corner plane"): the desk's
+/// back panels become lenses with a knife ridge, whose faces are warped; with the cut points
+/// on the faces' mean planes, the EDGE-faces across the ridge's middle leaned up to 45° off
+/// their faces and grew into a fin whose two sides passed through each other (64 pairs at
+/// level 4, none flipped). With each corner's points in its own plane, no level crosses itself
+/// and none has a flipped face.
+#[test]
+fn the_computer_room_after_catmull_clark_rounds_without_crossing_itself() {
     let mut s = steps("catmull-clark");
-    s.extend(combination(5, 0.2));
+    s.extend(combination(4, 0.2));
     let p = run(computer_room(), EdgeAttrs::new(), s, Overlap::Clamp);
-    assert_eq!(p.levels().len(), 7);
+    assert_eq!(p.levels().len(), 6);
     assert_sound_inside(&p, 1);
+    for (k, lv) in p.levels().iter().enumerate().skip(2) {
+        let crossing = prism_geom::analysis::crossings(&lv.mesh).len();
+        assert_eq!(
+            crossing, 0,
+            "level {k}: {crossing} pairs through each other"
+        );
+    }
 }
 
 /// A fine torus (100 × 52 quads, bends of 3.6° and 6.9°) rounded with r = 0.05: the flat
@@ -462,8 +496,10 @@ fn a_radius_changed_within_a_run_is_checked_again() {
 /// one to three steps of any scheme, then two or three combination steps, clamped. Counts the
 /// combination levels that are unsound although every level before them was sound, and holds
 /// that count to what the docs report (87 of 1,200 before untangling, the flat-edge rules
-/// and the radius check within a run; 28 after); counting faces that pass through each other
-/// as unsound too, 153 before and 128 after. About 3 minutes in release.
+/// and the radius check within a run; 28 after; 35 once corners were placed in their own
+/// planes, most of the six new ones crossing themselves before); counting faces that pass
+/// through each other as unsound too, 153, then 128, now 61. About 2 minutes in release; each
+/// mix unsound either way is printed.
 #[test]
 #[ignore]
 fn random_mixes_of_steps() {
@@ -555,6 +591,10 @@ fn random_mixes_of_steps() {
                             ));
                         } else {
                             crossing_unsound += 1;
+                            println!(
+                                "crossing: {name} {text} level {k}: {crossing} pair(s), {} flipped",
+                                r.flipped.len()
+                            );
                         }
                     }
                     if sound_so_far[i] && !sound && !rounding && i == 1 {
@@ -572,9 +612,9 @@ fn random_mixes_of_steps() {
         "{} of {tried} mixes unsound; counting faces that pass through each other too, {crossing_unsound} (and {crossed_before} crossed themselves before rounding)",
         unsound.len()
     );
-    assert!(unsound.len() <= 28, "{} of {tried}", unsound.len());
+    assert!(unsound.len() <= 35, "{} of {tried}", unsound.len());
     assert!(
-        crossing_unsound <= 128,
+        crossing_unsound <= 61,
         "{crossing_unsound} of {tried} with crossings"
     );
 }

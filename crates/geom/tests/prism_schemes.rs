@@ -271,7 +271,7 @@ fn a_rebased_pipeline_keeps_the_shared_levels_and_recomputes_the_same() {
         &primitives::tripod(),
         "vector-sum:alpha=0.2,doo-sabin,doo-sabin",
     );
-    let steps = parse_pipeline("vector-sum:alpha=0.2,combination:r=0.2,doo-sabin").unwrap();
+    let steps = parse_pipeline("vector-sum:alpha=0.2,combination:r=0.1,doo-sabin").unwrap();
     let mut q = p.rebased(steps.clone());
     // Input and the vector-sum level are shared.
     assert_eq!(q.levels().len(), 2);
@@ -281,7 +281,7 @@ fn a_rebased_pipeline_keeps_the_shared_levels_and_recomputes_the_same() {
     assert!(q.is_complete());
     let fresh = run(
         &primitives::tripod(),
-        "vector-sum:alpha=0.2,combination:r=0.2,doo-sabin",
+        "vector-sum:alpha=0.2,combination:r=0.1,doo-sabin",
     );
     assert_eq!(q.levels()[3].mesh, fresh.levels()[3].mesh);
     // Same steps keep everything; fewer steps keep what they still have.

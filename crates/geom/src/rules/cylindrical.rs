@@ -24,7 +24,7 @@
 
 use super::overlap::{EdgeFit, Overlap, fitting_scales};
 use super::prepare::Prepared;
-use super::{CornerRule, RuleError, RuleInput, RuleReport, corner_frame};
+use super::{CornerRule, RuleError, RuleInput, RuleReport, corner_frame_on_edges};
 use crate::dissolve::dissolve_flat_edges;
 use crate::edge_attrs::{EdgeAttrs, EdgeKey};
 use crate::geometry::signed_bend_angles;
@@ -296,7 +296,7 @@ pub(super) fn simple(
     c: usize,
     report: &mut RuleReport,
 ) -> Result<DVec3, RuleError> {
-    let fr = corner_frame(input, c)?;
+    let fr = corner_frame_on_edges(input, c)?;
     let (x1, x2) = widths(input, c);
     if 1.0 + fr.c < STRAIGHT_CORNER {
         return Err(RuleError::NeedleCorner {
@@ -343,7 +343,7 @@ pub(super) fn simple(
 }
 
 pub(super) fn minimum(input: &RuleInput, c: usize) -> Result<DVec3, RuleError> {
-    let fr = corner_frame(input, c)?;
+    let fr = corner_frame_on_edges(input, c)?;
     let (x1, x2) = widths(input, c);
     let cap1 = 0.25 * fr.e1.length();
     let cap2 = 0.25 * fr.e2.length();

@@ -19,6 +19,8 @@
 //! Notation (§0.3): at corner V of face f with unit normal n, `u₁ = unit(V₊ − V)`,
 //! `u₂ = unit(V₋ − V)`, `m₁ = unit(n × u₁)` and `m₂ = unit(u₂ × n)` are the inward normals of
 //! the two edges, `c = m₁·m₂ = −cos φ`, `sin φ = n·(u₁ × u₂)` (negative at reflex corners).
+//! On a warped face the cylindrical family takes for n the normal of the corner's own plane,
+//! on the face normal's side (docs/algorithms/conventions.md, "The corner plane").
 
 mod chamfer;
 pub mod combination;
@@ -171,7 +173,55 @@ pub(crate) struct CornerFrame {
     pub sin_phi: f64,
 }
 
+/// `|sin φ|` from which a corner's frame uses its own plane whole; straighter corners blend
+/// towards the face normal made square to the corner's line.
+const CORNER_PLANE_SIN: f64 = 0.1;
+
+/// Below this `|n·u|` on both edges the face is flat at the corner and `n` is used as it is.
+const FLAT_CORNER: f64 = 1e-12;
+
+/// The normal of a corner's frame (docs/algorithms/conventions.md, "The corner plane"): the
+/// face normal `n` made square to both edges at the corner — the normal of the plane through
+/// the corner's two edges, on `n`'s side. `n` itself on a planar face; on a warped face (any
+/// level after Catmull–Clark, a VERTEX-face of valence four or more) the cut lines then run
+/// along the edges instead of along their shadows on the face's mean plane. At a nearly
+/// straight corner (`|sin φ| < 0.1`) the plane of the two edges is ill-defined, so the
+/// normal blends, by `|sin φ|/0.1`, from `n` made square to the corner's line `u₁ − u₂`.
+fn corner_normal(n: DVec3, u1: DVec3, u2: DVec3) -> DVec3 {
+    use crate::geometry::unit_or_zero;
+    if n.dot(u1).abs() < FLAT_CORNER && n.dot(u2).abs() < FLAT_CORNER {
+        return n;
+    }
+    let line = unit_or_zero(u1 - u2);
+    let square_to_line = unit_or_zero(n - n.dot(line) * line);
+    let cross = u1.cross(u2);
+    let side = n.dot(cross);
+    let k = if side == 0.0 {
+        0.0
+    } else {
+        (cross.length() / CORNER_PLANE_SIN).min(1.0)
+    };
+    let plane = unit_or_zero(cross * side.signum());
+    let out = unit_or_zero(square_to_line * (1.0 - k) + plane * k);
+    if out == DVec3::ZERO { n } else { out }
+}
+
+/// The corner frame on the face normal: the chamfers' (their reference figures, flips on
+/// warped faces included, are measured in it).
 pub(crate) fn corner_frame(input: &RuleInput, corner: usize) -> Result<CornerFrame, RuleError> {
+    frame(input, corner, false)
+}
+
+/// The corner frame on the plane of the corner's own two edges ([`corner_normal`]): the
+/// cylindrical family's, whose cut lines must follow the edges they round.
+pub(crate) fn corner_frame_on_edges(
+    input: &RuleInput,
+    corner: usize,
+) -> Result<CornerFrame, RuleError> {
+    frame(input, corner, true)
+}
+
+fn frame(input: &RuleInput, corner: usize, own_plane: bool) -> Result<CornerFrame, RuleError> {
     let m = input.mesh;
     let t = input.topo;
     let f = t.corner_face(corner) as usize;
@@ -191,6 +241,11 @@ pub(crate) fn corner_frame(input: &RuleInput, corner: usize) -> Result<CornerFra
         return Err(RuleError::ZeroAreaFace { face: f as u32 });
     }
     let (u1, u2) = (e1 / l1, e2 / l2);
+    let n = if own_plane {
+        corner_normal(n, u1, u2)
+    } else {
+        n
+    };
     let m1 = crate::geometry::unit_or_zero(n.cross(u1));
     let m2 = crate::geometry::unit_or_zero(u2.cross(n));
     Ok(CornerFrame {

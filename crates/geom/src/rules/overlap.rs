@@ -26,7 +26,7 @@
 //! solid; and at every combination step with that step's cut widths, which keeps the deep
 //! levels from folding where fillets of different radii meet.
 
-use super::{RuleInput, corner_frame};
+use super::{RuleInput, corner_frame_on_edges};
 
 /// What a step does with radii whose rounds do not fit their faces.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -95,7 +95,7 @@ const PASSES: usize = 64;
 /// `[[a₁ per w₁, a₁ per w₂], [a₂ per w₁, a₂ per w₂]]`, or `None` where the corner has no
 /// frame (a zero-length edge or a face without area: the rule reports those).
 fn extents(input: &RuleInput, c: usize) -> Option<[[f64; 2]; 2]> {
-    let fr = corner_frame(input, c).ok()?;
+    let fr = corner_frame_on_edges(input, c).ok()?;
     let (s1, s2) = (fr.m2.dot(fr.u1), fr.m1.dot(fr.u2));
     if 1.0 - fr.c < STRAIGHT_CORNER {
         let h1 = 0.5 * s1 / (1.0 + fr.c);
