@@ -69,6 +69,15 @@ fn the_envelope_tab_places_edits_undoes_saves_and_exports_an_envelope() {
     }
     settle(&mut h);
     assert_eq!(h.state().envelope.picked, Some((0, 0)));
+    // The crossing check answers on its own thread; the field is found once it has.
+    while matches!(
+        h.state().envelope.built().map(|b| &b.crossings),
+        Some(envelope::build::Crossings::Checking(_))
+    ) {
+        std::thread::sleep(std::time::Duration::from_millis(2));
+        h.step();
+    }
+    settle(&mut h);
     let field = h.get_by_value("own t: 1.00").rect().center();
     drag_right(&mut h, field, &[-10.0, -20.0, -30.0]);
     let own = scene(&h).unwrap().primitives[0]

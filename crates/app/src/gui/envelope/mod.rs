@@ -468,39 +468,51 @@ impl EnvelopeTab {
                     "G1: largest normal jump across patch borders {:.1e}°; network and patches in {:.2} ms",
                     b.jump, b.millis
                 ));
+                // One row each whatever the answer, with the long text on hover: the
+                // crossing check answers a few frames later, and a line that wrapped then
+                // would move every field below it under the pointer.
+                let red = egui::Color32::from_rgb(255, 120, 100);
+                let row = |ui: &mut egui::Ui, text: egui::RichText, hover: String| {
+                    ui.add(egui::Label::new(text).truncate())
+                        .on_hover_text(hover);
+                };
                 match &b.folds {
-                    Some((n, text)) => {
-                        ui.colored_label(
-                            egui::Color32::from_rgb(255, 120, 100),
-                            format!("Folds: {n} cell(s), marked with red crosses"),
-                        )
-                        .on_hover_text(text.clone());
-                    }
-                    None => {
-                        ui.label("Folds: none (every sampled cell faces like its patch's corners)");
-                    }
+                    Some((n, text)) => row(
+                        ui,
+                        egui::RichText::new(format!("Folds: {n} cell(s), marked with red crosses"))
+                            .color(red),
+                        text.clone(),
+                    ),
+                    None => row(
+                        ui,
+                        "Folds: none".into(),
+                        "Every sampled cell faces like its patch's corners".into(),
+                    ),
                 }
                 match &b.crossings {
                     build::Crossings::Checking(_) => {
-                        ui.weak("Crossings: checking…");
+                        row(
+                            ui,
+                            egui::RichText::new("Crossings: checking…").weak(),
+                            "Looking for faces of the surface that pass through each other".into(),
+                        );
                         ui.ctx()
                             .request_repaint_after(std::time::Duration::from_millis(30));
                     }
-                    build::Crossings::Done(_, Some(text)) => {
-                        ui.colored_label(
-                            egui::Color32::from_rgb(255, 120, 100),
-                            format!(
-                                "Crossings: {} pair(s) of faces pass through each other, marked with red crosses",
-                                b.crossing_points().len()
-                            ),
-                        )
-                        .on_hover_text(text.clone());
-                    }
-                    build::Crossings::Done(_, None) => {
-                        ui.label(
-                            "Crossings: none (no two faces of the surface pass through each other)",
-                        );
-                    }
+                    build::Crossings::Done(_, Some(text)) => row(
+                        ui,
+                        egui::RichText::new(format!(
+                            "Crossings: {} pair(s), marked with red crosses",
+                            b.crossing_points().len()
+                        ))
+                        .color(red),
+                        format!("Faces of the surface pass through each other. {text}"),
+                    ),
+                    build::Crossings::Done(_, None) => row(
+                        ui,
+                        "Crossings: none".into(),
+                        "No two faces of the surface pass through each other".into(),
+                    ),
                     build::Crossings::None => {}
                 }
             }
