@@ -49,6 +49,27 @@ fn step_cylindrical(b: divan::Bencher) {
     b.bench(|| biquadratic_step(&m, &attrs, &rule, None, &StepOptions::default()).unwrap());
 }
 
+/// The same torus with every vertex moved off it by up to 0.2 % of the tube radius (a
+/// pattern, not noise): every quad is warped, so every corner takes the corner plane's full
+/// path (docs/algorithms/conventions.md) where the planar torus takes its shortcut.
+fn warped_torus() -> prism_geom::PolyMesh {
+    let mut m = torus();
+    for (i, p) in m.positions.iter_mut().enumerate() {
+        let ring = glam::DVec3::new(p.x, p.y, 0.0).normalize() * 3.0;
+        let out = (*p - ring).normalize();
+        *p += out * (0.002 * (i as f64 * 0.7).sin());
+    }
+    m
+}
+
+#[divan::bench(sample_count = 20)]
+fn step_cylindrical_warped(b: divan::Bencher) {
+    let m = warped_torus();
+    let attrs = EdgeAttrs::new();
+    let rule = CornerRule::Cylindrical { r: 0.01 };
+    b.bench(|| biquadratic_step(&m, &attrs, &rule, None, &StepOptions::default()).unwrap());
+}
+
 #[divan::bench(sample_count = 20)]
 fn topology_build(b: divan::Bencher) {
     let m = torus();

@@ -192,17 +192,27 @@ fn corner_normal(n: DVec3, u1: DVec3, u2: DVec3) -> DVec3 {
     if n.dot(u1).abs() < FLAT_CORNER && n.dot(u2).abs() < FLAT_CORNER {
         return n;
     }
-    let line = unit_or_zero(u1 - u2);
-    let square_to_line = unit_or_zero(n - n.dot(line) * line);
     let cross = u1.cross(u2);
     let side = n.dot(cross);
-    let k = if side == 0.0 {
-        0.0
-    } else {
-        (cross.length() / CORNER_PLANE_SIN).min(1.0)
-    };
-    let plane = unit_or_zero(cross * side.signum());
-    let out = unit_or_zero(square_to_line * (1.0 - k) + plane * k);
+    if side == 0.0 {
+        return square_to_line(n, u1, u2);
+    }
+    let sin = cross.length();
+    let plane = cross * (side.signum() / sin);
+    if sin >= CORNER_PLANE_SIN {
+        return plane;
+    }
+    let k = sin / CORNER_PLANE_SIN;
+    let out = unit_or_zero(square_to_line(n, u1, u2) * (1.0 - k) + plane * k);
+    if out == DVec3::ZERO { n } else { out }
+}
+
+/// `n` made square to a corner's line `unit(u₁ − u₂)` (the corner plane's limit at a straight
+/// corner); `n` itself if that leaves nothing.
+fn square_to_line(n: DVec3, u1: DVec3, u2: DVec3) -> DVec3 {
+    use crate::geometry::unit_or_zero;
+    let line = unit_or_zero(u1 - u2);
+    let out = unit_or_zero(n - n.dot(line) * line);
     if out == DVec3::ZERO { n } else { out }
 }
 
