@@ -186,7 +186,8 @@ const FLAT_CORNER: f64 = 1e-12;
 /// level after Catmull–Clark, a VERTEX-face of valence four or more) the cut lines then run
 /// along the edges instead of along their shadows on the face's mean plane. At a nearly
 /// straight corner (`|sin φ| < 0.1`) the plane of the two edges is ill-defined, so the
-/// normal blends, by `|sin φ|/0.1`, from `n` made square to the corner's line `u₁ − u₂`.
+/// normal blends, by `|sin φ|/0.1`, from `n` made square to the corner's line `u₁ − u₂`; a
+/// corner whose plane stands square to the face's (no side to take) takes that one whole.
 fn corner_normal(n: DVec3, u1: DVec3, u2: DVec3) -> DVec3 {
     use crate::geometry::unit_or_zero;
     if n.dot(u1).abs() < FLAT_CORNER && n.dot(u2).abs() < FLAT_CORNER {
