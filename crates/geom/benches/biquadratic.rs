@@ -70,6 +70,16 @@ fn step_cylindrical_warped(b: divan::Bencher) {
     b.bench(|| biquadratic_step(&m, &attrs, &rule, None, &StepOptions::default()).unwrap());
 }
 
+/// A combination step on the warped torus: the cylindrical points plus the fold guard, which
+/// tests every new face's outline (docs/algorithms/cylindrical.md, "Folds at a vertex blend").
+#[divan::bench(sample_count = 20)]
+fn step_combination_warped(b: divan::Bencher) {
+    let m = warped_torus();
+    let attrs = EdgeAttrs::new();
+    let rule = CornerRule::Combination { r: 0.01 };
+    b.bench(|| biquadratic_step(&m, &attrs, &rule, None, &StepOptions::default()).unwrap());
+}
+
 #[divan::bench(sample_count = 20)]
 fn topology_build(b: divan::Bencher) {
     let m = torus();

@@ -42,6 +42,88 @@ pub fn loop_newell(mesh: &PolyMesh, vs: &[u32]) -> DVec3 {
     }
 }
 
+/// Whether the outline through `pts` (in order) crosses itself, seen along `n` (its Newell
+/// normal, any length): two edges that are not neighbours cut each other, each one's ends on
+/// either side of the other by more than 1e-9 of their lengths' product. Such a face — a
+/// bow-tie, a figure of eight — can keep a normal that agrees with its parent while one lobe
+/// of it is turned over, so the flip test alone does not see it; the combination rule's fold
+/// guard and its untangling look for it too (docs/algorithms/cylindrical.md, "Folds at a
+/// vertex blend"). Touching is not crossing. Orientations are triple products with `n`, so
+/// nothing is projected or normalised: four products per pair of a quad's opposite edges.
+pub fn points_cross_themselves(pts: impl Iterator<Item = DVec3>, n: DVec3) -> bool {
+    // Most outlines have four corners: no allocation for up to eight.
+    let mut buf = [DVec3::ZERO; 8];
+    let mut more: Vec<DVec3> = Vec::new();
+    let mut k = 0;
+    for p in pts {
+        if k < buf.len() {
+            buf[k] = p;
+        } else {
+            if more.is_empty() {
+                more.extend_from_slice(&buf);
+            }
+            more.push(p);
+        }
+        k += 1;
+    }
+    if k < 4 {
+        return false;
+    }
+    let pts: &[DVec3] = if k <= buf.len() { &buf[..k] } else { &more };
+    if k == 4 {
+        return quad_crosses_itself([pts[0], pts[1], pts[2], pts[3]], n);
+    }
+    let orient = |a: DVec3, b: DVec3, c: DVec3| n.dot((b - a).cross(c - a));
+    for i in 0..k {
+        for j in i + 2..k {
+            if i == 0 && j == k - 1 {
+                continue;
+            }
+            let (p, q) = (pts[i], pts[(i + 1) % k]);
+            let (r, s) = (pts[j], pts[(j + 1) % k]);
+            let (o1, o2) = (orient(p, q, r), orient(p, q, s));
+            if o1 * o2 >= 0.0 {
+                continue;
+            }
+            let (o3, o4) = (orient(r, s, p), orient(r, s, q));
+            if o3 * o4 >= 0.0 {
+                continue;
+            }
+            let tol = 1e-9 * n.length() * (q - p).length() * (s - r).length();
+            if o1.abs().min(o2.abs()).min(o3.abs()).min(o4.abs()) > tol {
+                return true;
+            }
+        }
+    }
+    false
+}
+
+/// [`points_cross_themselves`] for a quad ABCD, without gathering its points: of its four
+/// triangles, AB cuts CD when ABC, ABD and CDA, CDB differ in sign, BC cuts DA when BCD, BCA
+/// and DAB, DAC do.
+#[inline]
+pub fn quad_crosses_itself([a, b, c, d]: [DVec3; 4], n: DVec3) -> bool {
+    let orient = |a: DVec3, b: DVec3, c: DVec3| n.dot((b - a).cross(c - a));
+    let (abc, abd, acd, bcd) = (
+        orient(a, b, c),
+        orient(a, b, d),
+        orient(a, c, d),
+        orient(b, c, d),
+    );
+    let ab_cd = abc * abd < 0.0 && acd * bcd < 0.0;
+    let bc_da = bcd * abc < 0.0 && abd * acd < 0.0;
+    if !ab_cd && !bc_da {
+        return false;
+    }
+    let least = abc.abs().min(abd.abs()).min(acd.abs()).min(bcd.abs());
+    let l = if ab_cd {
+        (b - a).length() * (d - c).length()
+    } else {
+        (c - b).length() * (a - d).length()
+    };
+    least > 1e-9 * n.length() * l
+}
+
 /// Newell normal of every face (raw, not normalised), on every core (each face on its own,
 /// so the result is the serial one).
 pub fn face_normals_raw(mesh: &PolyMesh) -> Vec<DVec3> {

@@ -407,7 +407,9 @@ fn doubly_smoothed_inputs_round_without_a_flip() {
 /// on the faces' mean planes, the EDGE-faces across the ridge's middle leaned up to 45° off
 /// their faces and grew into a fin whose two sides passed through each other (64 pairs at
 /// level 4, none flipped). With each corner's points in its own plane, no level crosses itself
-/// and none has a flipped face.
+/// and none has a flipped face. Nor a bow-tie: 32 faces at level 3 and 16 at level 4 had
+/// outlines that crossed themselves while their normals agreed with their parents', until
+/// the fold guard looked for them (cylindrical.md, "Fold guard").
 #[test]
 fn the_computer_room_after_catmull_clark_rounds_without_crossing_itself() {
     let mut s = steps("catmull-clark");
@@ -416,10 +418,23 @@ fn the_computer_room_after_catmull_clark_rounds_without_crossing_itself() {
     assert_eq!(p.levels().len(), 6);
     assert_sound_inside(&p, 1);
     for (k, lv) in p.levels().iter().enumerate().skip(2) {
-        let crossing = prism_geom::analysis::crossings(&lv.mesh).len();
+        let m = &lv.mesh;
+        let crossing = prism_geom::analysis::crossings(m).len();
         assert_eq!(
             crossing, 0,
             "level {k}: {crossing} pairs through each other"
+        );
+        let bow_ties = (0..m.num_faces())
+            .filter(|&f| {
+                let vs = m.loop_verts(m.face_loops(f).start);
+                let n = prism_geom::geometry::loop_newell(m, vs);
+                let pts = vs.iter().map(|&v| m.positions[v as usize]);
+                prism_geom::geometry::points_cross_themselves(pts, n)
+            })
+            .count();
+        assert_eq!(
+            bow_ties, 0,
+            "level {k}: {bow_ties} outlines cross themselves"
         );
     }
 }
@@ -497,9 +512,10 @@ fn a_radius_changed_within_a_run_is_checked_again() {
 /// combination levels that are unsound although every level before them was sound, and holds
 /// that count to what the docs report (87 of 1,200 before untangling, the flat-edge rules
 /// and the radius check within a run; 28 after; 35 once corners were placed in their own
-/// planes, most of the six new ones crossing themselves before); counting faces that pass
-/// through each other as unsound too, 153, then 128, now 61. About 2 minutes in release; each
-/// mix unsound either way is printed.
+/// planes, 56 once the fold guard also moved faces whose outlines cross themselves — the new
+/// ones mostly mixes that crossed before, now flipped instead); counting faces that pass
+/// through each other as unsound too, 153, then 128, 61, now 46. About 2 minutes in release;
+/// each mix unsound either way is printed.
 #[test]
 #[ignore]
 fn random_mixes_of_steps() {
@@ -612,9 +628,9 @@ fn random_mixes_of_steps() {
         "{} of {tried} mixes unsound; counting faces that pass through each other too, {crossing_unsound} (and {crossed_before} crossed themselves before rounding)",
         unsound.len()
     );
-    assert!(unsound.len() <= 35, "{} of {tried}", unsound.len());
+    assert!(unsound.len() <= 56, "{} of {tried}", unsound.len());
     assert!(
-        crossing_unsound <= 61,
+        crossing_unsound <= 46,
         "{crossing_unsound} of {tried} with crossings"
     );
 }

@@ -139,16 +139,19 @@ fn clamped_edges_are_highlighted_at_every_level() {
 }
 
 /// A surface that passes through itself with every face still outward (the flip test cannot
-/// see it) is found on a thread, painted red and listed: the tripod after Catmull–Clark, an
-/// angle-bisector chamfer and two combination steps (3 pairs at level 4; the Computer room's
-/// back panel, 64 pairs before corners were placed in their own planes, no longer crosses).
+/// see it) is found on a thread, painted red and listed: the L-block after Doo–Sabin, a
+/// combination step (r = 0.4), the minimum type and two combination steps (r = 0.2): 4 pairs
+/// at level 5. (The Computer room's back panel after Catmull–Clark crossed until corners were
+/// placed in their own planes; the tripod after Catmull–Clark and an angle-bisector chamfer
+/// until the fold guard also looked for outlines that cross themselves.)
 #[test]
 fn faces_that_pass_through_each_other_are_found_and_painted() {
     use super::model::crossing_check::Crossings;
-    let mut a = opened(&asset("tripod.obj"));
-    let steps =
-        parse_pipeline("catmull-clark,angle-bisector:l=0.05,combination:r=0.2,combination:r=0.2")
-            .unwrap();
+    let mut a = opened(&asset("l-block.obj"));
+    let steps = parse_pipeline(
+        "doo-sabin,combination:r=0.4,minimum:r=0.2,combination:r=0.2,combination:r=0.2",
+    )
+    .unwrap();
     a.run(Edit::SetPipeline { view: 0, steps });
     a.wait_idle();
     let answer = |a: &mut super::PrismApp| loop {
@@ -160,9 +163,9 @@ fn faces_that_pass_through_each_other_are_found_and_painted() {
         }
     };
     let pairs = answer(&mut a);
-    assert_eq!(pairs.len(), 3);
+    assert_eq!(pairs.len(), 4);
     let v = &a.model.views[0];
-    let lv = &v.pipeline.levels()[4];
+    let lv = &v.pipeline.levels()[5];
     assert!(lv.report.as_ref().unwrap().flipped.is_empty());
     let faces = prism_geom::analysis::crossing_faces(&pairs);
     let corners: usize = faces
@@ -183,14 +186,14 @@ fn faces_that_pass_through_each_other_are_found_and_painted() {
     rebuild(&mut a);
     assert_eq!(red(&a), corners);
     // The level before is sound: nothing listed, nothing red.
-    a.model.views[0].level = 3;
+    a.model.views[0].level = 4;
     assert!(answer(&mut a).is_empty());
     assert_eq!(red(&a), 0);
     // A level over the size checked unasked waits for the status bar's button.
     a.model.views[0].crossing.auto_faces = 100;
     a.model.views[0].level = 2;
     rebuild(&mut a);
-    assert_eq!(a.model.views[0].crossings(), Crossings::Ask { faces: 218 });
+    assert_eq!(a.model.views[0].crossings(), Crossings::Ask { faces: 142 });
     assert!(!a.busy());
     a.model.views[0].ask_crossings();
     assert!(answer(&mut a).is_empty());

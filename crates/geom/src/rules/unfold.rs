@@ -9,7 +9,9 @@
 //! is out of order there, so the overlap guard cannot see it.
 //!
 //! The guard looks at every new face before the split, with the same test the step's report
-//! uses (Newell normal against the parent element's normal). A new face that would be
+//! uses (Newell normal against the parent element's normal), and for an outline that crosses
+//! itself (a bow-tie keeps a normal that agrees with its parent;
+//! [`crate::geometry::points_cross_themselves`]). A new face that would be
 //! flipped and has cut points in it joins the vertex neighbourhood: the faces that gave it
 //! cut points take Doo–Sabin points instead, which the blend uses anyway, and the check
 //! repeats until no such face is left (each face moves at most once, so it ends). The moved
@@ -22,6 +24,7 @@
 //! flipped but whose Doo–Sabin points, at the next step, fold the edge faces beside it.
 
 use super::doo_sabin;
+use crate::geometry::{points_cross_themselves, quad_crosses_itself};
 use crate::mesh::PolyMesh;
 use crate::topology::{NONE, Topology};
 use glam::DVec3;
@@ -50,8 +53,7 @@ pub(super) fn newell_at(cs: impl Iterator<Item = u32>, at: impl Fn(u32) -> DVec3
 
 /// Whether the polygon through `pts[c]` for the corners `cs` (Newell normal `n`) is
 /// star-shaped about its vertex centroid: no fan triangle from the centroid turns against `n`.
-fn star_shaped(pts: &[DVec3], cs: impl Iterator<Item = u32>, n: DVec3) -> bool {
-    let ring: Vec<DVec3> = cs.map(|c| pts[c as usize]).collect();
+fn star_shaped(ring: &[DVec3], n: DVec3) -> bool {
     if ring.len() < 5 {
         return true;
     }
@@ -99,7 +101,22 @@ pub(crate) fn unfold(
                 .face_loops(f)
                 .map(|l| newell(pts, mesh.loop_corners(l).map(|c| c as u32)))
                 .sum::<DVec3>();
-            if n.dot(normals[f]) < 0.0 {
+            let cs = mesh.face_corners(f);
+            if n.dot(normals[f]) < 0.0
+                || (cs.len() == 4
+                    && quad_crosses_itself(
+                        [
+                            pts[cs.start],
+                            pts[cs.start + 1],
+                            pts[cs.start + 2],
+                            pts[cs.start + 3],
+                        ],
+                        n,
+                    ))
+                || (cs.len() > 4
+                    && mesh.face_loops(f).len() == 1
+                    && points_cross_themselves(cs.map(|c| pts[c]), n))
+            {
                 mark(f, &mut to_move, &mut any);
             }
         }
@@ -115,7 +132,9 @@ pub(crate) fn unfold(
             }
             let q = [topo.next(c as usize), c, topo.next(t as usize), t];
             let n = newell(pts, q.iter().copied());
-            if n.dot(normals[fa] + normals[fb]) < 0.0 {
+            if n.dot(normals[fa] + normals[fb]) < 0.0
+                || quad_crosses_itself(q.map(|c| pts[c as usize]), n)
+            {
                 mark(fa, &mut to_move, &mut any);
                 mark(fb, &mut to_move, &mut any);
             }
@@ -135,8 +154,15 @@ pub(crate) fn unfold(
             {
                 continue;
             }
-            let n = newell(pts, ring.clone());
-            if n.dot(vsum[v]) < 0.0 || !star_shaped(pts, ring.clone(), n) {
+            // The ring walked once: its points serve all three tests.
+            let at: Vec<DVec3> = ring.clone().map(|c| pts[c as usize]).collect();
+            let n = newell_at(0..at.len() as u32, |i| at[i as usize]);
+            let crosses = match at.len() {
+                4 => quad_crosses_itself([at[0], at[1], at[2], at[3]], n),
+                k if k > 4 => points_cross_themselves(at.iter().copied(), n),
+                _ => false,
+            };
+            if n.dot(vsum[v]) < 0.0 || !star_shaped(&at, n) || crosses {
                 for c in ring {
                     mark(
                         topo.corner_face(c as usize) as usize,
@@ -184,7 +210,7 @@ mod tests {
         let cs = 0..6u32;
         let n = newell(&spiked, cs.clone());
         assert!(n.length() > 0.0);
-        assert!(!star_shaped(&spiked, cs.clone(), n));
+        assert!(!star_shaped(&spiked, n));
         let regular: Vec<DVec3> = (0..6)
             .map(|k| {
                 let a = k as f64 * std::f64::consts::PI / 3.0;
@@ -192,6 +218,57 @@ mod tests {
             })
             .collect();
         let n = newell(&regular, cs.clone());
-        assert!(star_shaped(&regular, cs, n));
+        assert!(star_shaped(&regular, n));
+    }
+
+    /// A bow-tie quad keeps a normal along +z (its larger lobe) but crosses itself; a convex
+    /// and a reflex (dart) quad, a needle and a pinched hexagon (two corners at one point:
+    /// touching, not crossing) do not; the bow-tie as a hexagon does.
+    #[test]
+    fn outlines_that_cross_themselves_are_found() {
+        let p = |v: &[(f64, f64)]| -> Vec<DVec3> {
+            v.iter().map(|&(x, y)| DVec3::new(x, y, 0.0)).collect()
+        };
+        let check = |pts: &[DVec3]| {
+            let n = newell(pts, 0..pts.len() as u32);
+            let quad =
+                (pts.len() == 4).then(|| quad_crosses_itself([pts[0], pts[1], pts[2], pts[3]], n));
+            let any = points_cross_themselves(pts.iter().copied(), n);
+            if let Some(q) = quad {
+                assert_eq!(q, any, "{pts:?}");
+            }
+            (n.z > 0.0, any)
+        };
+        let bow_tie = p(&[(0.0, 0.0), (2.0, 0.0), (0.5, 1.0), (1.5, 1.0)]);
+        assert_eq!(check(&bow_tie), (true, true));
+        assert_eq!(
+            check(&p(&[(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)])),
+            (true, false)
+        );
+        assert_eq!(
+            check(&p(&[(0.0, 0.0), (2.0, 1.0), (0.0, 2.0), (0.5, 1.0)])),
+            (true, false)
+        );
+        let needle = p(&[(0.0, 0.0), (1.0, 1e-7), (2.0, 0.0), (1.0, 2e-7)]);
+        assert!(!check(&needle).1);
+        let pinched = p(&[
+            (0.6, 0.6),
+            (0.2, 2.4),
+            (0.8, 2.6),
+            (0.6, 0.6),
+            (2.6, 0.8),
+            (2.4, 0.2),
+        ]);
+        assert!(!check(&pinched).1);
+        // The bow-tie with a corner inserted in each straight side.
+        let eight = p(&[
+            (0.0, 0.0),
+            (1.0, 0.0),
+            (2.0, 0.0),
+            (0.5, 1.0),
+            (1.0, 1.0),
+            (1.5, 1.0),
+        ]);
+        assert_eq!(check(&eight), (true, true));
     }
 }

@@ -1,6 +1,7 @@
 //! The combination rule's last resort (docs/algorithms/cylindrical.md, "Untangling"): new
 //! faces that are still flipped after the fold guard ([`super::unfold`]) get their points
-//! smoothed until they face the right way.
+//! smoothed until they face the right way (a face whose outline crosses itself counts as
+//! flipped here, as in the fold guard).
 //!
 //! Where the input was smoothed before the rounding (Catmull–Clark then combination), some
 //! faces are slivers — four nearly collinear points — whose Newell normals are noise. Their
@@ -17,6 +18,7 @@
 //! every solid of the paper — it does not run.
 
 use super::unfold::newell_at;
+use crate::geometry::points_cross_themselves;
 use crate::mesh::PolyMesh;
 use crate::topology::Topology;
 use glam::DVec3;
@@ -55,6 +57,8 @@ impl NewFaces<'_> {
             .map(|l| newell_at(self.mesh.loop_corners(l).map(|c| c as u32), at))
             .sum();
         n.dot(self.normals[f]) < 0.0
+            || (self.mesh.face_loops(f).len() == 1
+                && points_cross_themselves(self.mesh.face_corners(f).map(|c| at(c as u32)), n))
     }
 
     fn edge_corners(&self, e: usize) -> [u32; 4] {
@@ -69,7 +73,8 @@ impl NewFaces<'_> {
         let c = t.edge_corner[e] as usize;
         let np = self.normals[t.corner_face(c) as usize]
             + self.normals[t.corner_face(t.twin[c] as usize) as usize];
-        newell_at(self.edge_corners(e).into_iter(), at).dot(np) < 0.0
+        let n = newell_at(self.edge_corners(e).into_iter(), &at);
+        n.dot(np) < 0.0 || points_cross_themselves(self.edge_corners(e).into_iter().map(&at), n)
     }
 
     fn vertex_corners(&self, v: usize) -> impl Iterator<Item = u32> + '_ {
@@ -82,7 +87,8 @@ impl NewFaces<'_> {
     }
 
     fn vertex_flipped(&self, at: impl Fn(u32) -> DVec3, v: usize) -> bool {
-        newell_at(self.vertex_corners(v), at).dot(self.vsum[v]) < 0.0
+        let n = newell_at(self.vertex_corners(v), &at);
+        n.dot(self.vsum[v]) < 0.0 || points_cross_themselves(self.vertex_corners(v).map(&at), n)
     }
 
     /// How many of the four new faces at corner `c` are flipped with `c`'s point at `q`.
