@@ -43,7 +43,7 @@ pub fn loop_newell(mesh: &PolyMesh, vs: &[u32]) -> DVec3 {
 }
 
 /// Whether the outline through `pts` (in order) crosses itself, seen along `n` (its Newell
-/// normal, any length): two edges that are not neighbours cut each other, each one's ends on
+/// normal as computed, not normalised: a quad's test uses its length): two edges that are not neighbours cut each other, each one's ends on
 /// either side of the other by more than 1e-9 of their lengths' product. Such a face — a
 /// bow-tie, a figure of eight — can keep a normal that agrees with its parent while one lobe
 /// of it is turned over, so the flip test alone does not see it; the combination rule's fold
@@ -98,25 +98,22 @@ pub fn points_cross_themselves(pts: impl Iterator<Item = DVec3>, n: DVec3) -> bo
     false
 }
 
-/// [`points_cross_themselves`] for a quad ABCD, without gathering its points: of its four
-/// triangles, AB cuts CD when ABC, ABD and CDA, CDB differ in sign, BC cuts DA when BCD, BCA
-/// and DAB, DAC do.
+/// [`points_cross_themselves`] for a quad ABCD, without gathering its points. Of its four
+/// triangles (orientations against `n`), AB cuts CD when ABC, ABD and CDA, CDB differ in
+/// sign, BC cuts DA when BCD, BCA and DAB, DAC do. With `n` the quad's Newell normal
+/// `½ AC × BD`, `ABC + ACD = ABD + BCD = 2|n|²`, so two triple products give all four: the
+/// quad is a bow-tie exactly when each pair has one negative.
 #[inline]
 pub fn quad_crosses_itself([a, b, c, d]: [DVec3; 4], n: DVec3) -> bool {
-    let orient = |a: DVec3, b: DVec3, c: DVec3| n.dot((b - a).cross(c - a));
-    let (abc, abd, acd, bcd) = (
-        orient(a, b, c),
-        orient(a, b, d),
-        orient(a, c, d),
-        orient(b, c, d),
-    );
-    let ab_cd = abc * abd < 0.0 && acd * bcd < 0.0;
-    let bc_da = bcd * abc < 0.0 && abd * acd < 0.0;
-    if !ab_cd && !bc_da {
+    let two = 2.0 * n.length_squared();
+    let abc = n.dot((b - a).cross(c - a));
+    let abd = n.dot((b - a).cross(d - a));
+    let (acd, bcd) = (two - abc, two - abd);
+    if abc.min(acd) >= 0.0 || abd.min(bcd) >= 0.0 {
         return false;
     }
     let least = abc.abs().min(abd.abs()).min(acd.abs()).min(bcd.abs());
-    let l = if ab_cd {
+    let l = if abc * abd < 0.0 {
         (b - a).length() * (d - c).length()
     } else {
         (c - b).length() * (a - d).length()

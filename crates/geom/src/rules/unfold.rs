@@ -260,6 +260,33 @@ mod tests {
             (2.4, 0.2),
         ]);
         assert!(!check(&pinched).1);
+        // Random warped quads: the two-product test agrees with the four triangles' signs
+        // (AB cuts CD, or BC cuts DA) wherever the margin is clear of the tolerance.
+        let mut state = 7u64;
+        let mut rnd = || {
+            state = state
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (state >> 11) as f64 / (1u64 << 53) as f64 - 0.5
+        };
+        let (mut crossing, mut agreed) = (0, 0);
+        for _ in 0..2000 {
+            let q: [DVec3; 4] = std::array::from_fn(|_| DVec3::new(rnd(), rnd(), 0.2 * rnd()));
+            let n = newell(&q, 0..4);
+            let o = |a: DVec3, b: DVec3, c: DVec3| n.dot((b - a).cross(c - a));
+            let [a, b, c, d] = q;
+            let four = (o(a, b, c) * o(a, b, d) < 0.0 && o(c, d, a) * o(c, d, b) < 0.0)
+                || (o(b, c, d) * o(b, c, a) < 0.0 && o(d, a, b) * o(d, a, c) < 0.0);
+            let least = [o(a, b, c), o(a, b, d), o(a, c, d), o(b, c, d)]
+                .iter()
+                .fold(f64::INFINITY, |m, x| m.min(x.abs()));
+            if least > 1e-6 * n.length() {
+                assert_eq!(quad_crosses_itself(q, n), four, "{q:?}");
+                agreed += 1;
+                crossing += four as usize;
+            }
+        }
+        assert!(agreed > 1500 && crossing > 100, "{agreed} {crossing}");
         // The bow-tie with a corner inserted in each straight side.
         let eight = p(&[
             (0.0, 0.0),
