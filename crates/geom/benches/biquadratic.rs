@@ -41,12 +41,15 @@ fn step_doo_sabin(b: divan::Bencher) {
     });
 }
 
+/// The whole user-visible step of `rule` on `m`, from the start of a run.
+fn bench_step(b: divan::Bencher, m: prism_geom::PolyMesh, rule: CornerRule) {
+    let attrs = EdgeAttrs::new();
+    b.bench(|| biquadratic_step(&m, &attrs, &rule, None, &StepOptions::default()).unwrap());
+}
+
 #[divan::bench(sample_count = 20)]
 fn step_cylindrical(b: divan::Bencher) {
-    let m = torus();
-    let attrs = EdgeAttrs::new();
-    let rule = CornerRule::Cylindrical { r: 0.01 };
-    b.bench(|| biquadratic_step(&m, &attrs, &rule, None, &StepOptions::default()).unwrap());
+    bench_step(b, torus(), CornerRule::Cylindrical { r: 0.01 });
 }
 
 /// The same torus with every vertex moved off it by up to 0.2 % of the tube radius (a
@@ -64,20 +67,14 @@ fn warped_torus() -> prism_geom::PolyMesh {
 
 #[divan::bench(sample_count = 20)]
 fn step_cylindrical_warped(b: divan::Bencher) {
-    let m = warped_torus();
-    let attrs = EdgeAttrs::new();
-    let rule = CornerRule::Cylindrical { r: 0.01 };
-    b.bench(|| biquadratic_step(&m, &attrs, &rule, None, &StepOptions::default()).unwrap());
+    bench_step(b, warped_torus(), CornerRule::Cylindrical { r: 0.01 });
 }
 
 /// A combination step on the warped torus: the cylindrical points plus the fold guard, which
 /// tests every new face's outline (docs/algorithms/cylindrical.md, "Folds at a vertex blend").
 #[divan::bench(sample_count = 20)]
 fn step_combination_warped(b: divan::Bencher) {
-    let m = warped_torus();
-    let attrs = EdgeAttrs::new();
-    let rule = CornerRule::Combination { r: 0.01 };
-    b.bench(|| biquadratic_step(&m, &attrs, &rule, None, &StepOptions::default()).unwrap());
+    bench_step(b, warped_torus(), CornerRule::Combination { r: 0.01 });
 }
 
 #[divan::bench(sample_count = 20)]

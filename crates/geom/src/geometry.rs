@@ -43,33 +43,19 @@ pub fn loop_newell(mesh: &PolyMesh, vs: &[u32]) -> DVec3 {
 }
 
 /// Whether the outline through `pts` (in order) crosses itself, seen along `n` (its Newell
-/// normal as computed, not normalised: a quad's test uses its length): two edges that are not neighbours cut each other, each one's ends on
-/// either side of the other by more than 1e-9 of their lengths' product. Such a face — a
-/// bow-tie, a figure of eight — can keep a normal that agrees with its parent while one lobe
-/// of it is turned over, so the flip test alone does not see it; the combination rule's fold
-/// guard and its untangling look for it too (docs/algorithms/cylindrical.md, "Folds at a
-/// vertex blend"). Touching is not crossing. Orientations are triple products with `n`, so
-/// nothing is projected or normalised: four products per pair of a quad's opposite edges.
-pub fn points_cross_themselves(pts: impl Iterator<Item = DVec3>, n: DVec3) -> bool {
-    // Most outlines have four corners: no allocation for up to eight.
-    let mut buf = [DVec3::ZERO; 8];
-    let mut more: Vec<DVec3> = Vec::new();
-    let mut k = 0;
-    for p in pts {
-        if k < buf.len() {
-            buf[k] = p;
-        } else {
-            if more.is_empty() {
-                more.extend_from_slice(&buf);
-            }
-            more.push(p);
-        }
-        k += 1;
-    }
+/// normal as computed, not normalised: a quad's test uses its length): two edges that are not
+/// neighbours cut each other, each one's ends on either side of the other by more than 1e-9 of
+/// their lengths' product. Such a face — a bow-tie, a figure of eight — can keep a normal that
+/// agrees with its parent while one lobe of it is turned over, so the flip test alone does not
+/// see it; the combination rule's fold guard and its untangling look for it too
+/// (docs/algorithms/cylindrical.md, "Fold guard"). Touching is not crossing. Orientations are
+/// triple products with `n`, so nothing is projected or normalised; a quad takes two
+/// ([`quad_crosses_itself`]).
+pub fn points_cross_themselves(pts: &[DVec3], n: DVec3) -> bool {
+    let k = pts.len();
     if k < 4 {
         return false;
     }
-    let pts: &[DVec3] = if k <= buf.len() { &buf[..k] } else { &more };
     if k == 4 {
         return quad_crosses_itself([pts[0], pts[1], pts[2], pts[3]], n);
     }
@@ -98,7 +84,7 @@ pub fn points_cross_themselves(pts: impl Iterator<Item = DVec3>, n: DVec3) -> bo
     false
 }
 
-/// [`points_cross_themselves`] for a quad ABCD, without gathering its points. Of its four
+/// [`points_cross_themselves`] for a quad ABCD. Of its four
 /// triangles (orientations against `n`), AB cuts CD when ABC, ABD and CDA, CDB differ in
 /// sign, BC cuts DA when BCD, BCA and DAB, DAC do. With `n` the quad's Newell normal
 /// `½ AC × BD`, `ABC + ACD = ABD + BCD = 2|n|²`, so two triple products give all four: the

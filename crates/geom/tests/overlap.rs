@@ -428,8 +428,8 @@ fn the_computer_room_after_catmull_clark_rounds_without_crossing_itself() {
             .filter(|&f| {
                 let vs = m.loop_verts(m.face_loops(f).start);
                 let n = prism_geom::geometry::loop_newell(m, vs);
-                let pts = vs.iter().map(|&v| m.positions[v as usize]);
-                prism_geom::geometry::points_cross_themselves(pts, n)
+                let pts: Vec<_> = vs.iter().map(|&v| m.positions[v as usize]).collect();
+                prism_geom::geometry::points_cross_themselves(&pts, n)
             })
             .count();
         assert_eq!(

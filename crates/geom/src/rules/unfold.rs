@@ -24,7 +24,7 @@
 //! flipped but whose Doo–Sabin points, at the next step, fold the edge faces beside it.
 
 use super::doo_sabin;
-use crate::geometry::{points_cross_themselves, quad_crosses_itself};
+use crate::geometry::points_cross_themselves;
 use crate::mesh::PolyMesh;
 use crate::topology::{NONE, Topology};
 use glam::DVec3;
@@ -101,21 +101,9 @@ pub(crate) fn unfold(
                 .face_loops(f)
                 .map(|l| newell(pts, mesh.loop_corners(l).map(|c| c as u32)))
                 .sum::<DVec3>();
-            let cs = mesh.face_corners(f);
             if n.dot(normals[f]) < 0.0
-                || (cs.len() == 4
-                    && quad_crosses_itself(
-                        [
-                            pts[cs.start],
-                            pts[cs.start + 1],
-                            pts[cs.start + 2],
-                            pts[cs.start + 3],
-                        ],
-                        n,
-                    ))
-                || (cs.len() > 4
-                    && mesh.face_loops(f).len() == 1
-                    && points_cross_themselves(cs.map(|c| pts[c]), n))
+                || (mesh.face_loops(f).len() == 1
+                    && points_cross_themselves(&pts[mesh.face_corners(f)], n))
             {
                 mark(f, &mut to_move, &mut any);
             }
@@ -133,7 +121,7 @@ pub(crate) fn unfold(
             let q = [topo.next(c as usize), c, topo.next(t as usize), t];
             let n = newell(pts, q.iter().copied());
             if n.dot(normals[fa] + normals[fb]) < 0.0
-                || quad_crosses_itself(q.map(|c| pts[c as usize]), n)
+                || points_cross_themselves(&q.map(|c| pts[c as usize]), n)
             {
                 mark(fa, &mut to_move, &mut any);
                 mark(fb, &mut to_move, &mut any);
@@ -157,12 +145,7 @@ pub(crate) fn unfold(
             // The ring walked once: its points serve all three tests.
             let at: Vec<DVec3> = ring.clone().map(|c| pts[c as usize]).collect();
             let n = newell_at(0..at.len() as u32, |i| at[i as usize]);
-            let crosses = match at.len() {
-                4 => quad_crosses_itself([at[0], at[1], at[2], at[3]], n),
-                k if k > 4 => points_cross_themselves(at.iter().copied(), n),
-                _ => false,
-            };
-            if n.dot(vsum[v]) < 0.0 || !star_shaped(&at, n) || crosses {
+            if n.dot(vsum[v]) < 0.0 || !star_shaped(&at, n) || points_cross_themselves(&at, n) {
                 for c in ring {
                     mark(
                         topo.corner_face(c as usize) as usize,
@@ -190,6 +173,7 @@ pub(crate) fn unfold(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::geometry::quad_crosses_itself;
 
     /// The hexagon Catmull–Clark's tripod gave the first combination step (level 2, around
     /// the bottom's vertex 44, projected on z = 0): two spikes 0.48 long. It is not flipped
@@ -231,13 +215,7 @@ mod tests {
         };
         let check = |pts: &[DVec3]| {
             let n = newell(pts, 0..pts.len() as u32);
-            let quad =
-                (pts.len() == 4).then(|| quad_crosses_itself([pts[0], pts[1], pts[2], pts[3]], n));
-            let any = points_cross_themselves(pts.iter().copied(), n);
-            if let Some(q) = quad {
-                assert_eq!(q, any, "{pts:?}");
-            }
-            (n.z > 0.0, any)
+            (n.z > 0.0, points_cross_themselves(pts, n))
         };
         let bow_tie = p(&[(0.0, 0.0), (2.0, 0.0), (0.5, 1.0), (1.5, 1.0)]);
         assert_eq!(check(&bow_tie), (true, true));

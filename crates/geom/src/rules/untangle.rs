@@ -57,8 +57,10 @@ impl NewFaces<'_> {
             .map(|l| newell_at(self.mesh.loop_corners(l).map(|c| c as u32), at))
             .sum();
         n.dot(self.normals[f]) < 0.0
-            || (self.mesh.face_loops(f).len() == 1
-                && points_cross_themselves(self.mesh.face_corners(f).map(|c| at(c as u32)), n))
+            || (self.mesh.face_loops(f).len() == 1 && {
+                let outline: Vec<DVec3> = self.mesh.face_corners(f).map(|c| at(c as u32)).collect();
+                points_cross_themselves(&outline, n)
+            })
     }
 
     fn edge_corners(&self, e: usize) -> [u32; 4] {
@@ -73,8 +75,9 @@ impl NewFaces<'_> {
         let c = t.edge_corner[e] as usize;
         let np = self.normals[t.corner_face(c) as usize]
             + self.normals[t.corner_face(t.twin[c] as usize) as usize];
-        let n = newell_at(self.edge_corners(e).into_iter(), &at);
-        n.dot(np) < 0.0 || points_cross_themselves(self.edge_corners(e).into_iter().map(&at), n)
+        let q = self.edge_corners(e).map(&at);
+        let n = newell_at(0..4, |i| q[i as usize]);
+        n.dot(np) < 0.0 || points_cross_themselves(&q, n)
     }
 
     fn vertex_corners(&self, v: usize) -> impl Iterator<Item = u32> + '_ {
@@ -87,8 +90,9 @@ impl NewFaces<'_> {
     }
 
     fn vertex_flipped(&self, at: impl Fn(u32) -> DVec3, v: usize) -> bool {
-        let n = newell_at(self.vertex_corners(v), &at);
-        n.dot(self.vsum[v]) < 0.0 || points_cross_themselves(self.vertex_corners(v).map(&at), n)
+        let ring: Vec<DVec3> = self.vertex_corners(v).map(&at).collect();
+        let n = newell_at(0..ring.len() as u32, |i| ring[i as usize]);
+        n.dot(self.vsum[v]) < 0.0 || points_cross_themselves(&ring, n)
     }
 
     /// How many of the four new faces at corner `c` are flipped with `c`'s point at `q`.
