@@ -124,6 +124,13 @@ pub fn unit_or_zero(v: DVec3) -> DVec3 {
     if l > 0.0 { v / l } else { DVec3::ZERO }
 }
 
+/// Distance from `p` to the segment `ab` (to `a` when the segment has no length).
+pub fn segment_distance(p: DVec3, a: DVec3, b: DVec3) -> f64 {
+    let ab = b - a;
+    let s = ((p - a).dot(ab) / ab.length_squared().max(f64::MIN_POSITIVE)).clamp(0.0, 1.0);
+    p.distance(a + s * ab)
+}
+
 /// Angle between two vectors in [0, π], computed as atan2(|a × b|, a·b).
 pub fn angle_between(a: DVec3, b: DVec3) -> f64 {
     a.cross(b).length().atan2(a.dot(b))

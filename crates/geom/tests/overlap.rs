@@ -513,9 +513,13 @@ fn a_radius_changed_within_a_run_is_checked_again() {
 /// that count to what the docs report (87 of 1,200 before untangling, the flat-edge rules
 /// and the radius check within a run; 28 after; 35 once corners were placed in their own
 /// planes, 56 once the fold guard also moved faces whose outlines cross themselves — the new
-/// ones mostly mixes that crossed before, now flipped instead); counting faces that pass
-/// through each other as unsound too, 153, then 128, 61, now 46. About 2 minutes in release;
-/// each mix unsound either way is printed.
+/// ones mostly mixes that crossed before, now flipped instead — and 47 with the vector sum's
+/// clamp); counting faces that pass through each other as unsound too, 153, then 128, 61,
+/// 46, now 53. The last rise is mixes that used to fail at their chamfer step and now reach
+/// the rounding: the mixes unsound at any level, chamfers and smoothing steps included, went
+/// 115 → 92 with the vector sum's clamp (the failures before any rounding 69 → 39, most of
+/// the rest Doo–Sabin's points on long concave faces). About 2 minutes in release; each mix
+/// unsound either way is printed.
 #[test]
 #[ignore]
 fn random_mixes_of_steps() {
@@ -615,6 +619,10 @@ fn random_mixes_of_steps() {
                     }
                     if sound_so_far[i] && !sound && !rounding && i == 1 {
                         crossed_before += 1;
+                        println!(
+                            "before rounding: {name} {text} level {k}: {crossing} pair(s), {} flipped",
+                            r.flipped.len()
+                        );
                     }
                     sound_so_far[i] &= sound;
                 }
@@ -628,9 +636,13 @@ fn random_mixes_of_steps() {
         "{} of {tried} mixes unsound; counting faces that pass through each other too, {crossing_unsound} (and {crossed_before} crossed themselves before rounding)",
         unsound.len()
     );
-    assert!(unsound.len() <= 56, "{} of {tried}", unsound.len());
+    assert!(unsound.len() <= 47, "{} of {tried}", unsound.len());
     assert!(
-        crossing_unsound <= 46,
+        crossing_unsound <= 53,
         "{crossing_unsound} of {tried} with crossings"
+    );
+    assert!(
+        crossing_unsound + crossed_before <= 92,
+        "{crossing_unsound} + {crossed_before} of {tried} unsound at some level"
     );
 }

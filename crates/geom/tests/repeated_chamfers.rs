@@ -95,6 +95,61 @@ fn vector_sum_above_a_quarter_is_named_and_needs_no_face_normal() {
     assert!(p.levels()[4].mesh.all_finite());
 }
 
+/// The least distance between two corners of one face of `m` lying in the plane z = 0.
+fn closest_corners_at_the_bottom(m: &PolyMesh) -> f64 {
+    let mut least = f64::INFINITY;
+    let at = |c: usize| m.positions[m.corner_verts[c] as usize];
+    for f in 0..m.num_faces() {
+        if m.face_corners(f).any(|c| at(c).z != 0.0) {
+            continue;
+        }
+        let cs: Vec<_> = m.face_corners(f).collect();
+        for (i, &a) in cs.iter().enumerate() {
+            for &b in &cs[i + 1..] {
+                least = least.min(at(a).distance(at(b)));
+            }
+        }
+    }
+    least
+}
+
+/// At α = 0.2 with the reflex corners moved inwards, the tripod's L-shaped bottom (and its
+/// two twins) has its reflex corner (1, 1, 0) and its armpit corner (0, 0, 0) both land on
+/// (0.6, 0.6, 0): the face touches itself, and a rounding after it folds. The clamp lowers
+/// α on exactly those three faces until a quarter of their narrowest width is kept, and the
+/// rounding that follows is sound; a convex solid is not touched.
+#[test]
+fn the_vector_sum_clamp_keeps_reflex_corners_off_the_far_side() {
+    let tripod = primitives::tripod();
+    let inward = "vector-sum:alpha=0.2:reflex=inward";
+    let p = run(&tripod, parse_pipeline(inward).unwrap(), Overlap::Refuse);
+    assert!(closest_corners_at_the_bottom(&p.levels()[1].mesh) < 1e-12);
+    let rounded = format!("{inward},combination:r=0.2,combination:r=0.2,combination:r=0.2");
+    let p = run(&tripod, parse_pipeline(&rounded).unwrap(), Overlap::Clamp);
+    let first = p.levels()[1].report.as_ref().unwrap();
+    assert_eq!(first.clamped_faces, 3);
+    // The neck keeps a quarter of the face's narrowest width (1, from the reflex corner to
+    // the far sides).
+    let gap = closest_corners_at_the_bottom(&p.levels()[1].mesh);
+    assert!(gap > 0.25, "{gap}");
+    assert_eq!(flips(&p), vec![0, 0, 0, 0]);
+    for lv in &p.levels()[1..] {
+        assert!(prism_geom::analysis::crossings(&lv.mesh).is_empty());
+    }
+    // Without the clamp the first rounding already folds.
+    let q = run(&tripod, parse_pipeline(&rounded).unwrap(), Overlap::Refuse);
+    assert!(flips(&q).iter().any(|&n| n > 0), "{:?}", flips(&q));
+    // Convex faces keep α exactly.
+    let cube = primitives::cube3();
+    let steps = parse_pipeline(inward).unwrap();
+    let (a, b) = (
+        run(&cube, steps.clone(), Overlap::Clamp),
+        run(&cube, steps, Overlap::Refuse),
+    );
+    assert_eq!(a.levels()[1].report.as_ref().unwrap().clamped_faces, 0);
+    assert!(a.levels()[1].mesh == b.levels()[1].mesh);
+}
+
 #[test]
 fn primitives_are_closed_solids_of_positive_volume() {
     for m in [

@@ -52,7 +52,8 @@ pub struct StepArgs {
     pub pipeline: Option<String>,
     /// Lower the radius of edges whose rounds do not fit their faces to what fits, and say
     /// which (without it such a step is refused, naming them); lower a chamfer's l or d on
-    /// faces too small for it (a quarter of the shorter edge at each corner).
+    /// faces too small for it (a quarter of the shorter edge at each corner) and the vector
+    /// sum's α on faces whose reflex corners would cross them.
     #[arg(long)]
     pub clamp: bool,
     /// With --scheme angle-bisector or cut-width: divide l or d by K at each step after the
@@ -232,7 +233,7 @@ fn warn_level(k: usize, r: &StepReport, before: f64) {
     }
     if r.clamped_faces > 0 {
         eprintln!(
-            "note: level {k}: l or d lowered on {} face(s) too small for it (clamp)",
+            "note: level {k}: l, d or α lowered on {} face(s) too small for it (clamp)",
             r.clamped_faces
         );
     }

@@ -11,6 +11,7 @@
 //! from both sides and flip from level 2; a pipeline shrinks them about 4× per step (§2.3).
 
 use super::{ReflexMode, RuleError, RuleInput, corner_frame};
+use crate::mesh::PolyMesh;
 use glam::DVec3;
 
 /// Below this |m₁ + m₂| (= 2 sin(φ/2)) a corner is a needle and has no bisector.
@@ -44,36 +45,168 @@ pub(super) fn cut_width(input: &RuleInput, c: usize, d: f64) -> Result<DVec3, Ru
 /// Eq. (2) needs no face normal: only the reflex-inward option asks which corners are
 /// reflex, and a face of no area has none (its corners keep the printed rule). So faces a
 /// previous step flattened (α > ¼ folds them) do not stop the rule.
-pub(super) fn vector_sum(
-    input: &RuleInput,
-    c: usize,
-    alpha: f64,
-    reflex: ReflexMode,
-) -> Result<DVec3, RuleError> {
+pub(super) fn vector_sum(input: &RuleInput, c: usize, alpha: f64, reflex: ReflexMode) -> DVec3 {
     let (m, t) = (input.mesh, input.topo);
     let at = |corner: u32| m.positions[m.corner_verts[corner as usize] as usize];
-    let v = at(c as u32);
-    let (e1, e2) = (at(t.next(c)) - v, at(t.prev(c)) - v);
-    let face_normal = input.normals[t.corner_face(c) as usize];
-    let reflex_corner = face_normal != DVec3::ZERO && face_normal.dot(e1.cross(e2)) < 0.0;
+    let normal = input.normals[t.corner_face(c) as usize];
+    let (v, d, _) = corner_move(at(t.prev(c)), at(c as u32), at(t.next(c)), normal, reflex);
+    v + alpha * d
+}
+
+/// A corner's vertex `v` (between `prev` and `next` on a face of unit normal `normal`), its
+/// displacement per unit of α (`±(e₁ + e₂)`) and whether it is a reflex corner.
+fn corner_move(
+    prev: DVec3,
+    v: DVec3,
+    next: DVec3,
+    normal: DVec3,
+    reflex: ReflexMode,
+) -> (DVec3, DVec3, bool) {
+    let (e1, e2) = (next - v, prev - v);
+    let reflex_corner = normal != DVec3::ZERO && normal.dot(e1.cross(e2)) < 0.0;
     let sign = if reflex == ReflexMode::Inward && reflex_corner {
         -1.0
     } else {
         1.0
     };
-    Ok(v + sign * alpha * (e1 + e2))
+    (v, sign * (e1 + e2), reflex_corner)
+}
+
+/// The clamp keeps a face's new outline at least this share of the face's own narrowest
+/// width: what a triangle keeps at α = ¼ (it shrinks by 1 − 3α about its centroid).
+const VECTOR_SUM_KEPT_WIDTH: f64 = 0.25;
+
+/// Eq. (2) on face `f` of unit normal `normal`: each corner's vertex and displacement per
+/// unit of α, in the face's corner order, and whether any corner is reflex.
+struct FaceMoves {
+    from: Vec<DVec3>,
+    moves: Vec<DVec3>,
+    any_reflex: bool,
+}
+
+impl FaceMoves {
+    fn new(m: &PolyMesh, normal: DVec3, f: usize, reflex: ReflexMode) -> Self {
+        let mut fm = FaceMoves {
+            from: Vec::with_capacity(m.face_corners(f).len()),
+            moves: Vec::with_capacity(m.face_corners(f).len()),
+            any_reflex: false,
+        };
+        for l in m.face_loops(f) {
+            let vs = m.loop_verts(l);
+            let at = |i: usize| m.positions[vs[i % vs.len()] as usize];
+            for i in 0..vs.len() {
+                let (v, d, r) = corner_move(at(i + vs.len() - 1), at(i), at(i + 1), normal, reflex);
+                fm.from.push(v);
+                fm.moves.push(d);
+                fm.any_reflex |= r;
+            }
+        }
+        fm
+    }
+
+    /// The largest α' ≤ `alpha` at which the face's new outline keeps at least a quarter of
+    /// the face's narrowest width (the least distance from a corner to an edge not its own)
+    /// all the way from α = 0: the outline cannot cross itself without a corner first
+    /// reaching an edge.
+    fn clamped(&self, m: &PolyMesh, f: usize, alpha: f64) -> f64 {
+        let base = m.face_corners(f).start;
+        let loops: Vec<_> = m
+            .face_loops(f)
+            .map(|l| {
+                let r = m.loop_corners(l);
+                r.start - base..r.end - base
+            })
+            .collect();
+        let width = |s: f64| narrowest_width(&self.from, &self.moves, s, &loops);
+        let keep = VECTOR_SUM_KEPT_WIDTH * width(0.0);
+        largest_fitting(alpha, |s| width(s) >= keep)
+    }
+}
+
+/// The vector sum's per-face clamp (docs/algorithms/chamfers.md, "Clamp"). At a convex
+/// corner eq. (2) moves the point along its own edges only (by α of each, so α ≤ ¼ keeps a
+/// quarter of every edge), but at a reflex corner — moved inwards or, as printed, outwards —
+/// the point travels across the face and can meet the far side: the tripod's L-shaped bottom
+/// face at α = 0.2 with `reflex=inward` has its reflex corner and the opposite convex corner
+/// land on the same point (0.6, 0.6, 0), and every later step folds there. So on a face with
+/// a reflex corner α is lowered to [`FaceMoves::clamped`]; faces without one keep α.
+fn vector_sum_alphas(input: &RuleInput, alpha: f64, reflex: ReflexMode) -> (Vec<f64>, usize) {
+    let m = input.mesh;
+    let mut lowered = 0;
+    let params = (0..m.num_faces())
+        .map(|f| {
+            let fm = FaceMoves::new(m, input.normals[f], f, reflex);
+            if !fm.any_reflex {
+                return alpha;
+            }
+            let a = fm.clamped(m, f, alpha);
+            if a < alpha {
+                lowered += 1;
+            }
+            a
+        })
+        .collect();
+    (params, lowered)
+}
+
+/// The least distance from a corner of the outline `from + s·moves` (loops given as index
+/// ranges) to an edge of any loop that does not end at it.
+fn narrowest_width(
+    from: &[DVec3],
+    moves: &[DVec3],
+    s: f64,
+    loops: &[std::ops::Range<usize>],
+) -> f64 {
+    let at = |i: usize| from[i] + s * moves[i];
+    let mut least = f64::INFINITY;
+    for l in loops {
+        for j in l.clone() {
+            let k = if j + 1 == l.end { l.start } else { j + 1 };
+            let (a, b) = (at(j), at(k));
+            for i in 0..from.len() {
+                if i != j && i != k {
+                    least = least.min(crate::geometry::segment_distance(at(i), a, b));
+                }
+            }
+        }
+    }
+    least
+}
+
+/// The largest `s` in `[0, most]` such that `fits` holds on all of `[0, s]`, found by eight
+/// even samples and then bisection (to 2⁻¹² of `most`). `fits(0)` is taken to hold.
+fn largest_fitting(most: f64, fits: impl Fn(f64) -> bool) -> f64 {
+    const SAMPLES: usize = 8;
+    let mut lo = 0.0;
+    for k in 1..=SAMPLES {
+        let s = most * k as f64 / SAMPLES as f64;
+        if !fits(s) {
+            let mut hi = s;
+            for _ in 0..9 {
+                let mid = 0.5 * (lo + hi);
+                if fits(mid) { lo = mid } else { hi = mid }
+            }
+            return lo;
+        }
+        lo = s;
+    }
+    most
 }
 
 /// The per-face clamp of the absolute chamfers (seed 000 §3.1, docs/algorithms/chamfers.md,
 /// "Clamp"): a face's parameter is lowered so that no convex corner moves along either of its
 /// edges by more than a quarter of the shorter one — along an edge, the cut-width point
-/// moves `d·cot(φ/2)` and the bisector point `l·cos(φ/2)`. Returns the parameter of every
-/// face and how many were lowered.
+/// moves `d·cot(φ/2)` and the bisector point `l·cos(φ/2)`; the vector sum's α is lowered on
+/// faces whose reflex corners would cross them ([`vector_sum_alphas`]). Returns the parameter
+/// of every face and how many were lowered.
 pub(super) fn face_params(input: &RuleInput, rule: &super::CornerRule) -> (Vec<f64>, usize) {
     let m = input.mesh;
     let p = match *rule {
         super::CornerRule::CutWidth { d } => d,
         super::CornerRule::AngleBisector { l } => l,
+        super::CornerRule::VectorSum { alpha, reflex } => {
+            return vector_sum_alphas(input, alpha, reflex);
+        }
         _ => return (Vec::new(), 0),
     };
     // Along-edge move per unit of the parameter at a convex corner (c = m₁·m₂ = −cos φ):

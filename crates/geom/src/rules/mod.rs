@@ -141,7 +141,7 @@ pub struct RuleInput<'a> {
     pub normals: &'a [DVec3],
     /// Per-edge cut width for the cylindrical family (empty otherwise).
     pub cut_widths: &'a [f64],
-    /// Per-face l or d of a clamped absolute chamfer (empty: the rule's own everywhere).
+    /// Per-face l, d or α of a clamped chamfer (empty: the rule's own everywhere).
     pub face_params: &'a [f64],
     /// Per-face vertex-neighbourhood flag for the combination rule.
     pub vertex_neighbourhood: &'a [bool],
@@ -345,7 +345,12 @@ fn face_points(
             CornerRule::CutWidth { d } => {
                 chamfer::cut_width(input, c, input.face_params.get(f).copied().unwrap_or(d))
             }
-            CornerRule::VectorSum { alpha, reflex } => chamfer::vector_sum(input, c, alpha, reflex),
+            CornerRule::VectorSum { alpha, reflex } => Ok(chamfer::vector_sum(
+                input,
+                c,
+                input.face_params.get(f).copied().unwrap_or(alpha),
+                reflex,
+            )),
             CornerRule::Cylindrical { .. } | CornerRule::Combination { .. } => {
                 cylindrical::simple(input, c, report)
             }

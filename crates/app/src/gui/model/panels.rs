@@ -151,7 +151,8 @@ impl ModelTab {
             .checkbox(&mut clamp, "Clamp overlapping radii and chamfers")
             .on_hover_text(
                 "Lower the radius of edges whose rounds do not fit their faces to what fits \
-                 (listed in the status bar), and a chamfer's l or d on faces too small for it; \
+                 (listed in the status bar), a chamfer's l or d on faces too small for it and \
+                 the vector sum's α on faces its reflex corners would cross; \
                  off: such a rounding step is refused, naming the edges",
             )
             .changed()

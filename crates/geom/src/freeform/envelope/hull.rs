@@ -20,6 +20,7 @@
 //! Collinear centres give the two ends and no facet (the two-primitive case: whole silhouette
 //! loops); coplanar centres give the polygon with two facets, `+n` and `−n`.
 
+use crate::geometry::segment_distance;
 use glam::DVec3;
 
 /// A hull edge between primitives `a < b`, with the facets on either side (none when the
@@ -341,12 +342,6 @@ fn layout_of(c: &[DVec3], active: &[usize], tol: f64) -> Layout {
             })
             .collect(),
     }
-}
-
-fn segment_distance(p: DVec3, a: DVec3, b: DVec3) -> f64 {
-    let ab = b - a;
-    let s = ((p - a).dot(ab) / ab.length_squared().max(f64::MIN_POSITIVE)).clamp(0.0, 1.0);
-    p.distance(a + s * ab)
 }
 
 /// The distance from `p` to the convex hull the layout describes (0 inside).
