@@ -10,7 +10,9 @@
 //! move. Mesh untangling (as in CGAL's and Mesquite's optimisers) moves the vertices of such
 //! faces, not the connectivity: each point of a flipped new face goes the shortest of ⅛, ¼, ½
 //! or all of the way to the mean of its four neighbours in the child (a dual-quad vertex has
-//! four: `next c`, `prev c`, `next(twin c)`, `twin(prev c)`) that unflips its four faces, all
+//! four: `next c`, `prev c`, `next(twin c)`, `twin(prev c)`), but no farther in one round than
+//! its nearest neighbour (the mean of a long strip's points lies far along it), that unflips
+//! its four faces, all
 //! points judged against the same state, and the faces around the moved points are checked
 //! again; every 16 rounds the smoothed region grows by one ring. The result is kept only when
 //! no face is left flipped and no point moved more than 1 % of the bounding-box diagonal
@@ -215,11 +217,19 @@ pub(crate) fn untangle(
             .map(|&c| {
                 let c = c as usize;
                 let p = pts[c];
-                let target = 0.25
-                    * neighbours(topo, c as u32)
-                        .iter()
-                        .map(|&k| pts[k as usize])
-                        .sum::<DVec3>();
+                let ns = neighbours(topo, c as u32);
+                let mean = 0.25 * ns.iter().map(|&k| pts[k as usize]).sum::<DVec3>();
+                let reach = ns
+                    .iter()
+                    .map(|&k| pts[k as usize].distance(p))
+                    .filter(|&d| d > 0.0)
+                    .fold(f64::INFINITY, f64::min);
+                let d = mean - p;
+                let target = if d.length() > reach && reach.is_finite() {
+                    p + d * (reach / d.length())
+                } else {
+                    mean
+                };
                 let mut best = (faces.flipped_around(pts, c, p), p);
                 for t in STEPS {
                     let q = p + t * (target - p);
