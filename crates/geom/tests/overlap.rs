@@ -519,8 +519,8 @@ fn a_radius_changed_within_a_run_is_checked_again() {
 /// the rounding: the mixes unsound at any level, chamfers and smoothing steps included, went
 /// 115 → 92 with the vector sum's clamp (the failures before any rounding 69 → 39, most of
 /// the rest Doo–Sabin's points on long concave faces). With the untangling's step held to the
-/// nearest neighbour: 40 and 47 (86 at any level). About 2 minutes in release; each mix
-/// unsound either way is printed.
+/// nearest neighbour: 40 and 47 (86 at any level); with its sound points left in place, 38
+/// and 45 (84). About 2 minutes in release; each mix unsound either way is printed.
 #[test]
 #[ignore]
 fn random_mixes_of_steps() {
@@ -637,13 +637,13 @@ fn random_mixes_of_steps() {
         "{} of {tried} mixes unsound; counting faces that pass through each other too, {crossing_unsound} (and {crossed_before} crossed themselves before rounding)",
         unsound.len()
     );
-    assert!(unsound.len() <= 40, "{} of {tried}", unsound.len());
+    assert!(unsound.len() <= 38, "{} of {tried}", unsound.len());
     assert!(
-        crossing_unsound <= 47,
+        crossing_unsound <= 45,
         "{crossing_unsound} of {tried} with crossings"
     );
     assert!(
-        crossing_unsound + crossed_before <= 86,
+        crossing_unsound + crossed_before <= 84,
         "{crossing_unsound} + {crossed_before} of {tried} unsound at some level"
     );
 }

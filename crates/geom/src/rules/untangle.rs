@@ -12,7 +12,8 @@
 //! or all of the way to the mean of its four neighbours in the child (a dual-quad vertex has
 //! four: `next c`, `prev c`, `next(twin c)`, `twin(prev c)`), but no farther in one round than
 //! its nearest neighbour (the mean of a long strip's points lies far along it), that unflips
-//! its four faces, all
+//! its four faces (where none does, all the way if one of its faces is flipped, else it
+//! stays), all
 //! points judged against the same state, and the faces around the moved points are checked
 //! again; every 16 rounds the smoothed region grows by one ring. The result is kept only when
 //! no face is left flipped and no point moved more than 1 % of the bounding-box diagonal
@@ -241,15 +242,17 @@ pub(crate) fn untangle(
                         break;
                     }
                 }
-                if best.1 == p {
+                // No step helps: a point beside a flipped face goes all the way (smoothing
+                // makes room); one whose four faces are sound stays.
+                if best.1 == p && best.0 > 0 {
                     best.1 = target;
                 }
                 best.1
             })
             .collect();
         for (&c, p) in members.iter().zip(new) {
+            moved[c as usize] |= p != pts[c as usize];
             pts[c as usize] = p;
-            moved[c as usize] = true;
         }
         flipped = faces.flipped_near(pts, &members);
     }
