@@ -934,3 +934,111 @@ fn the_crossing_check_finds_a_heap_through_itself() {
         "{counts:?}"
     );
 }
+
+/// A heap of `count` primitives of every library shape (flat and tall prisms, boxes of
+/// random proportions), each turned at random, scaled 1–2, centres uniform in [0, 4]³.
+fn mixed_heap(rng: &mut Lcg, count: usize) -> Vec<PrimitiveInput> {
+    (0..count)
+        .map(|_| {
+            let shape = match (rng.next() * 7.0) as usize {
+                0 => Shape::Cube,
+                1 => Shape::Box {
+                    a: 0.3 + rng.next(),
+                    b: 0.3 + rng.next(),
+                    c: 0.3 + rng.next(),
+                },
+                2 => Shape::Tetrahedron,
+                3 => Shape::Octahedron,
+                4 => Shape::TriangularPrism {
+                    height: 0.3 + 2.0 * rng.next(),
+                },
+                _ => Shape::HexagonalPrism {
+                    height: 0.3 + 2.0 * rng.next(),
+                },
+            };
+            let centre = [4.0 * rng.next(), 4.0 * rng.next(), 4.0 * rng.next()];
+            let rotation = [360.0 * rng.next(), 360.0 * rng.next(), 360.0 * rng.next()];
+            shape.placed(&Placement {
+                centre,
+                scale: 1.0 + rng.next(),
+                rotation,
+            })
+        })
+        .collect()
+}
+
+/// The least distance between two primitives' centres over the smaller one's sphere radius.
+fn closest_centres(prims: &[PrimitiveInput]) -> f64 {
+    let centre = |p: &PrimitiveInput| {
+        p.vertices
+            .iter()
+            .map(|v| DVec3::from_array(*v))
+            .sum::<DVec3>()
+            / p.vertices.len() as f64
+    };
+    let radius = |p: &PrimitiveInput| DVec3::from_array(p.vertices[0]).distance(centre(p));
+    let mut least = f64::INFINITY;
+    for (i, a) in prims.iter().enumerate() {
+        for b in &prims[i + 1..] {
+            least = least.min(centre(a).distance(centre(b)) / radius(a).min(radius(b)));
+        }
+    }
+    least
+}
+
+/// An ignored survey of heaps of 2–6 primitives of every library shape (envelope.md, "Left"):
+/// per t, the heaps with a folded cell ([`Envelope::folds`]), with faces passing through each
+/// other at K = 8, and errors. `HEAPS` heaps per count (default 60), `TS` the t values
+/// (default "1"); each failing heap is printed with its seed so that it can be rebuilt.
+#[test]
+#[ignore]
+fn survey_mixed_heaps() {
+    let heaps: usize = std::env::var("HEAPS").map_or(60, |v| v.parse().unwrap());
+    let ts: Vec<f64> = std::env::var("TS").map_or(vec![1.0], |v| {
+        v.split(',').map(|x| x.parse().unwrap()).collect()
+    });
+    for &t in &ts {
+        let (mut folded, mut crossed, mut errors, mut total) = (0, 0, 0, 0);
+        // Heaps with two centres closer than half the smaller sphere's radius, and of those
+        // failing, how many have such a pair.
+        let (mut close, mut close_failing) = (0, 0);
+        for count in 2..=6 {
+            for scene in 0..heaps {
+                let seed = (count * 100_000 + scene) as u64;
+                let prims = mixed_heap(&mut Lcg(seed), count);
+                total += 1;
+                let near = closest_centres(&prims) < 0.5;
+                close += usize::from(near);
+                let (f0, c0) = (folded, crossed);
+                match envelope(&spec(prims, t)) {
+                    Err(e) => {
+                        errors += 1;
+                        println!("t = {t}: heap {seed}: error {e}");
+                    }
+                    Ok(e) => {
+                        let folds = e.folds();
+                        if !folds.is_empty() {
+                            folded += 1;
+                            println!(
+                                "t = {t}: heap {seed}: {}",
+                                e.fold_warning(&folds).unwrap_or_default()
+                            );
+                        }
+                        let m = e.tessellate(8).unwrap();
+                        let pts = prism_geom::freeform::envelope::folds::crossings(&m);
+                        if !pts.is_empty() {
+                            crossed += 1;
+                            println!("t = {t}: heap {seed}: crosses itself near {:?}", pts[0]);
+                        }
+                    }
+                }
+                if near && (folded > f0 || crossed > c0) {
+                    close_failing += 1;
+                }
+            }
+        }
+        println!(
+            "t = {t}: of {total} heaps {folded} with a folded cell, {crossed} crossing themselves, {errors} errors; {close} heaps have two centres closer than half a radius, {close_failing} of them fail"
+        );
+    }
+}
