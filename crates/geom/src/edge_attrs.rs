@@ -1,4 +1,5 @@
-//! Per-edge attributes: crease sharpness and an own fillet radius.
+//! Per-edge attributes: crease sharpness, an own fillet radius and the radius the overlap
+//! clamp found to fit.
 //!
 //! Keyed by the edge's two vertex indices (smaller first), so they survive any reordering
 //! of faces and are what the files store. A step hands them down with
@@ -27,6 +28,11 @@ pub struct EdgeAttr {
     /// Fillet radius of this edge for the cylindrical rules, overriding the step's r.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub radius: Option<f64>,
+    /// The largest radius that fits this edge's faces, written by the overlap clamp
+    /// (`--clamp`): later rounding steps take the smaller of it and the radius they would
+    /// use, so a clamped edge never rounds wider than a later, smaller r asks.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub fits: Option<f64>,
 }
 
 impl EdgeAttr {
@@ -34,15 +40,15 @@ impl EdgeAttr {
     pub fn creased(s: f64) -> Self {
         EdgeAttr {
             crease: s,
-            radius: None,
+            ..EdgeAttr::default()
         }
     }
 
     /// An own fillet radius `r` (no crease).
     pub fn rounded(r: f64) -> Self {
         EdgeAttr {
-            crease: 0.0,
             radius: Some(r),
+            ..EdgeAttr::default()
         }
     }
 }

@@ -507,6 +507,50 @@ fn a_radius_changed_within_a_run_is_checked_again() {
     assert_sound_inside(&p, 0);
 }
 
+/// A clamped radius caps the edge, it does not replace the radius of later steps: the
+/// Computer room's 16 thin edges fit 0.15 at r = 0.2, and a later step of r = 0.1 rounds them
+/// with 0.1 (they used to keep 0.15 as an own radius, wider than the step asked), one of
+/// r = 0.4 with 0.15. An own radius above the cap is capped too.
+#[test]
+fn a_clamped_radius_caps_later_steps() {
+    let p = run(
+        computer_room(),
+        EdgeAttrs::new(),
+        steps("combination:r=0.2,doo-sabin"),
+        Overlap::Clamp,
+    );
+    let capped: Vec<_> = p.levels()[2]
+        .edge_attrs
+        .values()
+        .filter(|a| a.fits.is_some())
+        .collect();
+    assert!(!capped.is_empty());
+    for a in capped {
+        assert!((a.fits.unwrap() - 0.15).abs() < 1e-12, "{a:?}");
+        assert_eq!(a.radius, None);
+        let at = |r| CornerRule::Combination { r }.edge_radius(Some(a));
+        assert_eq!(at(0.1), Some(0.1));
+        assert_eq!(at(0.4), a.fits);
+        let own = prism_geom::EdgeAttr {
+            radius: Some(0.3),
+            ..*a
+        };
+        assert_eq!(
+            CornerRule::Combination { r: 0.1 }.edge_radius(Some(&own)),
+            a.fits
+        );
+    }
+    // The later step of 0.1 asks no edge for more than 0.1 (the faces Doo–Sabin shrank
+    // still clamp some below it).
+    let mut s = steps("combination:r=0.2,doo-sabin");
+    s.extend(combination(1, 0.1));
+    let p = run(computer_room(), EdgeAttrs::new(), s, Overlap::Clamp);
+    assert_eq!(p.levels().len(), 4);
+    for e in &p.levels()[3].report.as_ref().unwrap().clamped {
+        assert!(e.radius <= 0.1 && e.fits < e.radius, "{e}");
+    }
+}
+
 /// Random pipelines on the bundled solids (docs/algorithms/cylindrical.md, "Random mixes"):
 /// one to three steps of any scheme, then two or three combination steps, clamped. Counts the
 /// combination levels that are unsound although every level before them was sound, and holds
@@ -520,7 +564,8 @@ fn a_radius_changed_within_a_run_is_checked_again() {
 /// 115 → 92 with the vector sum's clamp (the failures before any rounding 69 → 39, most of
 /// the rest Doo–Sabin's points on long concave faces). With the untangling's step held to the
 /// nearest neighbour: 40 and 47 (86 at any level); with its sound points left in place, 38
-/// and 45 (84). About 2 minutes in release; each mix unsound either way is printed.
+/// and 45 (84); with a clamped radius a cap rather than an own radius, 35 and 43 (82). About
+/// 2 minutes in release; each mix unsound either way is printed.
 #[test]
 #[ignore]
 fn random_mixes_of_steps() {
@@ -637,13 +682,13 @@ fn random_mixes_of_steps() {
         "{} of {tried} mixes unsound; counting faces that pass through each other too, {crossing_unsound} (and {crossed_before} crossed themselves before rounding)",
         unsound.len()
     );
-    assert!(unsound.len() <= 38, "{} of {tried}", unsound.len());
+    assert!(unsound.len() <= 35, "{} of {tried}", unsound.len());
     assert!(
-        crossing_unsound <= 45,
+        crossing_unsound <= 43,
         "{crossing_unsound} of {tried} with crossings"
     );
     assert!(
-        crossing_unsound + crossed_before <= 84,
+        crossing_unsound + crossed_before <= 82,
         "{crossing_unsound} + {crossed_before} of {tried} unsound at some level"
     );
 }

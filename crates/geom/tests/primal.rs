@@ -210,7 +210,7 @@ proptest! {
             let f = (0..m.num_faces()).find(|&f| m.face_corners(f).contains(&c)).unwrap();
             let r = m.face_corners(f);
             let n = if c + 1 == r.end { r.start } else { c + 1 };
-            attrs.insert(EdgeKey::new(m.corner_verts[c], m.corner_verts[n]), EdgeAttr { crease: sharp, radius: None });
+            attrs.insert(EdgeKey::new(m.corner_verts[c], m.corner_verts[n]), EdgeAttr::creased(sharp));
         }
         let mut tags = SubdivTags::default();
         if let Some((v, sharp)) = corner {

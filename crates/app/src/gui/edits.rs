@@ -113,7 +113,7 @@ pub(super) fn apply_to(d: &mut DocState, origin: &mut Origin, edit: Edit) -> Res
                 }
             }
             d.edge_attrs
-                .retain(|_, a| a.crease != 0.0 || a.radius.is_some());
+                .retain(|_, a| a.crease != 0.0 || a.radius.is_some() || a.fits.is_some());
         }
         Edit::MoveVertices { verts, by } => {
             if !by.is_finite() {

@@ -236,6 +236,7 @@ mod tests {
             EdgeAttr {
                 crease: 10.0,
                 radius: Some(0.3),
+                fits: Some(0.2),
             },
         );
         let doc = Document {

@@ -561,7 +561,10 @@ pub fn write_obj_to(
             "OBJ cannot hold faces with holes: {holed} face(s) were triangulated (save as .prism.json to keep them)"
         ));
     }
-    if attrs.values().any(|a| a.radius.is_some()) {
+    if attrs
+        .values()
+        .any(|a| a.radius.is_some() || a.fits.is_some())
+    {
         warnings.push("OBJ cannot hold per-edge radii: they were not written (save as .prism.json to keep them)".into());
     }
     Ok(warnings)

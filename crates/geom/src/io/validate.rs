@@ -73,6 +73,13 @@ pub fn validate_model(
         {
             return Err(format!("edge {a}-{b}: radius {r} must be a number above 0"));
         }
+        if let Some(r) = attr.fits
+            && !(r.is_finite() && r >= 0.0)
+        {
+            return Err(format!(
+                "edge {a}-{b}: fitting radius {r} must be a number of at least 0"
+            ));
+        }
     }
     for (&v, &s) in &tags.corners {
         if v as usize >= n {

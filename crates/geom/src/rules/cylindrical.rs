@@ -94,7 +94,7 @@ pub fn dissolve_needed(psi: f64, tol: f64) -> bool {
 ///
 /// Overlap ([`super::overlap`]): unless `options.overlap` is `Unchecked`, the finished
 /// fillets' tangent lengths `r·tan(|ψ|/2)` must fit every face; the edges that do not are
-/// refused or clamped (their lowered radius written as their own). The combination rule
+/// refused or clamped (their lowered radius written as a cap, `fits`). The combination rule
 /// then also fits this step's cut widths to its cut faces, counting the edges it lowers.
 pub(super) fn prepare<'a>(
     rule: &CornerRule,
@@ -176,9 +176,10 @@ pub(super) fn prepare<'a>(
                 };
                 radii[e] = fit.fits;
                 clamped.push(fit);
-                // The lowered radius becomes the edge's own, so the levels after keep it.
+                // The lowered radius caps the edge's from now on, so the levels after keep
+                // it (and a later step of a smaller r rounds it with that r).
                 let attr = p_attrs.to_mut().entry(EdgeKey::new(a, b)).or_default();
-                attr.radius = Some(fit.fits);
+                attr.fits = Some(fit.fits);
             }
         }
         if !clamped.is_empty() && options.overlap == Overlap::Refuse {

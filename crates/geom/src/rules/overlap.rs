@@ -67,9 +67,19 @@ impl std::fmt::Display for EdgeFit {
         write!(
             f,
             "edge {}-{} (r = {} fits up to {:.4})",
-            self.a, self.b, self.radius, self.fits
+            self.a,
+            self.b,
+            short(self.radius),
+            self.fits
         )
     }
+}
+
+/// `x` to four decimals without trailing zeros: 0.2 stays "0.2", an own radius the clamp
+/// capped reads "0.1359" rather than seventeen digits.
+fn short(x: f64) -> String {
+    let s = format!("{x:.4}");
+    s.trim_end_matches('0').trim_end_matches('.').to_string()
 }
 
 /// `fits` as a short list for an error or a warning: the first five, then how many more.
@@ -207,6 +217,23 @@ mod tests {
     use crate::primitives;
     use crate::topology::Topology;
     use glam::DVec3;
+
+    /// The message names radii in four decimals at most.
+    #[test]
+    fn radii_read_short() {
+        let fit = |radius| EdgeFit {
+            a: 180,
+            b: 181,
+            radius,
+            fits: 0.1315,
+        };
+        assert_eq!(
+            fit(0.13593386622447848).to_string(),
+            "edge 180-181 (r = 0.1359 fits up to 0.1315)"
+        );
+        assert_eq!(fit(0.2).to_string(), "edge 180-181 (r = 0.2 fits up to 0.1315)");
+        assert_eq!(fit(2.0).to_string(), "edge 180-181 (r = 2 fits up to 0.1315)");
+    }
 
     fn scales_on(m: &crate::PolyMesh, widths: impl Fn(f64) -> f64) -> (Topology, Vec<f64>) {
         let topo = Topology::build(m).unwrap();

@@ -140,7 +140,8 @@ impl CornerRule {
     /// else the rule's r (`None` for rules without one).
     pub fn edge_radius(&self, attr: Option<&crate::EdgeAttr>) -> Option<f64> {
         let r = self.radius()?;
-        Some(attr.and_then(|a| a.radius).unwrap_or(r))
+        let own = attr.and_then(|a| a.radius).unwrap_or(r);
+        Some(attr.and_then(|a| a.fits).map_or(own, |fits| own.min(fits)))
     }
 }
 
