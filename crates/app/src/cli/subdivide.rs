@@ -243,18 +243,22 @@ fn warn_level(k: usize, r: &StepReport, before: f64) {
             r.capped_edges
         );
     }
+    let first = |faces: &[u32]| {
+        let s: Vec<String> = faces.iter().take(5).map(|f| f.to_string()).collect();
+        s.join(", ")
+    };
     if !r.flipped.is_empty() {
-        let first: Vec<String> = r.flipped.iter().take(5).map(|f| f.to_string()).collect();
         eprintln!(
             "warning: level {k}: {} face(s) flipped (normal against their parent's), e.g. face(s) {}",
             r.flipped.len(),
-            first.join(", ")
+            first(&r.flipped)
         );
     }
     if !r.degenerate.is_empty() {
         eprintln!(
-            "warning: level {k}: {} face(s) of (almost) no area",
-            r.degenerate.len()
+            "warning: level {k}: {} face(s) of (almost) no area, e.g. face(s) {}",
+            r.degenerate.len(),
+            first(&r.degenerate)
         );
     }
     if r.dissolved_edges > 0 {

@@ -231,8 +231,14 @@ mod tests {
             fit(0.13593386622447848).to_string(),
             "edge 180-181 (r = 0.1359 fits up to 0.1315)"
         );
-        assert_eq!(fit(0.2).to_string(), "edge 180-181 (r = 0.2 fits up to 0.1315)");
-        assert_eq!(fit(2.0).to_string(), "edge 180-181 (r = 2 fits up to 0.1315)");
+        assert_eq!(
+            fit(0.2).to_string(),
+            "edge 180-181 (r = 0.2 fits up to 0.1315)"
+        );
+        assert_eq!(
+            fit(2.0).to_string(),
+            "edge 180-181 (r = 2 fits up to 0.1315)"
+        );
     }
 
     fn scales_on(m: &crate::PolyMesh, widths: impl Fn(f64) -> f64) -> (Topology, Vec<f64>) {
