@@ -138,6 +138,41 @@ fn clamped_edges_are_highlighted_at_every_level() {
     }
 }
 
+/// What the clamp and the untangling did is said in the status bar: the tripod's three
+/// L-shaped faces get a lower α at the app's default (clamping on), and the Computer room
+/// after combination (r = 0.4), Catmull–Clark and three combination steps (r = 0.3) has its
+/// folded slivers smoothed at level 5.
+#[test]
+fn the_status_bar_says_what_the_clamp_and_the_untangling_did() {
+    use super::model::panels::step_notes;
+    let mut a = opened(&asset("tripod.obj"));
+    let steps = parse_pipeline("vector-sum:alpha=0.2:reflex=inward").unwrap();
+    a.run(Edit::SetPipeline { view: 0, steps });
+    a.wait_idle();
+    let r = a.model.views[0].pipeline.levels()[1]
+        .report
+        .clone()
+        .unwrap();
+    let notes = step_notes(&r);
+    assert!(notes.contains("α lowered on 3 face(s)"), "{notes}");
+    let mut a = opened(&asset("computer-room.obj"));
+    let steps = parse_pipeline(
+        "combination:r=0.4,catmull-clark,combination:r=0.3,combination:r=0.3,combination:r=0.3",
+    )
+    .unwrap();
+    a.run(Edit::SetPipeline { view: 0, steps });
+    a.wait_idle();
+    let r = a.model.views[0].pipeline.levels()[5]
+        .report
+        .clone()
+        .unwrap();
+    let notes = step_notes(&r);
+    assert!(
+        notes.contains("48 point(s) of folded sliver faces smoothed"),
+        "{notes}"
+    );
+}
+
 /// A surface that passes through itself with every face still outward (the flip test cannot
 /// see it) is found on a thread, painted red and listed: the L-block after Doo–Sabin, a
 /// combination step (r = 0.4), the minimum type and two combination steps (r = 0.2): 4 pairs

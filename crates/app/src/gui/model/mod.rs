@@ -13,7 +13,7 @@
 pub mod compare;
 pub mod crossing_check;
 mod overlay;
-mod panels;
+pub(crate) mod panels;
 pub mod pick;
 mod scheme_editor;
 pub mod view_pipe;

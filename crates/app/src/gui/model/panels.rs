@@ -495,9 +495,7 @@ impl ModelTab {
                     prism_geom::rules::overlap::list(clamped)
                 );
             }
-            if !r.degenerate.is_empty() {
-                text += &format!(" — warning: {} degenerate face(s)", r.degenerate.len());
-            }
+            text += &step_notes(r);
             if far > 0 {
                 text += &format!(
                     " — warning: {far} corner(s) lie far outside the rest of the model (framing leaves them out)"
@@ -527,4 +525,26 @@ impl ModelTab {
             }
         });
     }
+}
+
+/// What a step changed to keep its result sound, and its degenerate faces, for the status
+/// bar: the faces whose chamfer parameter the clamp lowered, the points the untangling moved.
+pub(crate) fn step_notes(r: &prism_geom::StepReport) -> String {
+    let mut text = String::new();
+    if r.clamped_faces > 0 {
+        text += &format!(
+            " — l, d or α lowered on {} face(s) too small for it (clamp)",
+            r.clamped_faces
+        );
+    }
+    if r.untangled.points > 0 {
+        text += &format!(
+            " — {} point(s) of folded sliver faces smoothed (largest move {:.1e})",
+            r.untangled.points, r.untangled.largest_move
+        );
+    }
+    if !r.degenerate.is_empty() {
+        text += &format!(" — warning: {} degenerate face(s)", r.degenerate.len());
+    }
+    text
 }
