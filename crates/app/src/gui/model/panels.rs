@@ -533,7 +533,7 @@ pub(crate) fn step_notes(r: &prism_geom::StepReport) -> String {
     let mut text = String::new();
     if r.clamped_faces > 0 {
         text += &format!(
-            " — l, d or α lowered on {} face(s) too small for it (clamp)",
+            " — l, d or α lowered on {} face(s) (clamp)",
             r.clamped_faces
         );
     }
