@@ -551,6 +551,22 @@ fn a_clamped_radius_caps_later_steps() {
     }
 }
 
+/// The Computer room after two Catmull–Clark steps and four combination steps (r = 0.3), a
+/// plain designer pipeline: the untangling clears its folded slivers at level 6 — with the
+/// plain mean; the local steps alone leave 64 faces flipped there, so they are tried first
+/// and the mean after them.
+#[test]
+fn the_computer_room_smoothed_twice_rounds_through_level_six() {
+    let mut s = steps("catmull-clark,catmull-clark");
+    s.extend(combination(4, 0.3));
+    let p = run(computer_room(), EdgeAttrs::new(), s, Overlap::Clamp);
+    assert_eq!(p.levels().len(), 7);
+    assert_sound_inside(&p, 2);
+    let d = p.levels()[2].mesh.bbox_diagonal();
+    let u = p.levels()[6].report.as_ref().unwrap().untangled;
+    assert!(u.points > 0 && u.largest_move <= 1e-2 * d, "{u:?}");
+}
+
 /// Random pipelines on the bundled solids (docs/algorithms/cylindrical.md, "Random mixes"):
 /// one to three steps of any scheme, then two or three combination steps, clamped. Counts the
 /// combination levels that are unsound although every level before them was sound, and holds
@@ -564,8 +580,9 @@ fn a_clamped_radius_caps_later_steps() {
 /// 115 → 92 with the vector sum's clamp (the failures before any rounding 69 → 39, most of
 /// the rest Doo–Sabin's points on long concave faces). With the untangling's step held to the
 /// nearest neighbour: 40 and 47 (86 at any level); with its sound points left in place, 38
-/// and 45 (84); with a clamped radius a cap rather than an own radius, 35 and 43 (82). About
-/// 2 minutes in release; each mix unsound either way is printed.
+/// and 45 (84); with a clamped radius a cap rather than an own radius, 35 and 43 (82); with
+/// the plain mean tried where the local steps fail, 32 and 42 (81). About 2 minutes in
+/// release; each mix unsound either way is printed.
 #[test]
 #[ignore]
 fn random_mixes_of_steps() {
@@ -682,13 +699,13 @@ fn random_mixes_of_steps() {
         "{} of {tried} mixes unsound; counting faces that pass through each other too, {crossing_unsound} (and {crossed_before} crossed themselves before rounding)",
         unsound.len()
     );
-    assert!(unsound.len() <= 35, "{} of {tried}", unsound.len());
+    assert!(unsound.len() <= 32, "{} of {tried}", unsound.len());
     assert!(
-        crossing_unsound <= 43,
+        crossing_unsound <= 42,
         "{crossing_unsound} of {tried} with crossings"
     );
     assert!(
-        crossing_unsound + crossed_before <= 82,
+        crossing_unsound + crossed_before <= 81,
         "{crossing_unsound} + {crossed_before} of {tried} unsound at some level"
     );
 }

@@ -10,10 +10,10 @@
 //! move. Mesh untangling (as in CGAL's and Mesquite's optimisers) moves the vertices of such
 //! faces, not the connectivity: each point of a flipped new face goes the shortest of ⅛, ¼, ½
 //! or all of the way to the mean of its four neighbours in the child (a dual-quad vertex has
-//! four: `next c`, `prev c`, `next(twin c)`, `twin(prev c)`), but no farther in one round than
-//! its nearest neighbour (the mean of a long strip's points lies far along it), that unflips
-//! its four faces (where none does, all the way if one of its faces is flipped, else it
-//! stays), all
+//! four: `next c`, `prev c`, `next(twin c)`, `twin(prev c)`) — first no farther in one round
+//! than its nearest neighbour (the mean of a long strip's points lies far along it), and then,
+//! where that fails, the whole way as before — that unflips its four faces (where none does,
+//! all the way; under the local steps only if one of its faces is flipped), all
 //! points judged against the same state, and the faces around the moved points are checked
 //! again; every 16 rounds the smoothed region grows by one ring. The result is kept only when
 //! no face is left flipped and no point moved more than 1 % of the bounding-box diagonal
@@ -165,13 +165,15 @@ fn neighbours(t: &Topology, c: u32) -> [u32; 4] {
 
 /// Smooths the points (indexed by corner of `mesh`) of the new faces that are flipped against
 /// their parent element's normal (`normals`: unit face normals of `mesh`); `flipped` are the
-/// corners of the faces the step's check found flipped.
+/// corners of the faces the step's check found flipped. Local steps first ([`Smoothing::Local`]);
+/// where they leave a face flipped or move a point too far, the plain mean
+/// ([`Smoothing::Mean`]), which clears some regions the local steps cannot.
 pub(crate) fn untangle(
     mesh: &PolyMesh,
     topo: &Topology,
     normals: &[DVec3],
     pts: &mut [DVec3],
-    mut flipped: Vec<u32>,
+    flipped: Vec<u32>,
 ) -> Untangled {
     let faces = NewFaces {
         mesh,
@@ -179,11 +181,39 @@ pub(crate) fn untangle(
         normals,
         vsum: crate::geometry::vertex_normal_sums(mesh, topo, normals),
     };
-    let mut done = Untangled::default();
     if flipped.is_empty() {
-        return done;
+        return Untangled::default();
     }
     let original = pts.to_vec();
+    for how in [Smoothing::Local, Smoothing::Mean] {
+        if let Some(done) = smooth(&faces, pts, &original, flipped.clone(), how) {
+            return done;
+        }
+        pts.copy_from_slice(&original);
+    }
+    Untangled::default()
+}
+
+/// How [`smooth`] moves a point.
+#[derive(Clone, Copy, PartialEq)]
+enum Smoothing {
+    /// No farther in one round than its nearest neighbour (on a long strip the neighbours'
+    /// mean lies far along it), and a point whose four faces are sound stays.
+    Local,
+    /// Towards the neighbours' mean, every point of the region.
+    Mean,
+}
+
+/// One smoothing of `pts` from `original`: `Some` with what moved when it cleared every face
+/// and no point moved farther than [`MOST_MOVE`] of the diagonal.
+fn smooth(
+    faces: &NewFaces,
+    pts: &mut [DVec3],
+    original: &[DVec3],
+    mut flipped: Vec<u32>,
+    how: Smoothing,
+) -> Option<Untangled> {
+    let (mesh, topo) = (faces.mesh, faces.topo);
     let nc = mesh.num_corners();
     let mut moved = vec![false; nc];
     let mut set = vec![false; nc];
@@ -210,9 +240,9 @@ pub(crate) fn untangle(
                 }
             }
         }
-        // Each point goes the shortest of ⅛, ¼, ½ or all of the way to the mean of its
-        // neighbours that leaves none of its four faces flipped (or the least flipped),
-        // every point judged against the same state so that the order does not matter.
+        // Each point goes the shortest of ⅛, ¼, ½ or all of the way to its target that
+        // leaves none of its four faces flipped (or the least flipped), every point judged
+        // against the same state so that the order does not matter.
         let new: Vec<DVec3> = members
             .iter()
             .map(|&c| {
@@ -226,7 +256,7 @@ pub(crate) fn untangle(
                     .filter(|&d| d > 0.0)
                     .fold(f64::INFINITY, f64::min);
                 let d = mean - p;
-                let target = if d.length() > reach && reach.is_finite() {
+                let target = if how == Smoothing::Local && d.length() > reach && reach.is_finite() {
                     p + d * (reach / d.length())
                 } else {
                     mean
@@ -242,9 +272,9 @@ pub(crate) fn untangle(
                         break;
                     }
                 }
-                // No step helps: a point beside a flipped face goes all the way (smoothing
-                // makes room); one whose four faces are sound stays.
-                if best.1 == p && best.0 > 0 {
+                // No step helps: the point goes all the way (smoothing makes room) — under
+                // the local steps only if a face of its own is flipped.
+                if best.1 == p && (best.0 > 0 || how == Smoothing::Mean) {
                     best.1 = target;
                 }
                 best.1
@@ -260,6 +290,7 @@ pub(crate) fn untangle(
     // the diagonal; otherwise the points stay as the guard left them.
     let mut ok = flipped.is_empty();
     let diagonal = mesh.bbox_diagonal();
+    let mut done = Untangled::default();
     for c in 0..nc {
         if moved[c] {
             let d = (pts[c] - original[c]).length();
@@ -268,9 +299,5 @@ pub(crate) fn untangle(
             done.largest_move = done.largest_move.max(d);
         }
     }
-    if !ok {
-        pts.copy_from_slice(&original);
-        return Untangled::default();
-    }
-    done
+    ok.then_some(done)
 }
