@@ -51,6 +51,11 @@ impl EdgeAttr {
             ..EdgeAttr::default()
         }
     }
+
+    /// Nothing set: no crease, no own radius, no cap. Such an edge is left out of the map.
+    pub fn is_empty(&self) -> bool {
+        self.crease == 0.0 && self.radius.is_none() && self.fits.is_none()
+    }
 }
 
 fn is_zero(x: &f64) -> bool {

@@ -112,8 +112,7 @@ pub(super) fn apply_to(d: &mut DocState, origin: &mut Origin, edit: Edit) -> Res
                     EdgeMark::Radius(r) => a.radius = r,
                 }
             }
-            d.edge_attrs
-                .retain(|_, a| a.crease != 0.0 || a.radius.is_some() || a.fits.is_some());
+            d.edge_attrs.retain(|_, a| !a.is_empty());
         }
         Edit::MoveVertices { verts, by } => {
             if !by.is_finite() {

@@ -144,32 +144,28 @@ fn clamped_edges_are_highlighted_at_every_level() {
 /// folded slivers smoothed at level 5.
 #[test]
 fn the_status_bar_says_what_the_clamp_and_the_untangling_did() {
-    use super::model::panels::step_notes;
-    let mut a = opened(&asset("tripod.obj"));
-    let steps = parse_pipeline("vector-sum:alpha=0.2:reflex=inward").unwrap();
-    a.run(Edit::SetPipeline { view: 0, steps });
-    a.wait_idle();
-    let r = a.model.views[0].pipeline.levels()[1]
-        .report
-        .clone()
-        .unwrap();
-    let notes = step_notes(&r);
-    assert!(notes.contains("α lowered on 3 face(s)"), "{notes}");
-    let mut a = opened(&asset("computer-room.obj"));
-    let steps = parse_pipeline(
+    // The status bar's notes for level `k` of `pipeline` on the bundled `file`.
+    let notes = |file: &str, pipeline: &str, k: usize| {
+        let mut a = opened(&asset(file));
+        let steps = parse_pipeline(pipeline).unwrap();
+        a.run(Edit::SetPipeline { view: 0, steps });
+        a.wait_idle();
+        let r = a.model.views[0].pipeline.levels()[k]
+            .report
+            .clone()
+            .unwrap();
+        super::model::panels::step_notes(&r)
+    };
+    let n = notes("tripod.obj", "vector-sum:alpha=0.2:reflex=inward", 1);
+    assert!(n.contains("α lowered on 3 face(s)"), "{n}");
+    let n = notes(
+        "computer-room.obj",
         "combination:r=0.4,catmull-clark,combination:r=0.3,combination:r=0.3,combination:r=0.3",
-    )
-    .unwrap();
-    a.run(Edit::SetPipeline { view: 0, steps });
-    a.wait_idle();
-    let r = a.model.views[0].pipeline.levels()[5]
-        .report
-        .clone()
-        .unwrap();
-    let notes = step_notes(&r);
+        5,
+    );
     assert!(
-        notes.contains("48 point(s) of folded sliver faces smoothed"),
-        "{notes}"
+        n.contains("48 point(s) of folded sliver faces smoothed"),
+        "{n}"
     );
 }
 

@@ -380,8 +380,8 @@ fn refine(
         |e, a, end| {
             let end = end.expect("a primal child edge is half of its parent");
             let crease = child_sharpness.edge(e as usize, end as usize) as f64;
-            (crease > 0.0 || a.radius.is_some() || a.fits.is_some())
-                .then_some(EdgeAttr { crease, ..*a })
+            let child = EdgeAttr { crease, ..*a };
+            (!child.is_empty()).then_some(child)
         },
     );
     let mut child_tags = SubdivTags {

@@ -49,19 +49,20 @@ pub(super) fn vector_sum(input: &RuleInput, c: usize, alpha: f64, reflex: Reflex
     let (m, t) = (input.mesh, input.topo);
     let at = |corner: u32| m.positions[m.corner_verts[corner as usize] as usize];
     let normal = input.normals[t.corner_face(c) as usize];
-    let (v, d, _) = corner_move(at(t.prev(c)), at(c as u32), at(t.next(c)), normal, reflex);
+    let v = at(c as u32);
+    let (d, _) = corner_move(at(t.prev(c)), v, at(t.next(c)), normal, reflex);
     v + alpha * d
 }
 
-/// A corner's vertex `v` (between `prev` and `next` on a face of unit normal `normal`), its
-/// displacement per unit of α (`±(e₁ + e₂)`) and whether it is a reflex corner.
+/// The displacement per unit of α (`±(e₁ + e₂)`) of the corner at `v` between `prev` and
+/// `next` on a face of unit normal `normal`, and whether it is a reflex corner.
 fn corner_move(
     prev: DVec3,
     v: DVec3,
     next: DVec3,
     normal: DVec3,
     reflex: ReflexMode,
-) -> (DVec3, DVec3, bool) {
+) -> (DVec3, bool) {
     let (e1, e2) = (next - v, prev - v);
     let reflex_corner = normal != DVec3::ZERO && normal.dot(e1.cross(e2)) < 0.0;
     let sign = if reflex == ReflexMode::Inward && reflex_corner {
@@ -69,15 +70,17 @@ fn corner_move(
     } else {
         1.0
     };
-    (v, sign * (e1 + e2), reflex_corner)
+    (sign * (e1 + e2), reflex_corner)
 }
 
 /// The clamp keeps a face's new outline at least this share of the face's own narrowest
 /// width: what a triangle keeps at α = ¼ (it shrinks by 1 − 3α about its centroid).
 const VECTOR_SUM_KEPT_WIDTH: f64 = 0.25;
 
-/// Eq. (2) on face `f` of unit normal `normal`: each corner's vertex and displacement per
-/// unit of α, in the face's corner order, and whether any corner is reflex.
+/// Eq. (2) on one face: each corner's vertex and displacement per unit of α, in the face's
+/// corner order, and whether any corner is reflex. One value serves every face in turn
+/// ([`FaceMoves::load`]), so the clamp allocates nothing per face.
+#[derive(Default)]
 struct FaceMoves {
     from: Vec<DVec3>,
     moves: Vec<DVec3>,
@@ -85,23 +88,21 @@ struct FaceMoves {
 }
 
 impl FaceMoves {
-    fn new(m: &PolyMesh, normal: DVec3, f: usize, reflex: ReflexMode) -> Self {
-        let mut fm = FaceMoves {
-            from: Vec::with_capacity(m.face_corners(f).len()),
-            moves: Vec::with_capacity(m.face_corners(f).len()),
-            any_reflex: false,
-        };
+    /// Face `f` of unit normal `normal`, in place of the face held before.
+    fn load(&mut self, m: &PolyMesh, normal: DVec3, f: usize, reflex: ReflexMode) {
+        self.from.clear();
+        self.moves.clear();
+        self.any_reflex = false;
         for l in m.face_loops(f) {
             let vs = m.loop_verts(l);
             let at = |i: usize| m.positions[vs[i % vs.len()] as usize];
             for i in 0..vs.len() {
-                let (v, d, r) = corner_move(at(i + vs.len() - 1), at(i), at(i + 1), normal, reflex);
-                fm.from.push(v);
-                fm.moves.push(d);
-                fm.any_reflex |= r;
+                let (d, r) = corner_move(at(i + vs.len() - 1), at(i), at(i + 1), normal, reflex);
+                self.from.push(at(i));
+                self.moves.push(d);
+                self.any_reflex |= r;
             }
         }
-        fm
     }
 
     /// The largest α' ≤ `alpha` at which the face's new outline keeps at least a quarter of
@@ -133,9 +134,10 @@ impl FaceMoves {
 fn vector_sum_alphas(input: &RuleInput, alpha: f64, reflex: ReflexMode) -> (Vec<f64>, usize) {
     let m = input.mesh;
     let mut lowered = 0;
+    let mut fm = FaceMoves::default();
     let params = (0..m.num_faces())
         .map(|f| {
-            let fm = FaceMoves::new(m, input.normals[f], f, reflex);
+            fm.load(m, input.normals[f], f, reflex);
             if !fm.any_reflex {
                 return alpha;
             }
