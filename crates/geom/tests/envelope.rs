@@ -35,7 +35,7 @@ const SHAPES: [Shape; 6] = [
     Shape::HexagonalPrism { height: 1.0 },
 ];
 
-use common::winding;
+use prism_geom::analysis::winding_number as winding;
 
 fn face_normal(m: &PolyMesh, f: usize) -> (DVec3, DVec3) {
     let vs: Vec<DVec3> = m

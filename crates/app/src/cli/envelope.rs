@@ -149,15 +149,8 @@ pub fn run(a: EnvelopeArgs) -> Result<(), CliError> {
             mesh.num_faces()
         );
     }
-    if !e.removed.is_empty() {
-        println!(
-            "swallowed by the others (centre inside, or within r/10 of, the hull of the others' centres; seed 004 §5.1.3): primitive(s) {}",
-            e.removed
-                .iter()
-                .map(|i| i.to_string())
-                .collect::<Vec<_>>()
-                .join(", ")
-        );
+    if let Some(note) = e.removed_note() {
+        println!("{note}");
     }
     if let Some(path) = &a.curves {
         io::write_atomically(path, curves_obj(&e, 32).as_bytes()).map_err(CliError::input)?;

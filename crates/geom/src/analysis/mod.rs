@@ -1,5 +1,5 @@
 //! Analysis that the app shows and the tests assert: counts, the fillet radius reached
-//! along an edge, mean curvature per vertex, faces that pass through each other. Flipped and
+//! along an edge, mean curvature per vertex, faces that pass through each other, the winding number about a point. Flipped and
 //! degenerate faces are found by each step ([`crate::step::check_children`]).
 
 mod counts;
@@ -7,8 +7,10 @@ mod crossings;
 mod curvature;
 mod face_grid;
 mod fillet;
+mod winding;
 
 pub use counts::{MeshCounts, counts};
 pub use crossings::{crossing_faces, crossings, triangles_cross};
 pub use curvature::mean_curvature;
 pub use fillet::{FilletError, FilletMeasure, FilletSummary, measure_fillet, measure_fillets};
+pub use winding::{Inside, winding_number};

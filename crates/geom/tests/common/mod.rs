@@ -14,26 +14,6 @@ pub fn jitter(m: &mut PolyMesh, offsets: &[f64]) {
     }
 }
 
-/// Signed solid angle sum / 4π: the winding number of the closed mesh `m` about `p`.
-#[allow(dead_code)] // not every test crate that includes this module uses it
-pub fn winding(m: &PolyMesh, p: DVec3) -> f64 {
-    let mut w = 0.0;
-    for f in 0..m.num_faces() {
-        let vs: Vec<DVec3> = m
-            .face_corners(f)
-            .map(|c| m.positions[m.corner_verts[c] as usize] - p)
-            .collect();
-        for k in 1..vs.len() - 1 {
-            let (a, b, c) = (vs[0], vs[k], vs[k + 1]);
-            let (la, lb, lc) = (a.length(), b.length(), c.length());
-            let num = a.dot(b.cross(c));
-            let den = la * lb * lc + a.dot(b) * lc + b.dot(c) * la + c.dot(a) * lb;
-            w += 2.0 * num.atan2(den);
-        }
-    }
-    w / (4.0 * std::f64::consts::PI)
-}
-
 /// `n` cubes of side 2 (the library cube at scale 1) spread evenly over a sphere of radius
 /// 1.2 √n (a Fibonacci lattice, about 4.3 apart), each a corner of the hull of the centres;
 /// cube i turned by `turn_deg` · i about x. The envelope benchmark's scenes of many primitives

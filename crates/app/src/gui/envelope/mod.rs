@@ -451,12 +451,9 @@ impl EnvelopeTab {
                     e.patches.len(),
                     m.num_faces()
                 ));
-                if !e.removed.is_empty() {
-                    ui.label(format!(
-                        "swallowed by the others (centre inside, or within r/10 of, the others' hull): primitive(s) {:?}",
-                        e.removed
-                    ))
-                    .on_hover_text("The paper cuts every primitive by the plane through its centre normal to each partner; these keep nothing (seed 004 §5.1.3)");
+                if let Some(note) = e.removed_note() {
+                    ui.label(note)
+                    .on_hover_text("The paper cuts every primitive by the plane through its centre normal to each partner; these keep nothing (seed 004 §5.1.3). A primitive inside a larger one's sphere whose shape lies inside the others' envelope is left out too: the strip between them would fold");
                 }
                 if let Some(p) = e.primitives.get(self.selected) {
                     ui.label(format!(

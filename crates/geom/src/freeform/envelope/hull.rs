@@ -376,14 +376,20 @@ fn hull_distance(p: DVec3, c: &[DVec3], l: &Layout) -> f64 {
         .fold(f64::INFINITY, f64::min)
 }
 
-/// The layout of primitives with centres `c` and sphere radii `r`, where a primitive whose
+/// The layout of the primitives `active` (ascending; the others are removed) with centres `c`
+/// and sphere radii `r`, where a primitive whose
 /// centre lies within `swallow × r` of the hull of the others' centres is swallowed too: its
 /// cone would be a sliver (a centre a hair off the line or plane of its neighbours) and its
 /// faces and the lids beside it thin strips that no patch split survives (envelope.md). One
 /// at a time, the nearest (relative to its r) first, so two close centres do not take each
 /// other out.
-pub fn layout_swallowing(c: &[DVec3], r: &[f64], tol: f64, swallow: f64) -> Layout {
-    let mut active: Vec<usize> = (0..c.len()).collect();
+pub fn layout_swallowing(
+    c: &[DVec3],
+    r: &[f64],
+    mut active: Vec<usize>,
+    tol: f64,
+    swallow: f64,
+) -> Layout {
     loop {
         let l = layout_of(c, &active, tol);
         if l.kept.len() <= 2 {
@@ -508,12 +514,15 @@ mod tests {
     fn a_centre_a_hair_off_its_neighbours_line_is_swallowed() {
         let c = [v(0., 0., 0.), v(3., 0.05, 0.), v(6., 0., 0.)];
         let r = [1.7; 3];
-        let l = layout_swallowing(&c, &r, 1e-9, 0.1);
+        let l = layout_swallowing(&c, &r, (0..c.len()).collect(), 1e-9, 0.1);
         assert_eq!(l.kept, vec![0, 2]);
         assert_eq!(l.removed, vec![1]);
         // Well off the line it stays.
         let c = [v(0., 0., 0.), v(3., 0.5, 0.), v(6., 0., 0.)];
-        assert_eq!(layout_swallowing(&c, &r, 1e-9, 0.1).kept, vec![0, 1, 2]);
+        assert_eq!(
+            layout_swallowing(&c, &r, (0..c.len()).collect(), 1e-9, 0.1).kept,
+            vec![0, 1, 2]
+        );
         // Two close centres do not take each other out.
         let c = [
             v(0., 0., 0.),
@@ -521,7 +530,7 @@ mod tests {
             v(4.05, 0.05, 0.),
             v(2., 3., 0.),
         ];
-        let l = layout_swallowing(&c, &[1.7; 4], 1e-9, 0.1);
+        let l = layout_swallowing(&c, &[1.7; 4], (0..c.len()).collect(), 1e-9, 0.1);
         assert_eq!(l.kept.len(), 3, "{l:?}");
         // A centre just above the middle of a facet goes; one at a corner stays.
         let c = [
@@ -531,7 +540,7 @@ mod tests {
             v(0., 0., 4.),
             v(1.4, 1.4, 1.4),
         ];
-        let l = layout_swallowing(&c, &[1.7; 5], 1e-9, 0.1);
+        let l = layout_swallowing(&c, &[1.7; 5], (0..c.len()).collect(), 1e-9, 0.1);
         assert_eq!(l.kept, vec![0, 1, 2, 3]);
     }
 

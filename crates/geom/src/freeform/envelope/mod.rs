@@ -8,7 +8,8 @@
 //! [`tessellate`] welds them into a closed outward mesh.
 //!
 //! Any number of primitives: the hull of their centres ([`hull`]) says which primitive is cut
-//! towards which (its hull neighbours) and which are swallowed; each kept primitive is clipped
+//! towards which (its hull neighbours) and which are swallowed ([`nested`] leaves out, too, a
+//! primitive inside a larger one's sphere and the others' envelope); each kept primitive is clipped
 //! by its silhouette planes ([`clip`]); the facing sections of every hull edge are joined by
 //! fusion edges and quads ([`fusion`]), and every hull facet is a lid bounded by the fusion
 //! edges at its ray.
@@ -19,6 +20,7 @@ pub mod edges;
 pub mod folds;
 pub mod fusion;
 pub mod hull;
+pub mod nested;
 pub mod network;
 pub mod patches;
 pub mod primitive;
@@ -89,7 +91,9 @@ pub struct Envelope {
     /// Faces of the network before the n-sided split.
     pub regions: usize,
     pub patches: Vec<EnvelopePatch>,
-    /// Primitives swallowed by the others (indices in the scene).
+    /// Primitives swallowed by the others (indices in the scene): centre not a corner of the
+    /// hull of the centres, or within a tenth of its radius of the others' hull ([`hull`]), or
+    /// nested in a larger one and inside the others' envelope ([`nested`]).
     pub removed: Vec<usize>,
     /// The straight edges of the sections (§5.1.3), from a kept primitive's centre to where two
     /// of its silhouette planes cross its surface: inside the solid, for display only.
@@ -124,8 +128,6 @@ pub fn envelope(spec: &EnvelopeSpec) -> Result<Envelope, EnvelopeError> {
     if primitives.is_empty() {
         return Err(EnvelopeError::Empty);
     }
-    let centres: Vec<DVec3> = primitives.iter().map(|p| p.centre).collect();
-    let largest = primitives.iter().map(|p| p.radius).fold(0.0, f64::max);
     for (a, pa) in primitives.iter().enumerate() {
         for (b, pb) in primitives.iter().enumerate().skip(a + 1) {
             if pa.centre.distance(pb.centre) <= 1e-9 * pa.radius.max(pb.radius) {
@@ -133,12 +135,41 @@ pub fn envelope(spec: &EnvelopeSpec) -> Result<Envelope, EnvelopeError> {
             }
         }
     }
+    let without = |left_out: &[usize]| -> Vec<usize> {
+        (0..primitives.len())
+            .filter(|i| left_out.binary_search(i).is_err())
+            .collect()
+    };
+    let candidates = nested::candidates(&primitives);
+    if candidates.is_empty() {
+        let all = without(&[]);
+        return assemble(spec, primitives, all);
+    }
+    // The envelope without every candidate is the answer when all of them lie inside it.
+    let rest = assemble(spec, primitives.clone(), without(&candidates))?;
+    let inside = nested::inside(spec, &primitives, &rest, &candidates);
+    if inside.len() == candidates.len() {
+        return Ok(rest);
+    }
+    let active = without(&inside);
+    assemble(spec, primitives, active)
+}
+
+/// The envelope of the primitives `active` (ascending) of `primitives`, the others reported
+/// as removed.
+fn assemble(
+    spec: &EnvelopeSpec,
+    primitives: Vec<Primitive>,
+    active: Vec<usize>,
+) -> Result<Envelope, EnvelopeError> {
+    let centres: Vec<DVec3> = primitives.iter().map(|p| p.centre).collect();
+    let largest = primitives.iter().map(|p| p.radius).fold(0.0, f64::max);
     let extent = centres
         .iter()
         .map(|c| c.distance(centres[0]))
         .fold(largest, f64::max);
     let radii: Vec<f64> = primitives.iter().map(|p| p.radius).collect();
-    let lay = hull::layout_swallowing(&centres, &radii, 1e-9 * extent, SWALLOW);
+    let lay = hull::layout_swallowing(&centres, &radii, active, 1e-9 * extent, SWALLOW);
     let mut network = Network::default();
     let mut sections: HashMap<(usize, usize), Vec<PatchSide>> = HashMap::new();
     for &a in &lay.kept {
@@ -238,6 +269,18 @@ impl Envelope {
     /// The folded cells of its patches ([`folds::folds`], [`folds::FOLD_CELLS`] a side).
     pub fn folds(&self) -> Vec<folds::Fold> {
         folds::folds(&self.network, &self.patches, folds::FOLD_CELLS)
+    }
+
+    /// The note naming the swallowed primitives (none when none is).
+    pub fn removed_note(&self) -> Option<String> {
+        if self.removed.is_empty() {
+            return None;
+        }
+        let list: Vec<String> = self.removed.iter().map(|i| i.to_string()).collect();
+        Some(format!(
+            "swallowed by the others (centre inside, or within r/10 of, the hull of the others' centres, or inside a larger primitive's sphere and the others' envelope; seed 004 §5.1.3): primitive(s) {}",
+            list.join(", ")
+        ))
     }
 
     /// The warning for `folds` (none when empty): how many cells of how many patches, and
