@@ -95,6 +95,9 @@ pub struct StepReport {
     pub capped_edges: usize,
     /// Faces whose chamfer distance or width (l, d) the clamp lowered.
     pub clamped_faces: usize,
+    /// Concave faces whose Doo–Sabin points the clamp took from the width offset, where eq. (1)
+    /// would turn a strip over (docs/algorithms/biquadratic.md, "Concave faces").
+    pub offset_faces: usize,
     /// Corners with a zero-length edge that stayed at their vertex.
     pub collapsed_corners: usize,
     /// Faces the combination rule moved into the vertex blend because their cut points
@@ -206,6 +209,7 @@ pub fn biquadratic_step_carrying(
         clamped: prep.clamped.clone(),
         capped_edges: prep.capped_edges,
         clamped_faces: prep.clamped_faces,
+        offset_faces: prep.offset_faces,
         collapsed_corners: rule_report.collapsed_corners,
         unfolded_faces: unfolded.len(),
         untangled,

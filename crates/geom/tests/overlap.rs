@@ -581,8 +581,10 @@ fn the_computer_room_smoothed_twice_rounds_through_level_six() {
 /// the rest Doo–Sabin's points on long concave faces). With the untangling's step held to the
 /// nearest neighbour: 40 and 47 (86 at any level); with its sound points left in place, 38
 /// and 45 (84); with a clamped radius a cap rather than an own radius, 35 and 43 (82); with
-/// the plain mean tried where the local steps fail, 32 and 42 (81). About 2 minutes in
-/// release; each mix unsound either way is printed.
+/// the plain mean tried where the local steps fail, 32 and 42 (81); with Doo–Sabin's width
+/// offset on concave faces 45 and 53, but 67 at any level (14 crossing before rounding instead
+/// of 39: mixes that stopped at their Doo–Sabin step now reach the rounding). About 2 minutes
+/// in release; each mix unsound either way is printed.
 #[test]
 #[ignore]
 fn random_mixes_of_steps() {
@@ -699,13 +701,63 @@ fn random_mixes_of_steps() {
         "{} of {tried} mixes unsound; counting faces that pass through each other too, {crossing_unsound} (and {crossed_before} crossed themselves before rounding)",
         unsound.len()
     );
-    assert!(unsound.len() <= 32, "{} of {tried}", unsound.len());
+    assert!(unsound.len() <= 45, "{} of {tried}", unsound.len());
     assert!(
-        crossing_unsound <= 42,
+        crossing_unsound <= 53,
         "{crossing_unsound} of {tried} with crossings"
     );
     assert!(
-        crossing_unsound + crossed_before <= 81,
+        crossing_unsound + crossed_before <= 67,
         "{crossing_unsound} + {crossed_before} of {tried} unsound at some level"
     );
+}
+
+/// Doo–Sabin on a long concave face (docs/algorithms/biquadratic.md, "Concave faces"): after
+/// the tripod's edges are rounded its bottom is an L whose vertex centroid lies in the notch,
+/// and eq. (1) sends the reflex corner's point out of the face and the arm ends' across their
+/// arms — 9 faces flipped at once, as printed. Clamped, the three L faces take the width
+/// offset: no face flipped and none through another, for three Doo–Sabin steps; a cube's
+/// convex faces keep eq. (1) bit for bit.
+#[test]
+fn doo_sabin_on_a_concave_face_takes_the_width_offset_when_clamped() {
+    let steps: Vec<Scheme> = "cylindrical:r=0.2,doo-sabin,doo-sabin,doo-sabin"
+        .split(',')
+        .map(|s| s.parse().unwrap())
+        .collect();
+    let printed = run(
+        primitives::tripod(),
+        EdgeAttrs::new(),
+        steps[..2].to_vec(),
+        Overlap::Refuse,
+    );
+    assert_eq!(
+        printed.levels()[2].report.as_ref().unwrap().flipped.len(),
+        9
+    );
+    let p = run(
+        primitives::tripod(),
+        EdgeAttrs::new(),
+        steps,
+        Overlap::Clamp,
+    );
+    assert_eq!(p.levels().len(), 5);
+    assert_sound(&p);
+    let offset: Vec<usize> = p.levels()[2..]
+        .iter()
+        .map(|l| l.report.as_ref().unwrap().offset_faces)
+        .collect();
+    assert_eq!(offset[0], 3, "{offset:?}");
+    for lv in &p.levels()[2..] {
+        assert!(prism_geom::analysis::crossings(&lv.mesh).is_empty());
+    }
+    let ds = vec![Scheme::Biquadratic(CornerRule::DooSabin); 2];
+    let a = run(
+        primitives::cube3(),
+        EdgeAttrs::new(),
+        ds.clone(),
+        Overlap::Clamp,
+    );
+    let b = run(primitives::cube3(), EdgeAttrs::new(), ds, Overlap::Refuse);
+    assert_eq!(a.levels()[2].report.as_ref().unwrap().offset_faces, 0);
+    assert!(a.levels()[2].mesh == b.levels()[2].mesh);
 }

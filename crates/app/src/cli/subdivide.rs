@@ -237,6 +237,12 @@ fn warn_level(k: usize, r: &StepReport, before: f64) {
             r.clamped_faces
         );
     }
+    if r.offset_faces > 0 {
+        eprintln!(
+            "note: level {k}: Doo–Sabin's width offset on {} concave face(s) whose eq. (1) points would turn a strip over (clamp)",
+            r.offset_faces
+        );
+    }
     if r.capped_edges > 0 {
         eprintln!(
             "note: level {k}: {} edge(s) cut narrower so that the cut faces keep their edges",

@@ -105,6 +105,15 @@ impl FaceMoves {
         }
     }
 
+    /// The width offset's moves on face `f` (one loop) of unit normal `normal`
+    /// ([`super::concave::width_offset`]).
+    fn load_width_offset(&mut self, m: &PolyMesh, normal: DVec3, f: usize) {
+        let (from, moves, reflex) = super::concave::width_offset(m, normal, f);
+        self.from = from;
+        self.moves = moves;
+        self.any_reflex = reflex;
+    }
+
     /// The largest α' ≤ `alpha` at which the face's new outline keeps at least a quarter of
     /// the face's narrowest width (the least distance from a corner to an edge not its own)
     /// all the way from α = 0: the outline cannot cross itself without a corner first
@@ -121,6 +130,25 @@ impl FaceMoves {
         let width = |s: f64| narrowest_width(&self.from, &self.moves, s, &loops);
         let keep = VECTOR_SUM_KEPT_WIDTH * width(0.0);
         largest_fitting(alpha, |s| width(s) >= keep)
+    }
+}
+
+impl FaceMoves {
+    /// As [`FaceMoves::clamped`], and every side of the new outline keeps at least a quarter
+    /// of its old side's length along it: a side that turns back flips the strip between it
+    /// and the next face's (Doo–Sabin's reflex corners).
+    fn clamped_keeping_sides(&self, m: &PolyMesh, f: usize, most: f64) -> f64 {
+        let n = self.from.len();
+        let sides = |s: f64| {
+            (0..n).all(|i| {
+                let j = (i + 1) % n;
+                let old = self.from[j] - self.from[i];
+                let new = old + s * (self.moves[j] - self.moves[i]);
+                new.dot(old) >= 0.25 * old.length_squared()
+            })
+        };
+        let s = largest_fitting(most, sides);
+        self.clamped(m, f, s)
     }
 }
 
@@ -146,6 +174,31 @@ fn vector_sum_alphas(input: &RuleInput, alpha: f64, reflex: ReflexMode) -> (Vec<
                 lowered += 1;
             }
             a
+        })
+        .collect();
+    (params, lowered)
+}
+
+/// Doo–Sabin's clamp ([`super::concave`]): on a face with a reflex corner where eq. (1) would
+/// turn a strip over, the share `s` ≤ 1 of the width offset that keeps the new outline a
+/// quarter of the face's narrowest width and every side a quarter of its length; −1 (eq. (1)
+/// as printed) on the others and on faces with holes. Also how many faces take the offset.
+pub(super) fn doo_sabin_shares(input: &RuleInput) -> (Vec<f64>, usize) {
+    let m = input.mesh;
+    let mut lowered = 0;
+    let mut fm = FaceMoves::default();
+    let params = (0..m.num_faces())
+        .map(|f| {
+            if m.face_has_holes(f) {
+                return -1.0;
+            }
+            fm.load_width_offset(m, input.normals[f], f);
+            if !fm.any_reflex || super::concave::doo_sabin_holds(m, input.normals[f], f) {
+                return -1.0;
+            }
+            let s = fm.clamped_keeping_sides(m, f, 1.0);
+            lowered += 1;
+            s
         })
         .collect();
     (params, lowered)
@@ -209,6 +262,7 @@ pub(super) fn face_params(input: &RuleInput, rule: &super::CornerRule) -> (Vec<f
         super::CornerRule::VectorSum { alpha, reflex } => {
             return vector_sum_alphas(input, alpha, reflex);
         }
+        super::CornerRule::DooSabin => return doo_sabin_shares(input),
         _ => return (Vec::new(), 0),
     };
     // Along-edge move per unit of the parameter at a convex corner (c = m₁·m₂ = −cos φ):

@@ -210,6 +210,7 @@ pub(super) fn prepare<'a>(
         cut_widths,
         face_params: Vec::new(),
         clamped_faces: 0,
+        offset_faces: 0,
         combination: p_flags,
         dissolved_edges,
         clamped,

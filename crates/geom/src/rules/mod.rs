@@ -24,6 +24,7 @@
 
 mod chamfer;
 pub mod combination;
+mod concave;
 mod cylindrical;
 mod doo_sabin;
 pub mod overlap;
@@ -335,6 +336,15 @@ fn face_points(
         }
         let l = m.face_loops(f).start;
         doo_sabin::loop_points(m, l, out, base);
+        if let Some(&s) = input.face_params.get(f)
+            && s >= 0.0
+        {
+            let (from, moves, _) = concave::width_offset(m, input.normals[f], f);
+            let start = m.loop_corners(l).start;
+            for i in 0..from.len() {
+                out[start + i - base] = from[i] + s * moves[i];
+            }
+        }
         return Ok(());
     }
     for c in m.face_corners(f) {

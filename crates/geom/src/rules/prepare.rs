@@ -32,6 +32,8 @@ pub struct Prepared<'a> {
     pub face_params: Vec<f64>,
     /// Faces whose l or d the clamp lowered.
     pub clamped_faces: usize,
+    /// Faces whose Doo–Sabin points the clamp took from the width offset (concave.rs).
+    pub offset_faces: usize,
     /// The combination run's flags on `mesh`, when this step continues a run.
     pub combination: Option<Vec<bool>>,
     /// Flat edges merged away.
@@ -98,6 +100,7 @@ fn plain<'a>(
         cut_widths: Vec::new(),
         face_params: Vec::new(),
         clamped_faces: 0,
+        offset_faces: 0,
         combination: None,
         dissolved_edges: 0,
         clamped: Vec::new(),
@@ -131,7 +134,11 @@ impl CornerRule {
         if options.overlap == super::Overlap::Clamp {
             let (params, lowered) = super::chamfer::face_params(&prep.input(), self);
             prep.face_params = params;
-            prep.clamped_faces = lowered;
+            if matches!(self, CornerRule::DooSabin) {
+                prep.offset_faces = lowered;
+            } else {
+                prep.clamped_faces = lowered;
+            }
         }
         Ok(prep)
     }

@@ -528,13 +528,20 @@ impl ModelTab {
 }
 
 /// What a step changed to keep its result sound, and its degenerate faces, for the status
-/// bar: the faces whose chamfer parameter the clamp lowered, the points the untangling moved.
+/// bar: the faces whose chamfer parameter the clamp lowered, the concave faces Doo–Sabin took
+/// the width offset on, the points the untangling moved.
 pub(crate) fn step_notes(r: &prism_geom::StepReport) -> String {
     let mut text = String::new();
     if r.clamped_faces > 0 {
         text += &format!(
             " — l, d or α lowered on {} face(s) (clamp)",
             r.clamped_faces
+        );
+    }
+    if r.offset_faces > 0 {
+        text += &format!(
+            " — Doo–Sabin's width offset on {} concave face(s) (clamp)",
+            r.offset_faces
         );
     }
     if r.untangled.points > 0 {
