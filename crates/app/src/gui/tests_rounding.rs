@@ -139,7 +139,8 @@ fn clamped_edges_are_highlighted_at_every_level() {
 }
 
 /// What the clamp and the untangling did is said in the status bar: the tripod's three
-/// L-shaped faces get a lower α at the app's default (clamping on), and the Computer room
+/// L-shaped faces get a lower α at the app's default (clamping on), and Doo–Sabin's width
+/// offset after a rounding (docs/algorithms/biquadratic.md, "Concave faces"), and the Computer room
 /// after combination (r = 0.4), Catmull–Clark and three combination steps (r = 0.3) has its
 /// folded slivers smoothed at level 5.
 #[test]
@@ -158,6 +159,8 @@ fn the_status_bar_says_what_the_clamp_and_the_untangling_did() {
     };
     let n = notes("tripod.obj", "vector-sum:alpha=0.2:reflex=inward", 1);
     assert!(n.contains("α lowered on 3 face(s)"), "{n}");
+    let n = notes("tripod.obj", "cylindrical:r=0.2,doo-sabin", 2);
+    assert!(n.contains("Doo–Sabin offset on 3 concave face(s)"), "{n}");
     let n = notes(
         "computer-room.obj",
         "combination:r=0.4,catmull-clark,combination:r=0.3,combination:r=0.3,combination:r=0.3",

@@ -539,10 +539,7 @@ pub(crate) fn step_notes(r: &prism_geom::StepReport) -> String {
         );
     }
     if r.offset_faces > 0 {
-        text += &format!(
-            " — Doo–Sabin's width offset on {} concave face(s) (clamp)",
-            r.offset_faces
-        );
+        text += &format!(" — Doo–Sabin offset on {} concave face(s)", r.offset_faces);
     }
     if r.untangled.points > 0 {
         text += &format!(
