@@ -6,7 +6,7 @@
 mod common;
 use prism_geom::freeform::envelope::network::RegionKind;
 use prism_geom::freeform::envelope::{
-    Envelope, EnvelopeSpec, Placement, PrimitiveInput, Shape, envelope,
+    Envelope, EnvelopeSpec, Placement, Primitive, PrimitiveInput, Shape, envelope,
 };
 use prism_geom::{DVec3, PolyMesh, Topology};
 
@@ -971,18 +971,18 @@ fn mixed_heap(rng: &mut Lcg, count: usize) -> Vec<PrimitiveInput> {
 /// Whether a primitive's centre lies inside the sphere of a larger one (envelope.md, "Nested
 /// primitives").
 fn has_nested_pair(prims: &[PrimitiveInput]) -> bool {
-    let centre = |p: &PrimitiveInput| {
-        p.vertices
+    let sphere: Vec<(DVec3, f64)> = prims
+        .iter()
+        .enumerate()
+        .map(|(i, p)| {
+            let p = Primitive::new(i, p, 1.0).unwrap();
+            (p.centre, p.radius)
+        })
+        .collect();
+    sphere.iter().any(|&(ca, ra)| {
+        sphere
             .iter()
-            .map(|v| DVec3::from_array(*v))
-            .sum::<DVec3>()
-            / p.vertices.len() as f64
-    };
-    let radius = |p: &PrimitiveInput| DVec3::from_array(p.vertices[0]).distance(centre(p));
-    prims.iter().any(|a| {
-        prims
-            .iter()
-            .any(|b| radius(a) < radius(b) && centre(a).distance(centre(b)) < radius(b))
+            .any(|&(cb, rb)| ra < rb && ca.distance(cb) < rb)
     })
 }
 

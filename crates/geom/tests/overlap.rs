@@ -720,26 +720,18 @@ fn random_mixes_of_steps() {
 /// convex faces keep eq. (1) bit for bit.
 #[test]
 fn doo_sabin_on_a_concave_face_takes_the_width_offset_when_clamped() {
-    let steps: Vec<Scheme> = "cylindrical:r=0.2,doo-sabin,doo-sabin,doo-sabin"
-        .split(',')
-        .map(|s| s.parse().unwrap())
-        .collect();
+    let s = steps("cylindrical:r=0.2,doo-sabin,doo-sabin,doo-sabin");
     let printed = run(
         primitives::tripod(),
         EdgeAttrs::new(),
-        steps[..2].to_vec(),
+        s[..2].to_vec(),
         Overlap::Refuse,
     );
     assert_eq!(
         printed.levels()[2].report.as_ref().unwrap().flipped.len(),
         9
     );
-    let p = run(
-        primitives::tripod(),
-        EdgeAttrs::new(),
-        steps,
-        Overlap::Clamp,
-    );
+    let p = run(primitives::tripod(), EdgeAttrs::new(), s, Overlap::Clamp);
     assert_eq!(p.levels().len(), 5);
     assert_sound(&p);
     let offset: Vec<usize> = p.levels()[2..]

@@ -40,6 +40,8 @@ pub fn winding_number(m: &PolyMesh, p: DVec3) -> f64 {
 /// the ray, so a point meets only those of its cell: about √T per side for T triangles.
 pub struct Inside {
     triangles: Vec<[DVec3; 3]>,
+    /// Two unit vectors spanning the plane normal to the ray.
+    frame: [DVec3; 2],
     /// The grid's corner, cell size and cells a side, in the plane normal to the ray.
     origin: DVec2,
     cell: f64,
@@ -55,15 +57,15 @@ const RAY: DVec3 = DVec3::new(
     0.616_314_432_069_866,
 );
 
-/// Coordinates in the plane normal to [`RAY`].
-fn across(p: DVec3) -> DVec2 {
-    let u = RAY.any_orthonormal_vector();
-    let v = RAY.cross(u);
-    DVec2::new(p.dot(u), p.dot(v))
+/// Coordinates in the plane normal to [`RAY`], on the unit vectors `frame`.
+fn across(frame: [DVec3; 2], p: DVec3) -> DVec2 {
+    DVec2::new(p.dot(frame[0]), p.dot(frame[1]))
 }
 
 impl Inside {
     pub fn new(m: &PolyMesh) -> Inside {
+        let u = RAY.any_orthonormal_vector();
+        let frame = [u, RAY.cross(u)];
         let mut triangles = Vec::with_capacity(2 * m.num_faces());
         for f in 0..m.num_faces() {
             let c: Vec<DVec3> = m
@@ -77,7 +79,7 @@ impl Inside {
         let boxes: Vec<(DVec2, DVec2)> = triangles
             .iter()
             .map(|t| {
-                let [a, b, c] = t.map(across);
+                let [a, b, c] = t.map(|p| across(frame, p));
                 (a.min(b).min(c), a.max(b).max(c))
             })
             .collect();
@@ -99,6 +101,7 @@ impl Inside {
         }
         Inside {
             triangles,
+            frame,
             origin: lo,
             cell,
             side,
@@ -108,7 +111,7 @@ impl Inside {
 
     /// Whether `p` lies inside the mesh.
     pub fn contains(&self, p: DVec3) -> bool {
-        let q = (across(p) - self.origin) / self.cell;
+        let q = (across(self.frame, p) - self.origin) / self.cell;
         if !(q.x >= 0.0 && q.y >= 0.0 && q.x < self.side as f64 && q.y < self.side as f64) {
             return false;
         }

@@ -105,15 +105,6 @@ impl FaceMoves {
         }
     }
 
-    /// The width offset's moves on face `f` (one loop) of unit normal `normal`
-    /// ([`super::concave::width_offset`]).
-    fn load_width_offset(&mut self, m: &PolyMesh, normal: DVec3, f: usize) {
-        let (from, moves, reflex) = super::concave::width_offset(m, normal, f);
-        self.from = from;
-        self.moves = moves;
-        self.any_reflex = reflex;
-    }
-
     /// The largest α' ≤ `alpha` at which the face's new outline keeps at least a quarter of
     /// the face's narrowest width (the least distance from a corner to an edge not its own)
     /// all the way from α = 0: the outline cannot cross itself without a corner first
@@ -131,9 +122,7 @@ impl FaceMoves {
         let keep = VECTOR_SUM_KEPT_WIDTH * width(0.0);
         largest_fitting(alpha, |s| width(s) >= keep)
     }
-}
 
-impl FaceMoves {
     /// As [`FaceMoves::clamped`], and every side of the new outline keeps at least a quarter
     /// of its old side's length along it: a side that turns back flips the strip between it
     /// and the next face's (Doo–Sabin's reflex corners).
@@ -185,23 +174,26 @@ fn vector_sum_alphas(input: &RuleInput, alpha: f64, reflex: ReflexMode) -> (Vec<
 /// as printed) on the others and on faces with holes. Also how many faces take the offset.
 pub(super) fn doo_sabin_shares(input: &RuleInput) -> (Vec<f64>, usize) {
     let m = input.mesh;
-    let mut lowered = 0;
+    let mut offset = 0;
     let mut fm = FaceMoves::default();
     let params = (0..m.num_faces())
         .map(|f| {
             if m.face_has_holes(f) {
                 return -1.0;
             }
-            fm.load_width_offset(m, input.normals[f], f);
-            if !fm.any_reflex || super::concave::doo_sabin_holds(m, input.normals[f], f) {
+            let n = input.normals[f];
+            let v = super::concave::corners(m, f);
+            if !super::concave::has_reflex_corner(&v, n) || super::concave::doo_sabin_holds(m, n, f)
+            {
                 return -1.0;
             }
-            let s = fm.clamped_keeping_sides(m, f, 1.0);
-            lowered += 1;
-            s
+            fm.moves = super::concave::width_offset(&v, n);
+            fm.from = v;
+            offset += 1;
+            fm.clamped_keeping_sides(m, f, 1.0)
         })
         .collect();
-    (params, lowered)
+    (params, offset)
 }
 
 /// The least distance from a corner of the outline `from + s·moves` (loops given as index

@@ -25,23 +25,35 @@ use glam::DVec3;
 /// nearly straight ones keep eq. (1), which handles them.
 const REFLEX_SIN: f64 = 0.17;
 
-/// The width offset's move of every corner of face `f` (one loop) of unit normal `n`, in the
-/// loop's order, and whether the face has a reflex corner.
-pub(super) fn width_offset(m: &PolyMesh, n: DVec3, f: usize) -> (Vec<DVec3>, Vec<DVec3>, bool) {
+/// The corners of face `f` (its one loop), in the loop's order.
+pub(super) fn corners(m: &PolyMesh, f: usize) -> Vec<DVec3> {
     let l = m.face_loops(f).start;
-    let vs = m.loop_verts(l);
-    let k = vs.len();
-    let v: Vec<DVec3> = vs.iter().map(|&i| m.positions[i as usize]).collect();
+    m.loop_verts(l)
+        .iter()
+        .map(|&i| m.positions[i as usize])
+        .collect()
+}
+
+/// Whether the outline `v` (a face of unit normal `n`) has a corner reflex by more than
+/// [`REFLEX_SIN`]'s angle.
+pub(super) fn has_reflex_corner(v: &[DVec3], n: DVec3) -> bool {
+    let k = v.len();
+    (0..k).any(|i| {
+        let (e1, e2) = (v[(i + 1) % k] - v[i], v[(i + k - 1) % k] - v[i]);
+        n.dot(e1.cross(e2)) < -REFLEX_SIN * e1.length() * e2.length()
+    })
+}
+
+/// The width offset's move of every corner of the outline `v` (a face of unit normal `n`), in
+/// its order.
+pub(super) fn width_offset(v: &[DVec3], n: DVec3) -> Vec<DVec3> {
+    let k = v.len();
     let next = |i: usize| (i + 1) % k;
     let prev = |i: usize| (i + k - 1) % k;
     // Side i runs from v[i] to v[i + 1]; its inward unit normal.
     let inward: Vec<DVec3> = (0..k)
         .map(|i| n.cross(v[next(i)] - v[i]).normalize_or_zero())
         .collect();
-    let reflex = (0..k).any(|i| {
-        let (e1, e2) = (v[next(i)] - v[i], v[prev(i)] - v[i]);
-        n.dot(e1.cross(e2)) < -REFLEX_SIN * e1.length() * e2.length()
-    });
     let width: Vec<f64> = (0..k)
         .map(|i| {
             let (a, b) = (v[i], v[next(i)]);
@@ -60,7 +72,7 @@ pub(super) fn width_offset(m: &PolyMesh, n: DVec3, f: usize) -> (Vec<DVec3>, Vec
             w
         })
         .collect();
-    let moves = (0..k)
+    (0..k)
         .map(|i| {
             let (s1, s2) = (prev(i), i);
             let (m1, m2) = (inward[s1], inward[s2]);
@@ -77,8 +89,7 @@ pub(super) fn width_offset(m: &PolyMesh, n: DVec3, f: usize) -> (Vec<DVec3>, Vec
                 (d1 * (m1 - c * m2) + d2 * (m2 - c * m1)) / det
             }
         })
-        .collect();
-    (v, moves, reflex)
+        .collect()
 }
 
 /// Whether eq. (1) keeps face `f` (one loop, unit normal `n`) sound: every point on the inner
@@ -86,9 +97,8 @@ pub(super) fn width_offset(m: &PolyMesh, n: DVec3, f: usize) -> (Vec<DVec3>, Vec
 /// old side runs.
 pub(super) fn doo_sabin_holds(m: &PolyMesh, n: DVec3, f: usize) -> bool {
     let l = m.face_loops(f).start;
-    let vs = m.loop_verts(l);
-    let k = vs.len();
-    let v: Vec<DVec3> = vs.iter().map(|&i| m.positions[i as usize]).collect();
+    let v = corners(m, f);
+    let k = v.len();
     let mut p = vec![DVec3::ZERO; k];
     super::doo_sabin::loop_points(m, l, &mut p, m.loop_corners(l).start);
     (0..k).all(|i| {
@@ -113,8 +123,9 @@ mod tests {
     #[test]
     fn on_a_parallelogram_the_width_offset_is_doo_sabin() {
         let m = face(&[[0.0, 0.0], [3.0, 0.0], [4.0, 1.5], [1.0, 1.5]]);
-        let (v, moves, reflex) = width_offset(&m, DVec3::Z, 0);
-        assert!(!reflex);
+        let v = corners(&m, 0);
+        assert!(!has_reflex_corner(&v, DVec3::Z));
+        let moves = width_offset(&v, DVec3::Z);
         let mut ds = vec![DVec3::ZERO; 4];
         crate::rules::doo_sabin::loop_points(&m, 0, &mut ds, 0);
         for i in 0..4 {
@@ -132,8 +143,9 @@ mod tests {
         let (a, b, c) = (0.117, 0.883, 2.883);
         let m = face(&[[a, a], [c, a], [c, b], [b, b], [b, c], [a, c]]);
         assert!(!doo_sabin_holds(&m, DVec3::Z, 0));
-        let (v, moves, reflex) = width_offset(&m, DVec3::Z, 0);
-        assert!(reflex);
+        let v = corners(&m, 0);
+        assert!(has_reflex_corner(&v, DVec3::Z));
+        let moves = width_offset(&v, DVec3::Z);
         let (q, e) = (0.25 * (b - a), 0.25 * (c - b));
         let want = [
             [a + q, a + q],

@@ -142,7 +142,9 @@ pub struct RuleInput<'a> {
     pub normals: &'a [DVec3],
     /// Per-edge cut width for the cylindrical family (empty otherwise).
     pub cut_widths: &'a [f64],
-    /// Per-face l, d or α of a clamped chamfer (empty: the rule's own everywhere).
+    /// Per-face l, d or α of a clamped chamfer (empty: the rule's own everywhere); for a clamped
+    /// Doo–Sabin step, the share of the width offset a concave face takes (concave.rs), negative
+    /// where eq. (1) holds.
     pub face_params: &'a [f64],
     /// Per-face vertex-neighbourhood flag for the combination rule.
     pub vertex_neighbourhood: &'a [bool],
@@ -335,15 +337,16 @@ fn face_points(
             return Err(RuleError::HoledFace { face: f as u32 });
         }
         let l = m.face_loops(f).start;
-        doo_sabin::loop_points(m, l, out, base);
-        if let Some(&s) = input.face_params.get(f)
-            && s >= 0.0
-        {
-            let (from, moves, _) = concave::width_offset(m, input.normals[f], f);
-            let start = m.loop_corners(l).start;
-            for i in 0..from.len() {
-                out[start + i - base] = from[i] + s * moves[i];
+        match input.face_params.get(f) {
+            Some(&s) if s >= 0.0 => {
+                let from = concave::corners(m, f);
+                let moves = concave::width_offset(&from, input.normals[f]);
+                let start = m.loop_corners(l).start - base;
+                for (i, (v, d)) in from.iter().zip(&moves).enumerate() {
+                    out[start + i] = *v + s * *d;
+                }
             }
+            _ => doo_sabin::loop_points(m, l, out, base),
         }
         return Ok(());
     }

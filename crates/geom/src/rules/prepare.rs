@@ -28,7 +28,8 @@ pub struct Prepared<'a> {
     pub normals: Vec<DVec3>,
     /// Per-edge cut widths (cylindrical family; empty otherwise).
     pub cut_widths: Vec<f64>,
-    /// Per-face l or d of a clamped absolute chamfer (empty otherwise).
+    /// Per-face l, d or α of a clamped chamfer, or Doo–Sabin's width-offset share (negative:
+    /// eq. (1)); empty otherwise ([`super::RuleInput::face_params`]).
     pub face_params: Vec<f64>,
     /// Faces whose l or d the clamp lowered.
     pub clamped_faces: usize,
