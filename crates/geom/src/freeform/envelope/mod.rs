@@ -146,7 +146,11 @@ pub fn envelope(spec: &EnvelopeSpec) -> Result<Envelope, EnvelopeError> {
         return assemble(spec, primitives, all);
     }
     // The envelope without every candidate is the answer when all of them lie inside it.
-    let rest = assemble(spec, primitives.clone(), without(&candidates))?;
+    // Should that scene fail to build, the scene as given decides, candidates kept.
+    let Ok(rest) = assemble(spec, primitives.clone(), without(&candidates)) else {
+        let all = without(&[]);
+        return assemble(spec, primitives, all);
+    };
     let inside = nested::inside(spec, &primitives, &rest, &candidates);
     if inside.len() == candidates.len() {
         return Ok(rest);
