@@ -2,7 +2,7 @@
 //! (docs/performance.md): network and patches (`envelope`, what `time_ms=` reports) and, apart,
 //! the K = 8 tessellation, for one cube (6 patches), one hexagonal prism (18), two cubes side by
 //! side (14), two cubes on a body diagonal (54) and the bundled scenes like the paper's Table 2
-//! (five primitives: 82 patches; seven: 130), and 20, 50 and 100 cubes on a sphere (all kept:
+//! (five primitives: 81 patches; seven: 135), and 20, 50 and 100 cubes on a sphere (all kept:
 //! 376, 842 and 1,697 patches). Time per patch is the figure to compare as scenes grow.
 
 use prism_geom::freeform::envelope::{EnvelopeSpec, Placement, PrimitiveInput, Shape, envelope};

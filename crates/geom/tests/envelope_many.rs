@@ -1105,3 +1105,53 @@ fn a_primitive_nested_in_another_is_left_out() {
         }
     }
 }
+
+/// Two sections with points at nearly equal polar angles (under 0.02 rad apart) pair them as
+/// they are instead of inserting a T-point for each (envelope.md, "Nearly equal angles"): in
+/// heap 500073 of the mixed survey (five primitives) that left a fusion quad 0.003 and 0.005
+/// wide at its ends and 2.55 long, which folded 38 cells at t = 0.5 and crossed itself. No
+/// fold and no crossing from t = 1 to 0.5, whatever the listing, and one fusion quad fewer
+/// whose loop sides are both under 0.01.
+#[test]
+fn nearly_equal_angles_pair_without_a_sliver() {
+    let spec: EnvelopeSpec =
+        serde_json::from_str(include_str!("data/envelope/near-angle-heap.envelope.json")).unwrap();
+    for t in [1.0, 0.7, 0.5] {
+        for reversed in [false, true] {
+            let mut prims = spec.primitives.clone();
+            if reversed {
+                prims.reverse();
+            }
+            let e = build(prims, t);
+            assert!(e.folds().is_empty(), "t = {t}, reversed {reversed}");
+            let m = e.tessellate(8).unwrap();
+            assert!(
+                prism_geom::freeform::envelope::folds::crossings(&m).is_empty(),
+                "t = {t}, reversed {reversed}"
+            );
+            let net = &e.network;
+            let thinnest = net
+                .regions
+                .iter()
+                .filter(|r| matches!(r.kind, RegionKind::Fusion))
+                .map(|r| {
+                    [0, 2]
+                        .map(|k| {
+                            let s = &r.sides[k];
+                            let c = &net.curves[s.curve].bezier;
+                            c.eval(s.t0).distance(c.eval(s.t1))
+                        })
+                        .into_iter()
+                        .fold(0.0, f64::max)
+                })
+                .filter(|&w| w < 0.01)
+                .collect::<Vec<_>>();
+            // The two left are short silhouette edges of both sections at one angle (no
+            // T-point on either side); the third, a T-point 0.005 from a vertex, is gone.
+            assert!(
+                thinnest.len() <= 2,
+                "t = {t}: fusion quads {thinnest:?} wide"
+            );
+        }
+    }
+}

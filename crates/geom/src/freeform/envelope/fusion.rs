@@ -34,6 +34,12 @@ use std::f64::consts::{PI, TAU};
 /// Angles closer than this (radians) are one.
 const SAME_ANGLE: f64 = 1e-9;
 
+/// A point of one section and one of the other whose angles are closer than this (radians),
+/// each the other's nearest with nothing between, are a vertex pair as they are: inserting a
+/// T-point for each would leave a fusion quad this thin between them (envelope.md, "Nearly
+/// equal angles").
+const NEAR_ANGLE: f64 = 0.02;
+
 /// How far (radians) a chain's end may lie from its ray (rounding only: both are where the
 /// same two cuts cross).
 const END_ANGLE: f64 = 1e-7;
@@ -182,6 +188,49 @@ fn walk(
     Walk { pieces }
 }
 
+/// The places of `ua` and `ub` (angles when `circular`, else normalised parameters) closer than
+/// `near` but not equal, each the other's nearest in the other list, with no place of either
+/// list between them: (A's, B's). Symmetric in the two lists, so independent of which
+/// primitive is A.
+fn nearly_equal(ua: &[f64], ub: &[f64], near: f64, circular: bool) -> Vec<(f64, f64)> {
+    let gap = |x: f64, y: f64| {
+        if circular {
+            let o = (x - y).rem_euclid(TAU);
+            o.min(TAU - o)
+        } else {
+            (x - y).abs()
+        }
+    };
+    let nearest = |x: f64, set: &[f64]| {
+        set.iter()
+            .copied()
+            .min_by(|p, q| gap(x, *p).total_cmp(&gap(x, *q)))
+    };
+    let mut out = Vec::new();
+    for &a in ua {
+        let Some(b) = nearest(a, ub) else { continue };
+        let g = gap(a, b);
+        if g >= near
+            || same(a, b)
+            || ub.iter().any(|&x| same(x, a))
+            || ua.iter().any(|&x| same(x, b))
+        {
+            continue;
+        }
+        if nearest(b, ua).is_none_or(|back| !same(back, a)) {
+            continue;
+        }
+        let between = ua
+            .iter()
+            .chain(ub)
+            .any(|&z| !same(z, a) && !same(z, b) && gap(z, a) < g && gap(z, b) < g);
+        if !between {
+            out.push((a, b));
+        }
+    }
+    out
+}
+
 /// The fusion edge from network vertex p (on A's section, centre `ga`) to q (on B's, `gb`).
 fn fusion_edge(net: &mut Network, p: usize, q: usize, d: DVec3, (ga, gb): (DVec3, DVec3)) -> usize {
     let (pp, pq) = (net.vertices[p].position, net.vertices[q].position);
@@ -252,11 +301,21 @@ pub fn fuse(
         (u, range)
     };
     let ((ua, ra), (ub, rb)) = (place(net, sa, ga), place(net, sb, gb));
+    // Nearly equal places of the two sections, paired as they are (A's, B's).
+    let near = if span.is_some() {
+        NEAR_ANGLE / (ra.1 - ra.0).max(rb.1 - rb.0).max(NEAR_ANGLE)
+    } else {
+        NEAR_ANGLE
+    };
+    let matched = nearly_equal(&ua, &ub, near, span.is_none());
     let missing = |have: &[f64], other: &[f64], r: (f64, f64)| -> Vec<f64> {
         other
             .iter()
             .copied()
-            .filter(|&x| !have.iter().any(|&h| same(h, x)))
+            .filter(|&x| {
+                !have.iter().any(|&h| same(h, x))
+                    && !matched.iter().any(|&(a, b)| same(a, x) || same(b, x))
+            })
             .map(|x| {
                 if span.is_some() {
                     (base + r.0 + x * (r.1 - r.0)).rem_euclid(TAU)
@@ -284,10 +343,16 @@ pub fn fuse(
     let (shift, count) = match span {
         None => {
             // Whole loops: start B where its angle is A's first.
+            let a0 = wa.pieces[0].1.angle;
             let shift = wb
                 .pieces
                 .iter()
-                .position(|(_, q, _)| same(q.angle, wa.pieces[0].1.angle))
+                .position(|(_, q, _)| {
+                    same(q.angle, a0)
+                        || matched
+                            .iter()
+                            .any(|&(a, b)| same(a, a0) && same(b, q.angle))
+                })
                 .unwrap_or(0);
             (shift, n)
         }
