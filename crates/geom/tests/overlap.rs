@@ -701,13 +701,13 @@ fn random_mixes_of_steps() {
         "{} of {tried} mixes unsound; counting faces that pass through each other too, {crossing_unsound} (and {crossed_before} crossed themselves before rounding)",
         unsound.len()
     );
-    assert!(unsound.len() <= 45, "{} of {tried}", unsound.len());
+    assert!(unsound.len() <= 39, "{} of {tried}", unsound.len());
     assert!(
-        crossing_unsound <= 53,
+        crossing_unsound <= 48,
         "{crossing_unsound} of {tried} with crossings"
     );
     assert!(
-        crossing_unsound + crossed_before <= 67,
+        crossing_unsound + crossed_before <= 62,
         "{crossing_unsound} + {crossed_before} of {tried} unsound at some level"
     );
 }
@@ -752,4 +752,28 @@ fn doo_sabin_on_a_concave_face_takes_the_width_offset_when_clamped() {
     let b = run(primitives::cube3(), EdgeAttrs::new(), ds, Overlap::Refuse);
     assert_eq!(a.levels()[2].report.as_ref().unwrap().offset_faces, 0);
     assert!(a.levels()[2].mesh == b.levels()[2].mesh);
+}
+
+/// The fold guard moves a flat face with a reflex corner into the vertex blend with Doo–Sabin's
+/// clamped points (docs/algorithms/cylindrical.md, "Fold guard"): after two inward vector sums
+/// the tripod's bottom is an L whose eq. (1) point at the reflex corner lands in the notch, at
+/// (1.096, 1.096). At the second combination step the guard moves that L, and with eq. (1) 9
+/// faces flipped there (6 EDGE-faces and 3 VERTEX-faces) and 78 pairs of faces crossed.
+#[test]
+fn the_fold_guard_moves_a_concave_face_with_the_width_offset() {
+    let text = "vector-sum:alpha=0.1:reflex=inward,vector-sum:alpha=0.2:reflex=inward,\
+                combination:r=0.1,combination:r=0.1";
+    let p = run(
+        primitives::tripod(),
+        EdgeAttrs::new(),
+        steps(text),
+        Overlap::Clamp,
+    );
+    assert_eq!(p.levels().len(), 5);
+    assert_sound(&p);
+    assert!(p.levels()[4].report.as_ref().unwrap().unfolded_faces > 0);
+    for (k, lv) in p.levels().iter().enumerate() {
+        let pairs = prism_geom::analysis::crossings(&lv.mesh).len();
+        assert_eq!(pairs, 0, "level {k}");
+    }
 }

@@ -178,22 +178,49 @@ pub(super) fn doo_sabin_shares(input: &RuleInput) -> (Vec<f64>, usize) {
     let mut fm = FaceMoves::default();
     let params = (0..m.num_faces())
         .map(|f| {
-            if m.face_has_holes(f) {
-                return -1.0;
-            }
-            let n = input.normals[f];
-            let v = super::concave::corners(m, f);
-            if !super::concave::has_reflex_corner(&v, n) || super::concave::doo_sabin_holds(m, n, f)
-            {
-                return -1.0;
-            }
-            fm.moves = super::concave::width_offset(&v, n);
-            fm.from = v;
-            offset += 1;
-            fm.clamped_keeping_sides(m, f, 1.0)
+            let s = doo_sabin_share(m, input.normals[f], f, false, &mut fm);
+            offset += usize::from(s >= 0.0);
+            s
         })
         .collect();
     (params, offset)
+}
+
+/// [`doo_sabin_shares`] for face `f` of unit normal `n`: the share of the width offset, or −1
+/// for eq. (1) as printed; with `flat_only`, −1 on a warped face too
+/// ([`super::concave::is_flat`]). `fm` is scratch space.
+fn doo_sabin_share(m: &PolyMesh, n: DVec3, f: usize, flat_only: bool, fm: &mut FaceMoves) -> f64 {
+    if m.face_has_holes(f) {
+        return -1.0;
+    }
+    let v = super::concave::corners(m, f);
+    if !super::concave::has_reflex_corner(&v, n)
+        || (flat_only && !super::concave::is_flat(&v, n))
+        || super::concave::doo_sabin_holds(m, n, f)
+    {
+        return -1.0;
+    }
+    fm.moves = super::concave::width_offset(&v, n);
+    fm.from = v;
+    fm.clamped_keeping_sides(m, f, 1.0)
+}
+
+/// Doo–Sabin's points of face `f` (unit normal `n`, one loop) written to `pts` (indexed by
+/// corner): the width offset's share where [`doo_sabin_shares`] gives one and the face is
+/// flat, else eq. (1). The combination rule's fold guard places a face it moves into the
+/// vertex blend so ([`super::unfold`]; cylindrical.md, "Fold guard").
+pub(super) fn offset_doo_sabin_points(m: &PolyMesh, n: DVec3, f: usize, pts: &mut [DVec3]) {
+    let mut fm = FaceMoves::default();
+    let s = doo_sabin_share(m, n, f, true, &mut fm);
+    let l = m.face_loops(f).start;
+    if s < 0.0 {
+        super::doo_sabin::loop_points(m, l, pts, 0);
+        return;
+    }
+    let start = m.loop_corners(l).start;
+    for (i, (v, d)) in fm.from.iter().zip(&fm.moves).enumerate() {
+        pts[start + i] = *v + s * *d;
+    }
 }
 
 /// The least distance from a corner of the outline `from + s·moves` (loops given as index

@@ -13,7 +13,9 @@
 //! itself (a bow-tie keeps a normal that agrees with its parent;
 //! [`crate::geometry::points_cross_themselves`]). A new face that would be
 //! flipped and has cut points in it joins the vertex neighbourhood: the faces that gave it
-//! cut points take Doo–Sabin points instead, which the blend uses anyway, and the check
+//! cut points take Doo–Sabin points instead, which the blend uses anyway (with the width
+//! offset on a flat face with a reflex corner where eq. (1) would leave it,
+//! [`super::concave`]), and the check
 //! repeats until no such face is left (each face moves at most once, so it ends). The moved
 //! faces stay in the neighbourhood for the rest of the run ([`super::CombinationState`]), as
 //! the paper's own marking would keep them. Where nothing folds — every solid the paper
@@ -23,7 +25,6 @@
 //! (cylindrical.md, "Spiky vertex faces"): acute corners make it a spiked star that is not
 //! flipped but whose Doo–Sabin points, at the next step, fold the edge faces beside it.
 
-use super::doo_sabin;
 use crate::geometry::points_cross_themselves;
 use crate::mesh::PolyMesh;
 use crate::topology::{NONE, Topology};
@@ -67,7 +68,9 @@ fn star_shaped(ring: &[DVec3], n: DVec3) -> bool {
 
 /// Moves to Doo–Sabin the faces of `mesh` whose cut points would fold a new face, rewriting
 /// their points in `pts` (indexed by corner). `flags` are the run's vertex-neighbourhood
-/// flags (empty: none); `normals` the unit face normals. Returns the faces moved, ascending.
+/// flags (empty: none); `normals` the unit face normals. A moved face with a reflex corner
+/// where eq. (1) would leave it takes the width offset instead
+/// ([`super::chamfer::offset_doo_sabin_points`]). Returns the faces moved, ascending.
 pub(crate) fn unfold(
     mesh: &PolyMesh,
     topo: &Topology,
@@ -160,7 +163,7 @@ pub(crate) fn unfold(
         }
         for f in 0..nf {
             if to_move[f] {
-                doo_sabin::loop_points(mesh, mesh.face_loops(f).start, pts, 0);
+                super::chamfer::offset_doo_sabin_points(mesh, normals[f], f, pts);
                 blend[f] = true;
                 moved.push(f as u32);
             }
