@@ -701,13 +701,13 @@ fn random_mixes_of_steps() {
         "{} of {tried} mixes unsound; counting faces that pass through each other too, {crossing_unsound} (and {crossed_before} crossed themselves before rounding)",
         unsound.len()
     );
-    assert!(unsound.len() <= 39, "{} of {tried}", unsound.len());
+    assert!(unsound.len() <= 37, "{} of {tried}", unsound.len());
     assert!(
-        crossing_unsound <= 48,
+        crossing_unsound <= 46,
         "{crossing_unsound} of {tried} with crossings"
     );
     assert!(
-        crossing_unsound + crossed_before <= 62,
+        crossing_unsound + crossed_before <= 60,
         "{crossing_unsound} + {crossed_before} of {tried} unsound at some level"
     );
 }
@@ -754,7 +754,7 @@ fn doo_sabin_on_a_concave_face_takes_the_width_offset_when_clamped() {
     assert!(a.levels()[2].mesh == b.levels()[2].mesh);
 }
 
-/// The fold guard moves a flat face with a reflex corner into the vertex blend with Doo–Sabin's
+/// The fold guard moves a face with a reflex corner into the vertex blend with Doo–Sabin's
 /// clamped points (docs/algorithms/cylindrical.md, "Fold guard"): after two inward vector sums
 /// the tripod's bottom is an L whose eq. (1) point at the reflex corner lands in the notch, at
 /// (1.096, 1.096). At the second combination step the guard moves that L, and with eq. (1) 9

@@ -187,27 +187,29 @@ pub(super) fn doo_sabin_shares(input: &RuleInput) -> (Vec<f64>, usize) {
 }
 
 /// [`doo_sabin_shares`] for face `f` of unit normal `n`: the share of the width offset, or −1
-/// for eq. (1) as printed; with `flat_only`, −1 on a warped face too
-/// ([`super::concave::is_flat`]). `fm` is scratch space.
-fn doo_sabin_share(m: &PolyMesh, n: DVec3, f: usize, flat_only: bool, fm: &mut FaceMoves) -> f64 {
+/// for eq. (1) as printed; with `near_only`, −1 too where an offset point would land farther
+/// from the face's centroid than its farthest corner ([`super::concave::stays_near`]). `fm` is
+/// scratch space.
+fn doo_sabin_share(m: &PolyMesh, n: DVec3, f: usize, near_only: bool, fm: &mut FaceMoves) -> f64 {
     if m.face_has_holes(f) {
         return -1.0;
     }
     let v = super::concave::corners(m, f);
-    if !super::concave::has_reflex_corner(&v, n)
-        || (flat_only && !super::concave::is_flat(&v, n))
-        || super::concave::doo_sabin_holds(m, n, f)
-    {
+    if !super::concave::has_reflex_corner(&v, n) || super::concave::doo_sabin_holds(m, n, f) {
         return -1.0;
     }
     fm.moves = super::concave::width_offset(&v, n);
     fm.from = v;
-    fm.clamped_keeping_sides(m, f, 1.0)
+    let s = fm.clamped_keeping_sides(m, f, 1.0);
+    if near_only && !super::concave::stays_near(&fm.from, &fm.moves, s) {
+        return -1.0;
+    }
+    s
 }
 
 /// Doo–Sabin's points of face `f` (unit normal `n`, one loop) written to `pts` (indexed by
-/// corner): the width offset's share where [`doo_sabin_shares`] gives one and the face is
-/// flat, else eq. (1). The combination rule's fold guard places a face it moves into the
+/// corner): the width offset's share where [`doo_sabin_shares`] gives one and its points stay
+/// near the face, else eq. (1). The combination rule's fold guard places a face it moves into the
 /// vertex blend so ([`super::unfold`]; cylindrical.md, "Fold guard").
 pub(super) fn offset_doo_sabin_points(m: &PolyMesh, n: DVec3, f: usize, pts: &mut [DVec3]) {
     let mut fm = FaceMoves::default();

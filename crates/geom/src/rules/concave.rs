@@ -14,9 +14,9 @@
 //! both of its corner's sides, so no strip along a side turns over; the move is then scaled
 //! down, as the vector sum's clamp is, until the new outline keeps a quarter of the face's
 //! narrowest width and every side a quarter of its length along itself. The combination
-//! rule's fold guard gives a flat face ([`is_flat`]) it moves into the vertex blend these
-//! points too; the blend's other faces keep eq. (1): the offset there was measured to break
-//! more mixes of steps than it mended.
+//! rule's fold guard gives a face it moves into the vertex blend these points too, where they
+//! stay near the face ([`stays_near`]); the blend's other faces keep eq. (1): the offset there
+//! was measured to break more mixes of steps than it mended.
 
 use crate::geometry::segment_distance;
 use crate::mesh::PolyMesh;
@@ -26,16 +26,16 @@ use glam::DVec3;
 /// nearly straight ones keep eq. (1), which handles them.
 const REFLEX_SIN: f64 = 0.17;
 
-/// A face the fold guard moves whose corners leave their mean plane by more than this share of
-/// its radius keeps eq. (1): on a warped sliver (a dart 0.03 in area that a Catmull–Clark step
-/// left on a chamfered tripod) the offset sides meet far outside the face.
-const FLAT: f64 = 1e-3;
-
-/// Whether the outline `v` (a face of unit normal `n`) lies in one plane to [`FLAT`].
-pub(super) fn is_flat(v: &[DVec3], n: DVec3) -> bool {
+/// Whether the outline `v` moved by `s × moves` keeps every point within the largest distance
+/// of a corner of `v` from its centroid. On a warped sliver (a dart 0.03 in area that a
+/// Catmull–Clark step left on a chamfered tripod) the offset sides meet 2.1 away, outside the
+/// face; the fold guard keeps eq. (1) there.
+pub(super) fn stays_near(v: &[DVec3], moves: &[DVec3], s: f64) -> bool {
     let c = v.iter().sum::<DVec3>() / v.len().max(1) as f64;
     let radius = v.iter().map(|p| p.distance(c)).fold(0.0, f64::max);
-    v.iter().all(|p| (*p - c).dot(n).abs() <= FLAT * radius)
+    v.iter()
+        .zip(moves)
+        .all(|(p, d)| (*p + s * *d).distance(c) <= radius)
 }
 
 /// The corners of face `f` (its one loop), in the loop's order.
