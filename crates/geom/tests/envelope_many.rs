@@ -1130,7 +1130,7 @@ fn nearly_equal_angles_pair_without_a_sliver() {
                 "t = {t}, reversed {reversed}"
             );
             let net = &e.network;
-            let thinnest = net
+            let thin = net
                 .regions
                 .iter()
                 .filter(|r| matches!(r.kind, RegionKind::Fusion))
@@ -1148,10 +1148,7 @@ fn nearly_equal_angles_pair_without_a_sliver() {
                 .collect::<Vec<_>>();
             // The two left are short silhouette edges of both sections at one angle (no
             // T-point on either side); the third, a T-point 0.005 from a vertex, is gone.
-            assert!(
-                thinnest.len() <= 2,
-                "t = {t}: fusion quads {thinnest:?} wide"
-            );
+            assert!(thin.len() <= 2, "t = {t}: fusion quads {thin:?} wide");
         }
     }
 }

@@ -14,8 +14,8 @@
 //! [`crate::geometry::points_cross_themselves`]). A new face that would be
 //! flipped and has cut points in it joins the vertex neighbourhood: the faces that gave it
 //! cut points take Doo–Sabin points instead, which the blend uses anyway (with the width
-//! offset on a flat face with a reflex corner where eq. (1) would leave it,
-//! [`super::concave`]), and the check
+//! offset on a face with a reflex corner where eq. (1) would leave it and the offset's points
+//! stay near it, [`super::concave`]), and the check
 //! repeats until no such face is left (each face moves at most once, so it ends). The moved
 //! faces stay in the neighbourhood for the rest of the run ([`super::CombinationState`]), as
 //! the paper's own marking would keep them. Where nothing folds — every solid the paper

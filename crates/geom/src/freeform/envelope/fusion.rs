@@ -210,11 +210,8 @@ fn nearly_equal(ua: &[f64], ub: &[f64], near: f64, circular: bool) -> Vec<(f64, 
     for &a in ua {
         let Some(b) = nearest(a, ub) else { continue };
         let g = gap(a, b);
-        if g >= near
-            || same(a, b)
-            || ub.iter().any(|&x| same(x, a))
-            || ua.iter().any(|&x| same(x, b))
-        {
+        // Either one equal to a place of the other list pairs as equal, not as near.
+        if g >= near || ub.iter().any(|&x| same(x, a)) || ua.iter().any(|&x| same(x, b)) {
             continue;
         }
         if nearest(b, ua).is_none_or(|back| !same(back, a)) {
