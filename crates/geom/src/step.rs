@@ -103,6 +103,9 @@ pub struct StepReport {
     /// Faces the combination rule moved into the vertex blend because their cut points
     /// would have folded a new face ([`rules::unfold`]).
     pub unfolded_faces: usize,
+    /// Blend faces with a reflex corner that the combination rule re-placed with Doo–Sabin's
+    /// width offset because a new face beside them was still flipped ([`rules::reoffset`]).
+    pub reoffset_faces: usize,
     /// What the combination rule's last resort did ([`rules::untangle`]): points of new
     /// faces still flipped after the fold guard, smoothed until none is, and how far.
     pub untangled: rules::Untangled,
@@ -187,6 +190,21 @@ pub fn biquadratic_step_carrying(
     // The combination rule's last resort, only where a new face is still flipped: the child's
     // vertex c is the parent's corner c, so its points are smoothed in place.
     let mut untangled = rules::Untangled::default();
+    let mut reoffset_faces = 0;
+    if is_combination && !checked.flipped.is_empty() {
+        // First the blend's faces with a reflex corner (rules::reoffset), then the smoothing.
+        reoffset_faces = rules::reoffset(
+            cur,
+            topo,
+            &prep.normals,
+            prep.input().vertex_neighbourhood,
+            &unfolded,
+            &mut out.positions,
+        );
+        if reoffset_faces > 0 {
+            checked = check_children(cur, topo, &prep.normals, &out, &prov);
+        }
+    }
     if is_combination && !checked.flipped.is_empty() {
         let corners: Vec<u32> = checked
             .flipped
@@ -212,6 +230,7 @@ pub fn biquadratic_step_carrying(
         offset_faces: prep.offset_faces,
         collapsed_corners: rule_report.collapsed_corners,
         unfolded_faces: unfolded.len(),
+        reoffset_faces,
         untangled,
         volume: checked.volume,
         millis: start.elapsed().as_secs_f64() * 1e3,

@@ -583,8 +583,10 @@ fn the_computer_room_smoothed_twice_rounds_through_level_six() {
 /// and 45 (84); with a clamped radius a cap rather than an own radius, 35 and 43 (82); with
 /// the plain mean tried where the local steps fail, 32 and 42 (81); with Doo–Sabin's width
 /// offset on concave faces 45 and 53, but 67 at any level (14 crossing before rounding instead
-/// of 39: mixes that stopped at their Doo–Sabin step now reach the rounding). About 2 minutes
-/// in release; each mix unsound either way is printed.
+/// of 39: mixes that stopped at their Doo–Sabin step now reach the rounding); with the fold
+/// guard moving faces with Doo–Sabin's clamped points, 37 and 46 (60); with blend faces
+/// re-placed with the width offset beside a fold, 22 and 32 (46). About 2 minutes in release;
+/// each mix unsound either way is printed.
 #[test]
 #[ignore]
 fn random_mixes_of_steps() {
@@ -701,13 +703,13 @@ fn random_mixes_of_steps() {
         "{} of {tried} mixes unsound; counting faces that pass through each other too, {crossing_unsound} (and {crossed_before} crossed themselves before rounding)",
         unsound.len()
     );
-    assert!(unsound.len() <= 37, "{} of {tried}", unsound.len());
+    assert!(unsound.len() <= 22, "{} of {tried}", unsound.len());
     assert!(
-        crossing_unsound <= 46,
+        crossing_unsound <= 32,
         "{crossing_unsound} of {tried} with crossings"
     );
     assert!(
-        crossing_unsound + crossed_before <= 60,
+        crossing_unsound + crossed_before <= 46,
         "{crossing_unsound} + {crossed_before} of {tried} unsound at some level"
     );
 }
@@ -772,6 +774,32 @@ fn the_fold_guard_moves_a_concave_face_with_the_width_offset() {
     assert_eq!(p.levels().len(), 5);
     assert_sound(&p);
     assert!(p.levels()[4].report.as_ref().unwrap().unfolded_faces > 0);
+    for (k, lv) in p.levels().iter().enumerate() {
+        let pairs = prism_geom::analysis::crossings(&lv.mesh).len();
+        assert_eq!(pairs, 0, "level {k}");
+    }
+}
+
+/// The fold guard's second pass re-places blend faces with a reflex corner (docs/algorithms/
+/// cylindrical.md, "Blend faces re-placed"): after a round of r = 0.1 and an inward vector sum
+/// (α = 0.2) the tripod's chamfered corner near the origin leaves, beside the bottom's convex
+/// corner, a chevron 4 × 10⁻³ wide in the blend whose eq. (1) point lands 0.1 outside it, over
+/// the bottom; at the second combination step (r = 0.2) the VERTEX-face there came out a
+/// dart, flipped, at each of the three such corners. With the chevron on the width offset
+/// none is flipped and no faces cross, and the step says how many faces it re-placed.
+#[test]
+fn blend_faces_beside_a_fold_take_the_width_offset() {
+    let text = "combination:r=0.1,vector-sum:alpha=0.2:reflex=inward,\
+                combination:r=0.2,combination:r=0.2";
+    let p = run(
+        primitives::tripod(),
+        EdgeAttrs::new(),
+        steps(text),
+        Overlap::Clamp,
+    );
+    assert_eq!(p.levels().len(), 5);
+    assert_sound(&p);
+    assert!(p.levels()[4].report.as_ref().unwrap().reoffset_faces > 0);
     for (k, lv) in p.levels().iter().enumerate() {
         let pairs = prism_geom::analysis::crossings(&lv.mesh).len();
         assert_eq!(pairs, 0, "level {k}");

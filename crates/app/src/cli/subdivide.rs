@@ -285,6 +285,12 @@ fn warn_level(k: usize, r: &StepReport, before: f64) {
             r.unfolded_faces
         );
     }
+    if r.reoffset_faces > 0 {
+        eprintln!(
+            "note: level {k}: {} blend face(s) with a reflex corner took Doo–Sabin's width offset because a new face beside them would have been flipped",
+            r.reoffset_faces
+        );
+    }
     if r.untangled.points > 0 {
         eprintln!(
             "note: level {k}: {} point(s) of folded sliver faces smoothed until none was flipped (largest move {:.3e})",

@@ -37,7 +37,7 @@ pub use combination::CombinationState;
 pub use cylindrical::{cut_width, dissolve_needed};
 pub use overlap::{EdgeFit, Overlap};
 pub use prepare::Prepared;
-pub(crate) use unfold::unfold;
+pub(crate) use unfold::{reoffset, unfold};
 pub use untangle::Untangled;
 pub(crate) use untangle::untangle;
 

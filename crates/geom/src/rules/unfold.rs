@@ -21,6 +21,9 @@
 //! the paper's own marking would keep them. Where nothing folds — every solid the paper
 //! shows — nothing changes.
 //!
+//! Where a new face is still flipped after the moves, [`reoffset`] tries the width offset on
+//! the blend's own faces around it, keeping it where fewer new faces fold.
+//!
 //! A VERTEX-face of five or more corners must also be star-shaped about its vertex centroid
 //! (cylindrical.md, "Spiky vertex faces"): acute corners make it a spiked star that is not
 //! flipped but whose Doo–Sabin points, at the next step, fold the edge faces beside it.
@@ -66,11 +69,83 @@ fn star_shaped(ring: &[DVec3], n: DVec3) -> bool {
     })
 }
 
+/// The new faces' checks, on the points `pts` (indexed by corner) of one level.
+struct Elements<'a> {
+    mesh: &'a PolyMesh,
+    topo: &'a Topology,
+    normals: &'a [DVec3],
+    vsum: Vec<DVec3>,
+}
+
+impl Elements<'_> {
+    /// Whether face `f`'s FACE-face folds: its Newell normal against the face's, or (one
+    /// loop) an outline that crosses itself. A face of no area has nothing to fold.
+    fn face_folds(&self, f: usize, pts: &[DVec3]) -> bool {
+        let m = self.mesh;
+        if self.normals[f] == DVec3::ZERO {
+            return false;
+        }
+        let n = m
+            .face_loops(f)
+            .map(|l| newell(pts, m.loop_corners(l).map(|c| c as u32)))
+            .sum::<DVec3>();
+        n.dot(self.normals[f]) < 0.0
+            || (m.face_loops(f).len() == 1 && points_cross_themselves(&pts[m.face_corners(f)], n))
+    }
+
+    /// Whether the EDGE-face of the edge whose first half-edge is `c` folds:
+    /// (next c, c, next t, t).
+    fn edge_folds(&self, c: u32, pts: &[DVec3]) -> bool {
+        let topo = self.topo;
+        let t = topo.twin[c as usize];
+        let (fa, fb) = (topo.corner_face(c as usize), topo.corner_face(t as usize));
+        let q = [topo.next(c as usize), c, topo.next(t as usize), t];
+        let n = newell(pts, q.iter().copied());
+        n.dot(self.normals[fa as usize] + self.normals[fb as usize]) < 0.0
+            || points_cross_themselves(&q.map(|c| pts[c as usize]), n)
+    }
+
+    /// The corners around vertex `v` in ring order (none for an unused vertex).
+    fn ring(&self, v: usize) -> impl Iterator<Item = u32> + Clone + '_ {
+        let start = self.topo.vert_corner[v];
+        std::iter::successors((start != NONE).then_some(start), move |&c| {
+            let n = self.topo.ring_next(c);
+            (n != start).then_some(n)
+        })
+    }
+
+    /// Whether vertex `v`'s VERTEX-face folds: reversed, not star-shaped about its centroid
+    /// (five corners or more), or crossing itself.
+    fn vertex_folds(&self, v: usize, pts: &[DVec3]) -> bool {
+        let at: Vec<DVec3> = self.ring(v).map(|c| pts[c as usize]).collect();
+        if at.is_empty() {
+            return false;
+        }
+        let n = newell_at(0..at.len() as u32, |i| at[i as usize]);
+        n.dot(self.vsum[v]) < 0.0 || !star_shaped(&at, n) || points_cross_themselves(&at, n)
+    }
+
+    /// How many of the new faces that take a point of face `f` fold: its FACE-face, the
+    /// EDGE-faces of its edges and the VERTEX-faces of its corners.
+    fn folds_around(&self, f: usize, pts: &[DVec3]) -> usize {
+        let m = self.mesh;
+        let mut n = usize::from(self.face_folds(f, pts));
+        for c in m.face_corners(f) {
+            let e = self.topo.corner_edge[c] as usize;
+            n += usize::from(self.edge_folds(self.topo.edge_corner[e], pts));
+            n += usize::from(self.vertex_folds(m.corner_verts[c] as usize, pts));
+        }
+        n
+    }
+}
+
 /// Moves to Doo–Sabin the faces of `mesh` whose cut points would fold a new face, rewriting
 /// their points in `pts` (indexed by corner). `flags` are the run's vertex-neighbourhood
 /// flags (empty: none); `normals` the unit face normals. A moved face with a reflex corner
 /// where eq. (1) would leave it takes the width offset instead
-/// ([`super::chamfer::offset_doo_sabin_points`]). Returns the faces moved, ascending.
+/// ([`super::chamfer::offset_doo_sabin_points`]); so, afterwards, does a face already in the
+/// blend where that leaves fewer of the new faces around it folded ([`reoffset`]). Returns
+/// the faces moved, ascending.
 pub(crate) fn unfold(
     mesh: &PolyMesh,
     topo: &Topology,
@@ -82,7 +157,12 @@ pub(crate) fn unfold(
     let mut blend: Vec<bool> = (0..nf)
         .map(|f| flags.get(f).copied().unwrap_or(false))
         .collect();
-    let vsum = crate::geometry::vertex_normal_sums(mesh, topo, normals);
+    let el = Elements {
+        mesh,
+        topo,
+        normals,
+        vsum: crate::geometry::vertex_normal_sums(mesh, topo, normals),
+    };
     let mut moved = Vec::new();
     loop {
         let mut to_move = vec![false; nf];
@@ -95,60 +175,31 @@ pub(crate) fn unfold(
                 *any = true;
             }
         };
-        // FACE-faces: the face's own points.
-        for f in 0..nf {
-            if blend[f] || normals[f] == DVec3::ZERO {
-                continue;
-            }
-            let n = mesh
-                .face_loops(f)
-                .map(|l| newell(pts, mesh.loop_corners(l).map(|c| c as u32)))
-                .sum::<DVec3>();
-            if n.dot(normals[f]) < 0.0
-                || (mesh.face_loops(f).len() == 1
-                    && points_cross_themselves(&pts[mesh.face_corners(f)], n))
-            {
+        for (f, &b) in blend.iter().enumerate() {
+            if !b && el.face_folds(f, pts) {
                 mark(f, &mut to_move, &mut any);
             }
         }
-        // EDGE-faces: (next c, c, next t, t).
         for &c in &topo.edge_corner {
             let t = topo.twin[c as usize];
             let (fa, fb) = (
                 topo.corner_face(c as usize) as usize,
                 topo.corner_face(t as usize) as usize,
             );
-            if blend[fa] && blend[fb] {
-                continue;
-            }
-            let q = [topo.next(c as usize), c, topo.next(t as usize), t];
-            let n = newell(pts, q.iter().copied());
-            if n.dot(normals[fa] + normals[fb]) < 0.0
-                || points_cross_themselves(&q.map(|c| pts[c as usize]), n)
-            {
+            if !(blend[fa] && blend[fb]) && el.edge_folds(c, pts) {
                 mark(fa, &mut to_move, &mut any);
                 mark(fb, &mut to_move, &mut any);
             }
         }
-        // VERTEX-faces: the corners at the vertex in ring order.
-        for (v, &start) in topo.vert_corner.iter().enumerate() {
-            if start == NONE {
-                continue;
-            }
-            let ring = std::iter::successors(Some(start), |&c| {
-                let n = topo.ring_next(c);
-                (n != start).then_some(n)
-            });
+        for v in 0..mesh.num_vertices() {
+            let ring = el.ring(v);
             if ring
                 .clone()
                 .all(|c| blend[topo.corner_face(c as usize) as usize])
             {
                 continue;
             }
-            // The ring walked once: its points serve all three tests.
-            let at: Vec<DVec3> = ring.clone().map(|c| pts[c as usize]).collect();
-            let n = newell_at(0..at.len() as u32, |i| at[i as usize]);
-            if n.dot(vsum[v]) < 0.0 || !star_shaped(&at, n) || points_cross_themselves(&at, n) {
+            if el.vertex_folds(v, pts) {
                 for c in ring {
                     mark(
                         topo.corner_face(c as usize) as usize,
@@ -171,6 +222,118 @@ pub(crate) fn unfold(
     }
     moved.sort_unstable();
     moved
+}
+
+/// Rounds of [`reoffset`].
+const REOFFSET_ROUNDS: usize = 4;
+
+/// The fold guard's second pass (cylindrical.md, "Fold guard", "Blend faces re-placed"),
+/// run by the step only when a new face is still flipped after [`unfold`]. The blend's faces
+/// keep eq. (1), which on a face with a reflex corner can carry that corner's point out of
+/// the face and fold a new face beside it. Each blend face (`flags`, and the faces `moved`)
+/// that gives a point to a folding new face and has not taken the width offset yet is tried
+/// with it ([`super::chamfer::offset_doo_sabin_points`]), every one against the same points
+/// (the numbering does not matter), and keeps it when fewer of the new faces around it fold
+/// — its FACE-face, the EDGE-faces of its edges, the VERTEX-faces of its corners, the only
+/// new faces its points are in. A round whose changes together fold more new faces than
+/// before is undone. `pts` are indexed by corner (the child's vertices of a dual quad split
+/// are the parent's corners). Returns the faces re-placed.
+pub(crate) fn reoffset(
+    mesh: &PolyMesh,
+    topo: &Topology,
+    normals: &[DVec3],
+    flags: &[bool],
+    moved: &[u32],
+    pts: &mut [DVec3],
+) -> usize {
+    let el = Elements {
+        mesh,
+        topo,
+        normals,
+        vsum: crate::geometry::vertex_normal_sums(mesh, topo, normals),
+    };
+    let nf = mesh.num_faces();
+    let mut blend: Vec<bool> = (0..nf)
+        .map(|f| flags.get(f).copied().unwrap_or(false))
+        .collect();
+    for &f in moved {
+        blend[f as usize] = true;
+    }
+    let mut replaced = 0;
+    let mut done = vec![false; nf];
+    for &f in moved {
+        done[f as usize] = true;
+    }
+    let folded = |pts: &[DVec3]| -> Vec<bool> {
+        // Faces that give a point to a folded new face.
+        let mut near: Vec<bool> = (0..nf).map(|f| el.face_folds(f, pts)).collect();
+        for &c in &topo.edge_corner {
+            if el.edge_folds(c, pts) {
+                near[topo.corner_face(c as usize) as usize] = true;
+                near[topo.corner_face(topo.twin[c as usize] as usize) as usize] = true;
+            }
+        }
+        for v in 0..mesh.num_vertices() {
+            if el.vertex_folds(v, pts) {
+                for c in el.ring(v) {
+                    near[topo.corner_face(c as usize) as usize] = true;
+                }
+            }
+        }
+        near
+    };
+    let total = |pts: &[DVec3]| -> usize {
+        (0..nf).filter(|&f| el.face_folds(f, pts)).count()
+            + topo
+                .edge_corner
+                .iter()
+                .filter(|&&c| el.edge_folds(c, pts))
+                .count()
+            + (0..mesh.num_vertices())
+                .filter(|&v| el.vertex_folds(v, pts))
+                .count()
+    };
+    for _ in 0..REOFFSET_ROUNDS {
+        let near = folded(pts);
+        let candidates: Vec<usize> = (0..nf)
+            .filter(|&f| near[f] && blend[f] && !done[f] && mesh.face_loops(f).len() == 1)
+            .collect();
+        if candidates.is_empty() {
+            return replaced;
+        }
+        let before = total(pts);
+        let mut trial = pts.to_vec();
+        let mut kept = Vec::new();
+        for &f in &candidates {
+            done[f] = true;
+            let corners = mesh.face_corners(f);
+            let old: Vec<DVec3> = trial[corners.clone()].to_vec();
+            super::chamfer::offset_doo_sabin_points(mesh, el.normals[f], f, &mut trial);
+            let new: Vec<DVec3> = trial[corners.clone()].to_vec();
+            if new == old {
+                continue;
+            }
+            let after = el.folds_around(f, &trial);
+            trial[corners.clone()].copy_from_slice(&old);
+            let was = el.folds_around(f, &trial);
+            if after < was {
+                kept.push((f, new));
+            }
+        }
+        if kept.is_empty() {
+            return replaced;
+        }
+        let saved = pts.to_vec();
+        for (f, new) in &kept {
+            pts[mesh.face_corners(*f)].copy_from_slice(new);
+        }
+        if total(pts) >= before {
+            pts.copy_from_slice(&saved);
+            return replaced;
+        }
+        replaced += kept.len();
+    }
+    replaced
 }
 
 #[cfg(test)]

@@ -529,7 +529,8 @@ impl ModelTab {
 
 /// What a step changed to keep its result sound, and its degenerate faces, for the status
 /// bar: the faces whose chamfer parameter the clamp lowered, the concave faces Doo–Sabin took
-/// the width offset on, the points the untangling moved.
+/// the width offset on (by the clamp, or by the fold guard beside a fold), the points the
+/// untangling moved.
 pub(crate) fn step_notes(r: &prism_geom::StepReport) -> String {
     let mut text = String::new();
     if r.clamped_faces > 0 {
@@ -540,6 +541,12 @@ pub(crate) fn step_notes(r: &prism_geom::StepReport) -> String {
     }
     if r.offset_faces > 0 {
         text += &format!(" — Doo–Sabin offset on {} concave face(s)", r.offset_faces);
+    }
+    if r.reoffset_faces > 0 {
+        text += &format!(
+            " — Doo–Sabin offset on {} blend face(s) beside a fold",
+            r.reoffset_faces
+        );
     }
     if r.untangled.points > 0 {
         text += &format!(
