@@ -305,7 +305,6 @@ pub(crate) fn reoffset(
         let mut trial = pts.to_vec();
         let mut kept = Vec::new();
         for &f in &candidates {
-            done[f] = true;
             let corners = mesh.face_corners(f);
             let old: Vec<DVec3> = trial[corners.clone()].to_vec();
             super::chamfer::offset_doo_sabin_points(mesh, el.normals[f], f, &mut trial);
@@ -317,6 +316,7 @@ pub(crate) fn reoffset(
             trial[corners.clone()].copy_from_slice(&old);
             let was = el.folds_around(f, &trial);
             if after < was {
+                done[f] = true;
                 kept.push((f, new));
             }
         }
