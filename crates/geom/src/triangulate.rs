@@ -7,7 +7,8 @@
 //! it is; a quad is cut along the diagonal that leaves both halves facing like the face (the
 //! one through its reflex corner when it is concave; 0–2 when both do), without the ear
 //! clipper's allocations — most faces of a refined level are quads; a face whose outline is
-//! too degenerate for ear clipping falls back to a fan, so it stays visible and keeps its area.
+//! too degenerate for ear clipping (or with a coordinate that is not finite) falls back to a
+//! fan, so it stays visible and keeps its area.
 
 use crate::geometry::{face_normal_raw, unit_or_zero};
 use crate::mesh::PolyMesh;
@@ -60,7 +61,13 @@ pub fn push_face_triangles(mesh: &PolyMesh, f: usize, normal: DVec3, out: &mut V
             corners.push(c as u32);
         }
     }
-    let tris = earcutr::earcut(&coords, &holes, 2).unwrap_or_default();
+    // Ear clipping panics on a coordinate that is not finite (its leftmost point is never
+    // found); such a face gets the fan.
+    let tris = if coords.iter().all(|x| x.is_finite()) {
+        earcutr::earcut(&coords, &holes, 2).unwrap_or_default()
+    } else {
+        Vec::new()
+    };
     if tris.is_empty() {
         let s = outer.start as u32;
         out.extend((1..n as u32 - 1).map(|i| [s, s + i, s + i + 1]));
@@ -158,5 +165,24 @@ mod tests {
                 assert!((p(t[1]) - p(t[0])).cross(p(t[2]) - p(t[0])).z > 0.0);
             }
         }
+    }
+
+    /// A pentagon with a coordinate that is not finite (a result gone wrong upstream) gets the
+    /// fan: with one, the ear clipper cut it at random; with every point NaN, it panicked.
+    #[test]
+    fn a_face_with_a_nan_coordinate_gets_the_fan() {
+        let mut m = PolyMesh::new();
+        m.positions = vec![
+            DVec3::new(0.0, 0.0, 0.0),
+            DVec3::new(2.0, 0.0, 0.0),
+            DVec3::new(2.0, 1.0, 0.0),
+            DVec3::new(f64::NAN, 1.5, 0.0),
+            DVec3::new(0.0, 1.0, 0.0),
+        ];
+        m.push_polygon(&[0, 1, 2, 3, 4]);
+        let fan = vec![[0, 1, 2], [0, 2, 3], [0, 3, 4]];
+        assert_eq!(face_triangles(&m, 0, DVec3::Z), fan);
+        m.positions.iter_mut().for_each(|p| *p = DVec3::NAN);
+        assert_eq!(face_triangles(&m, 0, DVec3::Z), fan);
     }
 }
