@@ -15,8 +15,10 @@
 //! down, as the vector sum's clamp is, until the new outline keeps a quarter of the face's
 //! narrowest width and every side a quarter of its length along itself. The combination
 //! rule's fold guard gives a face it moves into the vertex blend these points too, where they
-//! stay near the face ([`stays_near`]); the blend's other faces keep eq. (1): the offset there
-//! was measured to break more mixes of steps than it mended.
+//! stay near the face ([`stays_near`]); the blend's other faces keep eq. (1) — the offset on
+//! all of them was measured to break more mixes of steps than it mended — except where a new
+//! face beside one would still turn over and the offset leaves fewer folded
+//! ([`super::unfold::reoffset`]).
 
 use crate::geometry::segment_distance;
 use crate::mesh::PolyMesh;
