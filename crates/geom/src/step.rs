@@ -187,12 +187,13 @@ pub fn biquadratic_step_carrying(
     let combination = is_combination
         .then(|| CombinationState::next(cur, topo, &prov, prep.combination.as_deref(), &unfolded));
     let mut checked = check_children(cur, topo, &prep.normals, &out, &prov);
-    // The combination rule's last resort, only where a new face is still flipped: the child's
-    // vertex c is the parent's corner c, so its points are smoothed in place.
+    // The combination rule's last resorts, only where a new face is still flipped, both in
+    // place (the child's vertex c is the parent's corner c): the blend's concave faces beside
+    // the fold take the width offset (rules::reoffset), then the points are smoothed
+    // (rules::untangle).
     let mut untangled = rules::Untangled::default();
     let mut reoffset_faces = 0;
     if is_combination && !checked.flipped.is_empty() {
-        // First the blend's faces with a reflex corner (rules::reoffset), then the smoothing.
         reoffset_faces = rules::reoffset(
             cur,
             topo,
