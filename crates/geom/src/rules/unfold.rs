@@ -77,7 +77,42 @@ struct Elements<'a> {
     vsum: Vec<DVec3>,
 }
 
-impl Elements<'_> {
+impl<'a> Elements<'a> {
+    fn new(mesh: &'a PolyMesh, topo: &'a Topology, normals: &'a [DVec3]) -> Elements<'a> {
+        Elements {
+            mesh,
+            topo,
+            normals,
+            vsum: crate::geometry::vertex_normal_sums(mesh, topo, normals),
+        }
+    }
+
+    /// The faces that give a point to a folding new face, and how many new faces fold: one
+    /// pass over every FACE-, EDGE- and VERTEX-face.
+    fn folded(&self, pts: &[DVec3]) -> (Vec<bool>, usize) {
+        let (m, topo) = (self.mesh, self.topo);
+        let mut near: Vec<bool> = (0..m.num_faces())
+            .map(|f| self.face_folds(f, pts))
+            .collect();
+        let mut count = near.iter().filter(|&&n| n).count();
+        for &c in &topo.edge_corner {
+            if self.edge_folds(c, pts) {
+                count += 1;
+                near[topo.corner_face(c as usize) as usize] = true;
+                near[topo.corner_face(topo.twin[c as usize] as usize) as usize] = true;
+            }
+        }
+        for v in 0..m.num_vertices() {
+            if self.vertex_folds(v, pts) {
+                count += 1;
+                for c in self.ring(v) {
+                    near[topo.corner_face(c as usize) as usize] = true;
+                }
+            }
+        }
+        (near, count)
+    }
+
     /// Whether face `f`'s FACE-face folds: its Newell normal against the face's, or (one
     /// loop) an outline that crosses itself. A face of no area has nothing to fold.
     fn face_folds(&self, f: usize, pts: &[DVec3]) -> bool {
@@ -157,12 +192,7 @@ pub(crate) fn unfold(
     let mut blend: Vec<bool> = (0..nf)
         .map(|f| flags.get(f).copied().unwrap_or(false))
         .collect();
-    let el = Elements {
-        mesh,
-        topo,
-        normals,
-        vsum: crate::geometry::vertex_normal_sums(mesh, topo, normals),
-    };
+    let el = Elements::new(mesh, topo, normals);
     let mut moved = Vec::new();
     loop {
         let mut to_move = vec![false; nf];
@@ -246,12 +276,7 @@ pub(crate) fn reoffset(
     moved: &[u32],
     pts: &mut [DVec3],
 ) -> usize {
-    let el = Elements {
-        mesh,
-        topo,
-        normals,
-        vsum: crate::geometry::vertex_normal_sums(mesh, topo, normals),
-    };
+    let el = Elements::new(mesh, topo, normals);
     let nf = mesh.num_faces();
     let mut blend: Vec<bool> = (0..nf)
         .map(|f| flags.get(f).copied().unwrap_or(false))
@@ -264,44 +289,14 @@ pub(crate) fn reoffset(
     for &f in moved {
         done[f as usize] = true;
     }
-    let folded = |pts: &[DVec3]| -> Vec<bool> {
-        // Faces that give a point to a folded new face.
-        let mut near: Vec<bool> = (0..nf).map(|f| el.face_folds(f, pts)).collect();
-        for &c in &topo.edge_corner {
-            if el.edge_folds(c, pts) {
-                near[topo.corner_face(c as usize) as usize] = true;
-                near[topo.corner_face(topo.twin[c as usize] as usize) as usize] = true;
-            }
-        }
-        for v in 0..mesh.num_vertices() {
-            if el.vertex_folds(v, pts) {
-                for c in el.ring(v) {
-                    near[topo.corner_face(c as usize) as usize] = true;
-                }
-            }
-        }
-        near
-    };
-    let total = |pts: &[DVec3]| -> usize {
-        (0..nf).filter(|&f| el.face_folds(f, pts)).count()
-            + topo
-                .edge_corner
-                .iter()
-                .filter(|&&c| el.edge_folds(c, pts))
-                .count()
-            + (0..mesh.num_vertices())
-                .filter(|&v| el.vertex_folds(v, pts))
-                .count()
-    };
+    let (mut near, mut before) = el.folded(pts);
     for _ in 0..REOFFSET_ROUNDS {
-        let near = folded(pts);
         let candidates: Vec<usize> = (0..nf)
             .filter(|&f| near[f] && blend[f] && !done[f] && mesh.face_loops(f).len() == 1)
             .collect();
         if candidates.is_empty() {
             return replaced;
         }
-        let before = total(pts);
         let mut trial = pts.to_vec();
         let mut kept = Vec::new();
         for &f in &candidates {
@@ -323,14 +318,19 @@ pub(crate) fn reoffset(
         if kept.is_empty() {
             return replaced;
         }
-        let saved = pts.to_vec();
         for (f, new) in &kept {
             pts[mesh.face_corners(*f)].copy_from_slice(new);
         }
-        if total(pts) >= before {
-            pts.copy_from_slice(&saved);
+        let (now, count) = el.folded(pts);
+        if count >= before {
+            // `trial` holds every point as the round found it.
+            for (f, _) in &kept {
+                let corners = mesh.face_corners(*f);
+                pts[corners.clone()].copy_from_slice(&trial[corners]);
+            }
             return replaced;
         }
+        (near, before) = (now, count);
         replaced += kept.len();
     }
     replaced
