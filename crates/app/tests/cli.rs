@@ -1018,9 +1018,9 @@ fn envelope_builds_the_bundled_scenes_and_names_bad_ones() {
         "{so}"
     );
     assert!(so.contains(" folded=0 "), "{so}");
-    // Down to t = 0.1, where the tab's slider stops, nothing folds; in a heap of four cubes with
-    // a thin four-sided region a few cells do at t = 0.5: counted, and the first named on stderr
-    // (exit 0).
+    // Down to t = 0.1, where the tab's slider stops, nothing folds; in a heap of five
+    // primitives with a sliver on a prism's face a few cells do at t = 0.5: counted, and the
+    // first named on stderr (exit 0).
     let (_, so, _) = succeeds_to(
         "seven-01.obj",
         "envelope assets/table2-seven.envelope.json -o {} --resolution 4 --t 0.1",
@@ -1028,7 +1028,7 @@ fn envelope_builds_the_bundled_scenes_and_names_bad_ones() {
     assert!(so.contains(" folded=0 "), "{so}");
     let (_, so, se) = succeeds_to(
         "heap.obj",
-        "envelope crates/geom/tests/data/envelope/thin-quad-heap.envelope.json -o {} --resolution 4",
+        "envelope crates/geom/tests/data/envelope/folding-heap.envelope.json -o {} --resolution 4",
     );
     let count = |key: &str| -> usize {
         so.split_whitespace()
@@ -1043,11 +1043,11 @@ fn envelope_builds_the_bundled_scenes_and_names_bad_ones() {
         se.contains(&format!(
             "warning: {folded} of {} sampled cells fold",
             64 * patches
-        )) && se.contains("the first on primitive 2 face 3"),
+        )) && se.contains("the first on primitive 4 face 3"),
         "{se}"
     );
     assert!(so.contains(" crossings=0 "), "{so}");
-    // A heap of five at t = 0.2 whose surface passes through itself: counted, and where the
+    // A heap of six at t = 0.1 whose surface passes through itself: counted, and where the
     // first pair lies said on stderr (exit 0).
     let (_, so, se) = succeeds_to(
         "crossing.obj",

@@ -191,8 +191,8 @@ fn the_t_sweep_shows_the_three_t() {
 }
 
 /// Folds are shown in the summary: none on the seven-primitive sample at its own t, at 0.5 or
-/// at 0.1, where the slider stops; a heap of four cubes with a thin four-sided region has cells
-/// turned by more than 90° at t = 0.5, counted, with where the first lies.
+/// at 0.1, where the slider stops; a heap of five primitives with a sliver on a prism's face has
+/// cells turned by more than 90° at t = 0.5, counted, with where the first lies.
 #[test]
 fn the_summary_counts_folds() {
     let k = envelope::ENVELOPE_SAMPLES
@@ -200,7 +200,7 @@ fn the_summary_counts_folds() {
         .position(|s| s.1 == "table2-seven.envelope.json")
         .unwrap();
     let heap: prism_geom::freeform::envelope::EnvelopeSpec = serde_json::from_str(include_str!(
-        "../../../geom/tests/data/envelope/thin-quad-heap.envelope.json"
+        "../../../geom/tests/data/envelope/folding-heap.envelope.json"
     ))
     .unwrap();
     let seven = envelope::sample(k).unwrap();
@@ -221,14 +221,14 @@ fn the_summary_counts_folds() {
             Some((n, text)) => {
                 assert!(folded && *n > 0);
                 assert_eq!(b.fold_points.len(), *n);
-                assert!(text.contains("the first on primitive 2 face 3"), "{text}");
+                assert!(text.contains("the first on primitive 4 face 3"), "{text}");
             }
             None => assert!(!folded && b.fold_points.is_empty()),
         }
     }
 }
 
-/// Faces that pass through each other (a heap of five at t = 0.2) are found on a thread after
+/// Faces that pass through each other (a heap of six at t = 0.1) are found on a thread after
 /// the build, counted in the summary with where the first lies, and marked; the
 /// seven-primitive sample has none.
 #[test]
