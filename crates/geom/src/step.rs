@@ -109,6 +109,9 @@ pub struct StepReport {
     /// What the combination rule's last resort did ([`rules::untangle`]): points of new
     /// faces still flipped after the fold guard, smoothed until none is, and how far.
     pub untangled: rules::Untangled,
+    /// Parent vertices where the combination rule's final resort gave up the rounding for a
+    /// small chamfer because a new face round them was still flipped ([`rules::retreat`]).
+    pub small_chamfers: usize,
     /// Signed volume of the result (negative: inside out).
     pub volume: f64,
     /// Wall time of the step in milliseconds.
@@ -187,10 +190,11 @@ pub fn biquadratic_step_carrying(
     let combination = is_combination
         .then(|| CombinationState::next(cur, topo, &prov, prep.combination.as_deref(), &unfolded));
     let mut checked = check_children(cur, topo, &prep.normals, &out, &prov);
-    // The combination rule's last resorts, only where a new face is still flipped, both in
+    // The combination rule's last resorts, only where a new face is still flipped, all in
     // place (the child's vertex c is the parent's corner c): the blend's concave faces beside
     // the fold take the width offset (rules::reoffset), then the points are smoothed
-    // (rules::untangle).
+    // (rules::untangle), then the vertices round what is left take small chamfers
+    // (rules::retreat).
     let mut untangled = rules::Untangled::default();
     let mut reoffset_faces = 0;
     if is_combination && !checked.flipped.is_empty() {
@@ -217,6 +221,16 @@ pub fn biquadratic_step_carrying(
             checked = check_children(cur, topo, &prep.normals, &out, &prov);
         }
     }
+    let mut small_chamfers = 0;
+    if is_combination && !checked.flipped.is_empty() {
+        small_chamfers =
+            rules::retreat(cur, topo, &prep.normals, &mut out, &checked.flipped, |m| {
+                check_children(cur, topo, &prep.normals, m, &prov).flipped
+            });
+        if small_chamfers > 0 {
+            checked = check_children(cur, topo, &prep.normals, &out, &prov);
+        }
+    }
     let report = StepReport {
         vertices: out.num_vertices(),
         edges: 4 * topo.num_edges(),
@@ -233,6 +247,7 @@ pub fn biquadratic_step_carrying(
         unfolded_faces: unfolded.len(),
         reoffset_faces,
         untangled,
+        small_chamfers,
         volume: checked.volume,
         millis: start.elapsed().as_secs_f64() * 1e3,
     };

@@ -585,7 +585,8 @@ fn the_computer_room_smoothed_twice_rounds_through_level_six() {
 /// offset on concave faces 45 and 53, but 67 at any level (14 crossing before rounding instead
 /// of 39: mixes that stopped at their Doo–Sabin step now reach the rounding); with the fold
 /// guard moving faces with Doo–Sabin's clamped points, 37 and 46 (60); with blend faces
-/// re-placed with the width offset beside a fold, 22 and 32 (46). About 2 minutes in release;
+/// re-placed with the width offset beside a fold, 22 and 32 (46); with small chamfers where a
+/// round still folds, 9 and 25 (39). About 2 minutes in release;
 /// each mix unsound either way is printed.
 #[test]
 #[ignore]
@@ -703,13 +704,13 @@ fn random_mixes_of_steps() {
         "{} of {tried} mixes unsound; counting faces that pass through each other too, {crossing_unsound} (and {crossed_before} crossed themselves before rounding)",
         unsound.len()
     );
-    assert!(unsound.len() <= 22, "{} of {tried}", unsound.len());
+    assert!(unsound.len() <= 9, "{} of {tried}", unsound.len());
     assert!(
-        crossing_unsound <= 32,
+        crossing_unsound <= 25,
         "{crossing_unsound} of {tried} with crossings"
     );
     assert!(
-        crossing_unsound + crossed_before <= 46,
+        crossing_unsound + crossed_before <= 39,
         "{crossing_unsound} + {crossed_before} of {tried} unsound at some level"
     );
 }
@@ -770,7 +771,7 @@ fn the_fold_guard_moves_a_concave_face_with_the_width_offset() {
     assert!(p.levels()[4].report.as_ref().unwrap().unfolded_faces > 0);
 }
 
-/// The tripod through four clamped steps `text`: every level there, sound, and no two faces
+/// The tripod through the clamped steps `text`: every level there, sound, and no two faces
 /// through each other.
 fn tripod_sound_and_crossing_nowhere(text: &str) -> Pipeline {
     let p = run(
@@ -779,7 +780,7 @@ fn tripod_sound_and_crossing_nowhere(text: &str) -> Pipeline {
         steps(text),
         Overlap::Clamp,
     );
-    assert_eq!(p.levels().len(), 5);
+    assert_eq!(p.levels().len(), steps(text).len() + 1);
     assert_sound(&p);
     for (k, lv) in p.levels().iter().enumerate() {
         let pairs = prism_geom::analysis::crossings(&lv.mesh).len();
@@ -802,4 +803,29 @@ fn blend_faces_beside_a_fold_take_the_width_offset() {
          combination:r=0.2,combination:r=0.2",
     );
     assert!(p.levels()[4].report.as_ref().unwrap().reoffset_faces > 0);
+}
+
+/// The combination rule's final resort (docs/algorithms/cylindrical.md, "Small chamfers beside
+/// a fold"): after two inward vector sums (α = 0.1, 0.2) the tripod's third round (r = 0.2)
+/// left 3 faces flipped that neither the width offset nor the untangling mended; the vertices
+/// round them take small chamfers on their corners' bisectors, nothing is flipped or crosses,
+/// and the step says how many vertices gave way.
+#[test]
+fn small_chamfers_take_over_where_a_round_still_folds() {
+    for text in [
+        "vector-sum:alpha=0.1:reflex=inward,vector-sum:alpha=0.2:reflex=inward,\
+         combination:r=0.2,combination:r=0.2,combination:r=0.2",
+        "vector-sum:alpha=0.1:reflex=inward,vector-sum:alpha=0.2:reflex=inward,\
+         combination:r=0.3,combination:r=0.3,combination:r=0.3",
+        "minimum:r=0.2,vector-sum:alpha=0.2:reflex=inward,\
+         combination:r=0.1,combination:r=0.1,combination:r=0.1",
+    ] {
+        let p = tripod_sound_and_crossing_nowhere(text);
+        let chamfers: Vec<usize> = p.levels()[1..]
+            .iter()
+            .map(|lv| lv.report.as_ref().unwrap().small_chamfers)
+            .collect();
+        println!("{text}: {chamfers:?}");
+        assert!(chamfers.iter().any(|&n| n > 0), "{text}");
+    }
 }

@@ -297,6 +297,12 @@ fn warn_level(k: usize, r: &StepReport, before: f64) {
             r.untangled.points, r.untangled.largest_move
         );
     }
+    if r.small_chamfers > 0 {
+        eprintln!(
+            "note: level {k}: the rounding gave way to a small chamfer at {} vertex(es) where a new face would still have been flipped",
+            r.small_chamfers
+        );
+    }
     if r.guarded_corners > 0 {
         eprintln!(
             "note: level {k}: {} straight corner(s) with unequal cut widths capped",

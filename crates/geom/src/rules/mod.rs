@@ -30,6 +30,7 @@ mod doo_sabin;
 pub mod overlap;
 mod prepare;
 pub mod primal;
+mod retreat;
 mod unfold;
 mod untangle;
 
@@ -37,6 +38,7 @@ pub use combination::CombinationState;
 pub use cylindrical::{cut_width, dissolve_needed};
 pub use overlap::{EdgeFit, Overlap};
 pub use prepare::Prepared;
+pub(crate) use retreat::retreat;
 pub(crate) use unfold::{reoffset, unfold};
 pub use untangle::Untangled;
 pub(crate) use untangle::untangle;

@@ -554,6 +554,12 @@ pub(crate) fn step_notes(r: &prism_geom::StepReport) -> String {
             r.untangled.points, r.untangled.largest_move
         );
     }
+    if r.small_chamfers > 0 {
+        text += &format!(
+            " — small chamfer instead of the round at {} vertex(es) beside a fold",
+            r.small_chamfers
+        );
+    }
     if !r.degenerate.is_empty() {
         text += &format!(" — warning: {} degenerate face(s)", r.degenerate.len());
     }

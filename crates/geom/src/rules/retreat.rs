@@ -1,0 +1,138 @@
+//! The combination rule's final resort (docs/algorithms/cylindrical.md, "Small chamfers beside
+//! a fold"): where new faces are still flipped after the fold guard ([`super::unfold`]), the
+//! blend faces' width offset ([`super::reoffset`]) and the untangling ([`super::untangle`]),
+//! the points around the parent vertices of those faces give up the rounding there for a small
+//! chamfer. Every corner c at such a vertex v takes the point
+//!
+//! ```text
+//! p_c = v + l_v · b_c,   b_c = unit bisector of the corner's angle, into its face,
+//! l_v = min(⅒ of the shortest edge at v, the shortest offset |p − v| the rule gave there) / 2ʰ
+//! ```
+//!
+//! — the angle-bisector rule of seed 000 §2.3 with one short l for the whole vertex. Where the
+//! parent is flat enough at v for its corners' sectors to lie in order round the vertex normal,
+//! the VERTEX-face's points lie in that order (it cannot turn over), the EDGE-faces are thin
+//! strips on their edges' own sides and the FACE-faces keep their faces' orientation, whatever
+//! the rounding wanted there. The vertices of faces still flipped join, and h counts how often
+//! a vertex has been among them; eight rounds at most, judged on the whole step's check. Kept
+//! only when no new face is left flipped (else nothing moves); the step reports how many
+//! vertices took it. It cannot mend a parent that is already pleated at v (a face turned more
+//! than 90° from the sum of the normals round it), where no small chamfer is sound.
+
+use crate::mesh::PolyMesh;
+use crate::topology::Topology;
+use glam::DVec3;
+
+/// Rounds before the resort gives up.
+const ROUNDS: usize = 8;
+
+/// The first l as a share of the shortest edge at the vertex.
+const SHARE: f64 = 0.1;
+
+/// The unit bisector of corner `c` into its face (`vsum`, the normal sum at its vertex, for a
+/// face of no area). The face's interior lies to the left of its loop's outgoing edge seen
+/// along the normal, holes included, so the bisector of a reflex corner is turned round and
+/// that of a straight one is that left direction.
+fn bisector(mesh: &PolyMesh, topo: &Topology, normals: &[DVec3], vsum: DVec3, c: usize) -> DVec3 {
+    let at = |c: u32| mesh.positions[mesh.corner_verts[c as usize] as usize];
+    let v = at(c as u32);
+    let (e1, e2) = (
+        (at(topo.prev(c)) - v).normalize_or_zero(),
+        (at(topo.next(c)) - v).normalize_or_zero(),
+    );
+    let f = topo.corner_face(c) as usize;
+    let n = if normals[f] == DVec3::ZERO {
+        vsum
+    } else {
+        normals[f]
+    };
+    let left = n.cross(e2).normalize_or_zero();
+    let sum = e1 + e2;
+    if sum.length() < 1e-9 {
+        return left;
+    }
+    let b = sum.normalize();
+    if b.dot(left) < 0.0 { -b } else { b }
+}
+
+/// The corners round vertex v.
+fn ring(topo: &Topology, v: usize) -> impl Iterator<Item = usize> + '_ {
+    let start = topo.vert_corner[v];
+    std::iter::successors(Some(start), move |&c| {
+        let n = topo.ring_next(c);
+        (n != start).then_some(n)
+    })
+    .map(|c| c as usize)
+}
+
+/// The vertices taking small chamfers and how often each has been among those of faces still
+/// flipped.
+struct Round {
+    halvings: Vec<i32>,
+    member: Vec<bool>,
+    list: Vec<usize>,
+}
+
+impl Round {
+    /// The parent vertices of the new `faces` join; those already in halve their l.
+    fn join(&mut self, mesh: &PolyMesh, child: &PolyMesh, faces: &[u32]) {
+        let mut seen: Vec<usize> = faces
+            .iter()
+            .flat_map(|&f| child.face_corners(f as usize))
+            .map(|c| mesh.corner_verts[child.corner_verts[c] as usize] as usize)
+            .collect();
+        seen.sort_unstable();
+        seen.dedup();
+        for v in seen {
+            if self.member[v] {
+                self.halvings[v] += 1;
+            } else {
+                self.member[v] = true;
+                self.list.push(v);
+            }
+        }
+    }
+}
+
+/// Moves the points of `child` (its vertex c is the parent's corner c) round the parent
+/// vertices of the `flipped` new faces to small chamfers until `check` finds no new face
+/// flipped; returns how many parent vertices took one, or 0 with `child` unchanged.
+pub(crate) fn retreat(
+    mesh: &PolyMesh,
+    topo: &Topology,
+    normals: &[DVec3],
+    child: &mut PolyMesh,
+    flipped: &[u32],
+    check: impl Fn(&PolyMesh) -> Vec<u32>,
+) -> usize {
+    let vsum = crate::geometry::vertex_normal_sums(mesh, topo, normals);
+    let original = child.positions.clone();
+    let mut round = Round {
+        halvings: vec![0; mesh.num_vertices()],
+        member: vec![false; mesh.num_vertices()],
+        list: Vec::new(),
+    };
+    round.join(mesh, child, flipped);
+    for _ in 0..ROUNDS {
+        for &v in &round.list {
+            let p = mesh.positions[v];
+            let l = ring(topo, v)
+                .map(|c| {
+                    let w = mesh.positions[mesh.corner_verts[topo.next(c) as usize] as usize];
+                    (SHARE * p.distance(w)).min(original[c].distance(p))
+                })
+                .fold(f64::INFINITY, f64::min)
+                * 0.5f64.powi(round.halvings[v].min(60));
+            for c in ring(topo, v) {
+                child.positions[c] = p + bisector(mesh, topo, normals, vsum[v], c) * l;
+            }
+        }
+        let left = check(child);
+        if left.is_empty() {
+            return round.list.len();
+        }
+        round.join(mesh, child, &left);
+    }
+    child.positions.copy_from_slice(&original);
+    0
+}
