@@ -142,7 +142,10 @@ fn clamped_edges_are_highlighted_at_every_level() {
 /// L-shaped faces get a lower α at the app's default (clamping on), and Doo–Sabin's width
 /// offset after a rounding (docs/algorithms/biquadratic.md, "Concave faces"), and the Computer room
 /// after combination (r = 0.4), Catmull–Clark and three combination steps (r = 0.3) has its
-/// folded slivers smoothed at level 5.
+/// folded slivers smoothed at level 5; the tripod after two inward vector sums and three
+/// rounds (r = 0.2) gives up the round for small chamfers at 30 vertices at level 5
+/// (docs/algorithms/cylindrical.md, "Small chamfers beside a fold"). The bar wraps, so such
+/// notes after a long list of clamped radii stay in view.
 #[test]
 fn the_status_bar_says_what_the_clamp_and_the_untangling_did() {
     // The status bar's notes for level `k` of `pipeline` on the bundled `file`.
@@ -168,6 +171,16 @@ fn the_status_bar_says_what_the_clamp_and_the_untangling_did() {
     );
     assert!(
         n.contains("48 point(s) of folded sliver faces smoothed"),
+        "{n}"
+    );
+    let n = notes(
+        "tripod.obj",
+        "vector-sum:alpha=0.1:reflex=inward,vector-sum:alpha=0.2:reflex=inward,\
+         combination:r=0.2,combination:r=0.2,combination:r=0.2",
+        5,
+    );
+    assert!(
+        n.contains("small chamfer instead of the round at 30 vertex(es) beside a fold"),
         "{n}"
     );
 }

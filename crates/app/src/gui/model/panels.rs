@@ -509,8 +509,9 @@ impl ModelTab {
             .unwrap_or_default();
         let error = v.error.clone();
         let crossings = v.crossings();
-        // The alarms first: the text after them can be wider than the window.
-        ui.horizontal(|ui| {
+        // The alarms first; the text after them wraps where it is wider than the window, so
+        // that the step's notes at its end stay in view.
+        ui.horizontal_wrapped(|ui| {
             if !flipped.is_empty() {
                 self.flipped_menu(ui, &flipped);
             }
