@@ -223,10 +223,17 @@ pub fn biquadratic_step_carrying(
     }
     let mut small_chamfers = 0;
     if is_combination && !checked.flipped.is_empty() {
-        small_chamfers =
-            rules::retreat(cur, topo, &prep.normals, &mut out, &checked.flipped, |m| {
-                check_children(cur, topo, &prep.normals, m, &prov).flipped
-            });
+        small_chamfers = rules::retreat(
+            cur,
+            topo,
+            &prep.normals,
+            &mut out,
+            (&checked.flipped, checked.degenerate.len()),
+            |m| {
+                let c = check_children(cur, topo, &prep.normals, m, &prov);
+                (c.flipped, c.degenerate.len())
+            },
+        );
         if small_chamfers > 0 {
             checked = check_children(cur, topo, &prep.normals, &out, &prov);
         }

@@ -15,8 +15,8 @@
 //! strips on their edges' own sides and the FACE-faces keep their faces' orientation, whatever
 //! the rounding wanted there. The vertices of faces still flipped join, and h counts how often
 //! a vertex has been among them; eight rounds at most, judged on the whole step's check. Kept
-//! only when no new face is left flipped (else nothing moves); the step reports how many
-//! vertices took it. It cannot mend a parent that is already pleated at v (a face turned more
+//! only when no new face is left flipped and no more are degenerate than before (else nothing
+//! moves); the step reports how many vertices took it. It cannot mend a parent that is already pleated at v (a face turned more
 //! than 90° from the sum of the normals round it), where no small chamfer is sound.
 
 use crate::mesh::PolyMesh;
@@ -95,15 +95,16 @@ impl Round {
 }
 
 /// Moves the points of `child` (its vertex c is the parent's corner c) round the parent
-/// vertices of the `flipped` new faces to small chamfers until `check` finds no new face
-/// flipped; returns how many parent vertices took one, or 0 with `child` unchanged.
+/// vertices of the `flipped` new faces to small chamfers until `check` (the new faces
+/// flipped, and how many are degenerate) finds none flipped and no more degenerate than
+/// `degenerate`; returns how many parent vertices took one, or 0 with `child` unchanged.
 pub(crate) fn retreat(
     mesh: &PolyMesh,
     topo: &Topology,
     normals: &[DVec3],
     child: &mut PolyMesh,
-    flipped: &[u32],
-    check: impl Fn(&PolyMesh) -> Vec<u32>,
+    (flipped, degenerate): (&[u32], usize),
+    check: impl Fn(&PolyMesh) -> (Vec<u32>, usize),
 ) -> usize {
     let vsum = crate::geometry::vertex_normal_sums(mesh, topo, normals);
     let original = child.positions.clone();
@@ -127,9 +128,14 @@ pub(crate) fn retreat(
                 child.positions[c] = p + bisector(mesh, topo, normals, vsum[v], c) * l;
             }
         }
-        let left = check(child);
+        let (left, tiny) = check(child);
         if left.is_empty() {
-            return round.list.len();
+            if tiny <= degenerate {
+                return round.list.len();
+            }
+            // Sound but with faces of no area (an l halved to nothing on a sliver): the
+            // rounding's flipped faces are the honest report, not these.
+            break;
         }
         round.join(mesh, child, &left);
     }
