@@ -189,7 +189,8 @@ pub fn biquadratic_step_carrying(
     );
     let combination = is_combination
         .then(|| CombinationState::next(cur, topo, &prov, prep.combination.as_deref(), &unfolded));
-    let mut checked = check_children(cur, topo, &prep.normals, &out, &prov);
+    let recheck = |m: &PolyMesh| check_children(cur, topo, &prep.normals, m, &prov);
+    let mut checked = recheck(&out);
     // The combination rule's last resorts, only where a new face is still flipped, all in
     // place (the child's vertex c is the parent's corner c): the blend's concave faces beside
     // the fold take the width offset (rules::reoffset), then the points are smoothed
@@ -207,7 +208,7 @@ pub fn biquadratic_step_carrying(
             &mut out.positions,
         );
         if reoffset_faces > 0 {
-            checked = check_children(cur, topo, &prep.normals, &out, &prov);
+            checked = recheck(&out);
         }
     }
     if is_combination && !checked.flipped.is_empty() {
@@ -218,11 +219,13 @@ pub fn biquadratic_step_carrying(
             .collect();
         untangled = rules::untangle(cur, topo, &prep.normals, &mut out.positions, corners);
         if untangled.points > 0 {
-            checked = check_children(cur, topo, &prep.normals, &out, &prov);
+            checked = recheck(&out);
         }
     }
     let mut small_chamfers = 0;
     if is_combination && !checked.flipped.is_empty() {
+        // The resort's own last check is the step's when it keeps its points.
+        let mut last = None;
         small_chamfers = rules::retreat(
             cur,
             topo,
@@ -230,12 +233,14 @@ pub fn biquadratic_step_carrying(
             &mut out,
             (&checked.flipped, checked.degenerate.len()),
             |m| {
-                let c = check_children(cur, topo, &prep.normals, m, &prov);
-                (c.flipped, c.degenerate.len())
+                let c = recheck(m);
+                let seen = (c.flipped.clone(), c.degenerate.len());
+                last = Some(c);
+                seen
             },
         );
         if small_chamfers > 0 {
-            checked = check_children(cur, topo, &prep.normals, &out, &prov);
+            checked = last.expect("the resort checks the points it keeps");
         }
     }
     let report = StepReport {

@@ -259,14 +259,11 @@ fn flat_edges(
     ends.dedup();
     let mut merge = Vec::new();
     for v in ends {
-        let start = topo.vert_corner[v as usize];
-        let kept: Vec<usize> = std::iter::successors(Some(start), |&c| {
-            let n = topo.ring_next(c);
-            (n != start).then_some(n)
-        })
-        .map(|c| topo.corner_edge[c as usize] as usize)
-        .filter(|&e| !flat[e])
-        .collect();
+        let kept: Vec<usize> = topo
+            .corners_around(v as usize)
+            .map(|c| topo.corner_edge[c as usize] as usize)
+            .filter(|&e| !flat[e])
+            .collect();
         if kept.len() != 2 {
             continue;
         }

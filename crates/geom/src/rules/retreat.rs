@@ -55,16 +55,6 @@ fn bisector(mesh: &PolyMesh, topo: &Topology, normals: &[DVec3], vsum: DVec3, c:
     if b.dot(left) < 0.0 { -b } else { b }
 }
 
-/// The corners round vertex v.
-fn ring(topo: &Topology, v: usize) -> impl Iterator<Item = usize> + '_ {
-    let start = topo.vert_corner[v];
-    std::iter::successors(Some(start), move |&c| {
-        let n = topo.ring_next(c);
-        (n != start).then_some(n)
-    })
-    .map(|c| c as usize)
-}
-
 /// The vertices taking small chamfers and how often each has been among those of faces still
 /// flipped.
 struct Round {
@@ -104,7 +94,7 @@ pub(crate) fn retreat(
     normals: &[DVec3],
     child: &mut PolyMesh,
     (flipped, degenerate): (&[u32], usize),
-    check: impl Fn(&PolyMesh) -> (Vec<u32>, usize),
+    mut check: impl FnMut(&PolyMesh) -> (Vec<u32>, usize),
 ) -> usize {
     let vsum = crate::geometry::vertex_normal_sums(mesh, topo, normals);
     let original = child.positions.clone();
@@ -117,14 +107,16 @@ pub(crate) fn retreat(
     for _ in 0..ROUNDS {
         for &v in &round.list {
             let p = mesh.positions[v];
-            let l = ring(topo, v)
+            let l = topo
+                .corners_around(v)
                 .map(|c| {
-                    let w = mesh.positions[mesh.corner_verts[topo.next(c) as usize] as usize];
-                    (SHARE * p.distance(w)).min(original[c].distance(p))
+                    let w =
+                        mesh.positions[mesh.corner_verts[topo.next(c as usize) as usize] as usize];
+                    (SHARE * p.distance(w)).min(original[c as usize].distance(p))
                 })
                 .fold(f64::INFINITY, f64::min)
                 * 0.5f64.powi(round.halvings[v].min(60));
-            for c in ring(topo, v) {
+            for c in topo.corners_around(v).map(|c| c as usize) {
                 child.positions[c] = p + bisector(mesh, topo, normals, vsum[v], c) * l;
             }
         }

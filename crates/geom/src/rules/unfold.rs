@@ -30,7 +30,7 @@
 
 use crate::geometry::points_cross_themselves;
 use crate::mesh::PolyMesh;
-use crate::topology::{NONE, Topology};
+use crate::topology::Topology;
 use glam::DVec3;
 
 /// Newell normal of the polygon through `pts[c]` for the corners `cs`.
@@ -142,11 +142,7 @@ impl<'a> Elements<'a> {
 
     /// The corners around vertex `v` in ring order (none for an unused vertex).
     fn ring(&self, v: usize) -> impl Iterator<Item = u32> + Clone + '_ {
-        let start = self.topo.vert_corner[v];
-        std::iter::successors((start != NONE).then_some(start), move |&c| {
-            let n = self.topo.ring_next(c);
-            (n != start).then_some(n)
-        })
+        self.topo.corners_around(v)
     }
 
     /// Whether vertex `v`'s VERTEX-face folds: reversed, not star-shaped about its centroid

@@ -84,12 +84,7 @@ impl NewFaces<'_> {
     }
 
     fn vertex_corners(&self, v: usize) -> impl Iterator<Item = u32> + '_ {
-        let t = self.topo;
-        let start = t.vert_corner[v];
-        std::iter::successors(Some(start), move |&c| {
-            let n = t.ring_next(c);
-            (n != start).then_some(n)
-        })
+        self.topo.corners_around(v)
     }
 
     fn vertex_flipped(&self, at: impl Fn(u32) -> DVec3, v: usize) -> bool {

@@ -278,6 +278,17 @@ impl Topology {
         self.twin[self.prev(c as usize) as usize]
     }
 
+    /// The corners of vertex `v` in [`Topology::ring_next`] order from `vert_corner[v]`, once
+    /// round a closed ring (none for an unused vertex): the dual-quad rules' walk round a
+    /// VERTEX-face, without a list.
+    pub fn corners_around(&self, v: usize) -> impl Iterator<Item = u32> + Clone + '_ {
+        let start = self.vert_corner[v];
+        std::iter::successors((start != NONE).then_some(start), move |&c| {
+            let n = self.ring_next(c);
+            (n != start).then_some(n)
+        })
+    }
+
     /// Refuses an open mesh (naming a boundary edge) and a vertex whose faces do not form a
     /// single closed fan.
     pub fn require_closed(&self, mesh: &PolyMesh) -> Result<(), MeshError> {

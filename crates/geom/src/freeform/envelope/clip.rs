@@ -318,7 +318,7 @@ impl Clipper<'_> {
     ) -> Result<Located, EnvelopeError> {
         let g = self.p.centre;
         let u = (flat - g).normalize();
-        let (mut dist, mut t, mut count) = (0.0, 0.0, 0.0);
+        let (mut dist, mut t, mut weight) = (0.0, 0.0, 0.0);
         for k in cuts {
             if let [e1, e2] = self.face_line(f, k)?.as_slice()
                 && let Some(c) = curved_edge(g, e1.position, e2.position, e1.t, e2.t)
@@ -333,10 +333,10 @@ impl Clipper<'_> {
                 let w = 1.0 / near.max(1e-12 * self.p.radius).powi(2);
                 dist += w * q.distance(g);
                 t += w * (e1.t + (e2.t - e1.t) * share);
-                count += w;
+                weight += w;
             }
         }
-        if count == 0.0 {
+        if weight == 0.0 {
             return Err(EnvelopeError::Primitive {
                 index: self.index,
                 why: format!(
@@ -345,8 +345,8 @@ impl Clipper<'_> {
             });
         }
         Ok(Located {
-            position: g + u * (dist / count),
-            t: t / count,
+            position: g + u * (dist / weight),
+            t: t / weight,
         })
     }
 
