@@ -9,7 +9,9 @@
 //!
 //! A new face is **flipped** when its Newell normal points against its parent element's
 //! normal (`n_f`, `n_L + n_R`, or Σ n_f around the vertex) and **degenerate** when its area is
-//! below 1e-14·D² (D the bounding-box diagonal). Neither is hidden: both are listed.
+//! within rounding noise, so that which way it faces cannot be told: twice the area below
+//! `DEGENERATE_NOISE · P · S` (P the face's perimeter, S the larger of the bounding-box
+//! diagonal and the largest coordinate). Neither is hidden: both are listed.
 
 use crate::dissolve::DissolveError;
 use crate::edge_attrs::EdgeAttrs;
@@ -24,8 +26,13 @@ use std::borrow::Cow;
 use std::time::Instant;
 use thiserror::Error;
 
-/// Faces whose area is below this × D² are degenerate.
-pub const DEGENERATE_AREA: f64 = 1e-14;
+/// A face is degenerate when twice its area is below this × its perimeter × the level's
+/// scale S (the larger of the bounding-box diagonal and the largest coordinate): a thousand
+/// times the rounding error of a Newell normal, whose terms each carry an error of about
+/// ε·S·(the edge's length). Below it, which way the face faces cannot be told; above it, a
+/// face is sound however small (a round of a nearly flat edge is a face 10⁻⁸ of the solid
+/// across, facing the right way).
+pub const DEGENERATE_NOISE: f64 = 1e3 * f64::EPSILON;
 
 /// Tunables of a step.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -299,8 +306,7 @@ pub fn check_children(
 ) -> ChildCheck {
     use rayon::prelude::*;
     let vsum = crate::geometry::vertex_normal_sums(parent, topo, parent_normals);
-    let d = child.bbox_diagonal();
-    let tiny = DEGENERATE_AREA * d * d;
+    let s = scale(child);
     let single_loop = child.num_loops() == child.num_faces();
     let nf = child.num_faces();
     // Blocks of faces on every core, each summing its share of the volume in face order;
@@ -330,7 +336,7 @@ pub fn check_children(
                     }
                     FaceKind::Vertex => vsum[p],
                 };
-                if n.length_squared() < tiny * tiny {
+                if is_degenerate(child, f, n, s) {
                     out.degenerate.push(f as u32);
                 } else if n.dot(np) < 0.0 {
                     out.flipped.push(f as u32);
@@ -350,6 +356,41 @@ pub fn check_children(
     out
 }
 
+/// The level's scale S of [`DEGENERATE_NOISE`]: the larger of the bounding-box diagonal and
+/// the largest coordinate's magnitude.
+pub fn scale(mesh: &PolyMesh) -> f64 {
+    if mesh.positions.is_empty() {
+        return 0.0;
+    }
+    let (lo, hi) = mesh.bbox();
+    (hi - lo).length().max(lo.abs().max(hi.abs()).max_element())
+}
+
+/// Whether face `f` of Newell normal `n` (twice its area) is degenerate on a level of
+/// [`scale`] `s`: below [`DEGENERATE_NOISE`] × its perimeter × `s`. The perimeter is summed
+/// only for faces that could be (it is at most the face's corner count × `s`).
+pub fn is_degenerate(mesh: &PolyMesh, f: usize, n: DVec3, s: f64) -> bool {
+    let a2 = n.length();
+    let tiny = DEGENERATE_NOISE * s;
+    if a2 >= tiny * s * mesh.face_corners(f).len() as f64 {
+        return false;
+    }
+    let perimeter: f64 = mesh
+        .face_loops(f)
+        .map(|l| {
+            let vs = mesh.loop_verts(l);
+            (0..vs.len())
+                .map(|i| {
+                    let a = mesh.positions[vs[i] as usize];
+                    a.distance(mesh.positions[vs[(i + 1) % vs.len()] as usize])
+                })
+                .sum::<f64>()
+        })
+        .sum();
+    // A face collapsed to a point (no perimeter either) and a NaN one are degenerate.
+    a2.is_nan() || a2 <= tiny * perimeter
+}
+
 /// Faces a task of [`check_children`] takes (fixed, so that the volume's sum does not
 /// depend on the number of threads).
 const CHECK_BLOCK: usize = 1 << 12;
@@ -358,6 +399,44 @@ const CHECK_BLOCK: usize = 1 << 12;
 mod tests {
     use super::*;
     use crate::primitives;
+
+    /// Degenerate means "which way it faces cannot be told", not "small": a well-shaped square
+    /// 10⁻⁸ of the solid across, far from the origin, is not degenerate; a square 10⁻¹⁵
+    /// across, a sliver 10⁻¹⁴ wide, a face collapsed to a point and one with a NaN are.
+    #[test]
+    fn degenerate_faces_are_those_of_no_area_not_small_ones() {
+        let at = DVec3::new(10.0, -5.0, 3.0);
+        let square = |side: f64, width: f64| {
+            let q = [
+                DVec3::ZERO,
+                DVec3::new(side, 0.0, 0.0),
+                DVec3::new(side, width, 0.0),
+                DVec3::new(0.0, width, 0.0),
+            ];
+            // A unit box beside it sets the scale.
+            let mut m = primitives::cuboid(at - DVec3::ONE, at);
+            let base = m.num_vertices() as u32;
+            m.positions.extend(q.iter().map(|p| at + *p));
+            m.push_polygon(&[base, base + 1, base + 2, base + 3]);
+            let f = m.num_faces() - 1;
+            let n = loop_newell(&m, m.loop_verts(f));
+            is_degenerate(&m, f, n, scale(&m))
+        };
+        assert!(!square(1e-8, 1e-8));
+        assert!(!square(1.0, 1e-9));
+        assert!(square(1e-15, 1e-15));
+        assert!(square(1.0, 1e-14));
+        assert!(square(0.0, 0.0));
+        assert!(square(f64::NAN, 1.0));
+        // A unit face of the box is not.
+        let m = primitives::cuboid(DVec3::ZERO, DVec3::ONE);
+        assert!(!is_degenerate(
+            &m,
+            0,
+            loop_newell(&m, m.loop_verts(0)),
+            scale(&m)
+        ));
+    }
 
     /// Every biquadratic rule gives the same child, provenance and report (flipped and
     /// degenerate faces, the volume to the last bit, the radii lowered where rounds would

@@ -586,7 +586,8 @@ fn the_computer_room_smoothed_twice_rounds_through_level_six() {
 /// of 39: mixes that stopped at their Doo–Sabin step now reach the rounding); with the fold
 /// guard moving faces with Doo–Sabin's clamped points, 37 and 46 (60); with blend faces
 /// re-placed with the width offset beside a fold, 22 and 32 (46); with small chamfers where a
-/// round still folds, 9 and 25 (39). About 2 minutes in release;
+/// round still folds, 9 and 25 (39); with degenerate meaning "of no area" and small chamfers
+/// that would cross shrinking on, 8 and 19 (33). About 2 minutes in release;
 /// each mix unsound either way is printed.
 #[test]
 #[ignore]
@@ -704,13 +705,13 @@ fn random_mixes_of_steps() {
         "{} of {tried} mixes unsound; counting faces that pass through each other too, {crossing_unsound} (and {crossed_before} crossed themselves before rounding)",
         unsound.len()
     );
-    assert!(unsound.len() <= 9, "{} of {tried}", unsound.len());
+    assert!(unsound.len() <= 8, "{} of {tried}", unsound.len());
     assert!(
-        crossing_unsound <= 25,
+        crossing_unsound <= 19,
         "{crossing_unsound} of {tried} with crossings"
     );
     assert!(
-        crossing_unsound + crossed_before <= 39,
+        crossing_unsound + crossed_before <= 33,
         "{crossing_unsound} + {crossed_before} of {tried} unsound at some level"
     );
 }
@@ -774,12 +775,11 @@ fn the_fold_guard_moves_a_concave_face_with_the_width_offset() {
 /// The tripod through the clamped steps `text`: every level there, sound, and no two faces
 /// through each other.
 fn tripod_sound_and_crossing_nowhere(text: &str) -> Pipeline {
-    let p = run(
-        primitives::tripod(),
-        EdgeAttrs::new(),
-        steps(text),
-        Overlap::Clamp,
-    );
+    sound_and_crossing_nowhere(primitives::tripod(), text)
+}
+
+fn sound_and_crossing_nowhere(mesh: PolyMesh, text: &str) -> Pipeline {
+    let p = run(mesh, EdgeAttrs::new(), steps(text), Overlap::Clamp);
     assert_eq!(p.levels().len(), steps(text).len() + 1);
     assert_sound(&p);
     for (k, lv) in p.levels().iter().enumerate() {
@@ -828,4 +828,23 @@ fn small_chamfers_take_over_where_a_round_still_folds() {
         println!("{text}: {chamfers:?}");
         assert!(chamfers.iter().any(|&n| n > 0), "{text}");
     }
+}
+
+/// Small chamfers whose faces, facing outward, pass through the faces beside them are not
+/// kept as they are (docs/algorithms/cylindrical.md, "Small chamfers beside a fold"): on the
+/// L-block after a cut width (d = 0.05) and Catmull–Clark, the third round (r = 0.2) folds
+/// 14 faces at the notch; the resort's first sound placement had 56 pairs of faces crossing,
+/// which the step's check cannot see, and was kept. Those faces' vertices now join as a
+/// flipped face's do, and the resort ends with nothing flipped and nothing crossing.
+#[test]
+fn small_chamfers_that_would_cross_go_on_shrinking() {
+    let l_block = io::load(&Path::new(env!("CARGO_MANIFEST_DIR")).join("../../assets/l-block.obj"))
+        .unwrap()
+        .0
+        .mesh;
+    let p = sound_and_crossing_nowhere(
+        l_block,
+        "cut-width:d=0.05,catmull-clark,combination:r=0.2,combination:r=0.2,combination:r=0.2",
+    );
+    assert!(p.levels()[5].report.as_ref().unwrap().small_chamfers > 0);
 }

@@ -14,7 +14,7 @@
 //! counted — so neighbours that share an edge never count, and faces that share a vertex
 //! count only when they pass through each other beyond it (a fold at that vertex).
 
-use super::face_grid::FaceGrid;
+use super::face_grid::{FaceGrid, face_box};
 use crate::mesh::PolyMesh;
 use crate::triangulate::face_vertex_triangles;
 use glam::DVec3;
@@ -36,6 +36,92 @@ pub fn crossings(mesh: &PolyMesh) -> Vec<(u32, u32)> {
     out.sort_unstable();
     out
 }
+
+/// The pairs `(f, g)`, `f` one of `faces`, in which it crosses a face `g` of `mesh` (one of
+/// them — then both ways — or another), ascending: the same test as [`crossings`], for a few
+/// faces without a grid of all of them. The listed faces' boxes
+/// go into a hash of cells twice their mean diagonal; one pass over every face looks up the
+/// cells its box overlaps (a box spanning more than [`LOCAL_SPAN`] cells, listed or not, is
+/// tried against every face of the other kind).
+pub fn crossings_of(mesh: &PolyMesh, faces: &[u32]) -> Vec<(u32, u32)> {
+    use rayon::prelude::*;
+    use std::collections::HashMap;
+    if faces.is_empty() {
+        return Vec::new();
+    }
+    let boxes: Vec<(DVec3, DVec3)> = faces.iter().map(|&f| face_box(mesh, f as usize)).collect();
+    if let Some(i) = boxes
+        .iter()
+        .position(|b| !(b.0.is_finite() && b.1.is_finite()))
+    {
+        // A face with a NaN point: counted as crossing itself.
+        return vec![(faces[i], faces[i])];
+    }
+    let mean = boxes.iter().map(|b| (b.1 - b.0).length()).sum::<f64>() / boxes.len() as f64;
+    let cell = (2.0 * mean).max(1e-300);
+    // The cells a box overlaps, or none when they are more than LOCAL_SPAN (or not finite).
+    let cells_of = |(lo, hi): (DVec3, DVec3)| {
+        let (a, z) = ((lo / cell).floor(), (hi / cell).floor());
+        let span = (z - a + DVec3::ONE).element_product();
+        (span <= LOCAL_SPAN).then(|| {
+            let (a, z) = (a.as_i64vec3(), z.as_i64vec3());
+            (a.z..=z.z).flat_map(move |w| {
+                (a.y..=z.y).flat_map(move |y| (a.x..=z.x).map(move |x| glam::I64Vec3::new(x, y, w)))
+            })
+        })
+    };
+    let mut cells: HashMap<glam::I64Vec3, Vec<usize>> = HashMap::new();
+    // Listed faces too big for the hash are tried against every face.
+    let mut big = Vec::new();
+    for (i, &b) in boxes.iter().enumerate() {
+        match cells_of(b) {
+            Some(keys) => keys.for_each(|k| cells.entry(k).or_default().push(i)),
+            None => big.push(i),
+        }
+    }
+    let listed: Vec<Vec<[u32; 3]>> = faces
+        .iter()
+        .map(|&f| face_vertex_triangles(mesh, f as usize))
+        .collect();
+    let overlap =
+        |(a, b): (DVec3, DVec3), (c, d): (DVec3, DVec3)| a.cmple(d).all() && c.cmple(b).all();
+    let mut out: Vec<(u32, u32)> = (0..mesh.num_faces())
+        .into_par_iter()
+        .flat_map_iter(|g| {
+            let gb = face_box(mesh, g);
+            let mut near: Vec<usize> = big.clone();
+            match cells_of(gb) {
+                Some(keys) => keys.for_each(|k| {
+                    if let Some(l) = cells.get(&k) {
+                        near.extend(l);
+                    }
+                }),
+                None => near.extend(0..boxes.len()),
+            }
+            near.sort_unstable();
+            near.dedup();
+            let mut tg = None;
+            let hits: Vec<(u32, u32)> = near
+                .into_iter()
+                .filter(|&i| {
+                    if faces[i] as usize == g || !overlap(boxes[i], gb) {
+                        return false;
+                    }
+                    let tg = tg.get_or_insert_with(|| face_vertex_triangles(mesh, g));
+                    faces_cross(mesh, &listed[i], tg)
+                })
+                .map(|i| (faces[i], g as u32))
+                .collect();
+            hits
+        })
+        .collect();
+    out.sort_unstable();
+    out
+}
+
+/// A face box spanning more cells of [`crossings_of`]'s hash than this is tried against every
+/// face of the other kind.
+const LOCAL_SPAN: f64 = 64.0;
 
 /// The faces of crossing `pairs`, each once, ascending (what is drawn red).
 pub fn crossing_faces(pairs: &[(u32, u32)]) -> Vec<u32> {
@@ -165,5 +251,20 @@ mod tests {
         let pairs = crossings(&two);
         assert!(!pairs.is_empty());
         assert!(pairs.iter().all(|&(f, g)| f < 6 && g >= 6), "{pairs:?}");
+        // The pairs of a few faces are the whole search's pairs that hold them.
+        for faces in [vec![0u32, 3], vec![7, 9, 11], (0..12).collect()] {
+            let mut want: Vec<(u32, u32)> = Vec::new();
+            for &(f, g) in &pairs {
+                if faces.contains(&f) {
+                    want.push((f, g));
+                }
+                if faces.contains(&g) {
+                    want.push((g, f));
+                }
+            }
+            want.sort_unstable();
+            assert_eq!(crossings_of(&two, &faces), want, "{faces:?}");
+        }
+        assert!(crossings_of(&one, &[0, 1, 2, 3, 4, 5]).is_empty());
     }
 }

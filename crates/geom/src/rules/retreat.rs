@@ -15,8 +15,8 @@
 //! strips on their edges' own sides and the FACE-faces keep their faces' orientation, whatever
 //! the rounding wanted there. The vertices of faces still flipped join, and h counts how often
 //! a vertex has been among them; eight rounds at most, judged on the whole step's check. Kept
-//! only when no new face is left flipped and no more are degenerate than before (else nothing
-//! moves); the step reports how many vertices took it. It cannot mend a parent that is already pleated at v (a face turned more
+//! only when no new face is left flipped, no more are degenerate than before and no face with a
+//! moved point passes through another (else nothing moves); the step reports how many vertices took it. It cannot mend a parent that is already pleated at v (a face turned more
 //! than 90° from the sum of the normals round it), where no small chamfer is sound.
 
 use crate::mesh::PolyMesh;
@@ -53,6 +53,22 @@ fn bisector(mesh: &PolyMesh, topo: &Topology, normals: &[DVec3], vsum: DVec3, c:
     }
     let b = sum.normalize();
     if b.dot(left) < 0.0 { -b } else { b }
+}
+
+/// The new faces with a point moved round `vertices` (the child's vertex c is the parent's
+/// corner c).
+fn moved_faces(mesh: &PolyMesh, child: &PolyMesh, vertices: &[usize]) -> Vec<u32> {
+    let mut moved = vec![false; mesh.num_vertices()];
+    for &v in vertices {
+        moved[v] = true;
+    }
+    (0..child.num_faces() as u32)
+        .filter(|&f| {
+            child
+                .face_corners(f as usize)
+                .any(|c| moved[mesh.corner_verts[child.corner_verts[c] as usize] as usize])
+        })
+        .collect()
 }
 
 /// The vertices taking small chamfers and how often each has been among those of faces still
@@ -120,14 +136,23 @@ pub(crate) fn retreat(
                 child.positions[c] = p + bisector(mesh, topo, normals, vsum[v], c) * l;
             }
         }
-        let (left, tiny) = check(child);
+        let (mut left, tiny) = check(child);
         if left.is_empty() {
-            if tiny <= degenerate {
+            if tiny > degenerate {
+                // Faces of no area (an l halved to nothing on a sliver): the rounding's flipped
+                // faces are the honest report, not these.
+                break;
+            }
+            // Faces facing outward that pass through others (the step's check cannot see
+            // them) are treated as flipped ones: their vertices join, or halve their l.
+            let crossing =
+                crate::analysis::crossings_of(child, &moved_faces(mesh, child, &round.list));
+            if crossing.is_empty() {
                 return round.list.len();
             }
-            // Sound but with faces of no area (an l halved to nothing on a sliver): the
-            // rounding's flipped faces are the honest report, not these.
-            break;
+            left = crossing.iter().flat_map(|&(f, g)| [f, g]).collect();
+            left.sort_unstable();
+            left.dedup();
         }
         round.join(mesh, child, &left);
     }
