@@ -338,8 +338,8 @@ fn fold_free_at(spec: &EnvelopeSpec, t: f64) -> Envelope {
 /// primitives and pairs for any t from 0.1 to 1, nor on the bundled scenes (the test above),
 /// nor at t = 0.5 on a heap of four equal cubes whose cuts leave a thin four-sided region
 /// (chords about 0.60, 0.04, 0.61, 0.01), which folded before corners inside a face were drawn
-/// to their neighbours' distance (envelope.md, "Corners inside a face"); a heap of five
-/// primitives whose cuts leave a sliver of chords 0.51, 0.60, 0.017, 0.23 on a prism's face
+/// to their neighbours' distance (envelope.md, "Corners inside a face"); a heap of six
+/// primitives whose fusion strip between two short silhouette sides is a hundredth wide
 /// (envelope.md, "Left") has cells turned by more than 90° at t = 0.5, and the warning names
 /// where the first lies.
 #[test]
@@ -374,7 +374,7 @@ fn folds_are_found_patch_by_patch() {
     let folds = e.folds();
     assert!(!folds.is_empty());
     let w = e.fold_warning(&folds).unwrap();
-    assert!(w.contains("primitive 4 face 3"), "{w}");
+    assert!(w.contains("region 34 (between primitives)"), "{w}");
     assert!(
         w.contains(&format!(
             "{} of {} sampled cells fold",
@@ -781,9 +781,9 @@ fn a_thin_pentagon_is_split_as_a_strip() {
 /// 0.016 away on the edge (24 cells folded at t = 0.5, 64 pairs crossing); three cuts crossing
 /// a face nearly at one point (five primitives) put two corners 0.004 apart at distances 0.004
 /// apart (42 cells at t = 0.5, 38 pairs). Both now lie as far out as their neighbours, and
-/// nothing folds or crosses from t = 1 to 0.1 (the second to 0.2: at 0.1 one cell folds on
-/// a four-sided region that is nearly a triangle, sides 0.51, 1.20, 0.0004, 1.37), whatever
-/// the listing.
+/// nothing folds or crosses from t = 1 to 0.1, whatever the listing (the second folded one
+/// cell at 0.1 on a four-sided region that is nearly a triangle, sides 0.51, 1.20, 0.0004,
+/// 1.37, until such regions were tried split: the test below).
 #[test]
 fn corners_inside_a_face_lie_as_far_out_as_their_neighbours() {
     use prism_geom::freeform::envelope::CurveKind;
@@ -795,7 +795,7 @@ fn corners_inside_a_face_lie_as_far_out_as_their_neighbours() {
         ),
         (
             include_str!("data/envelope/three-cuts-near-a-point.envelope.json"),
-            &[1.0, 0.5, 0.2][..],
+            &[1.0, 0.5, 0.2, 0.1][..],
         ),
     ] {
         let spec: EnvelopeSpec = serde_json::from_str(text).unwrap();
@@ -826,6 +826,52 @@ fn corners_inside_a_face_lie_as_far_out_as_their_neighbours() {
                     }
                 }
                 assert!(short > 0, "t = {t}");
+            }
+        }
+    }
+}
+
+/// Four-sided regions with a short side (envelope.md, "Four-sided regions with a short
+/// side"): a cut passing 0.002 from a cube's vertex leaves a quad of chords 0.0034, 1.04,
+/// 0.73, 1.30 on its face (2 cells folded at t = 0.1 as one Coons patch); five primitives'
+/// cuts leave a sliver of chords 0.51, 0.60, 0.017, 0.23 on a prism's face (3 cells at t =
+/// 0.5). Where such a patch folds, the region is split round an inserted point as one of any
+/// other n is: from t = 1 to 0.1 nothing folds or crosses and the surface stays G1, whatever
+/// the listing, and at the t where the single patch folded the region has four patches.
+#[test]
+fn four_sided_regions_with_a_short_side_split_where_they_fold() {
+    use prism_geom::freeform::envelope::folds::crossings;
+    for (text, folded_at) in [
+        (
+            include_str!("data/envelope/cut-near-a-vertex.envelope.json"),
+            0.1,
+        ),
+        (
+            include_str!("data/envelope/prism-face-sliver.envelope.json"),
+            0.5,
+        ),
+    ] {
+        let spec: EnvelopeSpec = serde_json::from_str(text).unwrap();
+        for t in [1.0, 0.5, 0.2, 0.1] {
+            let mut listed = spec.primitives.clone();
+            for reversed in [false, true] {
+                if reversed {
+                    listed.reverse();
+                }
+                let e = build(listed.clone(), t);
+                assert_eq!(e.folds(), vec![], "t = {t}");
+                assert!(crossings(&e.tessellate(8).unwrap()).is_empty(), "t = {t}");
+                assert!(e.largest_border_jump() < 1e-9, "t = {t}");
+                if t == folded_at {
+                    let split = (0..e.network.regions.len()).any(|r| {
+                        let len = chords(&e, r);
+                        let longest = len.iter().cloned().fold(0.0, f64::max);
+                        len.len() == 4
+                            && len.iter().any(|&c| c < 0.05 * longest)
+                            && e.patches.iter().filter(|p| p.region == r).count() == 4
+                    });
+                    assert!(split, "t = {t}");
+                }
             }
         }
     }

@@ -765,7 +765,49 @@ fn partitioned(
         .collect()
 }
 
-/// The patches of `region` (number `r`): one Coons patch if it is four-sided, else its split
+/// The patches of a four-sided `region` (number `r`): one Coons patch — or, where one side's
+/// chord is under [`QUAD_SHORT`] of the longest and that patch folds, the split round an
+/// inserted point as for any other n, where that folds fewer cells and stays G1 across the
+/// curves it adds (envelope.md, "Four-sided regions with a short side").
+fn quad_patches(
+    net: &mut Network,
+    region: Region,
+    r: usize,
+    prims: &[Primitive],
+) -> Vec<EnvelopePatch> {
+    let quad: [PatchSide; 4] = region.sides.clone().try_into().expect("four");
+    let one = vec![patch(net, quad, r)];
+    let chords = region.sides.iter().map(|s| {
+        let c = &net.curves[s.curve].bezier;
+        c.eval(s.t0).distance(c.eval(s.t1))
+    });
+    let (shortest, longest) = chords.fold((f64::INFINITY, 0.0f64), |(lo, hi), c| {
+        (lo.min(c), hi.max(c))
+    });
+    if shortest >= QUAD_SHORT * longest {
+        return one;
+    }
+    let cells = choice_cells(net, &region, prims);
+    let before = super::folds::folds(net, &one, cells).len();
+    if before == 0 {
+        return one;
+    }
+    let (nv, nc) = (net.vertices.len(), net.curves.len());
+    let other = split(net, region, r, prims);
+    if super::folds::folds(net, &other, cells).len() < before
+        && largest_border_jump(net, &other, 8) < G1_KEPT
+    {
+        return other;
+    }
+    net.truncate(nv, nc);
+    one
+}
+
+/// A four-sided region with a side under this share of its longest is tried split
+/// ([`quad_patches`]).
+const QUAD_SHORT: f64 = 0.05;
+
+/// The patches of `region` (number `r`): [`quad_patches`] if it is four-sided, else its split
 /// round one inserted point — or, where that split folds, the partition that folds fewest of
 /// its cells and stays G1 across the curves it adds (envelope.md, "Runs of short sides",
 /// "Needles" and "Diagonals"), tried in [`rank`]'s order: runs of short sides closed off
@@ -781,8 +823,7 @@ fn region_patches(
 ) -> Vec<EnvelopePatch> {
     let n = region.sides.len();
     if n == 4 {
-        let quad: [PatchSide; 4] = region.sides.try_into().expect("four");
-        return vec![patch(net, quad, r)];
+        return quad_patches(net, region, r, prims);
     }
     let mut tries = Vec::new();
     if let Some(runs) = short_runs(net, &region) {
