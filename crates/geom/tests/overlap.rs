@@ -587,7 +587,8 @@ fn the_computer_room_smoothed_twice_rounds_through_level_six() {
 /// guard moving faces with Doo–Sabin's clamped points, 37 and 46 (60); with blend faces
 /// re-placed with the width offset beside a fold, 22 and 32 (46); with small chamfers where a
 /// round still folds, 9 and 25 (39); with degenerate meaning "of no area" and small chamfers
-/// that would cross shrinking on, 8 and 19 (33). About 2 minutes in release;
+/// that would cross shrinking on, 8 and 19 (33); with sixteen rounds of them, 4 and 16 (30).
+/// About 2 minutes in release;
 /// each mix unsound either way is printed.
 #[test]
 #[ignore]
@@ -705,13 +706,13 @@ fn random_mixes_of_steps() {
         "{} of {tried} mixes unsound; counting faces that pass through each other too, {crossing_unsound} (and {crossed_before} crossed themselves before rounding)",
         unsound.len()
     );
-    assert!(unsound.len() <= 8, "{} of {tried}", unsound.len());
+    assert!(unsound.len() <= 4, "{} of {tried}", unsound.len());
     assert!(
-        crossing_unsound <= 19,
+        crossing_unsound <= 16,
         "{crossing_unsound} of {tried} with crossings"
     );
     assert!(
-        crossing_unsound + crossed_before <= 33,
+        crossing_unsound + crossed_before <= 30,
         "{crossing_unsound} + {crossed_before} of {tried} unsound at some level"
     );
 }
@@ -847,4 +848,21 @@ fn small_chamfers_that_would_cross_go_on_shrinking() {
         "cut-width:d=0.05,catmull-clark,combination:r=0.2,combination:r=0.2,combination:r=0.2",
     );
     assert!(p.levels()[5].report.as_ref().unwrap().small_chamfers > 0);
+}
+
+/// Where shrinking the small chamfers until nothing crosses takes many rounds (docs/algorithms/
+/// cylindrical.md, "Faces that cross, and small faces that are sound"): the Computer room after
+/// a round (r = 0.1), an inward vector sum (α = 0.2) and three rounds (r = 0.2) folded 160
+/// faces at level 5; its small chamfers came out of eight rounds with nothing flipped but 320
+/// pairs of faces crossing, so they were refused. With sixteen the level is sound and crosses
+/// nowhere, the rounding given up at a few thousand vertices at most.
+#[test]
+fn small_chamfers_shrink_on_for_as_many_rounds_as_the_crossings_need() {
+    let p = sound_and_crossing_nowhere(
+        computer_room(),
+        "combination:r=0.1,vector-sum:alpha=0.2:reflex=inward,\
+         combination:r=0.2,combination:r=0.2,combination:r=0.2",
+    );
+    let n = p.levels()[5].report.as_ref().unwrap().small_chamfers;
+    assert!(n > 0 && n < 4000, "{n}");
 }

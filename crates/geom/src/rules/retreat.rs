@@ -14,7 +14,7 @@
 //! the VERTEX-face's points lie in that order (it cannot turn over), the EDGE-faces are thin
 //! strips on their edges' own sides and the FACE-faces keep their faces' orientation, whatever
 //! the rounding wanted there. The vertices of faces still flipped join, and h counts how often
-//! a vertex has been among them; eight rounds at most, judged on the whole step's check. Kept
+//! a vertex has been among them; sixteen rounds at most, judged on the whole step's check. Kept
 //! only when no new face is left flipped, no more are degenerate than before and no face with a
 //! moved point passes through another (else nothing moves); the step reports how many vertices took it. It cannot mend a parent that is already pleated at v (a face turned more
 //! than 90° from the sum of the normals round it), where no small chamfer is sound.
@@ -24,7 +24,7 @@ use crate::topology::Topology;
 use glam::DVec3;
 
 /// Rounds before the resort gives up.
-const ROUNDS: usize = 8;
+const ROUNDS: usize = 16;
 
 /// The first l as a share of the shortest edge at the vertex.
 const SHARE: f64 = 0.1;
