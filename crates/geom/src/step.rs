@@ -230,7 +230,19 @@ pub fn biquadratic_step_carrying(
         }
     }
     let mut small_chamfers = 0;
-    if is_combination && !checked.flipped.is_empty() {
+    // New faces round the guard's moves that pass through others though none is flipped:
+    // they seed the small chamfers as flipped ones do.
+    let crossing_seeds = if is_combination && checked.flipped.is_empty() && !unfolded.is_empty() {
+        guard_crossings(cur, topo, &out, &unfolded)
+    } else {
+        Vec::new()
+    };
+    if is_combination && (!checked.flipped.is_empty() || !crossing_seeds.is_empty()) {
+        let seeds = if checked.flipped.is_empty() {
+            &crossing_seeds
+        } else {
+            &checked.flipped
+        };
         // The resort's own last check is the step's when it keeps its points.
         let mut last = None;
         small_chamfers = rules::retreat(
@@ -238,7 +250,7 @@ pub fn biquadratic_step_carrying(
             topo,
             &prep.normals,
             &mut out,
-            (&checked.flipped, checked.degenerate.len()),
+            (seeds, checked.degenerate.len()),
             |m| {
                 let c = recheck(m);
                 let seen = (c.flipped.clone(), c.degenerate.len());
@@ -284,6 +296,57 @@ pub fn biquadratic_step_carrying(
         report,
     };
     Ok((output, child_topo))
+}
+
+/// The new faces round the parent faces the fold guard moved (`unfolded`) that pass through
+/// a face near them (docs/algorithms/cylindrical.md, "Crossings beside the guard's moves"):
+/// the new faces with a point from a moved face are tried against the new faces of the parent
+/// faces, edges and vertices within one ring of a moved face (the child's face of parent face
+/// f is f, of edge e F + e, of vertex v F + E + v).
+fn guard_crossings(
+    parent: &PolyMesh,
+    topo: &Topology,
+    child: &PolyMesh,
+    unfolded: &[u32],
+) -> Vec<u32> {
+    let (nf, ne) = (parent.num_faces(), topo.num_edges());
+    let mut moved = vec![false; nf];
+    for &f in unfolded {
+        moved[f as usize] = true;
+    }
+    let mut near = moved.clone();
+    for &f in unfolded {
+        for c in parent.face_corners(f as usize) {
+            for c2 in topo.corners_around(parent.corner_verts[c] as usize) {
+                near[topo.corner_face(c2 as usize) as usize] = true;
+            }
+        }
+    }
+    let mut among = vec![false; child.num_faces()];
+    let mut touched = vec![false; child.num_faces()];
+    for f in (0..nf).filter(|&f| near[f]) {
+        for c in parent.face_corners(f) {
+            let kids = [
+                f,
+                nf + topo.corner_edge[c] as usize,
+                nf + ne + parent.corner_verts[c] as usize,
+            ];
+            for k in kids {
+                among[k] = true;
+                touched[k] |= moved[f];
+            }
+        }
+    }
+    let list = |flags: &[bool]| -> Vec<u32> {
+        (0..flags.len() as u32)
+            .filter(|&f| flags[f as usize])
+            .collect()
+    };
+    let pairs = crate::analysis::crossings_of(child, &list(&touched), Some(&list(&among)));
+    let mut seeds: Vec<u32> = pairs.iter().flat_map(|&(f, g)| [f, g]).collect();
+    seeds.sort_unstable();
+    seeds.dedup();
+    seeds
 }
 
 /// Flipped and degenerate new faces, and the signed volume of the child: one pass over the

@@ -39,13 +39,15 @@ pub fn crossings(mesh: &PolyMesh) -> Vec<(u32, u32)> {
 
 /// The pairs `(f, g)`, `f` one of `faces`, in which it crosses a face `g` of `mesh` (one of
 /// them — then both ways — or another), ascending: the same test as [`crossings`], for a few
-/// faces without a grid of all of them. The listed faces' boxes
-/// go into a hash of cells twice their mean diagonal; one pass over every face looks up the
-/// cells its box overlaps (a box spanning more than [`LOCAL_SPAN`] cells, listed or not, is
-/// tried against every face of the other kind).
-pub fn crossings_of(mesh: &PolyMesh, faces: &[u32]) -> Vec<(u32, u32)> {
+/// faces without a grid of all of them; `among`, when given, lists the faces g tried (the
+/// neighbourhood where a crossing is looked for), else every face is. The listed faces go into a uniform grid over their
+/// joint box (cells twice their mean box diagonal, at most [`LOCAL_CELLS`]); one pass over
+/// every face skips those whose box misses the joint one and tries the listed faces of the
+/// cells the rest overlap, each pair only in the cell that holds the low corner of the two
+/// boxes' overlap (so none twice). A listed face spanning more than [`LOCAL_SPAN`] cells is
+/// tried against every face, and a face that large against every listed one.
+pub fn crossings_of(mesh: &PolyMesh, faces: &[u32], among: Option<&[u32]>) -> Vec<(u32, u32)> {
     use rayon::prelude::*;
-    use std::collections::HashMap;
     if faces.is_empty() {
         return Vec::new();
     }
@@ -57,26 +59,63 @@ pub fn crossings_of(mesh: &PolyMesh, faces: &[u32]) -> Vec<(u32, u32)> {
         // A face with a NaN point: counted as crossing itself.
         return vec![(faces[i], faces[i])];
     }
+    let (lo, hi) = boxes.iter().fold(
+        (DVec3::splat(f64::INFINITY), DVec3::splat(f64::NEG_INFINITY)),
+        |(lo, hi), b| (lo.min(b.0), hi.max(b.1)),
+    );
+    let extent = (hi - lo).max(DVec3::splat(1e-300));
     let mean = boxes.iter().map(|b| (b.1 - b.0).length()).sum::<f64>() / boxes.len() as f64;
-    let cell = (2.0 * mean).max(1e-300);
-    // The cells a box overlaps, or none when they are more than LOCAL_SPAN (or not finite).
-    let cells_of = |(lo, hi): (DVec3, DVec3)| {
-        let (a, z) = ((lo / cell).floor(), (hi / cell).floor());
-        let span = (z - a + DVec3::ONE).element_product();
-        (span <= LOCAL_SPAN).then(|| {
-            let (a, z) = (a.as_i64vec3(), z.as_i64vec3());
-            (a.z..=z.z).flat_map(move |w| {
-                (a.y..=z.y).flat_map(move |y| (a.x..=z.x).map(move |x| glam::I64Vec3::new(x, y, w)))
-            })
+    let mut cell = (2.0 * mean).max(extent.max_element() * 1e-6);
+    let dims_of = |c: f64| (extent / c).ceil().max(DVec3::ONE);
+    while dims_of(cell).element_product() > LOCAL_CELLS {
+        cell *= 1.5;
+    }
+    let d = dims_of(cell);
+    let dims = [d.x as usize, d.y as usize, d.z as usize];
+    let idx = |p: DVec3| {
+        [0, 1, 2].map(|k| {
+            let x = ((p[k] - lo[k]) / cell).floor();
+            (x.max(0.0) as usize).min(dims[k] - 1)
         })
     };
-    let mut cells: HashMap<glam::I64Vec3, Vec<usize>> = HashMap::new();
-    // Listed faces too big for the hash are tried against every face.
+    let flat = |c: [usize; 3]| (c[2] * dims[1] + c[1]) * dims[0] + c[0];
+    // The cells a box overlaps (clamped to the grid), or None when more than LOCAL_SPAN.
+    let range = |(a, b): (DVec3, DVec3)| {
+        let (a, b) = (idx(a), idx(b));
+        let span: usize = (0..3).map(|k| b[k] - a[k] + 1).product();
+        (span <= LOCAL_SPAN).then_some((a, b))
+    };
+    let for_cells = |(a, b): ([usize; 3], [usize; 3]), f: &mut dyn FnMut(usize)| {
+        for z in a[2]..=b[2] {
+            for y in a[1]..=b[1] {
+                for x in a[0]..=b[0] {
+                    f(flat([x, y, z]));
+                }
+            }
+        }
+    };
+    // Listed faces by cell, in two passes into one flat list.
+    let n = dims[0] * dims[1] * dims[2];
+    let mut start = vec![0u32; n + 1];
     let mut big = Vec::new();
-    for (i, &b) in boxes.iter().enumerate() {
-        match cells_of(b) {
-            Some(keys) => keys.for_each(|k| cells.entry(k).or_default().push(i)),
+    let ranges: Vec<_> = boxes.iter().map(|&b| range(b)).collect();
+    for (i, r) in ranges.iter().enumerate() {
+        match r {
+            Some(r) => for_cells(*r, &mut |c| start[c + 1] += 1),
             None => big.push(i),
+        }
+    }
+    for c in 0..n {
+        start[c + 1] += start[c];
+    }
+    let mut fill = start.clone();
+    let mut listed_in = vec![0u32; start[n] as usize];
+    for (i, r) in ranges.iter().enumerate() {
+        if let Some(r) = r {
+            for_cells(*r, &mut |c| {
+                listed_in[fill[c] as usize] = i as u32;
+                fill[c] += 1;
+            });
         }
     }
     let listed: Vec<Vec<[u32; 3]>> = faces
@@ -85,33 +124,54 @@ pub fn crossings_of(mesh: &PolyMesh, faces: &[u32]) -> Vec<(u32, u32)> {
         .collect();
     let overlap =
         |(a, b): (DVec3, DVec3), (c, d): (DVec3, DVec3)| a.cmple(d).all() && c.cmple(b).all();
-    let mut out: Vec<(u32, u32)> = (0..mesh.num_faces())
-        .into_par_iter()
-        .flat_map_iter(|g| {
+    let joint = (lo, hi);
+    let all: Vec<u32>;
+    let among = match among {
+        Some(a) => a,
+        None => {
+            all = (0..mesh.num_faces() as u32).collect();
+            &all
+        }
+    };
+    let mut out: Vec<(u32, u32)> = among
+        .par_iter()
+        .with_min_len(1 << 12)
+        .flat_map_iter(|&g| {
+            let g = g as usize;
             let gb = face_box(mesh, g);
-            let mut near: Vec<usize> = big.clone();
-            match cells_of(gb) {
-                Some(keys) => keys.for_each(|k| {
-                    if let Some(l) = cells.get(&k) {
-                        near.extend(l);
-                    }
-                }),
-                None => near.extend(0..boxes.len()),
+            let mut hits = Vec::new();
+            // A face with a NaN point overlaps nothing here; `crossings` names it.
+            if !overlap(gb, joint) {
+                return hits;
             }
-            near.sort_unstable();
-            near.dedup();
             let mut tg = None;
-            let hits: Vec<(u32, u32)> = near
-                .into_iter()
-                .filter(|&i| {
-                    if faces[i] as usize == g || !overlap(boxes[i], gb) {
-                        return false;
+            let mut try_pair = |i: usize| {
+                if faces[i] as usize == g || !overlap(boxes[i], gb) {
+                    return;
+                }
+                let tg = tg.get_or_insert_with(|| face_vertex_triangles(mesh, g));
+                if faces_cross(mesh, &listed[i], tg) {
+                    hits.push((faces[i], g as u32));
+                }
+            };
+            match range(gb) {
+                Some(r) if ranges.len() > big.len() => {
+                    for &i in &big {
+                        try_pair(i);
                     }
-                    let tg = tg.get_or_insert_with(|| face_vertex_triangles(mesh, g));
-                    faces_cross(mesh, &listed[i], tg)
-                })
-                .map(|i| (faces[i], g as u32))
-                .collect();
+                    for_cells(r, &mut |c| {
+                        for &i in &listed_in[start[c] as usize..start[c + 1] as usize] {
+                            let i = i as usize;
+                            // Each pair in one cell only: the one holding the low corner of
+                            // the boxes' overlap (both boxes are listed there).
+                            if ranges[i].is_some() && flat(idx(boxes[i].0.max(gb.0))) == c {
+                                try_pair(i);
+                            }
+                        }
+                    })
+                }
+                _ => (0..boxes.len()).for_each(&mut try_pair),
+            }
             hits
         })
         .collect();
@@ -119,9 +179,12 @@ pub fn crossings_of(mesh: &PolyMesh, faces: &[u32]) -> Vec<(u32, u32)> {
     out
 }
 
-/// A face box spanning more cells of [`crossings_of`]'s hash than this is tried against every
+/// A face box spanning more cells of [`crossings_of`]'s grid than this is tried against every
 /// face of the other kind.
-const LOCAL_SPAN: f64 = 64.0;
+const LOCAL_SPAN: usize = 64;
+
+/// The most cells [`crossings_of`]'s grid has.
+const LOCAL_CELLS: f64 = (1 << 18) as f64;
 
 /// The faces of crossing `pairs`, each once, ascending (what is drawn red).
 pub fn crossing_faces(pairs: &[(u32, u32)]) -> Vec<u32> {
@@ -263,8 +326,13 @@ mod tests {
                 }
             }
             want.sort_unstable();
-            assert_eq!(crossings_of(&two, &faces), want, "{faces:?}");
+            assert_eq!(crossings_of(&two, &faces, None), want, "{faces:?}");
+            let among: Vec<u32> = (0..12).collect();
+            assert_eq!(crossings_of(&two, &faces, Some(&among)), want, "{faces:?}");
+            let none: Vec<(u32, u32)> = want.iter().filter(|p| p.1 < 6).copied().collect();
+            let first: Vec<u32> = (0..6).collect();
+            assert_eq!(crossings_of(&two, &faces, Some(&first)), none, "{faces:?}");
         }
-        assert!(crossings_of(&one, &[0, 1, 2, 3, 4, 5]).is_empty());
+        assert!(crossings_of(&one, &[0, 1, 2, 3, 4, 5], None).is_empty());
     }
 }

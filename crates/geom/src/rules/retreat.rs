@@ -146,7 +146,7 @@ pub(crate) fn retreat(
             // Faces facing outward that pass through others (the step's check cannot see
             // them) are treated as flipped ones: their vertices join, or halve their l.
             let crossing =
-                crate::analysis::crossings_of(child, &moved_faces(mesh, child, &round.list));
+                crate::analysis::crossings_of(child, &moved_faces(mesh, child, &round.list), None);
             if crossing.is_empty() {
                 return round.list.len();
             }
