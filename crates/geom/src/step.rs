@@ -233,7 +233,7 @@ pub fn biquadratic_step_carrying(
     // New faces round the guard's moves that pass through others though none is flipped:
     // they seed the small chamfers as flipped ones do.
     let crossing_seeds = if is_combination && checked.flipped.is_empty() && !unfolded.is_empty() {
-        guard_crossings(cur, topo, &out, &unfolded)
+        guard_crossings(cur, topo, &out, &prov, &unfolded)
     } else {
         Vec::new()
     };
@@ -300,49 +300,66 @@ pub fn biquadratic_step_carrying(
 
 /// The new faces round the parent faces the fold guard moved (`unfolded`) that pass through
 /// a face near them (docs/algorithms/cylindrical.md, "Crossings beside the guard's moves"):
-/// the new faces with a point from a moved face are tried against the new faces of the parent
-/// faces, edges and vertices within one ring of a moved face (the child's face of parent face
-/// f is f, of edge e F + e, of vertex v F + E + v).
+/// the new faces of a moved face, its edges and its vertices are tried against the new faces
+/// of the parent faces, edges and vertices within one ring of a moved face (by `prov`).
 fn guard_crossings(
     parent: &PolyMesh,
     topo: &Topology,
     child: &PolyMesh,
+    prov: &Provenance,
     unfolded: &[u32],
 ) -> Vec<u32> {
-    let (nf, ne) = (parent.num_faces(), topo.num_edges());
+    let nf = parent.num_faces();
     let mut moved = vec![false; nf];
     for &f in unfolded {
         moved[f as usize] = true;
     }
-    let mut near = moved.clone();
+    // Parent vertices of moved faces, then the faces round them (one ring), then their
+    // vertices.
+    let mut moved_vertex = vec![false; parent.num_vertices()];
     for &f in unfolded {
         for c in parent.face_corners(f as usize) {
-            for c2 in topo.corners_around(parent.corner_verts[c] as usize) {
-                near[topo.corner_face(c2 as usize) as usize] = true;
-            }
+            moved_vertex[parent.corner_verts[c] as usize] = true;
         }
     }
-    let mut among = vec![false; child.num_faces()];
-    let mut touched = vec![false; child.num_faces()];
-    for f in (0..nf).filter(|&f| near[f]) {
-        for c in parent.face_corners(f) {
-            let kids = [
-                f,
-                nf + topo.corner_edge[c] as usize,
-                nf + ne + parent.corner_verts[c] as usize,
-            ];
-            for k in kids {
-                among[k] = true;
-                touched[k] |= moved[f];
-            }
+    let mut near = vec![false; nf];
+    for c in 0..topo.num_corners() {
+        if moved_vertex[parent.corner_verts[c] as usize] {
+            near[topo.corner_face(c) as usize] = true;
         }
     }
-    let list = |flags: &[bool]| -> Vec<u32> {
-        (0..flags.len() as u32)
-            .filter(|&f| flags[f as usize])
-            .collect()
+    let mut near_vertex = vec![false; parent.num_vertices()];
+    for c in 0..topo.num_corners() {
+        if near[topo.corner_face(c) as usize] {
+            near_vertex[parent.corner_verts[c] as usize] = true;
+        }
+    }
+    let faces_of_edge = |e: usize| {
+        let c = topo.edge_corner[e] as usize;
+        [
+            topo.corner_face(c) as usize,
+            topo.corner_face(topo.twin[c] as usize) as usize,
+        ]
     };
-    let pairs = crate::analysis::crossings_of(child, &list(&touched), Some(&list(&among)));
+    let (mut touched, mut among) = (Vec::new(), Vec::new());
+    for f in 0..child.num_faces() {
+        let p = prov.face_parent[f] as usize;
+        let (is_touched, is_near) = match prov.face_kind[f] {
+            FaceKind::Face => (moved[p], near[p]),
+            FaceKind::Edge => {
+                let [a, b] = faces_of_edge(p);
+                (moved[a] || moved[b], near[a] || near[b])
+            }
+            FaceKind::Vertex => (moved_vertex[p], near_vertex[p]),
+        };
+        if is_touched {
+            touched.push(f as u32);
+        }
+        if is_near {
+            among.push(f as u32);
+        }
+    }
+    let pairs = crate::analysis::crossings_of(child, &touched, Some(&among));
     let mut seeds: Vec<u32> = pairs.iter().flat_map(|&(f, g)| [f, g]).collect();
     seeds.sort_unstable();
     seeds.dedup();
