@@ -41,10 +41,10 @@ pub fn crossings(mesh: &PolyMesh) -> Vec<(u32, u32)> {
 /// them — then both ways — or another), ascending: the same test as [`crossings`], for a few
 /// faces without a grid of all of them; `among`, when given, lists the faces g tried (the
 /// neighbourhood where a crossing is looked for), else every face is. The listed faces go into a uniform grid over their
-/// joint box (cells twice their mean box diagonal, at most [`LOCAL_CELLS`]); one pass over
+/// joint box (cells twice their mean box diagonal, at most `LOCAL_CELLS`); one pass over
 /// every face skips those whose box misses the joint one and tries the listed faces of the
 /// cells the rest overlap, each pair only in the cell that holds the low corner of the two
-/// boxes' overlap (so none twice). A listed face spanning more than [`LOCAL_SPAN`] cells is
+/// boxes' overlap (so none twice). A listed face spanning more than `LOCAL_SPAN` cells is
 /// tried against every face, and a face that large against every listed one.
 pub fn crossings_of(mesh: &PolyMesh, faces: &[u32], among: Option<&[u32]>) -> Vec<(u32, u32)> {
     use rayon::prelude::*;

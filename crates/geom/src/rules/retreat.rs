@@ -1,8 +1,10 @@
 //! The combination rule's final resort (docs/algorithms/cylindrical.md, "Small chamfers beside
 //! a fold"): where new faces are still flipped after the fold guard ([`super::unfold`]), the
-//! blend faces' width offset ([`super::reoffset`]) and the untangling ([`super::untangle`]),
-//! the points around the parent vertices of those faces give up the rounding there for a small
-//! chamfer. Every corner c at such a vertex v takes the point
+//! blend faces' width offset ([`super::reoffset`]) and the untangling ([`super::untangle`]) —
+//! or, with none flipped, pass through their neighbours beside the guard's moves (the step's
+//! `guard_crossings`, "Crossings beside the guard's moves") — the points around the parent
+//! vertices of those faces give up the rounding there for a small chamfer. Every corner c at
+//! such a vertex v takes the point
 //!
 //! ```text
 //! p_c = v + l_v · b_c,   b_c = unit bisector of the corner's angle, into its face,
@@ -13,12 +15,15 @@
 //! parent is flat enough at v for its corners' sectors to lie in order round the vertex normal,
 //! the VERTEX-face's points lie in that order (it cannot turn over), the EDGE-faces are thin
 //! strips on their edges' own sides and the FACE-faces keep their faces' orientation, whatever
-//! the rounding wanted there. The vertices of faces still flipped join, and h counts how often
-//! a vertex has been among them; sixteen rounds at most, judged on the whole step's check. Kept
-//! only when no new face is left flipped, no more are degenerate than before and no face with a
-//! moved point passes through another (else nothing moves); the step reports how many vertices took it. It cannot mend a parent that is already pleated at v (a face turned more
-//! than 90° from the sum of the normals round it), where no small chamfer is sound.
-
+//! the rounding wanted there. The vertices of faces still flipped join, and so do those of
+//! faces with a moved point that pass through another ([`crate::analysis::crossings_of`],
+//! which the step's check cannot see); h counts how often a vertex has been among them;
+//! sixteen rounds at most, judged on the whole step's check. Kept only when no new face is left
+//! flipped, no more are degenerate than before and no face with a moved point passes through
+//! another (else nothing moves, and the rounding's flipped faces are the report); the step
+//! reports how many vertices took it. It cannot mend a parent that is already pleated at v (a
+//! face turned more than 90° from the sum of the normals round it), where no small chamfer is
+//! sound.
 use crate::mesh::PolyMesh;
 use crate::topology::Topology;
 use glam::DVec3;
