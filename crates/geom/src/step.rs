@@ -359,11 +359,11 @@ fn guard_crossings(
             among.push(f as u32);
         }
     }
-    let pairs = crate::analysis::crossings_of(child, &touched, Some(&among));
-    let mut seeds: Vec<u32> = pairs.iter().flat_map(|&(f, g)| [f, g]).collect();
-    seeds.sort_unstable();
-    seeds.dedup();
-    seeds
+    crate::analysis::crossing_faces(&crate::analysis::crossings_of(
+        child,
+        &touched,
+        Some(&among),
+    ))
 }
 
 /// Flipped and degenerate new faces, and the signed volume of the child: one pass over the

@@ -31,6 +31,19 @@ fn build(primitives: Vec<PrimitiveInput>, t: f64) -> Envelope {
     envelope(&spec(primitives, t)).unwrap()
 }
 
+/// The envelope of `primitives` at `t` as listed and listed backwards, each checked to fold
+/// nowhere and, tessellated 8 × 8 a patch, to cross itself nowhere.
+fn unfolded_both_ways(primitives: &[PrimitiveInput], t: f64) -> [Envelope; 2] {
+    use prism_geom::freeform::envelope::folds::crossings;
+    let backwards: Vec<PrimitiveInput> = primitives.iter().rev().cloned().collect();
+    [primitives.to_vec(), backwards].map(|listed| {
+        let e = build(listed, t);
+        assert_eq!(e.folds(), vec![], "t = {t}");
+        assert!(crossings(&e.tessellate(8).unwrap()).is_empty(), "t = {t}");
+        e
+    })
+}
+
 use prism_geom::analysis::winding_number as winding;
 
 fn face_normal(m: &PolyMesh, f: usize) -> (DVec3, DVec3, f64) {
@@ -787,7 +800,6 @@ fn a_thin_pentagon_is_split_as_a_strip() {
 #[test]
 fn corners_inside_a_face_lie_as_far_out_as_their_neighbours() {
     use prism_geom::freeform::envelope::CurveKind;
-    use prism_geom::freeform::envelope::folds::crossings;
     for (text, ts) in [
         (
             include_str!("data/envelope/inside-corner-near-edge.envelope.json"),
@@ -800,14 +812,7 @@ fn corners_inside_a_face_lie_as_far_out_as_their_neighbours() {
     ] {
         let spec: EnvelopeSpec = serde_json::from_str(text).unwrap();
         for &t in ts {
-            let mut listed = spec.primitives.clone();
-            for reversed in [false, true] {
-                if reversed {
-                    listed.reverse();
-                }
-                let e = build(listed.clone(), t);
-                assert_eq!(e.folds(), vec![], "t = {t}");
-                assert!(crossings(&e.tessellate(8).unwrap()).is_empty(), "t = {t}");
+            for e in unfolded_both_ways(&spec.primitives, t) {
                 let mut short = 0;
                 for r in &e.network.regions {
                     let RegionKind::Primitive { primitive, .. } = r.kind else {
@@ -840,7 +845,6 @@ fn corners_inside_a_face_lie_as_far_out_as_their_neighbours() {
 /// the listing, and at the t where the single patch folded the region has four patches.
 #[test]
 fn four_sided_regions_with_a_short_side_split_where_they_fold() {
-    use prism_geom::freeform::envelope::folds::crossings;
     for (text, folded_at) in [
         (
             include_str!("data/envelope/cut-near-a-vertex.envelope.json"),
@@ -853,14 +857,7 @@ fn four_sided_regions_with_a_short_side_split_where_they_fold() {
     ] {
         let spec: EnvelopeSpec = serde_json::from_str(text).unwrap();
         for t in [1.0, 0.5, 0.2, 0.1] {
-            let mut listed = spec.primitives.clone();
-            for reversed in [false, true] {
-                if reversed {
-                    listed.reverse();
-                }
-                let e = build(listed.clone(), t);
-                assert_eq!(e.folds(), vec![], "t = {t}");
-                assert!(crossings(&e.tessellate(8).unwrap()).is_empty(), "t = {t}");
+            for e in unfolded_both_ways(&spec.primitives, t) {
                 assert!(e.largest_border_jump() < 1e-9, "t = {t}");
                 if t == folded_at {
                     let split = (0..e.network.regions.len()).any(|r| {

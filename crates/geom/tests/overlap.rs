@@ -8,9 +8,16 @@ use prism_geom::{
 };
 use std::path::Path;
 
-fn computer_room() -> PolyMesh {
-    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../assets/computer-room.obj");
+/// A bundled solid's mesh (assets/).
+fn asset(name: &str) -> PolyMesh {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../../assets")
+        .join(name);
     io::load(&path).unwrap().0.mesh
+}
+
+fn computer_room() -> PolyMesh {
+    asset("computer-room.obj")
 }
 
 fn combination(n: usize, r: f64) -> Vec<Scheme> {
@@ -458,10 +465,7 @@ fn a_fine_torus_rounds_through_four_combination_steps() {
 /// island merged now (docs/algorithms/cylindrical.md, "Flat edges").
 #[test]
 fn merging_flat_faces_leaves_no_two_cornered_vertex() {
-    let l_block = io::load(&Path::new(env!("CARGO_MANIFEST_DIR")).join("../../assets/l-block.obj"))
-        .unwrap()
-        .0
-        .mesh;
+    let l_block = asset("l-block.obj");
     let mut s = steps("catmull-clark");
     s.extend(combination(3, 0.3));
     let p = run(l_block, EdgeAttrs::new(), s, Overlap::Clamp);
@@ -840,10 +844,7 @@ fn small_chamfers_take_over_where_a_round_still_folds() {
 /// flipped face's do, and the resort ends with nothing flipped and nothing crossing.
 #[test]
 fn small_chamfers_that_would_cross_go_on_shrinking() {
-    let l_block = io::load(&Path::new(env!("CARGO_MANIFEST_DIR")).join("../../assets/l-block.obj"))
-        .unwrap()
-        .0
-        .mesh;
+    let l_block = asset("l-block.obj");
     let p = sound_and_crossing_nowhere(
         l_block,
         "cut-width:d=0.05,catmull-clark,combination:r=0.2,combination:r=0.2,combination:r=0.2",
@@ -876,10 +877,7 @@ fn small_chamfers_shrink_on_for_as_many_rounds_as_the_crossings_need() {
 /// crossing nowhere at every level.
 #[test]
 fn crossings_beside_the_guards_moves_take_small_chamfers() {
-    let tripod = io::load(&Path::new(env!("CARGO_MANIFEST_DIR")).join("../../assets/tripod.obj"))
-        .unwrap()
-        .0
-        .mesh;
+    let tripod = asset("tripod.obj");
     let p = sound_and_crossing_nowhere(
         tripod,
         "cut-width:d=0.05,vector-sum:alpha=0.2:reflex=inward,\

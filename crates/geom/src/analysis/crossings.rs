@@ -40,12 +40,10 @@ pub fn crossings(mesh: &PolyMesh) -> Vec<(u32, u32)> {
 /// The pairs `(f, g)`, `f` one of `faces`, in which it crosses a face `g` of `mesh` (one of
 /// them — then both ways — or another), ascending: the same test as [`crossings`], for a few
 /// faces without a grid of all of them; `among`, when given, lists the faces g tried (the
-/// neighbourhood where a crossing is looked for), else every face is. The listed faces go into a uniform grid over their
-/// joint box (cells twice their mean box diagonal, at most `LOCAL_CELLS`); one pass over
-/// every face skips those whose box misses the joint one and tries the listed faces of the
-/// cells the rest overlap, each pair only in the cell that holds the low corner of the two
-/// boxes' overlap (so none twice). A listed face spanning more than `LOCAL_SPAN` cells is
-/// tried against every face, and a face that large against every listed one.
+/// neighbourhood where a crossing is looked for), else every face is. The listed faces go into
+/// a [`FaceGrid`] of their own (at most `LOCAL_CELLS` cells); one pass over the faces tried
+/// skips those whose box misses the listed faces' joint box and tries the listed faces whose
+/// boxes overlap theirs ([`FaceGrid::for_each_overlapping`]).
 pub fn crossings_of(mesh: &PolyMesh, faces: &[u32], among: Option<&[u32]>) -> Vec<(u32, u32)> {
     use rayon::prelude::*;
     if faces.is_empty() {
@@ -59,72 +57,15 @@ pub fn crossings_of(mesh: &PolyMesh, faces: &[u32], among: Option<&[u32]>) -> Ve
         // A face with a NaN point: counted as crossing itself.
         return vec![(faces[i], faces[i])];
     }
-    let (lo, hi) = boxes.iter().fold(
+    let joint = boxes.iter().fold(
         (DVec3::splat(f64::INFINITY), DVec3::splat(f64::NEG_INFINITY)),
         |(lo, hi), b| (lo.min(b.0), hi.max(b.1)),
     );
-    let extent = (hi - lo).max(DVec3::splat(1e-300));
-    let mean = boxes.iter().map(|b| (b.1 - b.0).length()).sum::<f64>() / boxes.len() as f64;
-    let mut cell = (2.0 * mean).max(extent.max_element() * 1e-6);
-    let dims_of = |c: f64| (extent / c).ceil().max(DVec3::ONE);
-    while dims_of(cell).element_product() > LOCAL_CELLS {
-        cell *= 1.5;
-    }
-    let d = dims_of(cell);
-    let dims = [d.x as usize, d.y as usize, d.z as usize];
-    let idx = |p: DVec3| {
-        [0, 1, 2].map(|k| {
-            let x = ((p[k] - lo[k]) / cell).floor();
-            (x.max(0.0) as usize).min(dims[k] - 1)
-        })
-    };
-    let flat = |c: [usize; 3]| (c[2] * dims[1] + c[1]) * dims[0] + c[0];
-    // The cells a box overlaps (clamped to the grid), or None when more than LOCAL_SPAN.
-    let range = |(a, b): (DVec3, DVec3)| {
-        let (a, b) = (idx(a), idx(b));
-        let span: usize = (0..3).map(|k| b[k] - a[k] + 1).product();
-        (span <= LOCAL_SPAN).then_some((a, b))
-    };
-    let for_cells = |(a, b): ([usize; 3], [usize; 3]), f: &mut dyn FnMut(usize)| {
-        for z in a[2]..=b[2] {
-            for y in a[1]..=b[1] {
-                for x in a[0]..=b[0] {
-                    f(flat([x, y, z]));
-                }
-            }
-        }
-    };
-    // Listed faces by cell, in two passes into one flat list.
-    let n = dims[0] * dims[1] * dims[2];
-    let mut start = vec![0u32; n + 1];
-    let mut big = Vec::new();
-    let ranges: Vec<_> = boxes.iter().map(|&b| range(b)).collect();
-    for (i, r) in ranges.iter().enumerate() {
-        match r {
-            Some(r) => for_cells(*r, &mut |c| start[c + 1] += 1),
-            None => big.push(i),
-        }
-    }
-    for c in 0..n {
-        start[c + 1] += start[c];
-    }
-    let mut fill = start.clone();
-    let mut listed_in = vec![0u32; start[n] as usize];
-    for (i, r) in ranges.iter().enumerate() {
-        if let Some(r) = r {
-            for_cells(*r, &mut |c| {
-                listed_in[fill[c] as usize] = i as u32;
-                fill[c] += 1;
-            });
-        }
-    }
+    let grid = FaceGrid::of_boxes(boxes, LOCAL_CELLS);
     let listed: Vec<Vec<[u32; 3]>> = faces
         .iter()
         .map(|&f| face_vertex_triangles(mesh, f as usize))
         .collect();
-    let overlap =
-        |(a, b): (DVec3, DVec3), (c, d): (DVec3, DVec3)| a.cmple(d).all() && c.cmple(b).all();
-    let joint = (lo, hi);
     let all: Vec<u32>;
     let among = match among {
         Some(a) => a,
@@ -137,51 +78,27 @@ pub fn crossings_of(mesh: &PolyMesh, faces: &[u32], among: Option<&[u32]>) -> Ve
         .par_iter()
         .with_min_len(1 << 12)
         .flat_map_iter(|&g| {
-            let g = g as usize;
-            let gb = face_box(mesh, g);
+            let gb = face_box(mesh, g as usize);
             let mut hits = Vec::new();
             // A face with a NaN point overlaps nothing here; `crossings` names it.
-            if !overlap(gb, joint) {
+            if !(joint.0.cmple(gb.1).all() && gb.0.cmple(joint.1).all()) {
                 return hits;
             }
             let mut tg = None;
-            let mut try_pair = |i: usize| {
-                if faces[i] as usize == g || !overlap(boxes[i], gb) {
-                    return;
-                }
-                let tg = tg.get_or_insert_with(|| face_vertex_triangles(mesh, g));
-                if faces_cross(mesh, &listed[i], tg) {
-                    hits.push((faces[i], g as u32));
-                }
-            };
-            match range(gb) {
-                Some(r) if ranges.len() > big.len() => {
-                    for &i in &big {
-                        try_pair(i);
+            grid.for_each_overlapping(gb, |i| {
+                if faces[i] != g {
+                    let tg = tg.get_or_insert_with(|| face_vertex_triangles(mesh, g as usize));
+                    if faces_cross(mesh, &listed[i], tg) {
+                        hits.push((faces[i], g));
                     }
-                    for_cells(r, &mut |c| {
-                        for &i in &listed_in[start[c] as usize..start[c + 1] as usize] {
-                            let i = i as usize;
-                            // Each pair in one cell only: the one holding the low corner of
-                            // the boxes' overlap (both boxes are listed there).
-                            if ranges[i].is_some() && flat(idx(boxes[i].0.max(gb.0))) == c {
-                                try_pair(i);
-                            }
-                        }
-                    })
                 }
-                _ => (0..boxes.len()).for_each(&mut try_pair),
-            }
+            });
             hits
         })
         .collect();
     out.sort_unstable();
     out
 }
-
-/// A face box spanning more cells of [`crossings_of`]'s grid than this is tried against every
-/// face of the other kind.
-const LOCAL_SPAN: usize = 64;
 
 /// The most cells [`crossings_of`]'s grid has.
 const LOCAL_CELLS: f64 = (1 << 18) as f64;

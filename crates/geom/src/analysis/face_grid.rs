@@ -47,10 +47,6 @@ impl FaceGrid {
             .map(|f| face_box(mesh, f))
             .filter(|b| b.0.is_finite() && b.1.is_finite())
             .collect();
-        let (lo, hi) = boxes.iter().fold(
-            (DVec3::splat(f64::INFINITY), DVec3::splat(f64::NEG_INFINITY)),
-            |(lo, hi), b| (lo.min(b.0), hi.max(b.1)),
-        );
         if boxes.len() != mesh.num_faces() || boxes.is_empty() {
             // A face without a finite box: everything on the big list (a plain scan).
             return FaceGrid {
@@ -63,11 +59,21 @@ impl FaceGrid {
                 big: (0..mesh.num_faces() as u32).collect(),
             };
         }
+        Self::of_boxes(boxes, MAX_CELLS)
+    }
+
+    /// A grid of the finite, non-empty `boxes` (item i is box i) with at most `max_cells`
+    /// cells: what [`FaceGrid::new`] builds for a mesh's faces, for any list of boxes.
+    pub fn of_boxes(boxes: Vec<(DVec3, DVec3)>, max_cells: f64) -> FaceGrid {
+        let (lo, hi) = boxes.iter().fold(
+            (DVec3::splat(f64::INFINITY), DVec3::splat(f64::NEG_INFINITY)),
+            |(lo, hi), b| (lo.min(b.0), hi.max(b.1)),
+        );
         let extent = (hi - lo).max(DVec3::splat(1e-300));
         let mean = boxes.iter().map(|b| (b.1 - b.0).length()).sum::<f64>() / boxes.len() as f64;
         let mut cell = (2.0 * mean).max(extent.max_element() * 1e-6);
         let cells = |c: f64| (extent / c).ceil().max(DVec3::ONE);
-        while cells(cell).element_product() > MAX_CELLS {
+        while cells(cell).element_product() > max_cells {
             cell *= 1.5;
         }
         let d = cells(cell);
@@ -234,6 +240,37 @@ impl FaceGrid {
             .collect();
         pairs.extend(big_pairs);
         pairs
+    }
+
+    /// Calls `visit` once for every item whose box overlaps or touches `b`: the big ones, and
+    /// those of the cells `b` overlaps, each in the cell that holds the low corner of the two
+    /// boxes' overlap (both are listed there); a `b` spanning more than [`BIG`] cells scans
+    /// every box. On a grid without boxes every item is visited.
+    pub fn for_each_overlapping(&self, b: (DVec3, DVec3), mut visit: impl FnMut(usize)) {
+        let hit = |i: usize| {
+            self.boxes
+                .get(i)
+                .is_none_or(|&(lo, hi)| lo.cmple(b.1).all() && b.0.cmple(hi).all())
+        };
+        let (a, z) = self.range(b.0, b.1);
+        if self.boxes.is_empty() || Self::span(a, z) > BIG {
+            let n = self.boxes.len().max(self.big.len());
+            (0..n).filter(|&i| hit(i)).for_each(visit);
+            return;
+        }
+        for &i in &self.big {
+            if hit(i as usize) {
+                visit(i as usize);
+            }
+        }
+        self.for_cells(a, z, |c| {
+            for &i in &self.faces[self.start[c] as usize..self.start[c + 1] as usize] {
+                let i = i as usize;
+                if hit(i) && self.cell_of(self.boxes[i].0.max(b.0)) == c {
+                    visit(i);
+                }
+            }
+        });
     }
 
     /// Whether face `f`'s box comes within `reach` of `p`.

@@ -155,9 +155,7 @@ pub(crate) fn retreat(
             if crossing.is_empty() {
                 return round.list.len();
             }
-            left = crossing.iter().flat_map(|&(f, g)| [f, g]).collect();
-            left.sort_unstable();
-            left.dedup();
+            left = crate::analysis::crossing_faces(&crossing);
         }
         round.join(mesh, child, &left);
     }

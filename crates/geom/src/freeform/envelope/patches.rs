@@ -777,13 +777,13 @@ fn quad_patches(
 ) -> Vec<EnvelopePatch> {
     let quad: [PatchSide; 4] = region.sides.clone().try_into().expect("four");
     let one = vec![patch(net, quad, r)];
-    let chords = region.sides.iter().map(|s| {
-        let c = &net.curves[s.curve].bezier;
-        c.eval(s.t0).distance(c.eval(s.t1))
-    });
-    let (shortest, longest) = chords.fold((f64::INFINITY, 0.0f64), |(lo, hi), c| {
-        (lo.min(c), hi.max(c))
-    });
+    let (shortest, longest) = region
+        .sides
+        .iter()
+        .map(|s| chord(net, s))
+        .fold((f64::INFINITY, 0.0f64), |(lo, hi), c| {
+            (lo.min(c), hi.max(c))
+        });
     if shortest >= QUAD_SHORT * longest {
         return one;
     }
