@@ -218,7 +218,19 @@ pub fn biquadratic_step_carrying(
             checked = recheck(&out);
         }
     }
-    if is_combination && !checked.flipped.is_empty() {
+    // The minimum type and the chamfers, when clamping asks for a sound solid, take the
+    // last two resorts too (the simple type's folds are the paper's lesson, Doo–Sabin's the
+    // scheme as printed).
+    let resorts = is_combination
+        || (options.overlap == rules::Overlap::Clamp
+            && matches!(
+                rule,
+                CornerRule::Minimum { .. }
+                    | CornerRule::AngleBisector { .. }
+                    | CornerRule::CutWidth { .. }
+                    | CornerRule::VectorSum { .. }
+            ));
+    if resorts && !checked.flipped.is_empty() {
         let corners: Vec<u32> = checked
             .flipped
             .iter()
@@ -237,7 +249,7 @@ pub fn biquadratic_step_carrying(
     } else {
         Vec::new()
     };
-    if is_combination && (!checked.flipped.is_empty() || !crossing_seeds.is_empty()) {
+    if resorts && (!checked.flipped.is_empty() || !crossing_seeds.is_empty()) {
         let seeds = if checked.flipped.is_empty() {
             &crossing_seeds
         } else {

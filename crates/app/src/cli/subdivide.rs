@@ -53,7 +53,8 @@ pub struct StepArgs {
     /// Lower the radius of edges whose rounds do not fit their faces to what fits, and say
     /// which (without it such a step is refused, naming them); lower a chamfer's l or d on
     /// faces too small for it (a quarter of the shorter edge at each corner) and the vector
-    /// sum's α on faces whose reflex corners would cross them.
+    /// sum's α on faces whose reflex corners would cross them; where a chamfer's or the
+    /// minimum type's new face would still turn over, smooth it or chamfer its vertices small.
     #[arg(long)]
     pub clamp: bool,
     /// With --scheme angle-bisector or cut-width: divide l or d by K at each step after the
@@ -299,7 +300,7 @@ fn warn_level(k: usize, r: &StepReport, before: f64) {
     }
     if r.small_chamfers > 0 {
         eprintln!(
-            "note: level {k}: the rounding gave way to a small chamfer at {} vertex(es) where a new face would still have been flipped",
+            "note: level {k}: the rule's points gave way to a small chamfer at {} vertex(es) where a new face would still have been flipped",
             r.small_chamfers
         );
     }

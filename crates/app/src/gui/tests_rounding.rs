@@ -180,7 +180,7 @@ fn the_status_bar_says_what_the_clamp_and_the_untangling_did() {
         5,
     );
     assert!(
-        n.contains("small chamfer instead of the round at 30 vertex(es) beside a fold"),
+        n.contains("small chamfer instead of the rule's points at 30 vertex(es) beside a fold"),
         "{n}"
     );
 }

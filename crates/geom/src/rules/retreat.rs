@@ -1,5 +1,6 @@
-//! The combination rule's final resort (docs/algorithms/cylindrical.md, "Small chamfers beside
-//! a fold"): where new faces are still flipped after the fold guard ([`super::unfold`]), the
+//! The combination rule's final resort, and the minimum type's and the chamfers' when clamped
+//! (docs/algorithms/cylindrical.md, "Small chamfers beside a fold", "Chamfers and the minimum
+//! type, clamped"): where new faces are still flipped after the fold guard ([`super::unfold`]), the
 //! blend faces' width offset ([`super::reoffset`]) and the untangling ([`super::untangle`]) —
 //! or, with none flipped, pass through their neighbours beside the guard's moves (the step's
 //! `guard_crossings`, "Crossings beside the guard's moves") — the points around the parent

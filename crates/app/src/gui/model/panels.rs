@@ -557,7 +557,7 @@ pub(crate) fn step_notes(r: &prism_geom::StepReport) -> String {
     }
     if r.small_chamfers > 0 {
         text += &format!(
-            " — small chamfer instead of the round at {} vertex(es) beside a fold",
+            " — small chamfer instead of the rule's points at {} vertex(es) beside a fold",
             r.small_chamfers
         );
     }
