@@ -17,7 +17,7 @@ use crate::refine::Provenance;
 use crate::rules::Overlap;
 use crate::rules::{CombinationState, CornerRule};
 use crate::scheme::Scheme;
-use crate::step::{StepError, StepOptions, StepReport, biquadratic_step_carrying};
+use crate::step::{StepError, StepOptions, StepReport, biquadratic_step_carrying, primal_flipped};
 use crate::tags::SubdivTags;
 use crate::topology::Topology;
 use glam::DVec3;
@@ -451,6 +451,7 @@ impl Pipeline {
                                 repoint(&prev.mesh, &topo, &prev.edge_attrs, &prev.tags, p)
                                     .map_err(|e| err(e.into()))?;
                             if let Some(r) = child.report.as_mut() {
+                                r.flipped = primal_flipped(&prev.mesh, &child.mesh, p.split());
                                 r.volume = signed_volume(&child.mesh);
                                 r.millis = started.elapsed().as_secs_f64() * 1e3;
                             }
@@ -478,6 +479,7 @@ impl Pipeline {
                                 vertices: r.vertices,
                                 edges: r.edges,
                                 faces: r.faces,
+                                flipped: primal_flipped(&prev.mesh, &out.mesh, p.split()),
                                 volume: signed_volume(&out.mesh),
                                 millis: r.millis,
                                 ..StepReport::default()

@@ -448,6 +448,68 @@ pub fn check_children(
     out
 }
 
+/// The new faces of a Catmull–Clark or Loop step that the step turned over
+/// (docs/algorithms/biquadratic.md, "Faces a smoothing step turns over"): a face that faces
+/// against its parent face (child quad c of the quad split lies in the face of parent corner
+/// c, child triangle 4f + k in triangle f) *and* against the sum of the normals round one of
+/// its own vertices — a pleat in the child, not just a thin parent face whose children follow
+/// their neighbours (a 0.004-wide strip on OpenSubdiv's car turns 94° from its children, and
+/// the surface there is smooth). Neither scheme folds a convex face, but the face point of a
+/// concave face (its vertex centroid) can lie outside it, and a vertex point at a reflex
+/// corner can move farther than a thin face beside it is wide: the quads there turn over —
+/// the scheme as printed, which the step reports rather than mends. Faces of no area
+/// ([`is_degenerate`]) are not counted; a child whose face count does not match the split's
+/// is not judged (empty).
+pub fn primal_flipped(parent: &PolyMesh, child: &PolyMesh, split: refine::PrimalSplit) -> Vec<u32> {
+    use rayon::prelude::*;
+    let expected = match split {
+        refine::PrimalSplit::Quad => parent.num_corners(),
+        refine::PrimalSplit::Tri => 4 * parent.num_faces(),
+    };
+    if child.num_faces() != expected {
+        return Vec::new();
+    }
+    let s = scale(child);
+    // Against the parent face, each parent face's children at once; few are, so the
+    // child's vertex normal sums are found only when some are.
+    let mut against: Vec<usize> = (0..parent.num_faces())
+        .into_par_iter()
+        .with_min_len(1024)
+        .flat_map_iter(|f| {
+            let np = crate::geometry::face_normal_raw(parent, f);
+            let children = match split {
+                refine::PrimalSplit::Quad => parent.face_corners(f),
+                refine::PrimalSplit::Tri => 4 * f..4 * f + 4,
+            };
+            children.filter(move |&c| {
+                let n = crate::geometry::face_normal_raw(child, c);
+                n.dot(np) < 0.0 && !is_degenerate(child, c, n, s)
+            })
+        })
+        .collect();
+    against.sort_unstable();
+    if against.is_empty() {
+        return Vec::new();
+    }
+    let normals = crate::geometry::face_normals_raw(child);
+    let mut vsum = vec![DVec3::ZERO; child.num_vertices()];
+    for (f, n) in normals.iter().enumerate() {
+        let u = n.normalize_or_zero();
+        for c in child.face_corners(f) {
+            vsum[child.corner_verts[c] as usize] += u;
+        }
+    }
+    against
+        .into_iter()
+        .filter(|&f| {
+            child
+                .face_corners(f)
+                .any(|c| normals[f].dot(vsum[child.corner_verts[c] as usize]) < 0.0)
+        })
+        .map(|f| f as u32)
+        .collect()
+}
+
 /// The level's scale S of [`DEGENERATE_NOISE`]: the larger of the bounding-box diagonal and
 /// the largest coordinate's magnitude.
 pub fn scale(mesh: &PolyMesh) -> f64 {

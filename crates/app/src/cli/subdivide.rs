@@ -478,12 +478,16 @@ pub fn run(a: SubdivideArgs) -> Result<(), CliError> {
             .report
             .as_ref()
             .expect("computed levels have a report");
-        // Biquadratic steps check every new face against its parent; primal steps
-        // (smooth schemes) report their holes instead.
+        // Every step checks its new faces against their parents; primal steps (smooth
+        // schemes) report their holes too.
         let check = if matches!(steps[k - 1], Scheme::Biquadratic(_)) {
             format!("flipped={}", r.flipped.len())
         } else {
-            format!("{} hole faces", level.tags.holes.len())
+            format!(
+                "flipped={}, {} hole faces",
+                r.flipped.len(),
+                level.tags.holes.len()
+            )
         };
         let crossings = a
             .check_crossings

@@ -24,7 +24,7 @@
 //! another (else nothing moves, and the rounding's flipped faces are the report); the step
 //! reports how many vertices took it. It cannot mend a parent that is already pleated at v (a
 //! face turned more than 90° from the sum of the normals round it), where no small chamfer is
-//! sound.
+//! sound; a Catmull–Clark level that pleats says so itself (`step::primal_flipped`).
 use crate::mesh::PolyMesh;
 use crate::topology::Topology;
 use glam::DVec3;
