@@ -409,7 +409,9 @@ impl Pipeline {
                         && radius(&self.steps[k - 1]) == radius(&self.steps[k]);
                     let options = StepOptions {
                         overlap: if continues_run {
-                            Overlap::Unchecked
+                            Overlap::Unchecked {
+                                clamped: self.options.overlap.clamps(),
+                            }
                         } else {
                             self.options.overlap
                         },

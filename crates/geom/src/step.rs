@@ -44,6 +44,11 @@ pub struct StepOptions {
     pub memory_budget: u64,
     /// What a cylindrical-family step does with radii whose rounds do not fit their faces.
     pub overlap: rules::Overlap,
+    /// Whether a step whose last resorts run (the combination rule; the minimum type and the
+    /// chamfers when clamping) also searches its whole level for faces that pass through
+    /// each other and lets them seed the small chamfers (`rules::retreat`): about ten times
+    /// the step's time, so off by default.
+    pub mend_crossings: bool,
 }
 
 impl Default for StepOptions {
@@ -52,6 +57,7 @@ impl Default for StepOptions {
             flat_tolerance: 1e-6,
             memory_budget: 8 << 30,
             overlap: rules::Overlap::Refuse,
+            mend_crossings: false,
         }
     }
 }
@@ -222,7 +228,7 @@ pub fn biquadratic_step_carrying(
     // last two resorts too (the simple type's folds are the paper's lesson, Doo–Sabin's the
     // scheme as printed).
     let resorts = is_combination
-        || (options.overlap == rules::Overlap::Clamp
+        || (options.overlap.clamps()
             && matches!(
                 rule,
                 CornerRule::Minimum { .. }
@@ -244,11 +250,18 @@ pub fn biquadratic_step_carrying(
     let mut small_chamfers = 0;
     // New faces round the guard's moves that pass through others though none is flipped:
     // they seed the small chamfers as flipped ones do.
-    let crossing_seeds = if is_combination && checked.flipped.is_empty() && !unfolded.is_empty() {
+    let mut crossing_seeds = if is_combination && checked.flipped.is_empty() && !unfolded.is_empty()
+    {
         guard_crossings(cur, topo, &out, &prov, &unfolded)
     } else {
         Vec::new()
     };
+    // Asked for, crossings anywhere on the level seed them too (the whole level searched:
+    // about ten times the step; docs/algorithms/cylindrical.md, "Mending every crossing").
+    if options.mend_crossings && resorts && checked.flipped.is_empty() && crossing_seeds.is_empty()
+    {
+        crossing_seeds = crate::analysis::crossing_faces(&crate::analysis::crossings(&out));
+    }
     if resorts && (!checked.flipped.is_empty() || !crossing_seeds.is_empty()) {
         let seeds = if checked.flipped.is_empty() {
             &crossing_seeds

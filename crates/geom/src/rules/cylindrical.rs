@@ -150,7 +150,7 @@ pub(super) fn prepare<'a>(
         vertex_neighbourhood: skip,
     };
     let mut clamped = Vec::new();
-    if options.overlap != Overlap::Unchecked {
+    if !matches!(options.overlap, Overlap::Unchecked { .. }) {
         let tangents: Vec<f64> = radii
             .par_iter()
             .with_min_len(PAR_MIN)

@@ -38,8 +38,8 @@ pub enum Overlap {
     /// steps after keep it) and list them in the report.
     Clamp,
     /// Do not check: the radii were checked when the run of cylindrical-family steps began
-    /// (the pipeline sets this on the steps that continue a run).
-    Unchecked,
+    /// (the pipeline sets this on the steps that continue a run), clamping or not.
+    Unchecked { clamped: bool },
 }
 
 /// An edge whose round does not fit: its radius and the largest that fits.
@@ -52,6 +52,12 @@ pub struct EdgeFit {
 }
 
 impl Overlap {
+    /// Whether the step is asked for a sound solid: clamping, or continuing a clamped run
+    /// (the minimum type and the chamfers then take the last resorts too).
+    pub fn clamps(self) -> bool {
+        matches!(self, Overlap::Clamp | Overlap::Unchecked { clamped: true })
+    }
+
     /// `Clamp` when `clamp`, else `Refuse` (the CLI's `--clamp`, the app's checkbox).
     pub fn clamping(clamp: bool) -> Overlap {
         if clamp {

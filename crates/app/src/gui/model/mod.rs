@@ -140,6 +140,9 @@ pub struct ModelTab {
     pub budget_mib: u64,
     /// Clamp radii whose rounds do not fit their faces (on by default; off: refuse them).
     pub clamp: bool,
+    /// Search each rounding's whole level for faces that pass through each other and mend
+    /// them with small chamfers (off by default: about ten times a step).
+    pub mend_crossings: bool,
     /// Step >> after a step of the same absolute chamfer divides its l or d by this.
     pub shrink: f64,
     /// A step stopped at the budget: (view, estimate) waiting for the user's answer.
@@ -180,6 +183,7 @@ impl ModelTab {
             next,
             budget_mib: budget_mib.max(64),
             clamp: true,
+            mend_crossings: false,
             shrink: 4.0,
             question: None,
             drag: None,
@@ -242,6 +246,7 @@ impl ModelTab {
                 let next = fresh();
                 let mut v = ViewPipe::new(next.rebased(Vec::new()));
                 v.overlap = self.overlap();
+                v.mend_crossings = self.mend_crossings;
                 v.level = steps.len();
                 v.scene_opts = self.display.scene_options();
                 v.submit(next, budget, live, &self.waker);
@@ -252,7 +257,8 @@ impl ModelTab {
             let input = v.pipeline.input();
             let same_input =
                 input.mesh == d.mesh && input.edge_attrs == d.edge_attrs && input.tags == d.tags;
-            let same_options = v.pipeline.options.overlap == v.overlap;
+            let same_options = v.pipeline.options.overlap == v.overlap
+                && v.pipeline.options.mend_crossings == v.mend_crossings;
             if same_input && same_options && v.pipeline.steps() == steps.as_slice() && !v.busy() {
                 continue;
             }
@@ -560,6 +566,15 @@ impl ModelTab {
     /// What the views do with radii that do not fit ([`ModelTab::clamp`]).
     pub fn overlap(&self) -> prism_geom::rules::Overlap {
         prism_geom::rules::Overlap::clamping(self.clamp)
+    }
+
+    /// Turns mending crossings on or off: every view computes its levels again.
+    pub fn set_mend_crossings(&mut self, on: bool) {
+        self.mend_crossings = on;
+        for v in &mut self.views {
+            v.mend_crossings = on;
+        }
+        self.synced = None;
     }
 
     /// Turns clamping on or off: every view computes its levels again.

@@ -159,6 +159,22 @@ impl ModelTab {
         {
             self.set_clamp(clamp);
         }
+        let mut mend = self.mend_crossings;
+        if ui
+            .checkbox(
+                &mut mend,
+                "Mend faces that pass through each other (slower)",
+            )
+            .on_hover_text(
+                "After each rounding, search the whole level for faces that pass through \
+                 each other and give the round up for a small chamfer at their vertices \
+                 (about ten times a step's time); off: only crossings beside the fold \
+                 guard's moves are looked for",
+            )
+            .changed()
+        {
+            self.set_mend_crossings(mend);
+        }
         ui.horizontal(|ui| {
             ui.label("memory budget");
             ui.add(

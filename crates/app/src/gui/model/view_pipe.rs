@@ -99,6 +99,9 @@ pub struct ViewPipe {
     /// app clamps by default (as Blender's bevel does), the checkbox in the step panel
     /// turns it off.
     pub overlap: Overlap,
+    /// Whether the rounding steps search their whole level for faces that pass through each
+    /// other and mend them with small chamfers (the step panel's checkbox; off by default).
+    pub mend_crossings: bool,
     pub scene: Arc<Scene>,
     /// What the scene on screen was made from.
     scene_key: Option<SceneKey>,
@@ -143,6 +146,7 @@ impl ViewPipe {
             keep: prism_geom::pipeline::Keep::All,
             budget_override: None,
             overlap: Overlap::Clamp,
+            mend_crossings: false,
             scene: Arc::new(Scene::default()),
             scene_key: None,
             overlay: Arc::new(Scene::default()),
@@ -185,6 +189,7 @@ impl ViewPipe {
         next.options.memory_budget = self.budget_override.unwrap_or(budget);
         next.keep = self.keep;
         next.options.overlap = self.overlap;
+        next.options.mend_crossings = self.mend_crossings;
         self.edit_started
             .get_or_insert_with(std::time::Instant::now);
         if next.is_complete() && self.job.is_none() {
