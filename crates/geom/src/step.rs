@@ -250,31 +250,19 @@ pub fn biquadratic_step_carrying(
     let mut small_chamfers = 0;
     // New faces round the guard's moves that pass through others though none is flipped:
     // they seed the small chamfers as flipped ones do.
-    let mut crossing_seeds = if is_combination && checked.flipped.is_empty() && !unfolded.is_empty()
-    {
+    let crossing_seeds = if is_combination && checked.flipped.is_empty() && !unfolded.is_empty() {
         guard_crossings(cur, topo, &out, &prov, &unfolded)
     } else {
         Vec::new()
     };
-    // Asked for, crossings anywhere on the level seed them too (the whole level searched:
-    // about ten times the step; docs/algorithms/cylindrical.md, "Mending every crossing").
-    if options.mend_crossings && resorts && checked.flipped.is_empty() && crossing_seeds.is_empty()
-    {
-        crossing_seeds = crate::analysis::crossing_faces(&crate::analysis::crossings(&out));
-    }
-    if resorts && (!checked.flipped.is_empty() || !crossing_seeds.is_empty()) {
-        let seeds = if checked.flipped.is_empty() {
-            &crossing_seeds
-        } else {
-            &checked.flipped
-        };
+    let retreat = |out: &mut PolyMesh, checked: &mut ChildCheck, seeds: &[u32]| {
         // The resort's own last check is the step's when it keeps its points.
         let mut last = None;
-        small_chamfers = rules::retreat(
+        let n = rules::retreat(
             cur,
             topo,
             &prep.normals,
-            &mut out,
+            out,
             (seeds, checked.degenerate.len()),
             |m| {
                 let c = recheck(m);
@@ -283,8 +271,24 @@ pub fn biquadratic_step_carrying(
                 seen
             },
         );
-        if small_chamfers > 0 {
-            checked = last.expect("the resort checks the points it keeps");
+        if n > 0 {
+            *checked = last.expect("the resort checks the points it keeps");
+        }
+        n
+    };
+    if resorts && !checked.flipped.is_empty() {
+        let seeds = checked.flipped.clone();
+        small_chamfers += retreat(&mut out, &mut checked, &seeds);
+    } else if resorts && !crossing_seeds.is_empty() {
+        small_chamfers += retreat(&mut out, &mut checked, &crossing_seeds);
+    }
+    // Asked for, crossings left anywhere on the level seed them too (the whole level
+    // searched: about ten times the step; docs/algorithms/cylindrical.md, "Mending every
+    // crossing").
+    if options.mend_crossings && resorts && checked.flipped.is_empty() {
+        let seeds = crate::analysis::crossing_faces(&crate::analysis::crossings(&out));
+        if !seeds.is_empty() {
+            small_chamfers += retreat(&mut out, &mut checked, &seeds);
         }
     }
     let report = StepReport {
