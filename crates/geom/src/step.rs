@@ -487,9 +487,10 @@ pub fn primal_flipped(parent: &PolyMesh, child: &PolyMesh, split: refine::Primal
         return Vec::new();
     }
     let s = scale(child);
-    // Against the parent face, each parent face's children at once; few are, so the
-    // child's vertex normal sums are found only when some are.
-    let mut against: Vec<usize> = (0..parent.num_faces())
+    // Against the parent face, each parent face's children at once (in face order: rayon's
+    // collect keeps it); few are, so the child's vertex normal sums are found only when
+    // some are.
+    let against: Vec<usize> = (0..parent.num_faces())
         .into_par_iter()
         .with_min_len(1024)
         .flat_map_iter(|f| {
@@ -504,7 +505,6 @@ pub fn primal_flipped(parent: &PolyMesh, child: &PolyMesh, split: refine::Primal
             })
         })
         .collect();
-    against.sort_unstable();
     if against.is_empty() {
         return Vec::new();
     }

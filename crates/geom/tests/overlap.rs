@@ -8,12 +8,17 @@ use prism_geom::{
 };
 use std::path::Path;
 
-/// A bundled solid's mesh (assets/).
-fn asset(name: &str) -> PolyMesh {
+/// A bundled document (assets/).
+fn document(name: &str) -> io::Document {
     let path = Path::new(env!("CARGO_MANIFEST_DIR"))
         .join("../../assets")
         .join(name);
-    io::load(&path).unwrap().0.mesh
+    io::load(&path).unwrap().0
+}
+
+/// A bundled solid's mesh (assets/).
+fn asset(name: &str) -> PolyMesh {
+    document(name).mesh
 }
 
 fn computer_room() -> PolyMesh {
@@ -792,14 +797,7 @@ fn tripod_sound_and_crossing_nowhere(text: &str) -> Pipeline {
 }
 
 fn sound_and_crossing_nowhere(mesh: PolyMesh, text: &str) -> Pipeline {
-    let p = run(mesh, EdgeAttrs::new(), steps(text), Overlap::Clamp);
-    assert_eq!(p.levels().len(), steps(text).len() + 1);
-    assert_sound(&p);
-    for (k, lv) in p.levels().iter().enumerate() {
-        let pairs = prism_geom::analysis::crossings(&lv.mesh).len();
-        assert_eq!(pairs, 0, "level {k}");
-    }
-    p
+    sound_and_crossing_nowhere_after(mesh, text, 0)
 }
 
 /// Like [`sound_and_crossing_nowhere`] for the levels after `from` (a smoothing step at
@@ -807,16 +805,26 @@ fn sound_and_crossing_nowhere(mesh: PolyMesh, text: &str) -> Pipeline {
 fn sound_and_crossing_nowhere_after(mesh: PolyMesh, text: &str, from: usize) -> Pipeline {
     let p = run(mesh, EdgeAttrs::new(), steps(text), Overlap::Clamp);
     assert_eq!(p.levels().len(), steps(text).len() + 1);
+    assert_sound_and_crossing_nowhere_after(&p, from);
+    p
+}
+
+/// Every level after `from` has no flipped face and a positive volume, and no level crosses
+/// itself.
+fn assert_sound_and_crossing_nowhere_after(p: &Pipeline, from: usize) {
     for (k, lv) in p.levels().iter().enumerate() {
         let pairs = prism_geom::analysis::crossings(&lv.mesh).len();
         assert_eq!(pairs, 0, "level {k}");
-        let r = lv.report.as_ref();
         if k > from {
-            assert!(r.unwrap().flipped.is_empty(), "level {k}");
-            assert!(r.unwrap().volume > 0.0, "level {k}");
+            let r = lv.report.as_ref().unwrap();
+            assert!(
+                r.flipped.is_empty(),
+                "level {k}: {} flipped",
+                r.flipped.len()
+            );
+            assert!(r.volume > 0.0, "level {k}: volume {}", r.volume);
         }
     }
-    p
 }
 
 /// The fold guard's second pass re-places blend faces with a reflex corner (docs/algorithms/
@@ -916,10 +924,7 @@ fn crossings_beside_the_guards_moves_take_small_chamfers() {
 
 /// A bundled document (assets/) through `text`, clamped or not.
 fn document_run(name: &str, text: &str, overlap: Overlap) -> Pipeline {
-    let path = Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("../../assets")
-        .join(name);
-    let doc = io::load(&path).unwrap().0;
+    let doc = document(name);
     let mut p = Pipeline::with_tags(doc.mesh, doc.edge_attrs, doc.tags, steps(text));
     p.options.overlap = overlap;
     let _ = p.compute();
@@ -938,11 +943,7 @@ fn chamfers_and_the_minimum_type_take_the_last_resorts_when_clamped() {
     let sound = |name: &str, text: &str| {
         let p = document_run(name, text, Overlap::Clamp);
         assert_eq!(p.levels().len(), 4, "{name}");
-        assert_sound(&p);
-        for (k, lv) in p.levels().iter().enumerate() {
-            let pairs = prism_geom::analysis::crossings(&lv.mesh).len();
-            assert_eq!(pairs, 0, "{name} level {k}");
-        }
+        assert_sound_and_crossing_nowhere_after(&p, 0);
         p.levels()[3].report.clone().unwrap()
     };
     let text = "vector-sum:alpha=0.2:reflex=inward,vector-sum:alpha=0.1:reflex=inward,\
@@ -993,38 +994,34 @@ fn smoothing_steps_report_the_faces_they_turn_over() {
 /// About 3 s in release (the Computer room's 516k-face level searched).
 #[test]
 fn crossings_anywhere_are_mended_when_asked() {
+    let mended = |mesh: PolyMesh, text: &str| {
+        let mut p = Pipeline::new(mesh, EdgeAttrs::new(), steps(text));
+        p.options.overlap = Overlap::Clamp;
+        p.options.mend_crossings = true;
+        let _ = p.compute();
+        assert_eq!(p.levels().len(), steps(text).len() + 1);
+        p
+    };
     let text = "cylindrical:r=0.2,doo-sabin,combination:r=0.3,combination:r=0.3,combination:r=0.3";
-    let mut p = Pipeline::new(asset("l-block.obj"), EdgeAttrs::new(), steps(text));
-    p.options.overlap = Overlap::Clamp;
-    let _ = p.compute();
+    let p = run(
+        asset("l-block.obj"),
+        EdgeAttrs::new(),
+        steps(text),
+        Overlap::Clamp,
+    );
     assert_eq!(
         prism_geom::analysis::crossings(&p.levels()[5].mesh).len(),
         12
     );
-    let mut p = Pipeline::new(asset("l-block.obj"), EdgeAttrs::new(), steps(text));
-    p.options.overlap = Overlap::Clamp;
-    p.options.mend_crossings = true;
-    let _ = p.compute();
-    assert_eq!(p.levels().len(), 6);
-    for (k, lv) in p.levels().iter().enumerate() {
-        let pairs = prism_geom::analysis::crossings(&lv.mesh).len();
-        assert_eq!(pairs, 0, "level {k}");
-    }
+    let p = mended(asset("l-block.obj"), text);
+    assert_sound_and_crossing_nowhere_after(&p, 2);
     assert!(p.levels()[5].report.as_ref().unwrap().small_chamfers > 0);
-    for lv in &p.levels()[3..] {
-        let r = lv.report.as_ref().unwrap();
-        assert!(r.flipped.is_empty() && r.volume > 0.0);
-    }
     // Crossings left after the small chamfers beside the guard's moves are searched for too:
     // the Computer room after an inward vector sum, a round, Doo–Sabin and three rounds (r =
     // 0.1) kept 84 pairs at level 6 that way.
     let text = "vector-sum:alpha=0.1:reflex=inward,combination:r=0.2,doo-sabin,\
                 combination:r=0.1,combination:r=0.1,combination:r=0.1";
-    let mut p = Pipeline::new(computer_room(), EdgeAttrs::new(), steps(text));
-    p.options.overlap = Overlap::Clamp;
-    p.options.mend_crossings = true;
-    let _ = p.compute();
-    assert_eq!(p.levels().len(), 7);
+    let p = mended(computer_room(), text);
     assert!(prism_geom::analysis::crossings(&p.levels()[6].mesh).is_empty());
     let r = p.levels()[6].report.as_ref().unwrap();
     assert!(r.flipped.is_empty() && r.small_chamfers > 0);
