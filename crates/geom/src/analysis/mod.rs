@@ -2,6 +2,7 @@
 //! along an edge, mean curvature per vertex, faces that pass through each other, the winding number about a point. Flipped and
 //! degenerate faces are found by each step ([`crate::step::check_children`]).
 
+mod box_pairs;
 mod counts;
 mod crossings;
 mod curvature;
