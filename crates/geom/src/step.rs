@@ -248,10 +248,12 @@ pub fn biquadratic_step_carrying(
         }
     }
     let mut small_chamfers = 0;
-    // New faces round the guard's moves that pass through others though none is flipped:
-    // they seed the small chamfers as flipped ones do.
-    let crossing_seeds = if is_combination && checked.flipped.is_empty() && !unfolded.is_empty() {
-        guard_crossings(cur, topo, &out, &prov, &unfolded)
+    // New faces round the guard's moves — the faces it unfolded and those beside the edges it
+    // cut narrower — that pass through others though none is flipped: they seed the small
+    // chamfers as flipped ones do.
+    let guarded = guarded_faces(topo, &unfolded, &prep.capped_edges);
+    let crossing_seeds = if is_combination && checked.flipped.is_empty() && !guarded.is_empty() {
+        guard_crossings(cur, topo, &out, &prov, &guarded)
     } else {
         Vec::new()
     };
@@ -300,7 +302,7 @@ pub fn biquadratic_step_carrying(
         dissolved_edges: prep.dissolved_edges,
         guarded_corners: rule_report.guarded_corners,
         clamped: prep.clamped.clone(),
-        capped_edges: prep.capped_edges,
+        capped_edges: prep.capped_edges.len(),
         clamped_faces: prep.clamped_faces,
         offset_faces: prep.offset_faces,
         collapsed_corners: rule_report.collapsed_corners,
@@ -327,8 +329,23 @@ pub fn biquadratic_step_carrying(
     Ok((output, child_topo))
 }
 
-/// The new faces round the parent faces the fold guard moved (`unfolded`) that pass through
-/// a face near them (docs/algorithms/cylindrical.md, "Crossings beside the guard's moves"):
+/// The parent faces the combination rule's guard moved: those it `unfolded` and the two
+/// beside each edge whose cut width it `capped`, ascending.
+fn guarded_faces(topo: &Topology, unfolded: &[u32], capped: &[u32]) -> Vec<u32> {
+    let mut faces: Vec<u32> = unfolded.to_vec();
+    for &e in capped {
+        let c = topo.edge_corner[e as usize] as usize;
+        faces.push(topo.corner_face(c));
+        faces.push(topo.corner_face(topo.twin[c] as usize));
+    }
+    faces.sort_unstable();
+    faces.dedup();
+    faces
+}
+
+/// The new faces round the parent faces the guard moved (`unfolded`: the fold guard's, and
+/// those beside an edge it cut narrower; [`guarded_faces`]) that pass through a face near them
+/// (docs/algorithms/cylindrical.md, "Crossings beside the guard's moves"):
 /// the new faces of a moved face, its edges and its vertices are tried against the new faces
 /// of the parent faces, edges and vertices within one ring of a moved face (by `prov`).
 fn guard_crossings(

@@ -192,13 +192,13 @@ pub(super) fn prepare<'a>(
         .zip(&bends)
         .map(|(&r, &psi)| cut_width(r, psi))
         .collect();
-    let mut capped_edges = 0;
+    let mut capped_edges = Vec::new();
     if matches!(rule, CornerRule::Combination { .. }) {
         let scales = fitting_scales(&input, &cut_widths, skip, STEP_ROOM);
-        for (x, s) in cut_widths.iter_mut().zip(scales) {
+        for (e, (x, s)) in cut_widths.iter_mut().zip(scales).enumerate() {
             if s < 1.0 {
                 *x *= s;
-                capped_edges += 1;
+                capped_edges.push(e as u32);
             }
         }
     }

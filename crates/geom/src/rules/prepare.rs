@@ -43,8 +43,8 @@ pub struct Prepared<'a> {
     /// input's numbering.
     pub clamped: Vec<super::EdgeFit>,
     /// Edges whose cut width this step lowered so that its cut faces keep their edges (the
-    /// combination rule's guard).
-    pub capped_edges: usize,
+    /// combination rule's guard), ascending.
+    pub capped_edges: Vec<u32>,
 }
 
 impl<'a> Prepared<'a> {
@@ -105,7 +105,7 @@ fn plain<'a>(
         combination: None,
         dissolved_edges: 0,
         clamped: Vec::new(),
-        capped_edges: 0,
+        capped_edges: Vec::new(),
     })
 }
 
