@@ -26,6 +26,9 @@ use std::borrow::Cow;
 use std::time::Instant;
 use thiserror::Error;
 
+mod crossings;
+use crossings::{concave_vertex_crossings, guard_crossings, guarded_faces};
+
 /// A face is degenerate when twice its area is below this × its perimeter × the level's
 /// scale S (the larger of the bounding-box diagonal and the largest coordinate): a thousand
 /// times the rounding error of a Newell normal, whose terms each carry an error of about
@@ -284,6 +287,15 @@ pub fn biquadratic_step_carrying(
     } else if resorts && !crossing_seeds.is_empty() {
         small_chamfers += retreat(&mut out, &mut checked, &crossing_seeds);
     }
+    // Where the guard acted, VERTEX-faces at parent vertices with a concave edge that pass
+    // through a face round them seed them too (docs/algorithms/cylindrical.md, "Crossings at
+    // concave vertices").
+    if is_combination && checked.flipped.is_empty() && !guarded.is_empty() {
+        let seeds = concave_vertex_crossings(cur, topo, &prep.normals, &out, &prov);
+        if !seeds.is_empty() {
+            small_chamfers += retreat(&mut out, &mut checked, &seeds);
+        }
+    }
     // Asked for, crossings left anywhere on the level seed them too (the whole level
     // searched: about ten times the step; docs/algorithms/cylindrical.md, "Mending every
     // crossing").
@@ -327,89 +339,6 @@ pub fn biquadratic_step_carrying(
         report,
     };
     Ok((output, child_topo))
-}
-
-/// The parent faces the combination rule's guard moved: those it `unfolded` and the two
-/// beside each edge whose cut width it `capped`, ascending.
-fn guarded_faces(topo: &Topology, unfolded: &[u32], capped: &[u32]) -> Vec<u32> {
-    let mut faces: Vec<u32> = unfolded.to_vec();
-    for &e in capped {
-        let c = topo.edge_corner[e as usize] as usize;
-        faces.push(topo.corner_face(c));
-        faces.push(topo.corner_face(topo.twin[c] as usize));
-    }
-    faces.sort_unstable();
-    faces.dedup();
-    faces
-}
-
-/// The new faces round the parent faces the guard moved (`unfolded`: the fold guard's, and
-/// those beside an edge it cut narrower; [`guarded_faces`]) that pass through a face near them
-/// (docs/algorithms/cylindrical.md, "Crossings beside the guard's moves"):
-/// the new faces of a moved face, its edges and its vertices are tried against the new faces
-/// of the parent faces, edges and vertices within one ring of a moved face (by `prov`).
-fn guard_crossings(
-    parent: &PolyMesh,
-    topo: &Topology,
-    child: &PolyMesh,
-    prov: &Provenance,
-    unfolded: &[u32],
-) -> Vec<u32> {
-    let nf = parent.num_faces();
-    let mut moved = vec![false; nf];
-    for &f in unfolded {
-        moved[f as usize] = true;
-    }
-    // Parent vertices of moved faces, then the faces round them (one ring), then their
-    // vertices.
-    let mut moved_vertex = vec![false; parent.num_vertices()];
-    for &f in unfolded {
-        for c in parent.face_corners(f as usize) {
-            moved_vertex[parent.corner_verts[c] as usize] = true;
-        }
-    }
-    let mut near = vec![false; nf];
-    for c in 0..topo.num_corners() {
-        if moved_vertex[parent.corner_verts[c] as usize] {
-            near[topo.corner_face(c) as usize] = true;
-        }
-    }
-    let mut near_vertex = vec![false; parent.num_vertices()];
-    for c in 0..topo.num_corners() {
-        if near[topo.corner_face(c) as usize] {
-            near_vertex[parent.corner_verts[c] as usize] = true;
-        }
-    }
-    let faces_of_edge = |e: usize| {
-        let c = topo.edge_corner[e] as usize;
-        [
-            topo.corner_face(c) as usize,
-            topo.corner_face(topo.twin[c] as usize) as usize,
-        ]
-    };
-    let (mut touched, mut among) = (Vec::new(), Vec::new());
-    for f in 0..child.num_faces() {
-        let p = prov.face_parent[f] as usize;
-        let (is_touched, is_near) = match prov.face_kind[f] {
-            FaceKind::Face => (moved[p], near[p]),
-            FaceKind::Edge => {
-                let [a, b] = faces_of_edge(p);
-                (moved[a] || moved[b], near[a] || near[b])
-            }
-            FaceKind::Vertex => (moved_vertex[p], near_vertex[p]),
-        };
-        if is_touched {
-            touched.push(f as u32);
-        }
-        if is_near {
-            among.push(f as u32);
-        }
-    }
-    crate::analysis::crossing_faces(&crate::analysis::crossings_of(
-        child,
-        &touched,
-        Some(&among),
-    ))
 }
 
 /// Flipped and degenerate new faces, and the signed volume of the child: one pass over the

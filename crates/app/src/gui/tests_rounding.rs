@@ -247,15 +247,15 @@ fn faces_that_pass_through_each_other_are_found_and_painted() {
     assert!(answer(&mut a).is_empty());
 }
 
-/// "Mend faces that pass through each other" reaches the rounding steps: the L-block after a
-/// round (r = 0.1), the simple cylindrical type, an inward vector sum and three rounds (r =
-/// 0.2) crosses itself at level 6 (2 pairs) with it off, the app's default, and nowhere with
+/// "Mend faces that pass through each other" reaches the rounding steps: the L-block after
+/// Catmull–Clark, an angle-bisector chamfer, the simple cylindrical type and three rounds (r =
+/// 0.2) crosses itself at level 6 (12 pairs) with it off, the app's default, and nowhere with
 /// it on, the level recomputed.
 #[test]
 fn mending_crossings_is_a_checkbox_away() {
     let mut a = opened(&asset("l-block.obj"));
     let steps = parse_pipeline(
-        "combination:r=0.1,cylindrical:r=0.2,vector-sum:alpha=0.1:reflex=inward,\
+        "catmull-clark,angle-bisector:l=0.05,cylindrical:r=0.2,\
          combination:r=0.2,combination:r=0.2,combination:r=0.2",
     )
     .unwrap();
@@ -266,7 +266,7 @@ fn mending_crossings_is_a_checkbox_away() {
         prism_geom::analysis::crossings(&levels[6].mesh).len()
     };
     assert!(!a.model.mend_crossings);
-    assert_eq!(level6(&a), 2);
+    assert_eq!(level6(&a), 12);
     a.model.set_mend_crossings(true);
     a.model.sync(&a.doc);
     a.wait_idle();

@@ -117,6 +117,29 @@ pub fn crossings_of(mesh: &PolyMesh, faces: &[u32], among: Option<&[u32]>) -> Ve
 /// The most cells [`crossings_of`]'s grid has.
 const LOCAL_CELLS: f64 = (1 << 18) as f64;
 
+/// Those of faces `others` of `mesh` that face `f` crosses (the test of [`crossings`], for a
+/// face and its neighbours without a search): `f`'s triangles found once, each other face's
+/// only where its box meets `f`'s.
+pub fn crossed_by(mesh: &PolyMesh, f: u32, others: &[u32]) -> Vec<u32> {
+    let fb = face_box(mesh, f as usize);
+    let mut tf = Vec::new();
+    Tri::push_face(mesh, f as usize, &mut tf);
+    let mut tg = Vec::new();
+    others
+        .iter()
+        .copied()
+        .filter(|&g| {
+            let gb = face_box(mesh, g as usize);
+            if g == f || !(fb.0.cmple(gb.1).all() && gb.0.cmple(fb.1).all()) {
+                return false;
+            }
+            tg.clear();
+            Tri::push_face(mesh, g as usize, &mut tg);
+            faces_cross(mesh, &tf, &tg)
+        })
+        .collect()
+}
+
 /// The faces of crossing `pairs`, each once, ascending (what is drawn red).
 pub fn crossing_faces(pairs: &[(u32, u32)]) -> Vec<u32> {
     let mut faces: Vec<u32> = pairs.iter().flat_map(|&(f, g)| [f, g]).collect();

@@ -1,0 +1,179 @@
+//! Crossings a rounding step looks for beside what it did, without searching its whole level
+//! (docs/algorithms/cylindrical.md, "Crossings beside the guard's moves", "Crossings beside
+//! the edges the guard cut narrower", "Crossings at concave vertices"). The new faces of
+//! some parent faces and vertices (*moved*) are tried against the new faces of the parent
+//! faces, edges and vertices within one ring of them (by the split's provenance:
+//! [`crate::analysis::crossings_of`], the renderer's triangles and Möller's test as in
+//! `--check-crossings`, over that neighbourhood only); the faces of any crossing pair seed the
+//! small chamfers ([`crate::rules::retreat`]) as flipped faces do.
+
+use crate::mesh::PolyMesh;
+use crate::refine::{FaceKind, Provenance};
+use crate::topology::Topology;
+use glam::DVec3;
+
+/// The parent faces the combination rule's guard moved: those it `unfolded` and the two
+/// beside each edge whose cut width it `capped`, ascending.
+pub(super) fn guarded_faces(topo: &Topology, unfolded: &[u32], capped: &[u32]) -> Vec<u32> {
+    let mut faces: Vec<u32> = unfolded.to_vec();
+    for &e in capped {
+        let c = topo.edge_corner[e as usize] as usize;
+        faces.push(topo.corner_face(c));
+        faces.push(topo.corner_face(topo.twin[c] as usize));
+    }
+    faces.sort_unstable();
+    faces.dedup();
+    faces
+}
+
+/// The new faces round the parent faces the guard moved (`guarded`: the fold guard's
+/// unfolded faces and those beside an edge it cut narrower; [`guarded_faces`]) that pass
+/// through a face near them: the new faces of a moved face, its edges and its vertices.
+pub(super) fn guard_crossings(
+    parent: &PolyMesh,
+    topo: &Topology,
+    child: &PolyMesh,
+    prov: &Provenance,
+    guarded: &[u32],
+) -> Vec<u32> {
+    let mut moved = vec![false; parent.num_faces()];
+    let mut moved_vertex = vec![false; parent.num_vertices()];
+    for &f in guarded {
+        moved[f as usize] = true;
+        for c in parent.face_corners(f as usize) {
+            moved_vertex[parent.corner_verts[c] as usize] = true;
+        }
+    }
+    crossings_round(parent, topo, child, prov, &moved, &moved_vertex)
+}
+
+/// The parent vertices with a concave edge: one whose two faces' normals turn against the
+/// edge's direction in the first face (`(n_f × n_g) · (b − a) < 0` for the half-edge a → b
+/// of face f), beyond a relative 1e-9.
+fn concave_vertices(parent: &PolyMesh, topo: &Topology, normals: &[DVec3]) -> Vec<bool> {
+    let mut concave = vec![false; parent.num_vertices()];
+    for c in 0..topo.num_corners() {
+        let t = topo.twin[c] as usize;
+        if t >= topo.num_corners() {
+            continue;
+        }
+        let (a, b) = (
+            parent.corner_verts[c] as usize,
+            parent.corner_verts[topo.next(c) as usize] as usize,
+        );
+        let along = parent.positions[b] - parent.positions[a];
+        let (nf, ng) = (
+            normals[topo.corner_face(c) as usize],
+            normals[topo.corner_face(t) as usize],
+        );
+        if nf.cross(ng).dot(along) < -1e-9 * along.length() {
+            concave[a] = true;
+            concave[b] = true;
+        }
+    }
+    concave
+}
+
+/// The VERTEX-faces at parent vertices with a concave edge that pass through a new face round
+/// them — of a parent face at the vertex, an edge of such a face or a vertex of one — with
+/// those faces (where the faces round a vertex turn toward each other, its corner points'
+/// polygon is not held on the solid's side of its neighbours as at a convex vertex). Each
+/// such vertex is tried on its own, without a search: the split writes FACE-faces, then
+/// EDGE-faces, then VERTEX-faces, each in its parent's order.
+pub(super) fn concave_vertex_crossings(
+    parent: &PolyMesh,
+    topo: &Topology,
+    normals: &[DVec3],
+    child: &PolyMesh,
+    prov: &Provenance,
+) -> Vec<u32> {
+    use rayon::prelude::*;
+    let concave = concave_vertices(parent, topo, normals);
+    let (nf, ne) = (parent.num_faces(), topo.num_edges());
+    let vertex_face = |v: usize| (nf + ne + v) as u32;
+    let mut out: Vec<u32> = (0..parent.num_vertices())
+        .into_par_iter()
+        .with_min_len(1 << 10)
+        .filter(|&v| concave[v])
+        .flat_map_iter(|v| {
+            let vf = vertex_face(v);
+            debug_assert!(
+                prov.face_kind[vf as usize] == FaceKind::Vertex
+                    && prov.face_parent[vf as usize] as usize == v
+            );
+            let mut ring = Vec::new();
+            for c in topo.corners_around(v) {
+                let f = topo.corner_face(c as usize) as usize;
+                ring.push(f as u32);
+                for k in parent.face_corners(f) {
+                    ring.push((nf + topo.corner_edge[k] as usize) as u32);
+                    ring.push(vertex_face(parent.corner_verts[k] as usize));
+                }
+            }
+            ring.sort_unstable();
+            ring.dedup();
+            let crossed = crate::analysis::crossed_by(child, vf, &ring);
+            let found = !crossed.is_empty();
+            crossed.into_iter().chain(found.then_some(vf))
+        })
+        .collect();
+    out.sort_unstable();
+    out.dedup();
+    out
+}
+
+/// The new faces of the `moved` parent faces, of the edges beside them and of the
+/// `moved_vertex` vertices that cross a new face of the parent faces, edges and vertices
+/// within one ring of a moved vertex.
+fn crossings_round(
+    parent: &PolyMesh,
+    topo: &Topology,
+    child: &PolyMesh,
+    prov: &Provenance,
+    moved: &[bool],
+    moved_vertex: &[bool],
+) -> Vec<u32> {
+    // The faces round moved vertices (one ring), then their vertices.
+    let mut near = moved.to_vec();
+    for c in 0..topo.num_corners() {
+        if moved_vertex[parent.corner_verts[c] as usize] {
+            near[topo.corner_face(c) as usize] = true;
+        }
+    }
+    let mut near_vertex = vec![false; parent.num_vertices()];
+    for c in 0..topo.num_corners() {
+        if near[topo.corner_face(c) as usize] {
+            near_vertex[parent.corner_verts[c] as usize] = true;
+        }
+    }
+    let faces_of_edge = |e: usize| {
+        let c = topo.edge_corner[e] as usize;
+        [
+            topo.corner_face(c) as usize,
+            topo.corner_face(topo.twin[c] as usize) as usize,
+        ]
+    };
+    let (mut touched, mut among) = (Vec::new(), Vec::new());
+    for f in 0..child.num_faces() {
+        let p = prov.face_parent[f] as usize;
+        let (is_touched, is_near) = match prov.face_kind[f] {
+            FaceKind::Face => (moved[p], near[p]),
+            FaceKind::Edge => {
+                let [a, b] = faces_of_edge(p);
+                (moved[a] || moved[b], near[a] || near[b])
+            }
+            FaceKind::Vertex => (moved_vertex[p], near_vertex[p]),
+        };
+        if is_touched {
+            touched.push(f as u32);
+        }
+        if is_near {
+            among.push(f as u32);
+        }
+    }
+    crate::analysis::crossing_faces(&crate::analysis::crossings_of(
+        child,
+        &touched,
+        Some(&among),
+    ))
+}
