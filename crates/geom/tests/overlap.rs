@@ -606,7 +606,9 @@ fn the_computer_room_smoothed_twice_rounds_through_level_six() {
 /// counted as moved by it, 1 and 2 (22); with VERTEX-faces at concave vertices tried where
 /// the guard acted, the same (2,400 other mixes, held out: 6 → 5 at a rounding).
 /// About a minute in release;
-/// each mix unsound either way is printed.
+/// each mix unsound either way is printed. `SEEDS=37,41,…` draws 300 mixes from each seed
+/// given instead of the four below and only prints (docs/algorithms/cylindrical.md keeps the
+/// held-out sets' counts: the resorts were tuned on these four).
 #[test]
 #[ignore]
 fn random_mixes_of_steps() {
@@ -645,7 +647,10 @@ fn random_mixes_of_steps() {
     let mut tried = 0;
     let mut crossing_unsound = 0;
     let mut crossed_before = 0;
-    for seed in [1u64, 7, 11, 13] {
+    let held_out: Option<Vec<u64>> = std::env::var("SEEDS")
+        .ok()
+        .map(|s| s.split(',').map(|x| x.trim().parse().unwrap()).collect());
+    for seed in held_out.clone().unwrap_or(vec![1u64, 7, 11, 13]) {
         let mut state = seed;
         let mut draw = |k: usize| {
             state = state
@@ -725,6 +730,9 @@ fn random_mixes_of_steps() {
         "{} of {tried} mixes unsound; counting faces that pass through each other too, {crossing_unsound} (and {crossed_before} crossed themselves before rounding)",
         unsound.len()
     );
+    if held_out.is_some() {
+        return;
+    }
     assert!(unsound.len() <= 1, "{} of {tried}", unsound.len());
     assert!(
         crossing_unsound <= 2,
