@@ -41,15 +41,20 @@ fn run(m: PolyMesh, attrs: EdgeAttrs, steps: Vec<Scheme>, overlap: Overlap) -> P
 
 /// Every level computed has no flipped face and a positive volume.
 fn assert_sound(p: &Pipeline) {
-    for (k, lv) in p.levels().iter().enumerate().skip(1) {
-        let r = lv.report.as_ref().unwrap();
-        assert!(
-            r.flipped.is_empty(),
-            "level {k}: {} flipped",
-            r.flipped.len()
-        );
-        assert!(r.volume > 0.0, "level {k}: volume {}", r.volume);
+    for k in 1..p.levels().len() {
+        assert_level_sound(p, k);
     }
+}
+
+/// Level `k` (not the input) has no flipped face and a positive volume.
+fn assert_level_sound(p: &Pipeline, k: usize) {
+    let r = p.levels()[k].report.as_ref().unwrap();
+    assert!(
+        r.flipped.is_empty(),
+        "level {k}: {} flipped",
+        r.flipped.len()
+    );
+    assert!(r.volume > 0.0, "level {k}: volume {}", r.volume);
 }
 
 fn refused(p: &Pipeline) -> Vec<EdgeFit> {
@@ -826,13 +831,7 @@ fn assert_sound_and_crossing_nowhere_after(p: &Pipeline, from: usize) {
         let pairs = prism_geom::analysis::crossings(&lv.mesh).len();
         assert_eq!(pairs, 0, "level {k}");
         if k > from {
-            let r = lv.report.as_ref().unwrap();
-            assert!(
-                r.flipped.is_empty(),
-                "level {k}: {} flipped",
-                r.flipped.len()
-            );
-            assert!(r.volume > 0.0, "level {k}: volume {}", r.volume);
+            assert_level_sound(p, k);
         }
     }
 }

@@ -24,7 +24,7 @@ const SERIAL: usize = 1 << 12;
 type Aabb = (DVec3, DVec3);
 
 /// Whether two closed boxes overlap or touch.
-fn overlap(a: &Aabb, b: &Aabb) -> bool {
+pub(super) fn boxes_meet(a: &Aabb, b: &Aabb) -> bool {
     a.0.cmple(b.1).all() && b.0.cmple(a.1).all()
 }
 
@@ -114,7 +114,7 @@ struct Walk<'a, K> {
 
 impl<K: Fn(u32, u32) -> bool + Sync> Walk<'_, K> {
     fn push(&self, f: u32, g: u32, out: &mut Vec<(u32, u32)>) {
-        if overlap(&self.boxes[f as usize], &self.boxes[g as usize]) {
+        if boxes_meet(&self.boxes[f as usize], &self.boxes[g as usize]) {
             let pair = (f.min(g), f.max(g));
             if (self.keep)(pair.0, pair.1) {
                 out.push(pair);
@@ -161,7 +161,7 @@ impl<K: Fn(u32, u32) -> bool + Sync> Walk<'_, K> {
 
     /// The pairs of a box under `a` and one under `b` (disjoint nodes).
     fn across(&self, a: &Node, b: &Node, out: &mut Vec<(u32, u32)>) {
-        if !overlap(&a.bounds, &b.bounds) {
+        if !boxes_meet(&a.bounds, &b.bounds) {
             return;
         }
         // Split the node with more boxes (a leaf never).
@@ -243,7 +243,7 @@ mod tests {
         let mut out = Vec::new();
         for f in 0..b.len() {
             for g in f + 1..b.len() {
-                if overlap(&b[f], &b[g]) {
+                if boxes_meet(&b[f], &b[g]) {
                     out.push((f as u32, g as u32));
                 }
             }

@@ -19,7 +19,7 @@
 //! level and the next (516,138 faces): 130–145 ms and 0.53–0.64 s on two threads, against
 //! 205 ms and 1.0–1.15 s with the grid and a triangulation per pair of faces.
 
-use super::box_pairs::overlapping_pairs;
+use super::box_pairs::{boxes_meet, overlapping_pairs};
 use super::face_grid::{FaceGrid, face_box};
 use crate::geometry::{face_normal_raw, unit_or_zero};
 use crate::mesh::PolyMesh;
@@ -68,14 +68,7 @@ pub fn crossings_of(mesh: &PolyMesh, faces: &[u32], among: Option<&[u32]>) -> Ve
         |(lo, hi), b| (lo.min(b.0), hi.max(b.1)),
     );
     let grid = FaceGrid::of_boxes(boxes, LOCAL_CELLS);
-    let listed: Vec<Vec<Tri>> = faces
-        .iter()
-        .map(|&f| {
-            let mut t = Vec::new();
-            Tri::push_face(mesh, f as usize, &mut t);
-            t
-        })
-        .collect();
+    let listed: Vec<Vec<Tri>> = faces.iter().map(|&f| Tri::of_face(mesh, f)).collect();
     let all: Vec<u32>;
     let among = match among {
         Some(a) => a,
@@ -91,17 +84,13 @@ pub fn crossings_of(mesh: &PolyMesh, faces: &[u32], among: Option<&[u32]>) -> Ve
             let gb = face_box(mesh, g as usize);
             let mut hits = Vec::new();
             // A face with a NaN point overlaps nothing here; `crossings` names it.
-            if !(joint.0.cmple(gb.1).all() && gb.0.cmple(joint.1).all()) {
+            if !boxes_meet(&joint, &gb) {
                 return hits;
             }
             let mut tg = None;
             grid.for_each_overlapping(gb, |i| {
                 if faces[i] != g {
-                    let tg = tg.get_or_insert_with(|| {
-                        let mut t = Vec::new();
-                        Tri::push_face(mesh, g as usize, &mut t);
-                        t
-                    });
+                    let tg = tg.get_or_insert_with(|| Tri::of_face(mesh, g));
                     if faces_cross(mesh, &listed[i], tg) {
                         hits.push((faces[i], g));
                     }
@@ -122,15 +111,14 @@ const LOCAL_CELLS: f64 = (1 << 18) as f64;
 /// only where its box meets `f`'s.
 pub fn crossed_by(mesh: &PolyMesh, f: u32, others: &[u32]) -> Vec<u32> {
     let fb = face_box(mesh, f as usize);
-    let mut tf = Vec::new();
-    Tri::push_face(mesh, f as usize, &mut tf);
+    let tf = Tri::of_face(mesh, f);
     let mut tg = Vec::new();
     others
         .iter()
         .copied()
         .filter(|&g| {
             let gb = face_box(mesh, g as usize);
-            if g == f || !(fb.0.cmple(gb.1).all() && gb.0.cmple(fb.1).all()) {
+            if g == f || !boxes_meet(&fb, &gb) {
                 return false;
             }
             tg.clear();
@@ -156,6 +144,13 @@ struct Tri {
 }
 
 impl Tri {
+    /// Face `f`'s triangles, as the renderer draws them.
+    fn of_face(mesh: &PolyMesh, f: u32) -> Vec<Tri> {
+        let mut t = Vec::new();
+        Tri::push_face(mesh, f as usize, &mut t);
+        t
+    }
+
     /// Face `f`'s triangles, as the renderer draws them, appended to `out` (`corners` a
     /// buffer for the triangles' corners).
     fn push_face(mesh: &PolyMesh, f: usize, out: &mut Vec<Tri>) {

@@ -1,11 +1,11 @@
 //! Crossings a rounding step looks for beside what it did, without searching its whole level
 //! (docs/algorithms/cylindrical.md, "Crossings beside the guard's moves", "Crossings beside
 //! the edges the guard cut narrower", "Crossings at concave vertices"). The new faces of
-//! some parent faces and vertices (*moved*) are tried against the new faces of the parent
-//! faces, edges and vertices within one ring of them (by the split's provenance:
-//! [`crate::analysis::crossings_of`], the renderer's triangles and Möller's test as in
-//! `--check-crossings`, over that neighbourhood only); the faces of any crossing pair seed the
-//! small chamfers ([`crate::rules::retreat`]) as flipped faces do.
+//! some parent faces and vertices are tried against the new faces of the parent faces, edges
+//! and vertices round them (by the split's provenance and numbering, with the renderer's
+//! triangles and Möller's test as in `--check-crossings`, over that neighbourhood only); the
+//! faces of any crossing pair seed the small chamfers ([`crate::rules::retreat`]) as flipped
+//! faces do.
 
 use crate::mesh::PolyMesh;
 use crate::refine::{FaceKind, Provenance};
@@ -28,7 +28,9 @@ pub(super) fn guarded_faces(topo: &Topology, unfolded: &[u32], capped: &[u32]) -
 
 /// The new faces round the parent faces the guard moved (`guarded`: the fold guard's
 /// unfolded faces and those beside an edge it cut narrower; [`guarded_faces`]) that pass
-/// through a face near them: the new faces of a moved face, its edges and its vertices.
+/// through a face near them: the new faces of a moved face, its edges and its vertices, tried
+/// against the new faces of the parent faces, edges and vertices within one ring of a moved
+/// vertex.
 pub(super) fn guard_crossings(
     parent: &PolyMesh,
     topo: &Topology,
@@ -44,31 +46,61 @@ pub(super) fn guard_crossings(
             moved_vertex[parent.corner_verts[c] as usize] = true;
         }
     }
-    crossings_round(parent, topo, child, prov, &moved, &moved_vertex)
+    // The faces round moved vertices (one ring), then their vertices.
+    let mut near = moved.clone();
+    for c in 0..topo.num_corners() {
+        if moved_vertex[parent.corner_verts[c] as usize] {
+            near[topo.corner_face(c) as usize] = true;
+        }
+    }
+    let mut near_vertex = vec![false; parent.num_vertices()];
+    for c in 0..topo.num_corners() {
+        if near[topo.corner_face(c) as usize] {
+            near_vertex[parent.corner_verts[c] as usize] = true;
+        }
+    }
+    let faces_of_edge = |e: usize| {
+        let c = topo.edge_corner[e] as usize;
+        [
+            topo.corner_face(c) as usize,
+            topo.corner_face(topo.twin[c] as usize) as usize,
+        ]
+    };
+    let (mut touched, mut among) = (Vec::new(), Vec::new());
+    for f in 0..child.num_faces() {
+        let p = prov.face_parent[f] as usize;
+        let (is_touched, is_near) = match prov.face_kind[f] {
+            FaceKind::Face => (moved[p], near[p]),
+            FaceKind::Edge => {
+                let [a, b] = faces_of_edge(p);
+                (moved[a] || moved[b], near[a] || near[b])
+            }
+            FaceKind::Vertex => (moved_vertex[p], near_vertex[p]),
+        };
+        if is_touched {
+            touched.push(f as u32);
+        }
+        if is_near {
+            among.push(f as u32);
+        }
+    }
+    crate::analysis::crossing_faces(&crate::analysis::crossings_of(
+        child,
+        &touched,
+        Some(&among),
+    ))
 }
 
-/// The parent vertices with a concave edge: one whose two faces' normals turn against the
-/// edge's direction in the first face (`(n_f × n_g) · (b − a) < 0` for the half-edge a → b
-/// of face f), beyond a relative 1e-9.
+/// The parent vertices with a concave edge: one whose signed bend angle
+/// ([`crate::geometry::signed_bend_angles`]) is below −1e-9.
 fn concave_vertices(parent: &PolyMesh, topo: &Topology, normals: &[DVec3]) -> Vec<bool> {
     let mut concave = vec![false; parent.num_vertices()];
-    for c in 0..topo.num_corners() {
-        let t = topo.twin[c] as usize;
-        if t >= topo.num_corners() {
-            continue;
-        }
-        let (a, b) = (
-            parent.corner_verts[c] as usize,
-            parent.corner_verts[topo.next(c) as usize] as usize,
-        );
-        let along = parent.positions[b] - parent.positions[a];
-        let (nf, ng) = (
-            normals[topo.corner_face(c) as usize],
-            normals[topo.corner_face(t) as usize],
-        );
-        if nf.cross(ng).dot(along) < -1e-9 * along.length() {
-            concave[a] = true;
-            concave[b] = true;
+    let bends = crate::geometry::signed_bend_angles(parent, topo, normals);
+    for (e, &psi) in bends.iter().enumerate() {
+        if psi < -1e-9 {
+            let c = topo.edge_corner[e] as usize;
+            concave[parent.corner_verts[c] as usize] = true;
+            concave[parent.corner_verts[topo.next(c) as usize] as usize] = true;
         }
     }
     concave
@@ -120,60 +152,4 @@ pub(super) fn concave_vertex_crossings(
     out.sort_unstable();
     out.dedup();
     out
-}
-
-/// The new faces of the `moved` parent faces, of the edges beside them and of the
-/// `moved_vertex` vertices that cross a new face of the parent faces, edges and vertices
-/// within one ring of a moved vertex.
-fn crossings_round(
-    parent: &PolyMesh,
-    topo: &Topology,
-    child: &PolyMesh,
-    prov: &Provenance,
-    moved: &[bool],
-    moved_vertex: &[bool],
-) -> Vec<u32> {
-    // The faces round moved vertices (one ring), then their vertices.
-    let mut near = moved.to_vec();
-    for c in 0..topo.num_corners() {
-        if moved_vertex[parent.corner_verts[c] as usize] {
-            near[topo.corner_face(c) as usize] = true;
-        }
-    }
-    let mut near_vertex = vec![false; parent.num_vertices()];
-    for c in 0..topo.num_corners() {
-        if near[topo.corner_face(c) as usize] {
-            near_vertex[parent.corner_verts[c] as usize] = true;
-        }
-    }
-    let faces_of_edge = |e: usize| {
-        let c = topo.edge_corner[e] as usize;
-        [
-            topo.corner_face(c) as usize,
-            topo.corner_face(topo.twin[c] as usize) as usize,
-        ]
-    };
-    let (mut touched, mut among) = (Vec::new(), Vec::new());
-    for f in 0..child.num_faces() {
-        let p = prov.face_parent[f] as usize;
-        let (is_touched, is_near) = match prov.face_kind[f] {
-            FaceKind::Face => (moved[p], near[p]),
-            FaceKind::Edge => {
-                let [a, b] = faces_of_edge(p);
-                (moved[a] || moved[b], near[a] || near[b])
-            }
-            FaceKind::Vertex => (moved_vertex[p], near_vertex[p]),
-        };
-        if is_touched {
-            touched.push(f as u32);
-        }
-        if is_near {
-            among.push(f as u32);
-        }
-    }
-    crate::analysis::crossing_faces(&crate::analysis::crossings_of(
-        child,
-        &touched,
-        Some(&among),
-    ))
 }
