@@ -991,6 +991,44 @@ fn crossings_at_concave_vertices_take_small_chamfers() {
     }
 }
 
+/// Small chamfers in their faces' planes (docs/algorithms/cylindrical.md, "Small chamfers
+/// beside a fold"): after two inward vector sums (α = 0.2) the tripod's third round (r = 0.2)
+/// left three pairs of needle faces through each other near the bottom's inner corners, and
+/// the small chamfers there came out flipped at every l: on a needle of two parent faces that
+/// are not flat, a corner of 179.8° has edges whose directions sum to a vector along the face's
+/// normal, so the "bisector" left the face. Taken in the face's plane, the small chamfers
+/// mend the level.
+#[test]
+fn small_chamfers_at_nearly_straight_corners_stay_in_their_faces() {
+    let p = tripod_sound_and_crossing_nowhere(
+        "vector-sum:alpha=0.2:reflex=inward,vector-sum:alpha=0.2:reflex=inward,\
+         combination:r=0.2,combination:r=0.2,combination:r=0.2",
+    );
+    assert!(p.levels()[5].report.as_ref().unwrap().small_chamfers > 0);
+}
+
+/// The absolute chamfers' clamp on a face with a reflex corner (docs/algorithms/chamfers.md,
+/// "Clamp"): after an inward vector sum and Doo–Sabin the tripod's bottom is an L whose neck
+/// between the reflex corner and the convex one across it is 0.137 wide; a cut width of 0.05
+/// moves the two corners 0.077 and 0.062 towards each other, so they passed and the bottom
+/// crossed itself in 15 pairs of faces. Clamped, d is lowered there so the new outline keeps a
+/// quarter of the neck, and the rounds after it stay sound.
+#[test]
+fn cut_widths_keep_a_narrow_neck_open() {
+    for text in [
+        "vector-sum:alpha=0.2:reflex=inward,doo-sabin,cut-width:d=0.05,\
+         combination:r=0.3,combination:r=0.3",
+        "vector-sum:alpha=0.2:reflex=inward,doo-sabin,angle-bisector:l=0.07,\
+         combination:r=0.3,combination:r=0.3",
+    ] {
+        let p = tripod_sound_and_crossing_nowhere(text);
+        assert!(
+            p.levels()[3].report.as_ref().unwrap().clamped_faces > 0,
+            "{text}"
+        );
+    }
+}
+
 /// A bundled document (assets/) through `text`, clamped or not.
 fn document_run(name: &str, text: &str, overlap: Overlap) -> Pipeline {
     let doc = document(name);

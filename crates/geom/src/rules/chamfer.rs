@@ -272,8 +272,10 @@ fn largest_fitting(most: f64, fits: impl Fn(f64) -> bool) -> f64 {
 /// The per-face clamp of the absolute chamfers (seed 000 §3.1, docs/algorithms/chamfers.md,
 /// "Clamp"): a face's parameter is lowered so that no convex corner moves along either of its
 /// edges by more than a quarter of the shorter one — along an edge, the cut-width point
-/// moves `d·cot(φ/2)` and the bisector point `l·cos(φ/2)`; the vector sum's α is lowered on
-/// faces whose reflex corners would cross them ([`vector_sum_alphas`]). Returns the parameter
+/// moves `d·cot(φ/2)` and the bisector point `l·cos(φ/2)` — and, on a face with a reflex
+/// corner, so that its new outline keeps a quarter of its narrowest width
+/// ([`FaceMoves::clamped`]); the vector sum's α is lowered on faces whose reflex corners would
+/// cross them ([`vector_sum_alphas`]). Returns the parameter
 /// of every face and how many were lowered.
 pub(super) fn face_params(input: &RuleInput, rule: &super::CornerRule) -> (Vec<f64>, usize) {
     let m = input.mesh;
@@ -292,15 +294,35 @@ pub(super) fn face_params(input: &RuleInput, rule: &super::CornerRule) -> (Vec<f
         super::CornerRule::CutWidth { .. } => (1.0 - fr.c) / fr.sin_phi,
         _ => ((1.0 - fr.c) / 2.0).max(0.0).sqrt(),
     };
+    // The move per unit of the parameter: (m₁ + m₂)/(1 + c) for the cut width, the unit
+    // bisector for the angle bisector.
+    let per_unit = |fr: &super::CornerFrame| {
+        let s = fr.m1 + fr.m2;
+        match rule {
+            super::CornerRule::CutWidth { .. } if 1.0 + fr.c >= NEEDLE_BISECTOR => s / (1.0 + fr.c),
+            super::CornerRule::AngleBisector { .. } if s.length() >= NEEDLE_BISECTOR => {
+                s / s.length()
+            }
+            _ => DVec3::ZERO,
+        }
+    };
     let mut lowered = 0;
+    let mut fm = FaceMoves::default();
     let params = (0..m.num_faces())
         .map(|f| {
             let mut x = p;
+            let mut reflex = false;
+            fm.from.clear();
+            fm.moves.clear();
             for c in m.face_corners(f) {
+                fm.from.push(m.positions[m.corner_verts[c] as usize]);
                 let Ok(fr) = corner_frame(input, c) else {
+                    fm.moves.push(DVec3::ZERO);
                     continue;
                 };
+                fm.moves.push(per_unit(&fr));
                 if fr.sin_phi <= 0.0 {
+                    reflex |= fr.sin_phi < 0.0;
                     continue;
                 }
                 let room = 0.25 * fr.e1.length().min(fr.e2.length());
@@ -308,6 +330,14 @@ pub(super) fn face_params(input: &RuleInput, rule: &super::CornerRule) -> (Vec<f
                 if a > 0.0 {
                     x = x.min(room / a);
                 }
+            }
+            // A reflex corner's point travels across the face and can meet the far side
+            // (the tripod's L-shaped bottom after an inward vector sum and Doo–Sabin: its
+            // reflex corner and the convex one across the neck pass each other at d = 0.05):
+            // the new outline keeps a quarter of the face's narrowest width, as the vector
+            // sum's does.
+            if reflex {
+                x = fm.clamped(m, f, x);
             }
             if x < p {
                 lowered += 1;

@@ -35,23 +35,27 @@ const ROUNDS: usize = 16;
 /// The first l as a share of the shortest edge at the vertex.
 const SHARE: f64 = 0.1;
 
-/// The unit bisector of corner `c` into its face (`vsum`, the normal sum at its vertex, for a
-/// face of no area). The face's interior lies to the left of its loop's outgoing edge seen
+/// The unit bisector of corner `c` into its face, in the face's plane (`vsum`, the normal sum
+/// at its vertex, for a face of no area). The face's interior lies to the left of its loop's outgoing edge seen
 /// along the normal, holes included, so the bisector of a reflex corner is turned round and
 /// that of a straight one is that left direction.
 fn bisector(mesh: &PolyMesh, topo: &Topology, normals: &[DVec3], vsum: DVec3, c: usize) -> DVec3 {
-    let at = |c: u32| mesh.positions[mesh.corner_verts[c as usize] as usize];
-    let v = at(c as u32);
-    let (e1, e2) = (
-        (at(topo.prev(c)) - v).normalize_or_zero(),
-        (at(topo.next(c)) - v).normalize_or_zero(),
-    );
     let f = topo.corner_face(c) as usize;
     let n = if normals[f] == DVec3::ZERO {
         vsum
     } else {
         normals[f]
-    };
+    }
+    .normalize_or_zero();
+    let at = |c: u32| mesh.positions[mesh.corner_verts[c as usize] as usize];
+    let v = at(c as u32);
+    // The edges' directions in the face's plane: at a nearly straight corner of a face that is
+    // not flat their sum would otherwise point along the normal, off the face.
+    let in_plane = |w: DVec3| (w - n * w.dot(n)).normalize_or_zero();
+    let (e1, e2) = (
+        in_plane(at(topo.prev(c)) - v),
+        in_plane(at(topo.next(c)) - v),
+    );
     let left = n.cross(e2).normalize_or_zero();
     let sum = e1 + e2;
     if sum.length() < 1e-9 {
