@@ -609,7 +609,10 @@ fn the_computer_room_smoothed_twice_rounds_through_level_six() {
 /// of them Catmull–Clark levels that pleat — three of the flipped mixes' folds were these
 /// pleats, inherited by the rounds); with the faces beside the edges the guard cut narrower
 /// counted as moved by it, 1 and 2 (22); with VERTEX-faces at concave vertices tried where
-/// the guard acted, the same (2,400 other mixes, held out: 6 → 5 at a rounding).
+/// the guard acted, the same (2,400 other mixes, held out: 6 → 5 at a rounding); with the
+/// small chamfers' bisectors in the face's plane and the chamfers' clamp at a reflex corner,
+/// the same here (held out, seeds 37–67: 8 and 13 → 3 and 6); with small chamfers tried again
+/// to suit slivers' widths, 0 and 1 (21; held out: 2 and 6).
 /// About a minute in release;
 /// each mix unsound either way is printed. `SEEDS=37,41,…` draws 300 mixes from each seed
 /// given instead of the four below and only prints (docs/algorithms/cylindrical.md keeps the
@@ -738,13 +741,13 @@ fn random_mixes_of_steps() {
     if held_out.is_some() {
         return;
     }
-    assert!(unsound.len() <= 1, "{} of {tried}", unsound.len());
+    assert!(unsound.is_empty(), "{} of {tried}", unsound.len());
     assert!(
-        crossing_unsound <= 2,
+        crossing_unsound <= 1,
         "{crossing_unsound} of {tried} with crossings"
     );
     assert!(
-        crossing_unsound + crossed_before <= 25,
+        crossing_unsound + crossed_before <= 21,
         "{crossing_unsound} + {crossed_before} of {tried} unsound at some level"
     );
 }
@@ -1005,6 +1008,22 @@ fn small_chamfers_at_nearly_straight_corners_stay_in_their_faces() {
          combination:r=0.2,combination:r=0.2,combination:r=0.2",
     );
     assert!(p.levels()[5].report.as_ref().unwrap().small_chamfers > 0);
+}
+
+/// Small chamfers to suit a sliver (docs/algorithms/cylindrical.md, "Small chamfers on
+/// slivers"): the cube after a round r = 0.1, Catmull–Clark, the simple type and three rounds
+/// r = 0.2 had 32 faces flipped at level 6 that sixteen rounds of small chamfers, each l a
+/// tenth of the shortest edge at its vertex halved at most fifteen times, did not mend: the
+/// faces there are slivers far narrower than their edges. Tried again with each l bounded by
+/// a tenth of the faces' widths too, the level is sound and crosses nowhere.
+#[test]
+fn small_chamfers_on_slivers_suit_their_width() {
+    let p = sound_and_crossing_nowhere(
+        asset("cube.obj"),
+        "combination:r=0.1,catmull-clark,cylindrical:r=0.2,\
+         combination:r=0.2,combination:r=0.2,combination:r=0.2",
+    );
+    assert!(p.levels()[6].report.as_ref().unwrap().small_chamfers > 0);
 }
 
 /// The absolute chamfers' clamp on a face with a reflex corner (docs/algorithms/chamfers.md,

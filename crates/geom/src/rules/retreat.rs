@@ -8,10 +8,13 @@
 //! such a vertex v takes the point
 //!
 //! ```text
-//! p_c = v + l_v · b_c,   b_c = unit bisector of the corner's angle, into its face,
+//! p_c = v + l_v · b_c,   b_c = unit bisector of the corner's angle, into its face, in its plane,
 //! l_v = min(⅒ of the shortest edge at v, the shortest offset |p − v| the rule gave there) / 2ʰ
 //! ```
 //!
+//! (where sixteen rounds of that do not mend the step, they are tried once more with ⅒ of
+//! the narrowest width `4·area/perimeter` of the faces at v in the minimum too: a sliver
+//! narrower than its edges turns over under any chamfer wider than itself)
 //! — the angle-bisector rule of seed 000 §2.3 with one short l for the whole vertex. Where the
 //! parent is flat enough at v for its corners' sectors to lie in order round the vertex normal,
 //! the VERTEX-face's points lie in that order (it cannot turn over), the EDGE-faces are thin
@@ -65,6 +68,25 @@ fn bisector(mesh: &PolyMesh, topo: &Topology, normals: &[DVec3], vsum: DVec3, c:
     if b.dot(left) < 0.0 { -b } else { b }
 }
 
+/// How wide face `f` is: four times its area over its perimeter (a strip's or a sliver's
+/// width, a square's side). A sliver whose edges are long gets an l to suit its width, else
+/// its small chamfer, wider than the face, turns it over.
+fn width(mesh: &PolyMesh, f: usize) -> f64 {
+    let perimeter: f64 = mesh
+        .face_loops(f)
+        .map(|l| {
+            let vs = mesh.loop_verts(l);
+            (0..vs.len())
+                .map(|i| {
+                    let a = mesh.positions[vs[i] as usize];
+                    a.distance(mesh.positions[vs[(i + 1) % vs.len()] as usize])
+                })
+                .sum::<f64>()
+        })
+        .sum();
+    4.0 * crate::geometry::face_normal_raw(mesh, f).length() / perimeter
+}
+
 /// The new faces with a point moved round `vertices` (the child's vertex c is the parent's
 /// corner c).
 fn moved_faces(mesh: &PolyMesh, child: &PolyMesh, vertices: &[usize]) -> Vec<u32> {
@@ -114,6 +136,9 @@ impl Round {
 /// vertices of the `flipped` new faces to small chamfers until `check` (the new faces
 /// flipped, and how many are degenerate) finds none flipped and no more degenerate than
 /// `degenerate`; returns how many parent vertices took one, or 0 with `child` unchanged.
+/// Where the rounds run out, they are tried once more with each vertex's first l also
+/// bounded by a tenth of the faces' widths round it ([`width`]): a sliver with long edges
+/// turns over under a chamfer wider than itself at every halving the rounds allow.
 pub(crate) fn retreat(
     mesh: &PolyMesh,
     topo: &Topology,
@@ -124,46 +149,55 @@ pub(crate) fn retreat(
 ) -> usize {
     let vsum = crate::geometry::vertex_normal_sums(mesh, topo, normals);
     let original = child.positions.clone();
-    let mut round = Round {
-        halvings: vec![0; mesh.num_vertices()],
-        member: vec![false; mesh.num_vertices()],
-        list: Vec::new(),
-    };
-    round.join(mesh, child, flipped);
-    for _ in 0..ROUNDS {
-        for &v in &round.list {
-            let p = mesh.positions[v];
-            let l = topo
-                .corners_around(v)
-                .map(|c| {
-                    let w =
-                        mesh.positions[mesh.corner_verts[topo.next(c as usize) as usize] as usize];
-                    (SHARE * p.distance(w)).min(original[c as usize].distance(p))
-                })
-                .fold(f64::INFINITY, f64::min)
-                * 0.5f64.powi(round.halvings[v].min(60));
-            for c in topo.corners_around(v).map(|c| c as usize) {
-                child.positions[c] = p + bisector(mesh, topo, normals, vsum[v], c) * l;
+    for by_width in [false, true] {
+        let mut round = Round {
+            halvings: vec![0; mesh.num_vertices()],
+            member: vec![false; mesh.num_vertices()],
+            list: Vec::new(),
+        };
+        round.join(mesh, child, flipped);
+        for _ in 0..ROUNDS {
+            for &v in &round.list {
+                let p = mesh.positions[v];
+                let l = topo
+                    .corners_around(v)
+                    .map(|c| {
+                        let w = mesh.positions
+                            [mesh.corner_verts[topo.next(c as usize) as usize] as usize];
+                        let mut room = p.distance(w);
+                        if by_width {
+                            room = room.min(width(mesh, topo.corner_face(c as usize) as usize));
+                        }
+                        (SHARE * room).min(original[c as usize].distance(p))
+                    })
+                    .fold(f64::INFINITY, f64::min)
+                    * 0.5f64.powi(round.halvings[v].min(60));
+                for c in topo.corners_around(v).map(|c| c as usize) {
+                    child.positions[c] = p + bisector(mesh, topo, normals, vsum[v], c) * l;
+                }
             }
+            let (mut left, tiny) = check(child);
+            if left.is_empty() {
+                if tiny > degenerate {
+                    // Faces of no area (an l halved to nothing on a sliver): the rounding's
+                    // flipped faces are the honest report, not these.
+                    break;
+                }
+                // Faces facing outward that pass through others (the step's check cannot see
+                // them) are treated as flipped ones: their vertices join, or halve their l.
+                let crossing = crate::analysis::crossings_of(
+                    child,
+                    &moved_faces(mesh, child, &round.list),
+                    None,
+                );
+                if crossing.is_empty() {
+                    return round.list.len();
+                }
+                left = crate::analysis::crossing_faces(&crossing);
+            }
+            round.join(mesh, child, &left);
         }
-        let (mut left, tiny) = check(child);
-        if left.is_empty() {
-            if tiny > degenerate {
-                // Faces of no area (an l halved to nothing on a sliver): the rounding's flipped
-                // faces are the honest report, not these.
-                break;
-            }
-            // Faces facing outward that pass through others (the step's check cannot see
-            // them) are treated as flipped ones: their vertices join, or halve their l.
-            let crossing =
-                crate::analysis::crossings_of(child, &moved_faces(mesh, child, &round.list), None);
-            if crossing.is_empty() {
-                return round.list.len();
-            }
-            left = crate::analysis::crossing_faces(&crossing);
-        }
-        round.join(mesh, child, &left);
+        child.positions.copy_from_slice(&original);
     }
-    child.positions.copy_from_slice(&original);
     0
 }
