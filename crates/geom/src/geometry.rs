@@ -18,6 +18,21 @@ pub fn face_normal_raw(mesh: &PolyMesh, f: usize) -> DVec3 {
     n
 }
 
+/// The summed length of face `f`'s loops (holes included).
+pub fn face_perimeter(mesh: &PolyMesh, f: usize) -> f64 {
+    mesh.face_loops(f)
+        .map(|l| {
+            let vs = mesh.loop_verts(l);
+            (0..vs.len())
+                .map(|i| {
+                    let a = mesh.positions[vs[i] as usize];
+                    a.distance(mesh.positions[vs[(i + 1) % vs.len()] as usize])
+                })
+                .sum::<f64>()
+        })
+        .sum()
+}
+
 /// ½ Σ V_i × V_(i+1) of one loop. Triangles and quads use the equal closed forms
 /// ½(V₁ − V₀) × (V₂ − V₀) and ½(V₂ − V₀) × (V₃ − V₁) (the quad form holds for non-planar
 /// quads too); longer loops sum relative to their first vertex (the same sum for a closed

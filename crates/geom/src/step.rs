@@ -492,18 +492,7 @@ pub fn is_degenerate(mesh: &PolyMesh, f: usize, n: DVec3, s: f64) -> bool {
     if a2 >= tiny * s * mesh.face_corners(f).len() as f64 {
         return false;
     }
-    let perimeter: f64 = mesh
-        .face_loops(f)
-        .map(|l| {
-            let vs = mesh.loop_verts(l);
-            (0..vs.len())
-                .map(|i| {
-                    let a = mesh.positions[vs[i] as usize];
-                    a.distance(mesh.positions[vs[(i + 1) % vs.len()] as usize])
-                })
-                .sum::<f64>()
-        })
-        .sum();
+    let perimeter = crate::geometry::face_perimeter(mesh, f);
     // A face collapsed to a point (no perimeter either) and a NaN one are degenerate.
     a2.is_nan() || a2 <= tiny * perimeter
 }

@@ -12,10 +12,10 @@
 //! l_v = min(⅒ of the shortest edge at v, the shortest offset |p − v| the rule gave there) / 2ʰ
 //! ```
 //!
-//! (where sixteen rounds of that do not mend the step, they are tried once more with ⅒ of
-//! the narrowest width `4·area/perimeter` of the faces at v in the minimum too: a sliver
-//! narrower than its edges turns over under any chamfer wider than itself)
-//! — the angle-bisector rule of seed 000 §2.3 with one short l for the whole vertex. Where the
+//! — the angle-bisector rule of seed 000 §2.3 with one short l for the whole vertex (where
+//! sixteen rounds of it do not mend the step, they are tried once more with ⅒ of the
+//! narrowest width `4·area/perimeter` of the faces at v in the minimum too: a sliver narrower
+//! than its edges turns over under any chamfer wider than itself). Where the
 //! parent is flat enough at v for its corners' sectors to lie in order round the vertex normal,
 //! the VERTEX-face's points lie in that order (it cannot turn over), the EDGE-faces are thin
 //! strips on their edges' own sides and the FACE-faces keep their faces' orientation, whatever
@@ -39,9 +39,9 @@ const ROUNDS: usize = 16;
 const SHARE: f64 = 0.1;
 
 /// The unit bisector of corner `c` into its face, in the face's plane (`vsum`, the normal sum
-/// at its vertex, for a face of no area). The face's interior lies to the left of its loop's outgoing edge seen
-/// along the normal, holes included, so the bisector of a reflex corner is turned round and
-/// that of a straight one is that left direction.
+/// at its vertex, for a face of no area). The face's interior lies to the left of its loop's
+/// outgoing edge seen along the normal, holes included, so the bisector of a reflex corner is
+/// turned round and that of a straight one is that left direction.
 fn bisector(mesh: &PolyMesh, topo: &Topology, normals: &[DVec3], vsum: DVec3, c: usize) -> DVec3 {
     let f = topo.corner_face(c) as usize;
     let n = if normals[f] == DVec3::ZERO {
@@ -72,19 +72,13 @@ fn bisector(mesh: &PolyMesh, topo: &Topology, normals: &[DVec3], vsum: DVec3, c:
 /// width, a square's side). A sliver whose edges are long gets an l to suit its width, else
 /// its small chamfer, wider than the face, turns it over.
 fn width(mesh: &PolyMesh, f: usize) -> f64 {
-    let perimeter: f64 = mesh
-        .face_loops(f)
-        .map(|l| {
-            let vs = mesh.loop_verts(l);
-            (0..vs.len())
-                .map(|i| {
-                    let a = mesh.positions[vs[i] as usize];
-                    a.distance(mesh.positions[vs[(i + 1) % vs.len()] as usize])
-                })
-                .sum::<f64>()
-        })
-        .sum();
-    4.0 * crate::geometry::face_normal_raw(mesh, f).length() / perimeter
+    let perimeter = crate::geometry::face_perimeter(mesh, f);
+    if perimeter > 0.0 {
+        4.0 * crate::geometry::face_normal_raw(mesh, f).length() / perimeter
+    } else {
+        // A face collapsed to a point bounds nothing.
+        f64::INFINITY
+    }
 }
 
 /// The new faces with a point moved round `vertices` (the child's vertex c is the parent's
