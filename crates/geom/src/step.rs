@@ -385,9 +385,8 @@ pub fn check_children(
                 let np = match prov.face_kind[f] {
                     FaceKind::Face => parent_normals[p],
                     FaceKind::Edge => {
-                        let c = topo.edge_corner[p] as usize;
-                        parent_normals[topo.corner_face(c) as usize]
-                            + parent_normals[topo.corner_face(topo.twin[c] as usize) as usize]
+                        let [a, b] = topo.edge_faces(p);
+                        parent_normals[a as usize] + parent_normals[b as usize]
                     }
                     FaceKind::Vertex => vsum[p],
                 };

@@ -76,9 +76,8 @@ impl NewFaces<'_> {
 
     fn edge_flipped(&self, at: impl Fn(u32) -> DVec3, e: usize) -> bool {
         let t = self.topo;
-        let c = t.edge_corner[e] as usize;
-        let np = self.normals[t.corner_face(c) as usize]
-            + self.normals[t.corner_face(t.twin[c] as usize) as usize];
+        let [a, b] = t.edge_faces(e);
+        let np = self.normals[a as usize] + self.normals[b as usize];
         let q = self.edge_corners(e).map(&at);
         let n = newell_at(0..4, |i| q[i as usize]);
         n.dot(np) < 0.0 || points_cross_themselves(&q, n)

@@ -17,9 +17,7 @@ use glam::DVec3;
 pub(super) fn guarded_faces(topo: &Topology, unfolded: &[u32], capped: &[u32]) -> Vec<u32> {
     let mut faces: Vec<u32> = unfolded.to_vec();
     for &e in capped {
-        let c = topo.edge_corner[e as usize] as usize;
-        faces.push(topo.corner_face(c));
-        faces.push(topo.corner_face(topo.twin[c] as usize));
+        faces.extend(topo.edge_faces(e as usize));
     }
     faces.sort_unstable();
     faces.dedup();
@@ -59,20 +57,13 @@ pub(super) fn guard_crossings(
             near_vertex[parent.corner_verts[c] as usize] = true;
         }
     }
-    let faces_of_edge = |e: usize| {
-        let c = topo.edge_corner[e] as usize;
-        [
-            topo.corner_face(c) as usize,
-            topo.corner_face(topo.twin[c] as usize) as usize,
-        ]
-    };
     let (mut touched, mut among) = (Vec::new(), Vec::new());
     for f in 0..child.num_faces() {
         let p = prov.face_parent[f] as usize;
         let (is_touched, is_near) = match prov.face_kind[f] {
             FaceKind::Face => (moved[p], near[p]),
             FaceKind::Edge => {
-                let [a, b] = faces_of_edge(p);
+                let [a, b] = topo.edge_faces(p).map(|f| f as usize);
                 (moved[a] || moved[b], near[a] || near[b])
             }
             FaceKind::Vertex => (moved_vertex[p], near_vertex[p]),
@@ -98,9 +89,9 @@ fn concave_vertices(parent: &PolyMesh, topo: &Topology, normals: &[DVec3]) -> Ve
     let bends = crate::geometry::signed_bend_angles(parent, topo, normals);
     for (e, &psi) in bends.iter().enumerate() {
         if psi < -1e-9 {
-            let c = topo.edge_corner[e] as usize;
-            concave[parent.corner_verts[c] as usize] = true;
-            concave[parent.corner_verts[topo.next(c) as usize] as usize] = true;
+            let (a, b) = topo.edge_verts(parent, e);
+            concave[a as usize] = true;
+            concave[b as usize] = true;
         }
     }
     concave

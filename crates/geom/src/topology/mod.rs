@@ -426,6 +426,12 @@ impl Topology {
         found
     }
 
+    /// The two faces of edge `e` of a closed mesh: its first half-edge's, then its twin's.
+    pub fn edge_faces(&self, e: usize) -> [u32; 2] {
+        let c = self.edge_corner[e] as usize;
+        [self.corner_face(c), self.corner_face(self.twin[c] as usize)]
+    }
+
     /// The two vertices of edge `e` as (a, b) in the direction of its first half-edge.
     pub fn edge_verts(&self, mesh: &PolyMesh, e: usize) -> (u32, u32) {
         let c = self.edge_corner[e] as usize;
