@@ -177,6 +177,16 @@ pub fn step_bytes(
     padded(b)
 }
 
+/// Bytes a search of a level of these counts for faces that pass through each other
+/// ([`crate::analysis::crossings`]) holds besides the level: a box a face (48), the
+/// triangles' corners and normals (48 a triangle, built per chunk and then gathered, so
+/// twice that at once), each face's first triangle (4), and the hierarchy over the boxes —
+/// an index and a centre a face (4 + 24) and a node per two leaves of four (about 40 a
+/// face). Measured beside it, docs/reliability.md.
+pub fn crossing_bytes(counts: &Counts) -> u64 {
+    padded(120 * counts.faces + 96 * counts.triangles())
+}
+
 /// Bytes an export of a level of these counts holds while it is written: glTF gathers its
 /// vertices (a position and a normal, one a corner at most, with the map that shares them),
 /// its indices and the corner normals before streaming them; OBJ, `.prism.json` and STL are

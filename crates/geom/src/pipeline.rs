@@ -299,8 +299,7 @@ impl Pipeline {
         for k in last..self.steps.len() {
             let s = &self.steps[k];
             let carried_in = k > last && self.carries(k - 1);
-            let step =
-                memory::step_bytes(&counts, s, !carried_in, self.carries(k), self.provenance(s));
+            let step = self.step_bytes(&counts, s, !carried_in, self.carries(k));
             peak = peak.max(kept + step);
             let next = counts.after(s);
             let next_bytes = next.level_bytes(self.provenance(s));
@@ -315,6 +314,26 @@ impl Pipeline {
             cur_bytes = next_bytes;
         }
         peak.max(kept + after) + memory::BASELINE
+    }
+
+    /// [`memory::step_bytes`] of a step of `scheme` from a level of `counts`, with the search
+    /// of the new level for crossings when the options mend them and the step takes the last
+    /// resorts ([`crate::rules::CornerRule::takes_resorts`]).
+    fn step_bytes(
+        &self,
+        counts: &memory::Counts,
+        scheme: &Scheme,
+        topology: bool,
+        carry: bool,
+    ) -> u64 {
+        let mut b = memory::step_bytes(counts, scheme, topology, carry, self.provenance(scheme));
+        if let Scheme::Biquadratic(rule) = scheme
+            && self.options.mend_crossings
+            && rule.takes_resorts(self.options.overlap.clamps())
+        {
+            b += memory::crossing_bytes(&counts.after(scheme));
+        }
+        b
     }
 
     /// Whether some step rounds edges (a run of cylindrical-family steps: its fillets can
@@ -378,13 +397,7 @@ impl Pipeline {
             // of it is built; the step's own check then sees what is left.
             let kept = self.kept_bytes() + memory::BASELINE;
             let counts = memory::Counts::of(&self.levels[k].mesh, None);
-            let step = memory::step_bytes(
-                &counts,
-                &scheme,
-                carried.is_none(),
-                self.carries(k),
-                self.provenance(&scheme),
-            );
+            let step = self.step_bytes(&counts, &scheme, carried.is_none(), self.carries(k));
             OverBudget::check(
                 kept + step,
                 self.options.memory_budget,

@@ -228,17 +228,8 @@ pub fn biquadratic_step_carrying(
         }
     }
     // The minimum type and the chamfers, when clamping asks for a sound solid, take the
-    // last two resorts too (the simple type's folds are the paper's lesson, Doo–Sabin's the
-    // scheme as printed).
-    let resorts = is_combination
-        || (options.overlap.clamps()
-            && matches!(
-                rule,
-                CornerRule::Minimum { .. }
-                    | CornerRule::AngleBisector { .. }
-                    | CornerRule::CutWidth { .. }
-                    | CornerRule::VectorSum { .. }
-            ));
+    // last two resorts too.
+    let resorts = rule.takes_resorts(options.overlap.clamps());
     if resorts && !checked.flipped.is_empty() {
         let corners: Vec<u32> = checked
             .flipped

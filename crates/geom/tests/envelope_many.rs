@@ -548,6 +548,9 @@ fn apart_cubes(rng: &mut Lcg, count: usize) -> Vec<PrimitiveInput> {
 fn survey_random() {
     let mut rng = Lcg(4);
     let apart = std::env::var("APART").is_ok();
+    let ts: Vec<f64> = std::env::var("TS").map_or(vec![1.0, 0.5], |v| {
+        v.split(',').map(|x| x.parse().unwrap()).collect()
+    });
     for count in 2..=5 {
         let (mut worst, mut bad, mut errors, mut folds, mut jumps) = (0.0f64, 0, 0, 0, 0);
         let mut folds_at_1 = 0;
@@ -555,14 +558,14 @@ fn survey_random() {
         let mut over = 0;
         // Scenes with a folded cell ([`Envelope::folds`]: stricter than the winding test).
         let (mut cells, mut cells_at_1) = (0, 0);
-        for _ in 0..100 {
+        for scene in 0..100 {
             let spread: f64 = std::env::var("SPREAD").map_or(4.0, |v| v.parse().unwrap());
             let prims = if apart {
                 apart_cubes(&mut rng, count)
             } else {
                 random_cubes(&mut rng, count, spread)
             };
-            for t in [1.0, 0.5] {
+            for &t in &ts {
                 match envelope(&spec(prims.clone(), t)) {
                     Err(e) => {
                         errors += 1;
@@ -576,13 +579,38 @@ fn survey_random() {
                         if closed(&m).is_err() {
                             bad += 1;
                         }
-                        if inward_faces(&m) > 0 {
+                        let inward = inward_faces(&m);
+                        if inward > 0 {
+                            let crossing = prism_geom::freeform::envelope::folds::crossings(
+                                &e.tessellate(8).unwrap(),
+                            );
+                            println!(
+                                "{count} cubes, t = {t}, scene {scene}: {inward} of {} faces inward at K = 3, {} crossing pairs at K = 8",
+                                m.num_faces(),
+                                crossing.len()
+                            );
+                            if let Ok(dir) = std::env::var("DUMP") {
+                                let path =
+                                    format!("{dir}/inward-{count}-{scene}-{t}.envelope.json");
+                                let text = serde_json::to_string_pretty(&spec(prims.clone(), t));
+                                std::fs::write(&path, text.unwrap()).unwrap();
+                            }
                             folds += 1;
                             if t == 1.0 {
                                 folds_at_1 += 1;
                             }
                         }
-                        if !e.folds().is_empty() {
+                        let fl = e.folds();
+                        if !fl.is_empty() {
+                            println!(
+                                "{count} cubes, t = {t}, scene {scene}: {}",
+                                e.fold_warning(&fl).unwrap_or_default()
+                            );
+                            if let Ok(dir) = std::env::var("DUMP") {
+                                let path = format!("{dir}/cubes-{count}-{scene}-{t}.envelope.json");
+                                let text = serde_json::to_string_pretty(&spec(prims.clone(), t));
+                                std::fs::write(&path, text.unwrap()).unwrap();
+                            }
                             cells += 1;
                             if t == 1.0 {
                                 cells_at_1 += 1;
@@ -596,7 +624,8 @@ fn survey_random() {
             }
         }
         println!(
-            "{count} cubes: worst regions/faces {worst:.3} ({over} of 100 above 1.6 at t = 1), errors {errors}, open {bad}, folded {folds} ({folds_at_1} at t = 1), a folded cell {cells} ({cells_at_1} at t = 1), G1 broken {jumps} of 200"
+            "{count} cubes: worst regions/faces {worst:.3} ({over} of 100 above 1.6 at t = 1), errors {errors}, open {bad}, folded {folds} ({folds_at_1} at t = 1), a folded cell {cells} ({cells_at_1} at t = 1), G1 broken {jumps} of {}",
+            100 * ts.len()
         );
     }
 }

@@ -612,8 +612,10 @@ fn the_computer_room_smoothed_twice_rounds_through_level_six() {
 /// the guard acted, the same (2,400 other mixes, held out: 6 → 5 at a rounding); with the
 /// small chamfers' bisectors in the face's plane and the chamfers' clamp at a reflex corner,
 /// the same here (held out, seeds 37–67: 8 and 13 → 3 and 6); with small chamfers tried again
-/// to suit slivers' widths, 0 and 1 (21; held out: 2 and 6).
-/// About a minute in release;
+/// to suit slivers' widths, 0 and 1 (21; held out: 2 and 6); with every crossing on the level
+/// mended, the app's default since 2026-11-29 (`NOMEND=1` leaves it to the guard's
+/// neighbourhood, the library's default), 0 and 0 (20; held out, 4,800 mixes: 3 and 4).
+/// About two minutes in release;
 /// each mix unsound either way is printed. `SEEDS=37,41,…` draws 300 mixes from each seed
 /// given instead of the four below and only prints (docs/algorithms/cylindrical.md keeps the
 /// held-out sets' counts: the resorts were tuned on these four).
@@ -684,8 +686,9 @@ fn random_mixes_of_steps() {
             );
             p.options.overlap = Overlap::Clamp;
             p.options.memory_budget = 2 << 30;
-            // MEND=1: every rounding also mends crossings anywhere on its level.
-            p.options.mend_crossings = std::env::var("MEND").is_ok();
+            // As the app: every rounding also mends crossings anywhere on its level
+            // (NOMEND=1: only beside the guard's moves, the library's default).
+            p.options.mend_crossings = std::env::var("NOMEND").is_err();
             let _ = p.compute();
             // Without and with the crossing check (analysis::crossings).
             let mut sound_so_far = [true, true];
@@ -742,12 +745,13 @@ fn random_mixes_of_steps() {
         return;
     }
     assert!(unsound.is_empty(), "{} of {tried}", unsound.len());
+    let mended = std::env::var("NOMEND").is_err();
     assert!(
-        crossing_unsound <= 1,
+        crossing_unsound <= usize::from(!mended),
         "{crossing_unsound} of {tried} with crossings"
     );
     assert!(
-        crossing_unsound + crossed_before <= 21,
+        crossing_unsound + crossed_before <= 20 + usize::from(!mended),
         "{crossing_unsound} + {crossed_before} of {tried} unsound at some level"
     );
 }

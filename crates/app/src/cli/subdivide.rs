@@ -467,7 +467,10 @@ pub fn run(a: SubdivideArgs) -> Result<(), CliError> {
     // Only the levels the output and the fillet report need are kept.
     pipeline.keep = Keep::Needed;
     let n = steps.len();
-    // After the last step: the fillet report, then an export assembled in memory.
+    // The options first: mending crossings adds a search of each rounded level to its step.
+    pipeline.options = a.steps.options(pipeline.options.memory_budget);
+    // After the last step: the fillet report, then an export assembled in memory; a search
+    // for crossings after each level, the last the largest, before both.
     let last_counts = pipeline.predicted_counts();
     let output = prism_geom::memory::export_bytes(&last_counts, io::ExportFormat::of(&a.output));
     let report = if pipeline.rounds() {
@@ -475,11 +478,16 @@ pub fn run(a: SubdivideArgs) -> Result<(), CliError> {
     } else {
         0
     };
+    let crossing = if a.check_crossings {
+        prism_geom::memory::crossing_bytes(&last_counts)
+    } else {
+        0
+    };
     let budget = a.steps.memory.check(
-        pipeline.estimate_peak_then(output.max(report)),
+        pipeline.estimate_peak_then(output.max(report).max(crossing)),
         "this pipeline",
     )?;
-    pipeline.options = a.steps.options(budget);
+    pipeline.options.memory_budget = budget;
     let result = pipeline.compute_with(n, |k, level| {
         let r = level
             .report

@@ -96,6 +96,22 @@ impl CornerRule {
         )
     }
 
+    /// Whether a step of the rule takes the last resorts — the untangling and the small
+    /// chamfers, and the whole-level search for crossings when mending is asked for: the
+    /// combination rule always, the minimum type and the chamfers when `clamps` (the simple
+    /// type's folds are the paper's lesson, Doo–Sabin's the scheme as printed).
+    pub fn takes_resorts(&self, clamps: bool) -> bool {
+        matches!(self, CornerRule::Combination { .. })
+            || (clamps
+                && matches!(
+                    self,
+                    CornerRule::Minimum { .. }
+                        | CornerRule::AngleBisector { .. }
+                        | CornerRule::CutWidth { .. }
+                        | CornerRule::VectorSum { .. }
+                ))
+    }
+
     /// The default radius of the cylindrical family.
     pub fn radius(&self) -> Option<f64> {
         match *self {

@@ -141,7 +141,8 @@ pub struct ModelTab {
     /// Clamp radii whose rounds do not fit their faces (on by default; off: refuse them).
     pub clamp: bool,
     /// Search each rounding's whole level for faces that pass through each other and mend
-    /// them with small chamfers (off by default: about ten times a step).
+    /// them with small chamfers (on by default, as clamping is: a rounding step then takes
+    /// about seven times as long).
     pub mend_crossings: bool,
     /// Step >> after a step of the same absolute chamfer divides its l or d by this.
     pub shrink: f64,
@@ -183,7 +184,7 @@ impl ModelTab {
             next,
             budget_mib: budget_mib.max(64),
             clamp: true,
-            mend_crossings: false,
+            mend_crossings: true,
             shrink: 4.0,
             question: None,
             drag: None,

@@ -100,7 +100,8 @@ pub struct ViewPipe {
     /// turns it off.
     pub overlap: Overlap,
     /// Whether the rounding steps search their whole level for faces that pass through each
-    /// other and mend them with small chamfers (the step panel's checkbox; off by default).
+    /// other and mend them with small chamfers (the step panel's checkbox; on by default, as
+    /// clamping is, so that every level is sound).
     pub mend_crossings: bool,
     pub scene: Arc<Scene>,
     /// What the scene on screen was made from.
@@ -146,7 +147,7 @@ impl ViewPipe {
             keep: prism_geom::pipeline::Keep::All,
             budget_override: None,
             overlap: Overlap::Clamp,
-            mend_crossings: false,
+            mend_crossings: true,
             scene: Arc::new(Scene::default()),
             scene_key: None,
             overlay: Arc::new(Scene::default()),
