@@ -102,7 +102,9 @@ fn concave_vertices(parent: &PolyMesh, topo: &Topology, normals: &[DVec3]) -> Ve
 /// those faces (where the faces round a vertex turn toward each other, its corner points'
 /// polygon is not held on the solid's side of its neighbours as at a convex vertex). Each
 /// such vertex is tried on its own, without a search: the split writes FACE-faces, then
-/// EDGE-faces, then VERTEX-faces, each in its parent's order.
+/// EDGE-faces, then VERTEX-faces, each in its parent's order — a VERTEX-face for each vertex
+/// that a face uses, so a vertex's is found by the provenance, not by its number (a vertex no
+/// face uses has none, and those after it are numbered one lower).
 pub(super) fn concave_vertex_crossings(
     parent: &PolyMesh,
     topo: &Topology,
@@ -113,24 +115,25 @@ pub(super) fn concave_vertex_crossings(
     use rayon::prelude::*;
     let concave = concave_vertices(parent, topo, normals);
     let (nf, ne) = (parent.num_faces(), topo.num_edges());
-    let vertex_face = |v: usize| (nf + ne + v) as u32;
+    let mut vertex_face = vec![u32::MAX; parent.num_vertices()];
+    for f in nf + ne..child.num_faces() {
+        if prov.face_kind[f] == FaceKind::Vertex {
+            vertex_face[prov.face_parent[f] as usize] = f as u32;
+        }
+    }
     let mut out: Vec<u32> = (0..parent.num_vertices())
         .into_par_iter()
         .with_min_len(1 << 10)
-        .filter(|&v| concave[v])
+        .filter(|&v| concave[v] && vertex_face[v] != u32::MAX)
         .flat_map_iter(|v| {
-            let vf = vertex_face(v);
-            debug_assert!(
-                prov.face_kind[vf as usize] == FaceKind::Vertex
-                    && prov.face_parent[vf as usize] as usize == v
-            );
+            let vf = vertex_face[v];
             let mut ring = Vec::new();
             for c in topo.corners_around(v) {
                 let f = topo.corner_face(c as usize) as usize;
                 ring.push(f as u32);
                 for k in parent.face_corners(f) {
                     ring.push((nf + topo.corner_edge[k] as usize) as u32);
-                    ring.push(vertex_face(parent.corner_verts[k] as usize));
+                    ring.push(vertex_face[parent.corner_verts[k] as usize]);
                 }
             }
             ring.sort_unstable();
