@@ -352,9 +352,10 @@ fn fold_free_at(spec: &EnvelopeSpec, t: f64) -> Envelope {
 /// nor at t = 0.5 on a heap of four equal cubes whose cuts leave a thin four-sided region
 /// (chords about 0.60, 0.04, 0.61, 0.01), which folded before corners inside a face were drawn
 /// to their neighbours' distance (envelope.md, "Corners inside a face"); a heap of six
-/// primitives whose fusion strip between two short silhouette sides is a hundredth wide
-/// (envelope.md, "Left") has cells turned by more than 90° at t = 0.5, and the warning names
-/// where the first lies.
+/// primitives (heap 600182 of the mixed survey, envelope.md, "Left") has cells turned by more
+/// than 90° at t = 0.2 in a fusion quad, and the warning names where the first lies. (The
+/// heap of six this test showed folding at t = 0.5 before, a fusion strip a thousandth wide,
+/// no longer folds: corners inside a face drawn together by their distance across it.)
 #[test]
 fn folds_are_found_patch_by_patch() {
     for text in [
@@ -383,11 +384,12 @@ fn folds_are_found_patch_by_patch() {
     );
     let spec: EnvelopeSpec =
         serde_json::from_str(include_str!("data/envelope/folding-heap.envelope.json")).unwrap();
-    let e = envelope(&EnvelopeSpec { t: 0.5, ..spec }).unwrap();
+    let e = envelope(&spec).unwrap();
+    assert_eq!(spec.t, 0.2);
     let folds = e.folds();
     assert!(!folds.is_empty());
     let w = e.fold_warning(&folds).unwrap();
-    assert!(w.contains("region 34 (between primitives)"), "{w}");
+    assert!(w.contains("region 56 (between primitives)"), "{w}");
     assert!(
         w.contains(&format!(
             "{} of {} sampled cells fold",
@@ -825,7 +827,12 @@ fn a_thin_pentagon_is_split_as_a_strip() {
 /// apart (42 cells at t = 0.5, 38 pairs). Both now lie as far out as their neighbours, and
 /// nothing folds or crosses from t = 1 to 0.1, whatever the listing (the second folded one
 /// cell at 0.1 on a four-sided region that is nearly a triangle, sides 0.51, 1.20, 0.0004,
-/// 1.37, until such regions were tried split: the test below).
+/// 1.37, until such regions were tried split: the test below). Corners are drawn together
+/// by how far apart they lie across the face, not by their located distance: where the
+/// rays of two cuts nearly coincide (heap 600151 of the mixed survey, six primitives, two
+/// hull facets 0.06° from one plane) two corners 0.0013 apart across a prism's face were
+/// located 0.027 apart along their radii, so they counted as far apart and stayed 0.0047
+/// apart, and the fusion strip between them, 3.9 long, folded at t = 0.5, 0.2 and 0.1.
 #[test]
 fn corners_inside_a_face_lie_as_far_out_as_their_neighbours() {
     use prism_geom::freeform::envelope::CurveKind;
@@ -836,6 +843,10 @@ fn corners_inside_a_face_lie_as_far_out_as_their_neighbours() {
         ),
         (
             include_str!("data/envelope/three-cuts-near-a-point.envelope.json"),
+            &[1.0, 0.5, 0.2, 0.1][..],
+        ),
+        (
+            include_str!("data/envelope/cuts-at-nearly-one-ray.envelope.json"),
             &[1.0, 0.5, 0.2, 0.1][..],
         ),
     ] {

@@ -52,10 +52,11 @@ use std::collections::HashMap;
 /// Relative tolerance (of r) for "on a cut plane".
 const ON_PLANE: f64 = 1e-9;
 
-/// Corners inside one face closer than about this share of r are drawn to one distance from
-/// the centre ([`Clipper::inside_corners`]): of 1,800 mixed heaps 2, 6, 39 folded at t = 0.5,
-/// 0.2, 0.1 with it; 6, 16, 44 with the 1/d² weights alone (18, 40, 72 with the plain mean);
-/// 1, 6, 39 with 0.05 and 1, 23, 58 with 0.1 (envelope.md, "Corners inside a face").
+/// Corners inside one face closer than about this share of r across it are drawn to one
+/// distance from the centre ([`Clipper::inside_corners`]): of 1,800 mixed heaps 0, 3, 27
+/// fold at t = 0.5, 0.2, 0.1 with it, 0, 4, 28 with 0.02 and 0, 6, 32 with 0.05 (first
+/// measured with the located distance: 2, 6, 39 with it; 6, 16, 44 with the 1/d² weights
+/// alone, 18, 40, 72 with the plain mean; envelope.md, "Corners inside a face").
 const NEAR_INSIDE: f64 = 0.03;
 
 /// Unit directions closer than this are one network vertex.
@@ -376,7 +377,10 @@ impl Clipper<'_> {
             let (mut sum, mut weight) = (li.position.distance(g), 1.0);
             for &(j, lj) in &found {
                 if j != i {
-                    let d2 = li.position.distance_squared(lj.position);
+                    // How far apart they lie across the face: the flat corners' distance, not
+                    // the located ones', which holds the very difference in distance from G
+                    // that drawing them together removes.
+                    let d2 = poly[i].flat.distance_squared(poly[j].flat);
                     let w = reach * reach / (reach * reach + d2);
                     sum += w * lj.position.distance(g);
                     weight += w;
