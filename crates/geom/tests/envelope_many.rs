@@ -353,7 +353,8 @@ fn fold_free_at(spec: &EnvelopeSpec, t: f64) -> Envelope {
 /// (chords about 0.60, 0.04, 0.61, 0.01), which folded before corners inside a face were drawn
 /// to their neighbours' distance (envelope.md, "Corners inside a face"); a heap of six
 /// primitives (heap 600182 of the mixed survey, envelope.md, "Left") has cells turned by more
-/// than 90° at t = 0.2 in a fusion quad, and the warning names where the first lies. (The
+/// than 90° at t = 0.2 in a narrow lid between three of them, and the warning names where the
+/// first lies. (The
 /// heap of six this test showed folding at t = 0.5 before, a fusion strip a thousandth wide,
 /// no longer folds: corners inside a face drawn together by their distance across it.)
 #[test]
@@ -544,7 +545,10 @@ fn apart_cubes(rng: &mut Lcg, count: usize) -> Vec<PrimitiveInput> {
 }
 
 /// Regions, closedness, folds and G1 of equal cubes at random centres (docs/algorithms/
-/// envelope.md, "Regions against the cubes' faces"); `APART=1`: cubes that do not overlap.
+/// envelope.md, "Regions against the cubes' faces"); `APART=1`: cubes that do not overlap;
+/// `TS` the t values (default "1,0.5"). Each scene with a face inward by the winding test or
+/// a folded cell is printed (the winding test's with its crossings at K = 8) and, when `DUMP`
+/// names a folder, written there as `inward-…` or `folded-COUNT-SCENE-T.envelope.json`.
 #[test]
 #[ignore]
 fn survey_random() {
@@ -566,6 +570,14 @@ fn survey_random() {
                 apart_cubes(&mut rng, count)
             } else {
                 random_cubes(&mut rng, count, spread)
+            };
+            // The scene, written into the folder DUMP when set.
+            let dump = |what: &str, t: f64| {
+                if let Ok(dir) = std::env::var("DUMP") {
+                    let path = format!("{dir}/{what}-{count}-{scene}-{t}.envelope.json");
+                    let text = serde_json::to_string_pretty(&spec(prims.clone(), t)).unwrap();
+                    std::fs::write(&path, text).unwrap();
+                }
             };
             for &t in &ts {
                 match envelope(&spec(prims.clone(), t)) {
@@ -591,12 +603,7 @@ fn survey_random() {
                                 m.num_faces(),
                                 crossing.len()
                             );
-                            if let Ok(dir) = std::env::var("DUMP") {
-                                let path =
-                                    format!("{dir}/inward-{count}-{scene}-{t}.envelope.json");
-                                let text = serde_json::to_string_pretty(&spec(prims.clone(), t));
-                                std::fs::write(&path, text.unwrap()).unwrap();
-                            }
+                            dump("inward", t);
                             folds += 1;
                             if t == 1.0 {
                                 folds_at_1 += 1;
@@ -608,11 +615,7 @@ fn survey_random() {
                                 "{count} cubes, t = {t}, scene {scene}: {}",
                                 e.fold_warning(&fl).unwrap_or_default()
                             );
-                            if let Ok(dir) = std::env::var("DUMP") {
-                                let path = format!("{dir}/cubes-{count}-{scene}-{t}.envelope.json");
-                                let text = serde_json::to_string_pretty(&spec(prims.clone(), t));
-                                std::fs::write(&path, text.unwrap()).unwrap();
-                            }
+                            dump("folded", t);
                             cells += 1;
                             if t == 1.0 {
                                 cells_at_1 += 1;

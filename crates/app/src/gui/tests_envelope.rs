@@ -191,8 +191,8 @@ fn the_t_sweep_shows_the_three_t() {
 }
 
 /// Folds are shown in the summary: none on the seven-primitive sample at its own t, at 0.5 or
-/// at 0.1, where the slider stops; a heap of six primitives has cells of a fusion quad turned
-/// by more than 90° at t = 0.2, counted, with where the first lies.
+/// at 0.1, where the slider stops; a heap of six primitives has cells of a narrow lid between
+/// three of them turned by more than 90° at t = 0.2, counted, with where the first lies.
 #[test]
 fn the_summary_counts_folds() {
     let k = envelope::ENVELOPE_SAMPLES
