@@ -1019,7 +1019,7 @@ fn envelope_builds_the_bundled_scenes_and_names_bad_ones() {
     );
     assert!(so.contains(" folded=0 "), "{so}");
     // Down to t = 0.1, where the tab's slider stops, nothing folds; in a heap of six
-    // primitives a few cells of a narrow lid between three of them do at t = 0.2: counted,
+    // primitives a few cells of a narrow lid between three of them do at t = 0.1: counted,
     // and the first named on stderr (exit 0).
     let (_, so, _) = succeeds_to(
         "seven-01.obj",

@@ -352,11 +352,13 @@ fn fold_free_at(spec: &EnvelopeSpec, t: f64) -> Envelope {
 /// nor at t = 0.5 on a heap of four equal cubes whose cuts leave a thin four-sided region
 /// (chords about 0.60, 0.04, 0.61, 0.01), which folded before corners inside a face were drawn
 /// to their neighbours' distance (envelope.md, "Corners inside a face"); a heap of six
-/// primitives (heap 600182 of the mixed survey, envelope.md, "Left") has cells turned by more
-/// than 90° at t = 0.2 in a narrow lid between three of them, and the warning names where the
-/// first lies. (The
-/// heap of six this test showed folding at t = 0.5 before, a fusion strip a thousandth wide,
-/// no longer folds: corners inside a face drawn together by their distance across it.)
+/// primitives (heap 600182 of the mixed survey turned by 180° about the vertical, envelope.md,
+/// "Left") has cells turned by more
+/// than 90° at t = 0.1 in a narrow lid between three of them, and the warning names where the
+/// first lies. (The heaps this test showed folding before no longer do: a fusion strip a
+/// thousandth wide at t = 0.5, since corners inside a face are drawn together by their distance
+/// across it; this heap at t = 0.2, since folded patches have their cross derivatives
+/// rescaled.)
 #[test]
 fn folds_are_found_patch_by_patch() {
     for text in [
@@ -386,9 +388,14 @@ fn folds_are_found_patch_by_patch() {
     let spec: EnvelopeSpec =
         serde_json::from_str(include_str!("data/envelope/folding-heap.envelope.json")).unwrap();
     let e = envelope(&spec).unwrap();
-    assert_eq!(spec.t, 0.2);
+    assert_eq!(spec.t, 0.1);
     let folds = e.folds();
     assert!(!folds.is_empty());
+    // Found while building, as the report samples them.
+    assert_eq!(
+        folds,
+        prism_geom::freeform::envelope::folds::folds(&e.network, &e.patches, 8)
+    );
     let w = e.fold_warning(&folds).unwrap();
     assert!(w.contains("region 56 (between primitives)"), "{w}");
     assert!(
@@ -766,7 +773,8 @@ fn heap_does_not_fold(count: usize, scene: usize, ts: &[f64]) {
         assert_eq!(e.folds(), vec![], "{count} cubes, scene {scene}, t = {t}");
         assert!(
             e.largest_border_jump() < 1e-9,
-            "{count} cubes, scene {scene}, t = {t}"
+            "{count} cubes, scene {scene}, t = {t}: {}",
+            e.largest_border_jump()
         );
     }
 }
@@ -1077,6 +1085,34 @@ fn a_short_leg_at_a_split_point_is_lengthened() {
     }
 }
 
+/// Two regions at t = 0.1 that fold whatever partition patches them (heaps 200144 and 400252 of
+/// the mixed survey): a quad on a box face with a side 0.0084 long among sides of 1.2–2.2 (a
+/// corner clipped by a cut passing near a vertex; 1 folded cell at 8 × 8, 24 at 32 × 32), and a
+/// pentagon with sides 0.066 and 0.032 among sides of 0.6–1.3 (4 cells; 92 at 32 × 32). With
+/// their sides' cross derivatives rescaled between the corners (envelope.md, "Folded patches:
+/// cross derivatives rescaled") neither folds from t = 1 to 0.1, nor between the samples (32 ×
+/// 32), nor does the tessellation pass through itself; G1 holds.
+#[test]
+fn folded_patches_are_unfolded_by_rescaling_their_cross_derivatives() {
+    use prism_geom::freeform::envelope::folds::{crossings, folds};
+    for text in [
+        include_str!("data/envelope/tiny-side-quad.envelope.json"),
+        include_str!("data/envelope/short-sides-pentagon.envelope.json"),
+    ] {
+        let spec: EnvelopeSpec = serde_json::from_str(text).unwrap();
+        for t in [1.0, 0.5, 0.3, 0.2, 0.1] {
+            let e = fold_free_at(&spec, t);
+            assert_eq!(folds(&e.network, &e.patches, 32), vec![], "t = {t}");
+            for k in [8, 16] {
+                assert!(
+                    crossings(&e.tessellate(k).unwrap()).is_empty(),
+                    "t = {t}, K = {k}"
+                );
+            }
+        }
+    }
+}
+
 /// Per-vertex t a thousand times apart on one octahedron (0.0017 beside 2.2 and 2.5): the
 /// sides meeting at the sharp vertex leave it with legs 3 % of their other ends', and with k
 /// running linearly along them the twist there (0.39) was 30–120 times the corner's
@@ -1100,16 +1136,18 @@ fn per_vertex_t_far_apart_does_not_fold_the_sharp_corner() {
     }
 }
 
-/// A heap of six primitives at t = 0.1 whose surface passes through itself (and folds): the
-/// crossing check of the tessellation finds the pairs at every resolution, more as it refines
-/// (18, 24, 43 at K = 4, 8, 16).
+/// A heap of three primitives at t = 0.1 whose surface passes through itself where no patch
+/// folds (heap 300069 of the mixed survey): the crossing check of the tessellation finds the
+/// pairs, more as it refines (8, 24, 64 at K = 8, 16, 32). (The heap of six this test held
+/// before, which crossed from K = 4 up, crosses only at K = 16 since folded patches have their
+/// cross derivatives rescaled.)
 #[test]
 fn the_crossing_check_finds_a_heap_through_itself() {
     use prism_geom::freeform::envelope::folds::crossings;
     let spec: EnvelopeSpec =
         serde_json::from_str(include_str!("data/envelope/crossing-heap.envelope.json")).unwrap();
     let e = envelope(&spec).unwrap();
-    let counts: Vec<usize> = [4, 8, 16]
+    let counts: Vec<usize> = [8, 16, 32]
         .iter()
         .map(|&k| crossings(&e.tessellate(k).unwrap()).len())
         .collect();

@@ -192,7 +192,7 @@ fn the_t_sweep_shows_the_three_t() {
 
 /// Folds are shown in the summary: none on the seven-primitive sample at its own t, at 0.5 or
 /// at 0.1, where the slider stops; a heap of six primitives has cells of a narrow lid between
-/// three of them turned by more than 90° at t = 0.2, counted, with where the first lies.
+/// three of them turned by more than 90° at t = 0.1, counted, with where the first lies.
 #[test]
 fn the_summary_counts_folds() {
     let k = envelope::ENVELOPE_SAMPLES
@@ -231,7 +231,7 @@ fn the_summary_counts_folds() {
     }
 }
 
-/// Faces that pass through each other (a heap of six at t = 0.1) are found on a thread after
+/// Faces that pass through each other (a heap of three at t = 0.1) are found on a thread after
 /// the build, counted in the summary with where the first lies, and marked; the
 /// seven-primitive sample has none.
 #[test]

@@ -9,7 +9,8 @@
 //! - evaluation: de Casteljau in 4D, then the projection (stable for t ∈ [0, 1]);
 //! - derivatives: with `A(t) = Σ B_i w_i P_i` and `w(t) = Σ B_i w_i`, `C = A/w`,
 //!   `C' = (A' − w'C)/w`, `C'' = (A'' − 2w'C' − w''C)/w`, where `A'`, `w'` are the hodograph
-//!   (`n Δ` of the homogeneous points) evaluated by de Casteljau;
+//!   (`n Δ` of the homogeneous points) evaluated by de Casteljau (in buffers on the stack up to
+//!   8 points: curves are evaluated without allocating);
 //! - curvature `κ = |C' × C''| / |C'|³`;
 //! - degree elevation `Q_i = (i/(n+1)) P_(i−1) + (1 − i/(n+1)) P_i` in 4D (the same curve);
 //! - splitting at t: the two outer edges of the de Casteljau triangle in 4D.
@@ -47,9 +48,12 @@ pub struct Derivatives {
     pub d2: DVec3,
 }
 
-/// de Casteljau on 4D points: the value at t.
-fn casteljau(p: &[DVec4], t: f64) -> DVec4 {
-    let mut q = p.to_vec();
+/// Control points up to which [`RationalBezier::eval`] and [`RationalBezier::derivatives`] work
+/// in a buffer on the stack.
+const ON_STACK: usize = 8;
+
+/// de Casteljau on 4D points, in place: the value at t.
+fn casteljau(q: &mut [DVec4], t: f64) -> DVec4 {
     for k in (1..q.len()).rev() {
         for i in 0..k {
             q[i] = q[i].lerp(q[i + 1], t);
@@ -58,10 +62,13 @@ fn casteljau(p: &[DVec4], t: f64) -> DVec4 {
     q.first().copied().unwrap_or(DVec4::ZERO)
 }
 
-/// The hodograph (control points of the derivative) of a polynomial 4D Bézier curve.
-fn hodograph(p: &[DVec4]) -> Vec<DVec4> {
+/// The hodograph (control points of the derivative, `n Δ`) of the polynomial 4D Bézier curve
+/// `p`, into `out` (one point fewer).
+fn hodograph(p: &[DVec4], out: &mut [DVec4]) {
     let n = (p.len() - 1) as f64;
-    p.windows(2).map(|w| n * (w[1] - w[0])).collect()
+    for (o, w) in out.iter_mut().zip(p.windows(2)) {
+        *o = n * (w[1] - w[0]);
+    }
 }
 
 impl RationalBezier {
@@ -114,23 +121,50 @@ impl RationalBezier {
         }
     }
 
+    /// `f` of the homogeneous control points, in a buffer on the stack up to [`ON_STACK`]
+    /// points (every curve of the network and the skins' sections: evaluation without
+    /// allocating).
+    fn with_homogeneous<R>(&self, f: impl FnOnce(&mut [DVec4]) -> R) -> R {
+        let n = self.points.len();
+        if n <= ON_STACK {
+            let mut buf = [DVec4::ZERO; ON_STACK];
+            for (b, (p, &w)) in buf.iter_mut().zip(self.points.iter().zip(&self.weights)) {
+                *b = (*p * w).extend(w);
+            }
+            f(&mut buf[..n])
+        } else {
+            f(&mut self.homogeneous())
+        }
+    }
+
     /// The point at parameter t.
     pub fn eval(&self, t: f64) -> DVec3 {
-        let q = casteljau(&self.homogeneous(), t);
+        let q = self.with_homogeneous(|h| casteljau(h, t));
         q.truncate() / q.w
     }
 
-    /// The point and its first and second derivatives at t.
+    /// The point and its first and second derivatives at t: de Casteljau in homogeneous space
+    /// on the points and on their first and second hodographs, then the quotient rule.
     pub fn derivatives(&self, t: f64) -> Derivatives {
-        let h = self.homogeneous();
-        let q = casteljau(&h, t);
-        let h1 = hodograph(&h);
-        let q1 = casteljau(&h1, t);
-        let q2 = if h1.len() >= 2 {
-            casteljau(&hodograph(&h1), t)
-        } else {
-            DVec4::ZERO
-        };
+        let (q, q1, q2) = self.with_homogeneous(|h| {
+            let m = h.len();
+            let (mut stack1, mut stack2) = ([DVec4::ZERO; ON_STACK], [DVec4::ZERO; ON_STACK]);
+            let (mut heap1, mut heap2);
+            let (d1, d2): (&mut [DVec4], &mut [DVec4]) = if m <= ON_STACK {
+                (&mut stack1[..m - 1], &mut stack2[..m - 2])
+            } else {
+                (heap1, heap2) = (vec![DVec4::ZERO; m - 1], vec![DVec4::ZERO; m - 2]);
+                (&mut heap1, &mut heap2)
+            };
+            hodograph(h, d1);
+            hodograph(d1, d2);
+            let q2 = if d1.len() >= 2 {
+                casteljau(d2, t)
+            } else {
+                DVec4::ZERO
+            };
+            (casteljau(h, t), casteljau(d1, t), q2)
+        });
         let (w, w1, w2) = (q.w, q1.w, q2.w);
         let c = q.truncate() / w;
         let d1 = (q1.truncate() - w1 * c) / w;

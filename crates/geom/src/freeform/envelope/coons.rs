@@ -45,6 +45,9 @@ pub struct Side {
     pub direct: f64,
     /// A side collapsed to a point ([`Side::collapsed`]).
     pub collapsed: bool,
+    /// β of the cross derivative's scale `σ(s) = 1 − 4β·s(1 − s)` between the corners
+    /// ([`Side::scaled`]; 0: the fitted one as is).
+    pub squeeze: f64,
 }
 
 impl Side {
@@ -66,6 +69,7 @@ impl Side {
             legs: (a0, a1),
             direct: 0.0,
             collapsed: false,
+            squeeze: 0.0,
         }
     }
 
@@ -83,6 +87,7 @@ impl Side {
             legs: (a0, a1),
             direct: 0.0,
             collapsed: true,
+            squeeze: 0.0,
         }
     }
 
@@ -98,8 +103,27 @@ impl Side {
         self
     }
 
+    /// This side with its cross derivative scaled by `σ(s) = 1 − 4β·s(1 − s)` (β below 1):
+    /// 1 at the corners, so the fits there hold, and positive, so that it stays in the plane
+    /// of g and C′ on the same side of the curve — the normal along the border, and G1 with
+    /// the patch across, are untouched.
+    pub fn scaled(mut self, beta: f64) -> Side {
+        self.squeeze = beta;
+        self
+    }
+
     /// The cross derivative and its s-derivative at s.
     pub fn cross(&self, s: f64) -> (DVec3, DVec3) {
+        let (x, dx) = self.unscaled_cross(s);
+        if self.squeeze == 0.0 {
+            return (x, dx);
+        }
+        let sigma = 1.0 - 4.0 * self.squeeze * s * (1.0 - s);
+        let d_sigma = -4.0 * self.squeeze * (1.0 - 2.0 * s);
+        (sigma * x, d_sigma * x + sigma * dx)
+    }
+
+    fn unscaled_cross(&self, s: f64) -> (DVec3, DVec3) {
         if self.collapsed {
             return (self.legs.0.lerp(self.legs.1, s), self.legs.1 - self.legs.0);
         }
@@ -349,6 +373,46 @@ impl Coons {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A rescaled cross derivative keeps the corner fits, is a positive multiple of the
+    /// fitted one between them (so the border's normal `C′ × X`, and G1, are the same), and
+    /// its s-derivative is its difference quotient.
+    #[test]
+    fn a_rescaled_cross_derivative_keeps_the_fits_and_the_border_normal() {
+        let curve = RationalBezier::new(
+            vec![
+                DVec3::ZERO,
+                DVec3::new(0.3, 0.2, 0.0),
+                DVec3::new(0.7, 0.1, 0.05),
+                DVec3::new(1.0, 0.0, 0.0),
+            ],
+            vec![1.0, 0.7, 1.2, 1.0],
+        )
+        .unwrap();
+        let g = (DVec3::Y, DVec3::new(0.1, 1.0, 0.05));
+        let a0 = 0.4 * g.0 + 0.3 * curve.derivatives(0.0).d1;
+        let a1 = 0.2 * g.1 - 0.1 * curve.derivatives(1.0).d1;
+        let side = Side::fitted(curve, g, a0, a1);
+        for beta in [0.9, 0.5, -0.5, -2.0] {
+            let scaled = side.clone().scaled(beta);
+            assert!((scaled.cross(0.0).0 - a0).length() < 1e-12);
+            assert!((scaled.cross(1.0).0 - a1).length() < 1e-12);
+            for i in 0..=20 {
+                let s = i as f64 / 20.0;
+                let (x, dx) = scaled.cross(s);
+                let y = side.cross(s).0;
+                assert!(
+                    x.cross(y).length() < 1e-12 * (1.0 + y.length_squared()),
+                    "{s}"
+                );
+                assert!(x.dot(y) > 0.0, "β = {beta}, s = {s}");
+                let h = 1e-6;
+                let (lo, hi) = ((s - h).max(0.0), (s + h).min(1.0));
+                let fd = (scaled.cross(hi).0 - scaled.cross(lo).0) / (hi - lo);
+                assert!((fd - dx).length() < 1e-5 * (1.0 + dx.length()), "{s}");
+            }
+        }
+    }
 
     /// The short-side cross derivative meets the corner legs at both ends, lies in the plane
     /// of g and C′ everywhere (G1), and its s-derivative is its difference quotient.

@@ -91,6 +91,9 @@ pub struct Envelope {
     /// Faces of the network before the n-sided split.
     pub regions: usize,
     pub patches: Vec<EnvelopePatch>,
+    /// The folded cells of `patches` as built, [`folds::FOLD_CELLS`] a side (found while
+    /// building them: [`Envelope::folds`]).
+    pub folded: Vec<folds::Fold>,
     /// Primitives swallowed by the others (indices in the scene): centre not a corner of the
     /// hull of the centres, or within a tenth of its radius of the others' hull ([`hull`]), or
     /// nested in a larger one and inside the others' envelope ([`nested`]).
@@ -250,12 +253,13 @@ fn assemble(
     }
     network.assign_bases(spec.basis);
     let regions = network.regions.len();
-    let patches = patches::build(&mut network, &primitives);
+    let (patches, folded) = patches::build(&mut network, &primitives);
     Ok(Envelope {
         primitives,
         network,
         regions,
         patches,
+        folded,
         removed: lay.removed,
         straight,
     })
@@ -272,7 +276,7 @@ impl Envelope {
 
     /// The folded cells of its patches ([`folds::folds`], [`folds::FOLD_CELLS`] a side).
     pub fn folds(&self) -> Vec<folds::Fold> {
-        folds::folds(&self.network, &self.patches, folds::FOLD_CELLS)
+        self.folded.clone()
     }
 
     /// The note naming the swallowed primitives (none when none is).

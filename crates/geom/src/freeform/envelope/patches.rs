@@ -46,9 +46,15 @@
 //! (envelope.md, "Needles", "Narrow corners as tips"); and a region of
 //! five or more sides whose split folds also with each diagonal that cuts off a fat triangle of
 //! two consecutive sides (envelope.md, "Diagonals"): the one that folds fewest is taken.
+//!
+//! A patch that still folds has its sides' cross derivatives scaled by
+//! `σ(s) = 1 − 4β·s(1 − s)` (1 at the corners, positive), β per side from a short list, the
+//! one that folds fewest: a positive multiple of X keeps the border's normal `C′ × X`, so G1
+//! holds whatever β is (envelope.md, "Folded patches: cross derivatives rescaled").
 
 use super::coons::{Coons, Side};
 use super::edges::curved_edge;
+use super::folds::{FOLD_CELLS, Fold};
 use super::network::{CurveKind, Network, PatchSide, Region, RegionKind};
 use super::primitive::Primitive;
 use crate::freeform::bezier::RationalBezier;
@@ -896,14 +902,65 @@ fn region_patches(
     }
 }
 
-/// The patches of every region of `net` ([`region_patches`]).
-pub fn build(net: &mut Network, prims: &[Primitive]) -> Vec<EnvelopePatch> {
+/// The patches of every region of `net` ([`region_patches`]), each that still folds with its
+/// cross derivatives rescaled ([`unfolded`]), and their folded cells as the report samples them
+/// ([`super::folds::FOLD_CELLS`] a side: what [`super::Envelope::folds`] returns).
+pub fn build(net: &mut Network, prims: &[Primitive]) -> (Vec<EnvelopePatch>, Vec<Fold>) {
     let mut out = Vec::new();
+    let mut folded = Vec::new();
     for r in 0..net.regions.len() {
         let region = net.regions[r].clone();
-        out.extend(region_patches(net, region, r, prims));
+        let cells = choice_cells(net, &region, prims);
+        for p in region_patches(net, region, r, prims) {
+            let (p, folds) = unfolded(net, p, cells);
+            let patch = out.len();
+            folded.extend(folds.into_iter().map(|f| Fold { patch, ..f }));
+            out.push(p);
+        }
     }
-    out
+    (out, folded)
+}
+
+/// The β tried on a folded patch's sides ([`unfolded`], [`Side::scaled`]): the cross
+/// derivative's middle drawn in (β > 0) or pushed out (β < 0).
+const SQUEEZES: [f64; 8] = [0.25, 0.5, 0.75, 0.9, -0.25, -0.5, -1.0, -2.0];
+
+/// `p`, or where it folds (as the report samples it, or `cells` a side) the same patch with its
+/// sides' cross derivatives scaled between their corners (envelope.md, "Folded patches: cross
+/// derivatives rescaled"); with its folded cells as the report samples them. The scale is 1 at
+/// the corners and positive, so the fits there, the normal along every border and G1 with the
+/// patch across hold whatever it is; side by side, each takes the β of [`SQUEEZES`] that folds
+/// fewest cells sampled at twice `cells` (a fold at the samples is not traded for one between
+/// them), the least |β| first among those alike. Patches that do not fold are kept as built.
+fn unfolded(net: &Network, p: EnvelopePatch, cells: usize) -> (EnvelopePatch, Vec<Fold>) {
+    let folds = |p: &EnvelopePatch, k: usize| super::folds::folds(net, std::slice::from_ref(p), k);
+    let reported = folds(&p, FOLD_CELLS);
+    if reported.is_empty() && (cells == FOLD_CELLS || folds(&p, cells).is_empty()) {
+        return (p, reported);
+    }
+    let fine = 2 * cells;
+    let mut least = folds(&p, fine).len();
+    let mut best = None;
+    'sides: for side in 0..4 {
+        for beta in SQUEEZES {
+            let mut q = best.as_ref().unwrap_or(&p).clone();
+            q.coons.sides[side] = q.coons.sides[side].clone().scaled(beta);
+            let n = folds(&q, fine).len();
+            if n < least {
+                (least, best) = (n, Some(q));
+                if n == 0 {
+                    break 'sides;
+                }
+            }
+        }
+    }
+    match best {
+        Some(q) => {
+            let reported = folds(&q, FOLD_CELLS);
+            (q, reported)
+        }
+        None => (p, reported),
+    }
 }
 
 /// The largest angle (degrees) between the two sides' normals along every border, sampled at
