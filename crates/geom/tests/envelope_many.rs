@@ -1113,6 +1113,31 @@ fn folded_patches_are_unfolded_by_rescaling_their_cross_derivatives() {
     }
 }
 
+/// A heap of three primitives (heap 300069 of the mixed survey) whose split faces had
+/// sub-quads passing through themselves at t = 0.1 with no folded cell — a side 0.09 long
+/// against 0.89 — so the tessellation crossed itself in 8, 24, 64 pairs at K = 8, 16, 32 (the
+/// crossing test's heap until then). Patches with a side under 15 % of their longest are
+/// checked for passing through themselves too and rescaled as folded ones are (envelope.md,
+/// "Folded patches: cross derivatives rescaled"): no crossing at any K from t = 1 to 0.1, no
+/// fold, G1.
+#[test]
+fn patches_through_themselves_are_rescaled_too() {
+    use prism_geom::freeform::envelope::folds::crossings;
+    let spec: EnvelopeSpec = serde_json::from_str(include_str!(
+        "data/envelope/self-crossing-patches.envelope.json"
+    ))
+    .unwrap();
+    for t in [1.0, 0.5, 0.2, 0.1] {
+        let e = fold_free_at(&spec, t);
+        for k in [8, 16, 32] {
+            assert!(
+                crossings(&e.tessellate(k).unwrap()).is_empty(),
+                "t = {t}, K = {k}"
+            );
+        }
+    }
+}
+
 /// Per-vertex t a thousand times apart on one octahedron (0.0017 beside 2.2 and 2.5): the
 /// sides meeting at the sharp vertex leave it with legs 3 % of their other ends', and with k
 /// running linearly along them the twist there (0.39) was 30–120 times the corner's
@@ -1136,11 +1161,13 @@ fn per_vertex_t_far_apart_does_not_fold_the_sharp_corner() {
     }
 }
 
-/// A heap of three primitives at t = 0.1 whose surface passes through itself where no patch
-/// folds (heap 300069 of the mixed survey): the crossing check of the tessellation finds the
-/// pairs, more as it refines (8, 24, 64 at K = 8, 16, 32). (The heap of six this test held
-/// before, which crossed from K = 4 up, crosses only at K = 16 since folded patches have their
-/// cross derivatives rescaled.)
+/// A heap of four primitives at t = 0.05 (below the tab's slider, which stops at 0.1; the CLI
+/// takes any t) whose surface passes through itself where no patch folds (heap 400183 of the
+/// mixed survey): two sub-quads of a split face through each other. The crossing check of the
+/// tessellation finds the pairs, more as it refines (6, 12, 22 at K = 8, 16, 32). (The heaps
+/// this test held before no longer cross at K = 8: the heap of six at t = 0.1 since folded
+/// patches have their cross derivatives rescaled, the heap of three at t = 0.1 since patches
+/// that pass through themselves are too.)
 #[test]
 fn the_crossing_check_finds_a_heap_through_itself() {
     use prism_geom::freeform::envelope::folds::crossings;

@@ -31,41 +31,127 @@ pub struct Fold {
 /// The folded cells of `patches` sampled `k` × `k`, patch by patch, in order.
 pub fn folds(net: &Network, patches: &[EnvelopePatch], k: usize) -> Vec<Fold> {
     let k = k.max(1);
-    let kf = k as f64;
     let mut out = Vec::new();
     for (pi, p) in patches.iter().enumerate() {
-        // Corners (0, 0), (1, 0), (1, 1), (0, 1): the starts of sides 0 to 3.
-        let n: Vec<DVec3> = p
-            .sides
-            .iter()
-            .map(|s| {
-                net.vertex_at(s.curve, s.t0)
-                    .map_or(DVec3::ZERO, |v| net.vertices[v].normal)
-            })
-            .collect();
-        let g = p.coons.grid(k);
-        let at = |i: usize, j: usize| g[i + (k + 1) * j];
-        for j in 0..k {
-            for i in 0..k {
-                let du = at(i + 1, j) - at(i, j) + at(i + 1, j + 1) - at(i, j + 1);
-                let dv = at(i, j + 1) - at(i, j) + at(i + 1, j + 1) - at(i + 1, j);
-                let (u, v) = ((i as f64 + 0.5) / kf, (j as f64 + 0.5) / kf);
-                let expected = n[0] * ((1.0 - u) * (1.0 - v))
-                    + n[1] * (u * (1.0 - v))
-                    + n[2] * (u * v)
-                    + n[3] * ((1.0 - u) * v);
-                if du.cross(dv).dot(expected) < 0.0 {
-                    out.push(Fold {
-                        patch: pi,
-                        region: p.region,
-                        u,
-                        v,
-                    });
-                }
+        out.extend(grid_folds(net, p, pi, &p.coons.grid(k), k));
+    }
+    out
+}
+
+/// The folded cells of patch `p` (number `pi`) from its grid `g`, `k` cells a side
+/// ([`super::coons::Coons::grid`]).
+pub(crate) fn grid_folds(
+    net: &Network,
+    p: &EnvelopePatch,
+    pi: usize,
+    g: &[DVec3],
+    k: usize,
+) -> Vec<Fold> {
+    let kf = k as f64;
+    let mut out = Vec::new();
+    // Corners (0, 0), (1, 0), (1, 1), (0, 1): the starts of sides 0 to 3.
+    let n: Vec<DVec3> = p
+        .sides
+        .iter()
+        .map(|s| {
+            net.vertex_at(s.curve, s.t0)
+                .map_or(DVec3::ZERO, |v| net.vertices[v].normal)
+        })
+        .collect();
+    let at = |i: usize, j: usize| g[i + (k + 1) * j];
+    for j in 0..k {
+        for i in 0..k {
+            let du = at(i + 1, j) - at(i, j) + at(i + 1, j + 1) - at(i, j + 1);
+            let dv = at(i, j + 1) - at(i, j) + at(i + 1, j + 1) - at(i + 1, j);
+            let (u, v) = ((i as f64 + 0.5) / kf, (j as f64 + 0.5) / kf);
+            let expected = n[0] * ((1.0 - u) * (1.0 - v))
+                + n[1] * (u * (1.0 - v))
+                + n[2] * (u * v)
+                + n[3] * ((1.0 - u) * v);
+            if du.cross(dv).dot(expected) < 0.0 {
+                out.push(Fold {
+                    patch: pi,
+                    region: p.region,
+                    u,
+                    v,
+                });
             }
         }
     }
     out
+}
+
+/// Pairs of triangles of patch `p`'s own `k` × `k` grid (each cell cut along its diagonal from
+/// (u, v) to (u + 1/k, v + 1/k)) that pass through each other
+/// ([`crate::analysis::triangles_cross`]): a patch folded over itself within its corners'
+/// tangent planes, which the cell check of [`folds`] does not see. Triangles that share an edge
+/// only touch and are not tested; candidates are the pairs whose boxes overlap, swept along x.
+pub fn self_crossings(p: &EnvelopePatch, k: usize) -> usize {
+    let k = k.max(1);
+    grid_crossings(&p.coons.grid(k), k)
+}
+
+/// [`self_crossings`] of a patch's grid `g`, `k` cells a side ([`super::coons::Coons::grid`]):
+/// the pairs of cells whose boxes in the patch's own frame overlap, then their triangles that
+/// share no grid point (those that do only touch there, or fold, which the cell check sees).
+pub(crate) fn grid_crossings(g: &[DVec3], k: usize) -> usize {
+    let idx = |i: usize, j: usize| i + (k + 1) * j;
+    // Boxes in the patch's own frame (along its first side, across it, and off it), where a
+    // sound patch's cells overlap only their neighbours.
+    let (o, x, y) = (g[0], g[idx(k, 0)] - g[0], g[idx(0, k)] - g[0]);
+    let n = x.cross(y).normalize_or_zero();
+    let e1 = x.normalize_or_zero();
+    let e2 = n.cross(e1);
+    let local: Vec<DVec3> = g
+        .iter()
+        .map(|&p| {
+            let d = p - o;
+            DVec3::new(d.dot(e1), d.dot(e2), d.dot(n))
+        })
+        .collect();
+    // Each cell's two triangles (grid indices), cut along its diagonal from (i, j).
+    let cells: Vec<[[usize; 3]; 2]> = (0..k * k)
+        .map(|c| {
+            let (i, j) = (c % k, c / k);
+            let (a, b, cc, d) = (idx(i, j), idx(i + 1, j), idx(i + 1, j + 1), idx(i, j + 1));
+            [[a, b, cc], [a, cc, d]]
+        })
+        .collect();
+    let boxes: Vec<(DVec3, DVec3)> = cells
+        .iter()
+        .map(|[t, u]| {
+            let q = [t[0], t[1], t[2], u[2]].map(|v| local[v]);
+            (
+                q[0].min(q[1]).min(q[2]).min(q[3]),
+                q[0].max(q[1]).max(q[2]).max(q[3]),
+            )
+        })
+        .collect();
+    let mut n = 0;
+    for a in 0..cells.len() {
+        let (la, ha) = boxes[a];
+        for b in a + 1..cells.len() {
+            let (lb, hb) = boxes[b];
+            if lb.x > ha.x
+                || la.x > hb.x
+                || lb.y > ha.y
+                || la.y > hb.y
+                || lb.z > ha.z
+                || la.z > hb.z
+            {
+                continue;
+            }
+            for ta in cells[a] {
+                for tb in cells[b] {
+                    if ta.iter().all(|v| !tb.contains(v)) {
+                        let (pa, pb) = (ta.map(|v| g[v]), tb.map(|v| g[v]));
+                        n += usize::from(crate::analysis::triangles_cross(pa, pb));
+                    }
+                }
+            }
+        }
+    }
+    n
 }
 
 /// Where a tessellation passes through itself: its pairs of faces that cross
