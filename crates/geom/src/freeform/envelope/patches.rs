@@ -47,10 +47,11 @@
 //! five or more sides whose split folds also with each diagonal that cuts off a fat triangle of
 //! two consecutive sides (envelope.md, "Diagonals"): the one that folds fewest is taken.
 //!
-//! A patch that still folds has its sides' cross derivatives scaled by
-//! `σ(s) = 1 − 4β·s(1 − s)` (1 at the corners, positive), β per side from a short list, the
-//! one that folds fewest: a positive multiple of X keeps the border's normal `C′ × X`, so G1
-//! holds whatever β is (envelope.md, "Folded patches: cross derivatives rescaled").
+//! A patch that still folds, or has a short side and passes through itself, has its sides'
+//! cross derivatives scaled by `σ(s) = 1 − 4β·s(1 − s)` (1 at the corners, positive), β per
+//! side from a short list, the one that folds and crosses least: a positive multiple of X keeps
+//! the border's normal `C′ × X`, so G1 holds whatever β is (envelope.md, "Folded patches: cross
+//! derivatives rescaled").
 
 use super::coons::{Coons, Side};
 use super::edges::curved_edge;
@@ -902,8 +903,8 @@ fn region_patches(
     }
 }
 
-/// The patches of every region of `net` ([`region_patches`]), each that still folds with its
-/// cross derivatives rescaled ([`unfolded`]), and their folded cells as the report samples them
+/// The patches of every region of `net` ([`region_patches`]), each that still folds or passes
+/// through itself with its cross derivatives rescaled ([`unfolded`]), and their folded cells as the report samples them
 /// ([`super::folds::FOLD_CELLS`] a side: what [`super::Envelope::folds`] returns).
 pub fn build(net: &mut Network, prims: &[Primitive]) -> (Vec<EnvelopePatch>, Vec<Fold>) {
     let mut out = Vec::new();
@@ -937,8 +938,8 @@ const SQUEEZES: [f64; 8] = [0.25, 0.5, 0.75, 0.9, -0.25, -0.5, -1.0, -2.0];
 /// the corners and positive, so the fits there, the normal along every border and G1 with the
 /// patch across hold whatever it is; side by side, each takes the β of [`SQUEEZES`] that leaves
 /// fewest folded cells sampled at twice `cells` (a fold at the samples is not traded for one
-/// between them) — plus, where the patch crossed itself, its crossing triangle pairs at 8 and
-/// 16 cells a side — the least |β| first among those alike. Other patches are kept as built.
+/// between them) and then, where the patch crossed itself, fewest crossing triangle pairs at 8
+/// and 16 cells a side, the least |β| first among those alike. Other patches are kept as built.
 fn unfolded(net: &Network, p: EnvelopePatch, cells: usize) -> (EnvelopePatch, Vec<Fold>) {
     let folds = |p: &EnvelopePatch, k: usize| super::folds::folds(net, std::slice::from_ref(p), k);
     let grid = p.coons.grid(FOLD_CELLS);
@@ -955,13 +956,14 @@ fn unfolded(net: &Network, p: EnvelopePatch, cells: usize) -> (EnvelopePatch, Ve
         return (p, reported);
     }
     let fine = 2 * cells;
+    // Folded cells first, then the crossing pairs: a fold is never traded for fewer crossings.
     let score = |q: &EnvelopePatch| {
-        folds(q, fine).len()
-            + if crossing {
-                self_crossings(q, FOLD_CELLS) + self_crossings(q, 2 * FOLD_CELLS)
-            } else {
-                0
-            }
+        let crossings = if crossing {
+            self_crossings(q, FOLD_CELLS) + self_crossings(q, 2 * FOLD_CELLS)
+        } else {
+            0
+        };
+        (folds(q, fine).len(), crossings)
     };
     let mut least = score(&p);
     let mut best = None;
@@ -972,7 +974,7 @@ fn unfolded(net: &Network, p: EnvelopePatch, cells: usize) -> (EnvelopePatch, Ve
             let n = score(&q);
             if n < least {
                 (least, best) = (n, Some(q));
-                if n == 0 {
+                if n == (0, 0) {
                     break 'sides;
                 }
             }
