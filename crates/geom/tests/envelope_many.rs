@@ -264,6 +264,24 @@ fn the_listing_order_of_many_does_not_matter() {
             bundled(include_str!("../../../assets/table2-five.envelope.json")),
             0.1,
         ),
+        // Patches rescaled where they folded or crossed themselves (envelope.md, "Folded
+        // patches: cross derivatives rescaled").
+        (
+            bundled(include_str!("data/envelope/tiny-side-quad.envelope.json")),
+            0.1,
+        ),
+        (
+            bundled(include_str!(
+                "data/envelope/short-sides-pentagon.envelope.json"
+            )),
+            0.1,
+        ),
+        (
+            bundled(include_str!(
+                "data/envelope/self-crossing-patches.envelope.json"
+            )),
+            0.1,
+        ),
     ] {
         let one = build(scene.clone(), t).tessellate(4).unwrap();
         let mut turned = scene.clone();

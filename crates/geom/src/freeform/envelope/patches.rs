@@ -936,10 +936,12 @@ const SQUEEZES: [f64; 8] = [0.25, 0.5, 0.75, 0.9, -0.25, -0.5, -1.0, -2.0];
 /// cross derivatives scaled between their corners (envelope.md, "Folded patches: cross
 /// derivatives rescaled"); with its folded cells as the report samples them. The scale is 1 at
 /// the corners and positive, so the fits there, the normal along every border and G1 with the
-/// patch across hold whatever it is; side by side, each takes the β of [`SQUEEZES`] that leaves
-/// fewest folded cells sampled at twice `cells` (a fold at the samples is not traded for one
-/// between them) and then, where the patch crossed itself, fewest crossing triangle pairs at 8
-/// and 16 cells a side, the least |β| first among those alike. Other patches are kept as built.
+/// patch across hold whatever it is. Round by round, of every side not yet scaled and every β
+/// of [`SQUEEZES`], the one change is kept that leaves fewest folded cells sampled at twice
+/// `cells` (a fold at the samples is not traded for one between them) and then, where the
+/// patch crossed itself, fewest crossing triangle pairs at 8 and 16 cells a side; among changes
+/// alike the longest side's and the least |β| come first (never the listing's order). Other
+/// patches are kept as built.
 fn unfolded(net: &Network, p: EnvelopePatch, cells: usize) -> (EnvelopePatch, Vec<Fold>) {
     let folds = |p: &EnvelopePatch, k: usize| super::folds::folds(net, std::slice::from_ref(p), k);
     let grid = p.coons.grid(FOLD_CELLS);
@@ -967,18 +969,42 @@ fn unfolded(net: &Network, p: EnvelopePatch, cells: usize) -> (EnvelopePatch, Ve
     };
     let mut least = score(&p);
     let mut best = None;
-    'sides: for side in 0..4 {
-        for beta in SQUEEZES {
-            let mut q = best.as_ref().unwrap_or(&p).clone();
-            q.coons.sides[side] = q.coons.sides[side].clone().scaled(beta);
-            let n = score(&q);
-            if n < least {
-                (least, best) = (n, Some(q));
-                if n == (0, 0) {
-                    break 'sides;
+    // Sides in an order of their own (longest first, then by their middle's position), never
+    // the region's listing, so that the surface does not depend on it.
+    let key = |k: usize| {
+        let s = &p.sides[k];
+        let mid = net.curves[s.curve].bezier.eval(0.5 * (s.t0 + s.t1));
+        [-chord(net, s), mid.x, mid.y, mid.z]
+    };
+    let mut order = [0, 1, 2, 3];
+    order.sort_by(|&a, &b| {
+        key(a)
+            .iter()
+            .zip(&key(b))
+            .map(|(x, y)| x.total_cmp(y))
+            .find(|o| o.is_ne())
+            .unwrap_or(std::cmp::Ordering::Equal)
+    });
+    // Best first: each round every side not yet scaled tries every β from the patch so far,
+    // and the one change that helps most is kept (a side scaled once stays so).
+    let mut scaled = [false; 4];
+    while least != (0, 0) {
+        let mut round: Option<((usize, usize), usize, EnvelopePatch)> = None;
+        for side in order.into_iter().filter(|&k| !scaled[k]) {
+            for beta in SQUEEZES {
+                let mut q = best.as_ref().unwrap_or(&p).clone();
+                q.coons.sides[side] = q.coons.sides[side].clone().scaled(beta);
+                let n = score(&q);
+                if n < round.as_ref().map_or(least, |r| r.0) {
+                    round = Some((n, side, q));
                 }
             }
         }
+        let Some((n, side, q)) = round else {
+            break;
+        };
+        (least, best) = (n, Some(q));
+        scaled[side] = true;
     }
     match best {
         Some(q) => {
