@@ -571,9 +571,10 @@ fn apart_cubes(rng: &mut Lcg, count: usize) -> Vec<PrimitiveInput> {
 
 /// Regions, closedness, folds and G1 of equal cubes at random centres (docs/algorithms/
 /// envelope.md, "Regions against the cubes' faces"); `APART=1`: cubes that do not overlap;
-/// `TS` the t values (default "1,0.5"). Each scene with a face inward by the winding test or
-/// a folded cell is printed (the winding test's with its crossings at K = 8) and, when `DUMP`
-/// names a folder, written there as `inward-…` or `folded-COUNT-SCENE-T.envelope.json`.
+/// `TS` the t values (default "1,0.5"). Each scene with a face inward by the winding test, a
+/// folded cell or a tessellation that is not closed is printed (the winding test's with its
+/// crossings at K = 8) and, when `DUMP` names a folder, written there as `inward-…`, `folded-…`
+/// or `open-COUNT-SCENE-T.envelope.json`.
 #[test]
 #[ignore]
 fn survey_random() {
@@ -615,8 +616,10 @@ fn survey_random() {
                         worst = worst.max(ratio);
                         over += usize::from(t == 1.0 && ratio > 1.6);
                         let m = e.tessellate(3).unwrap();
-                        if closed(&m).is_err() {
+                        if let Err(why) = closed(&m) {
                             bad += 1;
+                            println!("{count} cubes, t = {t}, scene {scene}: open at K = 3: {why}");
+                            dump("open", t);
                         }
                         let inward = inward_faces(&m);
                         if inward > 0 {
@@ -1153,6 +1156,26 @@ fn patches_through_themselves_are_rescaled_too() {
                 "t = {t}, K = {k}"
             );
         }
+    }
+}
+
+/// Four cubes placed apart (the equal-cube survey's `APART=1` scene 32) at t = 0.1: a triangle
+/// patched as one quad with its tip collapsed was then tried split round an inserted point as a
+/// quad with a short side, the insertion curve to the collapsed side's middle ended at the tip
+/// with no direction for its basis, and two patches were NaN throughout — the fold check counted
+/// none and `prism envelope` wrote 8 NaN vertices. A collapsed tip is never split now, a cell
+/// with a point that is not finite counts as folded, and a tessellation with one is refused.
+#[test]
+fn a_collapsed_tip_is_not_split_again() {
+    let spec: EnvelopeSpec = serde_json::from_str(include_str!(
+        "data/envelope/collapsed-tip-not-split.envelope.json"
+    ))
+    .unwrap();
+    let e = fold_free_at(&spec, 0.1);
+    for k in [3, 8] {
+        let m = e.tessellate(k).unwrap();
+        assert!(m.positions.iter().all(|p| p.is_finite()), "K = {k}");
+        closed(&m).unwrap();
     }
 }
 

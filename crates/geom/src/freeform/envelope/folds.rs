@@ -68,7 +68,9 @@ pub(crate) fn grid_folds(
                 + n[1] * (u * (1.0 - v))
                 + n[2] * (u * v)
                 + n[3] * ((1.0 - u) * v);
-            if du.cross(dv).dot(expected) < 0.0 {
+            // A cell with a non-finite point counts as folded (never chosen, always reported).
+            let turn = du.cross(dv).dot(expected);
+            if turn < 0.0 || turn.is_nan() {
                 out.push(Fold {
                     patch: pi,
                     region: p.region,

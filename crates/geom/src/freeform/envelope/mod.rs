@@ -53,6 +53,8 @@ pub enum EnvelopeError {
     SameCentre { a: usize, b: usize },
     #[error("resolution {0} is out of range: 1 to 256")]
     Resolution(usize),
+    #[error("patch {patch} has a point that is not finite (a bug: please report the scene)")]
+    NonFinite { patch: usize },
 }
 
 /// A scene: the default t, the primitives and the tessellation's resolution.
@@ -271,7 +273,21 @@ impl Envelope {
         if k == 0 || k > 256 {
             return Err(EnvelopeError::Resolution(k));
         }
-        Ok(tessellate::tessellate(&self.network, &self.patches, k))
+        let mesh = tessellate::tessellate(&self.network, &self.patches, k);
+        // Never a mesh with a point that is not finite: the patch it came from is named (each
+        // patch writes k × k faces in order).
+        if let Some(v) = mesh.positions.iter().position(|p| !p.is_finite()) {
+            let face = (0..mesh.num_faces())
+                .find(|&f| {
+                    mesh.face_corners(f)
+                        .any(|c| mesh.corner_verts[c] as usize == v)
+                })
+                .unwrap_or(0);
+            return Err(EnvelopeError::NonFinite {
+                patch: face / (k * k),
+            });
+        }
+        Ok(mesh)
     }
 
     /// The folded cells of its patches ([`folds::folds`], [`folds::FOLD_CELLS`] a side).

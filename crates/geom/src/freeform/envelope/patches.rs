@@ -784,6 +784,15 @@ fn quad_patches(
 ) -> Vec<EnvelopePatch> {
     let quad: [PatchSide; 4] = region.sides.clone().try_into().expect("four");
     let one = vec![patch(net, quad, r)];
+    // A triangle's collapsed tip ([`collapsed`]) is a side of no length by design: split there,
+    // the insertion curve to its middle would end at the tip with no direction to take its
+    // basis from (NaN; two scenes of four cubes placed apart at t = 0.1 wrote such points).
+    if region.sides.iter().any(|s| {
+        let ends = net.curves[s.curve].ends;
+        ends[0] == ends[1]
+    }) {
+        return one;
+    }
     let (shortest, longest) = region
         .sides
         .iter()
