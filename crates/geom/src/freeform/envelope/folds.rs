@@ -9,7 +9,10 @@
 //! folds that a winding-number test at a step off the face misses (a cell tilted by 95° in a
 //! pleat is outside-facing enough to pass that one); it does not see two distant parts of
 //! the surface passing through each other, nor a patch folding over within its corners'
-//! tangent planes — [`crossings`] of the tessellation does.
+//! tangent planes — [`crossings`] of the tessellation does, and [`self_crossings`] of one
+//! patch's own grid, which the build runs on patches with a short side. The build checks every
+//! patch as it makes it (and rescales those that fold or cross, `patches.rs`), so
+//! [`super::Envelope::folds`] returns what it found.
 
 use super::network::Network;
 use super::patches::EnvelopePatch;
@@ -86,8 +89,7 @@ pub(crate) fn grid_folds(
 /// Pairs of triangles of patch `p`'s own `k` × `k` grid (each cell cut along its diagonal from
 /// (u, v) to (u + 1/k, v + 1/k)) that pass through each other
 /// ([`crate::analysis::triangles_cross`]): a patch folded over itself within its corners'
-/// tangent planes, which the cell check of [`folds`] does not see. Triangles that share an edge
-/// only touch and are not tested; candidates are the pairs whose boxes overlap, swept along x.
+/// tangent planes, which the cell check of [`folds`] does not see ([`grid_crossings`]).
 pub fn self_crossings(p: &EnvelopePatch, k: usize) -> usize {
     let k = k.max(1);
     grid_crossings(&p.coons.grid(k), k)
@@ -129,7 +131,7 @@ pub(crate) fn grid_crossings(g: &[DVec3], k: usize) -> usize {
             )
         })
         .collect();
-    let mut n = 0;
+    let mut pairs = 0;
     for a in 0..cells.len() {
         let (la, ha) = boxes[a];
         for b in a + 1..cells.len() {
@@ -147,13 +149,13 @@ pub(crate) fn grid_crossings(g: &[DVec3], k: usize) -> usize {
                 for tb in cells[b] {
                     if ta.iter().all(|v| !tb.contains(v)) {
                         let (pa, pb) = (ta.map(|v| g[v]), tb.map(|v| g[v]));
-                        n += usize::from(crate::analysis::triangles_cross(pa, pb));
+                        pairs += usize::from(crate::analysis::triangles_cross(pa, pb));
                     }
                 }
             }
         }
     }
-    n
+    pairs
 }
 
 /// Where a tessellation passes through itself: its pairs of faces that cross
