@@ -592,6 +592,26 @@ fn chord(net: &Network, s: &PatchSide) -> f64 {
     b.eval(s.t0).distance(b.eval(s.t1))
 }
 
+/// The shortest and the longest chord of `sides`.
+fn chord_range(net: &Network, sides: &[PatchSide]) -> (f64, f64) {
+    sides
+        .iter()
+        .map(|s| chord(net, s))
+        .fold((f64::INFINITY, 0.0f64), |(lo, hi), c| {
+            (lo.min(c), hi.max(c))
+        })
+}
+
+/// Keys compared entry by entry ([`f64::total_cmp`]), the first that differs deciding: the
+/// orders that keep a choice independent of the listing ([`region_patches`], [`unfolded`]).
+fn by_keys(a: &[f64], b: &[f64]) -> std::cmp::Ordering {
+    a.iter()
+        .zip(b)
+        .map(|(x, y)| x.total_cmp(y))
+        .find(|o| o.is_ne())
+        .unwrap_or(std::cmp::Ordering::Equal)
+}
+
 /// The runs of short sides of a region of five or more sides: (first side, count) of each
 /// maximal run of consecutive sides whose chords are under [`SHORT_RUN`] of the longest, for
 /// the runs of two or more; `None` when there is none, every side is short, or closing the
@@ -793,13 +813,7 @@ fn quad_patches(
     }) {
         return one;
     }
-    let (shortest, longest) = region
-        .sides
-        .iter()
-        .map(|s| chord(net, s))
-        .fold((f64::INFINITY, 0.0f64), |(lo, hi), c| {
-            (lo.min(c), hi.max(c))
-        });
+    let (shortest, longest) = chord_range(net, &region.sides);
     if shortest >= QUAD_SHORT * longest {
         return one;
     }
@@ -885,13 +899,7 @@ fn region_patches(
         .enumerate()
         .map(|(i, p)| (i, rank(net, &region, p)))
         .collect();
-    order.sort_by(|a, b| {
-        a.1.iter()
-            .zip(&b.1)
-            .map(|(x, y)| x.total_cmp(y))
-            .find(|o| o.is_ne())
-            .unwrap_or(std::cmp::Ordering::Equal)
-    });
+    order.sort_by(|a, b| by_keys(&a.1, &b.1));
     let mut best = None;
     for (i, _) in order {
         let other = partitioned(net, &region, &tries[i], r, prims);
@@ -913,8 +921,8 @@ fn region_patches(
 }
 
 /// The patches of every region of `net` ([`region_patches`]), each that still folds or passes
-/// through itself with its cross derivatives rescaled ([`unfolded`]), and their folded cells as the report samples them
-/// ([`super::folds::FOLD_CELLS`] a side: what [`super::Envelope::folds`] returns).
+/// through itself with its cross derivatives rescaled ([`unfolded`]), and their folded cells as
+/// the report samples them ([`FOLD_CELLS`] a side: what [`super::Envelope::folds`] returns).
 pub fn build(net: &mut Network, prims: &[Primitive]) -> (Vec<EnvelopePatch>, Vec<Fold>) {
     let mut out = Vec::new();
     let mut folded = Vec::new();
@@ -955,13 +963,7 @@ fn unfolded(net: &Network, p: EnvelopePatch, cells: usize) -> (EnvelopePatch, Ve
     let folds = |p: &EnvelopePatch, k: usize| super::folds::folds(net, std::slice::from_ref(p), k);
     let grid = p.coons.grid(FOLD_CELLS);
     let reported = grid_folds(net, &p, 0, &grid, FOLD_CELLS);
-    let (shortest, longest) = p
-        .sides
-        .iter()
-        .map(|s| chord(net, s))
-        .fold((f64::INFINITY, 0.0f64), |(lo, hi), c| {
-            (lo.min(c), hi.max(c))
-        });
+    let (shortest, longest) = chord_range(net, &p.sides);
     let crossing = shortest < CROSSING_CHECKED * longest && grid_crossings(&grid, FOLD_CELLS) > 0;
     if !crossing && reported.is_empty() && (cells == FOLD_CELLS || folds(&p, cells).is_empty()) {
         return (p, reported);
@@ -986,14 +988,7 @@ fn unfolded(net: &Network, p: EnvelopePatch, cells: usize) -> (EnvelopePatch, Ve
         [-chord(net, s), mid.x, mid.y, mid.z]
     };
     let mut order = [0, 1, 2, 3];
-    order.sort_by(|&a, &b| {
-        key(a)
-            .iter()
-            .zip(&key(b))
-            .map(|(x, y)| x.total_cmp(y))
-            .find(|o| o.is_ne())
-            .unwrap_or(std::cmp::Ordering::Equal)
-    });
+    order.sort_by(|&a, &b| by_keys(&key(a), &key(b)));
     // Best first: each round every side not yet scaled tries every β from the patch so far,
     // and the one change that helps most is kept (a side scaled once stays so).
     let mut scaled = [false; 4];
