@@ -207,14 +207,15 @@ pub fn biquadratic_step_carrying(
         .then(|| CombinationState::next(cur, topo, &prov, prep.combination.as_deref(), &unfolded));
     let recheck = |m: &PolyMesh| check_children(cur, topo, &prep.normals, m, &prov);
     let mut checked = recheck(&out);
-    // The combination rule's last resorts, only where a new face is still flipped, all in
-    // place (the child's vertex c is the parent's corner c): the blend's concave faces beside
-    // the fold take the width offset (rules::reoffset), then the points are smoothed
-    // (rules::untangle), then the vertices round what is left take small chamfers
-    // (rules::retreat).
+    // The combination rule's last resorts, all in place (the child's vertex c is the parent's
+    // corner c): the blend's concave faces beside a fold the guard still sees take the width
+    // offset (rules::reoffset, on every combination step: a bow-tie lying in a plane is not
+    // flipped by the report's test, and its children are), then, only where a new face is
+    // still flipped, the points are smoothed (rules::untangle) and the vertices round what is
+    // left take small chamfers (rules::retreat).
     let mut untangled = rules::Untangled::default();
     let mut reoffset_faces = 0;
-    if is_combination && !checked.flipped.is_empty() {
+    if is_combination {
         reoffset_faces = rules::reoffset(
             cur,
             topo,

@@ -859,6 +859,23 @@ fn blend_faces_beside_a_fold_take_the_width_offset() {
     assert!(p.levels()[4].report.as_ref().unwrap().reoffset_faces > 0);
 }
 
+/// A bow-tie lying in a plane is re-placed too (docs/algorithms/cylindrical.md, "Blend faces
+/// re-placed"): after a round r = 0.4, two inward vector sums (α = 0.2) and rounds r = 0.1, the
+/// fifth level's bottom holds a needle 0.5 long whose Doo–Sabin points, 0.5 along it, twist
+/// the EDGE-face of its 0.07 short side into a bow-tie in the bottom's plane. Its own normal,
+/// swung 33° out of the plane by 3 × 10⁻⁴ of noise, agrees with its parent's, so the report saw
+/// nothing and the sixth level had 6 faces flipped; the guard's second pass ran only after a
+/// flip. It now runs on every rounding, and nothing is flipped or crosses.
+#[test]
+fn a_bow_tie_in_a_plane_is_re_placed() {
+    let p = tripod_sound_and_crossing_nowhere(
+        "combination:r=0.4,vector-sum:alpha=0.2:reflex=inward,\
+         vector-sum:alpha=0.2:reflex=inward,combination:r=0.1,combination:r=0.1,\
+         combination:r=0.1",
+    );
+    assert!(p.levels()[5].report.as_ref().unwrap().reoffset_faces > 0);
+}
+
 /// The combination rule's final resort (docs/algorithms/cylindrical.md, "Small chamfers beside
 /// a fold"): after two inward vector sums (α = 0.1, 0.2) the tripod's third round (r = 0.2)
 /// left 3 faces flipped that neither the width offset nor the untangling mended; the vertices

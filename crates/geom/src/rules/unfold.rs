@@ -88,26 +88,38 @@ impl<'a> Elements<'a> {
     }
 
     /// The faces that give a point to a folding new face, and how many new faces fold: one
-    /// pass over every FACE-, EDGE- and VERTEX-face.
+    /// pass over every FACE-, EDGE- and VERTEX-face, each kind on every core.
     fn folded(&self, pts: &[DVec3]) -> (Vec<bool>, usize) {
+        use rayon::prelude::*;
+        const PAR_MIN: usize = 4096;
         let (m, topo) = (self.mesh, self.topo);
         let mut near: Vec<bool> = (0..m.num_faces())
+            .into_par_iter()
+            .with_min_len(PAR_MIN)
             .map(|f| self.face_folds(f, pts))
             .collect();
         let mut count = near.iter().filter(|&&n| n).count();
-        for &c in &topo.edge_corner {
-            if self.edge_folds(c, pts) {
-                count += 1;
-                near[topo.corner_face(c as usize) as usize] = true;
-                near[topo.corner_face(topo.twin[c as usize] as usize) as usize] = true;
-            }
+        let edges: Vec<u32> = topo
+            .edge_corner
+            .par_iter()
+            .with_min_len(PAR_MIN)
+            .copied()
+            .filter(|&c| self.edge_folds(c, pts))
+            .collect();
+        for c in edges {
+            count += 1;
+            near[topo.corner_face(c as usize) as usize] = true;
+            near[topo.corner_face(topo.twin[c as usize] as usize) as usize] = true;
         }
-        for v in 0..m.num_vertices() {
-            if self.vertex_folds(v, pts) {
-                count += 1;
-                for c in self.ring(v) {
-                    near[topo.corner_face(c as usize) as usize] = true;
-                }
+        let vertices: Vec<usize> = (0..m.num_vertices())
+            .into_par_iter()
+            .with_min_len(PAR_MIN)
+            .filter(|&v| self.vertex_folds(v, pts))
+            .collect();
+        for v in vertices {
+            count += 1;
+            for c in self.ring(v) {
+                near[topo.corner_face(c as usize) as usize] = true;
             }
         }
         (near, count)
@@ -254,7 +266,8 @@ pub(crate) fn unfold(
 const REOFFSET_ROUNDS: usize = 4;
 
 /// The fold guard's second pass (cylindrical.md, "Fold guard", "Blend faces re-placed"),
-/// run by the step only when a new face is still flipped after [`unfold`]. The blend's faces
+/// run by every combination step after [`unfold`] (one pass over the new faces where the guard's tests
+/// find no fold left, as on every bundled solid's default rounds). The blend's faces
 /// keep eq. (1), which on a face with a reflex corner can carry that corner's point out of
 /// the face and fold a new face beside it. Each blend face (`flags`, and the faces `moved`)
 /// that gives a point to a folding new face and has not taken the width offset yet is tried
