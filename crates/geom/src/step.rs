@@ -119,8 +119,9 @@ pub struct StepReport {
     /// Faces the combination rule moved into the vertex blend because their cut points
     /// would have folded a new face ([`rules::unfold`]).
     pub unfolded_faces: usize,
-    /// Blend faces with a reflex corner that the combination rule re-placed with Doo–Sabin's
-    /// width offset because a new face beside them was still flipped ([`rules::reoffset`]).
+    /// Blend faces that the combination rule re-placed (Doo–Sabin's width offset, or their
+    /// points drawn towards their corners) because a new face beside them still folded
+    /// ([`rules::reoffset`]).
     pub reoffset_faces: usize,
     /// What the combination rule's last resort did ([`rules::untangle`]): points of new
     /// faces still flipped after the fold guard, smoothed until none is, and how far.

@@ -295,7 +295,7 @@ fn warn_level(k: usize, r: &StepReport, before: f64) {
     }
     if r.reoffset_faces > 0 {
         eprintln!(
-            "note: level {k}: {} blend face(s) with a reflex corner took Doo–Sabin's width offset because a new face beside them would have folded",
+            "note: level {k}: {} blend face(s) took Doo–Sabin's width offset or points nearer their corners because a new face beside them would have folded",
             r.reoffset_faces
         );
     }

@@ -265,18 +265,25 @@ pub(crate) fn unfold(
 /// Rounds of [`reoffset`].
 const REOFFSET_ROUNDS: usize = 4;
 
+/// The fractions of the way to its Doo–Sabin point at which [`reoffset`] also tries each
+/// corner's point of a blend face.
+const DRAWN: [f64; 2] = [0.5, 0.25];
+
 /// The fold guard's second pass (cylindrical.md, "Fold guard", "Blend faces re-placed"),
-/// run by every combination step after [`unfold`] (one pass over the new faces where the guard's tests
-/// find no fold left, as on every bundled solid's default rounds). The blend's faces
-/// keep eq. (1), which on a face with a reflex corner can carry that corner's point out of
-/// the face and fold a new face beside it. Each blend face (`flags`, and the faces `moved`)
-/// that gives a point to a folding new face and has not taken the width offset yet is tried
-/// with it ([`super::chamfer::offset_doo_sabin_points`]), every one against the same points
-/// (the numbering does not matter), and keeps it when fewer of the new faces around it fold
-/// — its FACE-face, the EDGE-faces of its edges, the VERTEX-faces of its corners, the only
-/// new faces its points are in. A round whose changes together fold more new faces than
-/// before is undone. `pts` are indexed by corner (the child's vertices of a dual quad split
-/// are the parent's corners). Returns the faces re-placed.
+/// run by every combination step after [`unfold`] (one pass over the new faces where the
+/// guard's tests find no fold left, as on every bundled solid's default rounds). The blend's
+/// faces keep eq. (1), which on a face with a reflex corner can carry that corner's point out
+/// of the face, and on a needle carries the points of its short side's corners far along it
+/// — either can fold a new face beside it. Each blend face (`flags`) that gives a point to a
+/// folding new face and has not been re-placed yet (nor moved by [`unfold`] this step) is
+/// tried with the width offset ([`super::chamfer::offset_doo_sabin_points`]) and with its
+/// points drawn to [`DRAWN`] of the way from their corners, every face against the same
+/// points (the numbering does not matter), and keeps the placement after which fewest of the
+/// new faces around it fold — its FACE-face, the EDGE-faces of its edges, the VERTEX-faces of
+/// its corners, the only new faces its points are in — if that is fewer than before. A round
+/// whose changes together fold more new faces than before is undone. `pts` are indexed by
+/// corner (the child's vertices of a dual quad split are the parent's corners). Returns the
+/// faces re-placed.
 pub(crate) fn reoffset(
     mesh: &PolyMesh,
     topo: &Topology,
@@ -311,15 +318,36 @@ pub(crate) fn reoffset(
         for &f in &candidates {
             let corners = mesh.face_corners(f);
             let old: Vec<DVec3> = trial[corners.clone()].to_vec();
-            super::chamfer::offset_doo_sabin_points(mesh, el.normals[f], f, &mut trial);
-            let new: Vec<DVec3> = trial[corners.clone()].to_vec();
-            if new == old {
-                continue;
-            }
-            let after = el.folds_around(f, &trial);
-            trial[corners.clone()].copy_from_slice(&old);
             let was = el.folds_around(f, &trial);
-            if after < was {
+            super::chamfer::offset_doo_sabin_points(mesh, el.normals[f], f, &mut trial);
+            let offset: Vec<DVec3> = trial[corners.clone()].to_vec();
+            let mut tries = vec![offset];
+            for k in DRAWN {
+                tries.push(
+                    corners
+                        .clone()
+                        .zip(&old)
+                        .map(|(c, &p)| {
+                            let v = mesh.positions[mesh.corner_verts[c] as usize];
+                            v + k * (p - v)
+                        })
+                        .collect(),
+                );
+            }
+            // The placement that leaves fewest folds round the face, the first of equals.
+            let mut best: Option<(usize, Vec<DVec3>)> = None;
+            for new in tries {
+                if new == old {
+                    continue;
+                }
+                trial[corners.clone()].copy_from_slice(&new);
+                let after = el.folds_around(f, &trial);
+                if after < best.as_ref().map_or(was, |b| b.0) {
+                    best = Some((after, new));
+                }
+            }
+            trial[corners.clone()].copy_from_slice(&old);
+            if let Some((_, new)) = best {
                 done[f] = true;
                 kept.push((f, new));
             }

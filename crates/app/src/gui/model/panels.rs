@@ -558,7 +558,7 @@ pub(crate) fn step_notes(r: &prism_geom::StepReport) -> String {
     }
     if r.reoffset_faces > 0 {
         text += &format!(
-            " — Doo–Sabin offset on {} blend face(s) beside a fold",
+            " — {} blend face(s) beside a fold re-placed",
             r.reoffset_faces
         );
     }
