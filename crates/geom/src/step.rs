@@ -117,11 +117,11 @@ pub struct StepReport {
     /// Corners with a zero-length edge that stayed at their vertex.
     pub collapsed_corners: usize,
     /// Faces the combination rule moved into the vertex blend because their cut points
-    /// would have folded a new face ([`rules::unfold`]).
+    /// would have folded a new face ([`rules::fold_guard`]).
     pub unfolded_faces: usize,
     /// Blend faces that the combination rule re-placed (Doo–Sabin's width offset, or their
     /// points drawn towards their corners) because a new face beside them still folded
-    /// ([`rules::reoffset`]).
+    /// ([`rules::fold_guard`]).
     pub reoffset_faces: usize,
     /// What the combination rule's last resort did ([`rules::untangle`]): points of new
     /// faces still flipped after the fold guard, smoothed until none is, and how far.
@@ -185,8 +185,13 @@ pub fn biquadratic_step_carrying(
     )?;
     let (mut points, rule_report) = rules::corner_points(rule, &prep.input())?;
     let is_combination = matches!(rule, CornerRule::Combination { .. });
-    let unfolded = if is_combination {
-        rules::unfold(
+    // The combination rule's fold guard, on the points before the split (the child's vertex c
+    // is the parent's corner c): faces whose cut points would fold a new face move into the
+    // blend, then the blend's faces beside a fold the guard still sees are re-placed — on
+    // every combination step, since a bow-tie lying in a plane is not flipped by the report's
+    // test, and its children are (rules::fold_guard).
+    let (unfolded, reoffset_faces) = if is_combination {
+        rules::fold_guard(
             cur,
             topo,
             &prep.normals,
@@ -194,7 +199,7 @@ pub fn biquadratic_step_carrying(
             &mut points,
         )
     } else {
-        Vec::new()
+        (Vec::new(), 0)
     };
     let (mut out, prov) = dual_quad::split(cur, topo, points);
     let new_attrs = refine::propagate(
@@ -208,27 +213,10 @@ pub fn biquadratic_step_carrying(
         .then(|| CombinationState::next(cur, topo, &prov, prep.combination.as_deref(), &unfolded));
     let recheck = |m: &PolyMesh| check_children(cur, topo, &prep.normals, m, &prov);
     let mut checked = recheck(&out);
-    // The combination rule's last resorts, all in place (the child's vertex c is the parent's
-    // corner c): the blend's concave faces beside a fold the guard still sees take the width
-    // offset (rules::reoffset, on every combination step: a bow-tie lying in a plane is not
-    // flipped by the report's test, and its children are), then, only where a new face is
-    // still flipped, the points are smoothed (rules::untangle) and the vertices round what is
-    // left take small chamfers (rules::retreat).
+    // The combination rule's last resorts, only where a new face is still flipped, all in
+    // place: the points are smoothed (rules::untangle), then the vertices round what is left
+    // take small chamfers (rules::retreat).
     let mut untangled = rules::Untangled::default();
-    let mut reoffset_faces = 0;
-    if is_combination {
-        reoffset_faces = rules::reoffset(
-            cur,
-            topo,
-            &prep.normals,
-            prep.input().vertex_neighbourhood,
-            &unfolded,
-            &mut out.positions,
-        );
-        if reoffset_faces > 0 {
-            checked = recheck(&out);
-        }
-    }
     // The minimum type and the chamfers, when clamping asks for a sound solid, take the
     // last two resorts too.
     let resorts = rule.takes_resorts(options.overlap.clamps());

@@ -39,7 +39,7 @@ pub use cylindrical::{cut_width, dissolve_needed};
 pub use overlap::{EdgeFit, Overlap};
 pub use prepare::Prepared;
 pub(crate) use retreat::retreat;
-pub(crate) use unfold::{reoffset, unfold};
+pub(crate) use unfold::fold_guard;
 pub use untangle::Untangled;
 pub(crate) use untangle::untangle;
 

@@ -21,8 +21,9 @@
 //! the paper's own marking would keep them. Where nothing folds — every solid the paper
 //! shows — nothing changes.
 //!
-//! Where a new face is still flipped after the moves, [`reoffset`] tries the width offset on
-//! the blend's own faces around it, keeping it where fewer new faces fold.
+//! Where a new face still folds after the moves, [`reoffset`] tries the blend's own faces
+//! around it with the width offset and with their points drawn towards their corners, keeping
+//! a placement where fewer new faces fold. [`fold_guard`] runs both, on one set of checks.
 //!
 //! A VERTEX-face of five or more corners must also be star-shaped about its vertex centroid
 //! (cylindrical.md, "Spiky vertex faces"): acute corners make it a spiked star that is not
@@ -182,6 +183,23 @@ impl<'a> Elements<'a> {
     }
 }
 
+/// The combination rule's fold guard on the points `pts` (indexed by corner) of a step of
+/// `mesh` (unit face normals `normals`, the run's vertex-neighbourhood `flags`, empty: none):
+/// [`unfold`], then [`reoffset`], both judged by one set of the new faces' checks. Returns the
+/// faces moved into the blend, ascending, and how many blend faces were re-placed.
+pub(crate) fn fold_guard(
+    mesh: &PolyMesh,
+    topo: &Topology,
+    normals: &[DVec3],
+    flags: &[bool],
+    pts: &mut [DVec3],
+) -> (Vec<u32>, usize) {
+    let el = Elements::new(mesh, topo, normals);
+    let moved = unfold(&el, flags, pts);
+    let replaced = reoffset(&el, flags, &moved, pts);
+    (moved, replaced)
+}
+
 /// Moves to Doo–Sabin the faces of `mesh` whose cut points would fold a new face, rewriting
 /// their points in `pts` (indexed by corner). `flags` are the run's vertex-neighbourhood
 /// flags (empty: none); `normals` the unit face normals. A moved face with a reflex corner
@@ -189,18 +207,12 @@ impl<'a> Elements<'a> {
 /// ([`super::chamfer::offset_doo_sabin_points`]); so, afterwards, does a face already in the
 /// blend where that leaves fewer of the new faces around it folded ([`reoffset`]). Returns
 /// the faces moved, ascending.
-pub(crate) fn unfold(
-    mesh: &PolyMesh,
-    topo: &Topology,
-    normals: &[DVec3],
-    flags: &[bool],
-    pts: &mut [DVec3],
-) -> Vec<u32> {
+fn unfold(el: &Elements, flags: &[bool], pts: &mut [DVec3]) -> Vec<u32> {
+    let (mesh, topo, normals) = (el.mesh, el.topo, el.normals);
     let nf = mesh.num_faces();
     let mut blend: Vec<bool> = (0..nf)
         .map(|f| flags.get(f).copied().unwrap_or(false))
         .collect();
-    let el = Elements::new(mesh, topo, normals);
     let mut moved = Vec::new();
     loop {
         let mut to_move = vec![false; nf];
@@ -270,8 +282,9 @@ const REOFFSET_ROUNDS: usize = 4;
 const DRAWN: [f64; 2] = [0.5, 0.25];
 
 /// The fold guard's second pass (cylindrical.md, "Fold guard", "Blend faces re-placed"),
-/// run by every combination step after [`unfold`] (one pass over the new faces where the
-/// guard's tests find no fold left, as on every bundled solid's default rounds). The blend's
+/// run by every combination step after [`unfold`] ([`fold_guard`]; one pass over the new
+/// faces where the guard's tests find no fold left, as on every bundled solid's default
+/// rounds). The blend's
 /// faces keep eq. (1), which on a face with a reflex corner can carry that corner's point out
 /// of the face, and on a needle carries the points of its short side's corners far along it
 /// — either can fold a new face beside it. Each blend face (`flags`) that gives a point to a
@@ -284,15 +297,8 @@ const DRAWN: [f64; 2] = [0.5, 0.25];
 /// whose changes together fold more new faces than before is undone. `pts` are indexed by
 /// corner (the child's vertices of a dual quad split are the parent's corners). Returns the
 /// faces re-placed.
-pub(crate) fn reoffset(
-    mesh: &PolyMesh,
-    topo: &Topology,
-    normals: &[DVec3],
-    flags: &[bool],
-    moved: &[u32],
-    pts: &mut [DVec3],
-) -> usize {
-    let el = Elements::new(mesh, topo, normals);
+fn reoffset(el: &Elements, flags: &[bool], moved: &[u32], pts: &mut [DVec3]) -> usize {
+    let mesh = el.mesh;
     let nf = mesh.num_faces();
     let mut blend: Vec<bool> = (0..nf)
         .map(|f| flags.get(f).copied().unwrap_or(false))
