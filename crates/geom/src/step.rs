@@ -27,7 +27,7 @@ use std::time::Instant;
 use thiserror::Error;
 
 mod crossings;
-use crossings::{concave_vertex_crossings, guard_crossings, guarded_faces};
+use crossings::{concave_vertex_crossings, guard_crossings, guarded_faces, self_crossing_faces};
 
 /// A face is degenerate when twice its area is below this × its perimeter × the level's
 /// scale S (the larger of the bounding-box diagonal and the largest coordinate): a thousand
@@ -273,6 +273,13 @@ pub fn biquadratic_step_carrying(
     // concave vertices").
     if is_combination && checked.flipped.is_empty() && !guarded.is_empty() {
         let seeds = concave_vertex_crossings(cur, topo, &prep.normals, &out, &prov);
+        if !seeds.is_empty() {
+            small_chamfers += retreat(&mut out, &mut checked, &seeds);
+        }
+    }
+    // The minimum type and the chamfers: new faces that cross themselves seed them too.
+    if resorts && !is_combination && checked.flipped.is_empty() {
+        let seeds = self_crossing_faces(&out);
         if !seeds.is_empty() {
             small_chamfers += retreat(&mut out, &mut checked, &seeds);
         }

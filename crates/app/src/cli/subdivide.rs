@@ -307,7 +307,7 @@ fn warn_level(k: usize, r: &StepReport, before: f64) {
     }
     if r.small_chamfers > 0 {
         eprintln!(
-            "note: level {k}: the rule's points gave way to a small chamfer at {} vertex(es) where a new face would still have been flipped or passed through another",
+            "note: level {k}: the rule's points gave way to a small chamfer at {} vertex(es) where a new face would still have been flipped, passed through another or crossed itself",
             r.small_chamfers
         );
     }

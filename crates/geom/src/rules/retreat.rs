@@ -3,7 +3,8 @@
 //! type, clamped"): where new faces are still flipped after the fold guard ([`super::unfold`]), the
 //! blend faces' width offset ([`super::reoffset`]) and the untangling ([`super::untangle`]) —
 //! or, with none flipped, pass through their neighbours beside the guard's moves (the step's
-//! `guard_crossings`, "Crossings beside the guard's moves") — the points around the parent
+//! `guard_crossings`, "Crossings beside the guard's moves") or, after the minimum type or a
+//! chamfer, cross themselves (`self_crossing_faces`, "Bow-ties") — the points around the parent
 //! vertices of those faces give up the rounding there for a small chamfer. Every corner c at
 //! such a vertex v takes the point
 //!

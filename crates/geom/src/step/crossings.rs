@@ -147,3 +147,34 @@ pub(super) fn concave_vertex_crossings(
     out.dedup();
     out
 }
+
+/// The new faces whose outline crosses itself seen along their own Newell normal (a bow-tie:
+/// [`crate::geometry::points_cross_themselves`]). The minimum type's capped displacements can
+/// swap a VERTEX-face's points round a warped vertex, and such a face keeps a normal that
+/// agrees with its parent's, so the flip test does not see it; the roundings after it turn
+/// its children over.
+pub(super) fn self_crossing_faces(child: &PolyMesh) -> Vec<u32> {
+    use rayon::prelude::*;
+    (0..child.num_faces())
+        .into_par_iter()
+        .with_min_len(1 << 12)
+        .filter(|&f| {
+            // A face with a hole (a FACE-face of a holed face) is not one outline.
+            if child.face_has_holes(f) {
+                return false;
+            }
+            let at = |c: usize| child.positions[child.corner_verts[c] as usize];
+            let n = crate::geometry::face_normal_raw(child, f);
+            let corners = child.face_corners(f);
+            if corners.len() == 4 {
+                let c = corners.start;
+                // Every face of a dual split is a quad but a VERTEX-face of another valence.
+                crate::geometry::quad_crosses_itself([at(c), at(c + 1), at(c + 2), at(c + 3)], n)
+            } else {
+                let pts: Vec<DVec3> = corners.map(at).collect();
+                crate::geometry::points_cross_themselves(&pts, n)
+            }
+        })
+        .map(|f| f as u32)
+        .collect()
+}
