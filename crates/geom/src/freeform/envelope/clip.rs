@@ -353,11 +353,12 @@ impl Clipper<'_> {
 
     /// The corners of a clipped face inside it, located, and drawn to one distance from G
     /// where they lie close together: corner i's distance becomes `(rᵢ + Σ sᵢⱼ rⱼ) / (1 + Σ
-    /// sᵢⱼ)` over the face's other inside corners, `sᵢⱼ = a² / (a² + dᵢⱼ²)` with `a =`
+    /// sᵢⱼ)` over the face's other inside corners, `sᵢⱼ = (a² / (a² + dᵢⱼ²))²` with `a =`
     /// [`NEAR_INSIDE`]` · r`: two corners a short silhouette side apart (three cuts crossing
     /// the face nearly at one point) end at nearly one distance — they differ by
-    /// `(r₁ − r₂) d² / (2a² + d²)` — as the normals along their radii need; corners far
-    /// apart keep theirs (envelope.md, "Corners inside a face").
+    /// `(r₁ − r₂)(1 − s)/(1 + s)`, about `(r₁ − r₂) d²/a²` — as the normals along their radii
+    /// need; corners far apart keep theirs, pulled as `(a/d)⁴` (envelope.md, "Corners inside
+    /// a face").
     fn inside_corners(&mut self, poly: &[Corner]) -> Result<Vec<Option<Located>>, EnvelopeError> {
         let mut out = Vec::with_capacity(poly.len());
         for c in poly {
@@ -381,7 +382,10 @@ impl Clipper<'_> {
                     // the located ones', which holds the very difference in distance from G
                     // that drawing them together removes.
                     let d2 = poly[i].flat.distance_squared(poly[j].flat);
-                    let w = reach * reach / (reach * reach + d2);
+                    // Squared, so that a corner far across the face pulls as (a/d)⁴, not
+                    // (a/d)²: a corner 1.2 away on a cube face pulled one beside the edge
+                    // 0.0006 in (envelope.md, "How far the pull reaches").
+                    let w = (reach * reach / (reach * reach + d2)).powi(2);
                     sum += w * lj.position.distance(g);
                     weight += w;
                 }
