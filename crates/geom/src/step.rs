@@ -126,8 +126,9 @@ pub struct StepReport {
     /// What the combination rule's last resort did ([`rules::untangle`]): points of new
     /// faces still flipped after the fold guard, smoothed until none is, and how far.
     pub untangled: rules::Untangled,
-    /// Parent vertices where the combination rule's final resort gave up the rounding for a
-    /// small chamfer because a new face round them was still flipped ([`rules::retreat`]).
+    /// Parent vertices where the final resort gave up the rounding (or, clamped, the minimum
+    /// type's or a chamfer's points) for a small chamfer because a new face round them was
+    /// still flipped, passed through another or crossed itself ([`rules::retreat`]).
     pub small_chamfers: usize,
     /// Signed volume of the result (negative: inside out).
     pub volume: f64,

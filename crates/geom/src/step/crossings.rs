@@ -5,7 +5,9 @@
 //! and vertices round them (by the split's provenance and numbering, with the renderer's
 //! triangles and Möller's test as in `--check-crossings`, over that neighbourhood only); the
 //! faces of any crossing pair seed the small chamfers ([`crate::rules::retreat`]) as flipped
-//! faces do.
+//! faces do. After a clamped minimum-type or chamfer step, new faces that cross themselves
+//! seed them too ([`self_crossing_faces`], "Bow-ties": one pass over the new faces, two
+//! triple products a quad).
 
 use crate::mesh::PolyMesh;
 use crate::refine::{FaceKind, Provenance};
