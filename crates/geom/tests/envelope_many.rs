@@ -1159,8 +1159,8 @@ fn folded_patches_are_unfolded_by_rescaling_their_cross_derivatives() {
 /// A heap of three primitives (heap 300069 of the mixed survey) whose split faces had
 /// sub-quads passing through themselves at t = 0.1 with no folded cell — a side 0.09 long
 /// against 0.89 — so the tessellation crossed itself in 8, 24, 64 pairs at K = 8, 16, 32 (the
-/// crossing test's heap until then). Patches with a side under 15 % of their longest are
-/// checked for passing through themselves too and rescaled as folded ones are (envelope.md,
+/// crossing test's heap until then). Patches are checked for passing through themselves too
+/// and rescaled as folded ones are (envelope.md,
 /// "Folded patches: cross derivatives rescaled"): no crossing at any K from t = 1 to 0.1, no
 /// fold, G1.
 #[test]
@@ -1173,6 +1173,29 @@ fn patches_through_themselves_are_rescaled_too() {
     for t in [1.0, 0.5, 0.2, 0.1] {
         let e = fold_free_at(&spec, t);
         for k in [8, 16, 32] {
+            assert!(
+                crossings(&e.tessellate(k).unwrap()).is_empty(),
+                "t = {t}, K = {k}"
+            );
+        }
+    }
+}
+
+/// A heap of six primitives (heap 600266 of the mixed survey) at t = 3, the top of the tab's
+/// slider: one sub-quad of a split face, sides 0.16 to 0.89 (none under 15 % of the longest, so
+/// it was not checked), bulged through itself, and the tessellation crossed itself in 3, 4, 12,
+/// 26 pairs at K = 6, 8, 16, 32 with no folded cell. Every patch is checked for passing through
+/// itself now (envelope.md, "Patches through themselves"): no crossing at any K, no fold, G1.
+#[test]
+fn a_patch_through_itself_is_found_whatever_its_sides() {
+    use prism_geom::freeform::envelope::folds::crossings;
+    let spec: EnvelopeSpec = serde_json::from_str(include_str!(
+        "data/envelope/bulging-patch-through-itself.envelope.json"
+    ))
+    .unwrap();
+    for t in [3.0, 2.0, 1.0] {
+        let e = fold_free_at(&spec, t);
+        for k in [6, 8, 16, 32] {
             assert!(
                 crossings(&e.tessellate(k).unwrap()).is_empty(),
                 "t = {t}, K = {k}"

@@ -10,7 +10,8 @@
 //! pleat is outside-facing enough to pass that one); it does not see two distant parts of
 //! the surface passing through each other, nor a patch folding over within its corners'
 //! tangent planes — [`crossings`] of the tessellation does, and [`self_crossings`] of one
-//! patch's own grid, which the build runs on patches with a short side. The build checks every
+//! patch's own grid, which the build runs on every patch (most are cleared at once by
+//! `projects_one_to_one`: one to one along their mean normal). The build checks every
 //! patch as it makes it (and rescales those that fold or cross, `patches.rs`), so
 //! [`super::Envelope::folds`] returns what it found.
 
@@ -96,9 +97,20 @@ pub fn self_crossings(p: &EnvelopePatch, k: usize) -> usize {
 }
 
 /// [`self_crossings`] of a patch's grid `g`, `k` cells a side ([`super::coons::Coons::grid`]):
-/// the pairs of cells whose boxes in the patch's own frame overlap, then their triangles that
-/// share no grid point (those that do only touch there, or fold, which the cell check sees).
+/// none where the grid is one to one seen along its mean normal ([`projects_one_to_one`], most
+/// patches), otherwise [`pairwise_crossings`].
 pub(crate) fn grid_crossings(g: &[DVec3], k: usize) -> usize {
+    if projects_one_to_one(g, k) {
+        0
+    } else {
+        pairwise_crossings(g, k)
+    }
+}
+
+/// The pairs of cells of the grid `g` whose boxes in the patch's own frame overlap, then their
+/// triangles that share no grid point and pass through each other (those that share one only
+/// touch there, or fold, which the cell check sees).
+fn pairwise_crossings(g: &[DVec3], k: usize) -> usize {
     let idx = |i: usize, j: usize| i + (k + 1) * j;
     // Boxes in the patch's own frame (along its first side, across it, and off it), where a
     // sound patch's cells overlap only their neighbours.
@@ -158,6 +170,103 @@ pub(crate) fn grid_crossings(g: &[DVec3], k: usize) -> usize {
     pairs
 }
 
+/// Whether the grid `g` (`k` cells a side, each cut along its diagonal from (i, j) as
+/// [`grid_crossings`] cuts it), seen along its mean normal, is one to one: every triangle turns
+/// the same way as the mean normal and the outline crosses and touches itself nowhere. A
+/// piecewise-linear map of a disk whose triangles all keep their orientation and whose outline
+/// is a simple polygon is one to one (the degree of every point inside the outline is 1), so no
+/// two of its triangles can pass through each other: the grid is then a graph over that plane.
+/// A few µs against the pairwise test's 25; `false` only means "not shown" (a collapsed side, a
+/// patch turning past 90°), and the pairwise test decides.
+fn projects_one_to_one(g: &[DVec3], k: usize) -> bool {
+    let idx = |i: usize, j: usize| i + (k + 1) * j;
+    let mut n = DVec3::ZERO;
+    for j in 0..k {
+        for i in 0..k {
+            n += (g[idx(i + 1, j + 1)] - g[idx(i, j)]).cross(g[idx(i, j + 1)] - g[idx(i + 1, j)]);
+        }
+    }
+    let Some(n) = n.try_normalize() else {
+        return false;
+    };
+    let e1 = n.any_orthonormal_vector();
+    let e2 = n.cross(e1);
+    let flat: Vec<(f64, f64)> = g.iter().map(|p| (p.dot(e1), p.dot(e2))).collect();
+    let (lo, hi) = flat.iter().fold(
+        ((f64::MAX, f64::MAX), (f64::MIN, f64::MIN)),
+        |(lo, hi), &(x, y)| ((lo.0.min(x), lo.1.min(y)), (hi.0.max(x), hi.1.max(y))),
+    );
+    let size = (hi.0 - lo.0).max(hi.1 - lo.1);
+    // Orientation of (a, b, c): twice the signed area.
+    let turn = |a: (f64, f64), b: (f64, f64), c: (f64, f64)| {
+        (b.0 - a.0) * (c.1 - a.1) - (b.1 - a.1) * (c.0 - a.0)
+    };
+    let least = 1e-12 * size * size;
+    for j in 0..k {
+        for i in 0..k {
+            let (a, b, c, d) = (
+                flat[idx(i, j)],
+                flat[idx(i + 1, j)],
+                flat[idx(i + 1, j + 1)],
+                flat[idx(i, j + 1)],
+            );
+            if !(turn(a, b, c) > least && turn(a, c, d) > least) {
+                return false;
+            }
+        }
+    }
+    // The outline, counter-clockwise in (u, v): no two segments but neighbours may meet.
+    let outline: Vec<(f64, f64)> = (0..k)
+        .map(|i| flat[idx(i, 0)])
+        .chain((0..k).map(|j| flat[idx(k, j)]))
+        .chain((0..k).map(|i| flat[idx(k - i, k)]))
+        .chain((0..k).map(|j| flat[idx(0, k - j)]))
+        .collect();
+    let m = outline.len();
+    // Turns within `least` of zero count as zero: segments on one line meet where their spans
+    // along it overlap, and a touch counts as meeting (only a clear miss is a miss).
+    let sign = |x: f64| {
+        if x > least {
+            1
+        } else if x < -least {
+            -1
+        } else {
+            0
+        }
+    };
+    let meet = |a: (f64, f64), b: (f64, f64), c: (f64, f64), d: (f64, f64)| {
+        let (t1, t2) = (sign(turn(a, b, c)), sign(turn(a, b, d)));
+        let (t3, t4) = (sign(turn(c, d, a)), sign(turn(c, d, b)));
+        if t1 * t2 > 0 || t3 * t4 > 0 {
+            return false;
+        }
+        if t1 == 0 && t2 == 0 && t3 == 0 && t4 == 0 {
+            let dir = (b.0 - a.0, b.1 - a.1);
+            let at = |p: (f64, f64)| (p.0 - a.0) * dir.0 + (p.1 - a.1) * dir.1;
+            let (c0, c1) = (at(c), at(d));
+            let len = at(b);
+            return c0.max(c1) >= 0.0 && c0.min(c1) <= len;
+        }
+        true
+    };
+    for a in 0..m {
+        for b in a + 2..m {
+            if a == 0 && b == m - 1 {
+                continue;
+            }
+            if meet(
+                outline[a],
+                outline[(a + 1) % m],
+                outline[b],
+                outline[(b + 1) % m],
+            ) {
+                return false;
+            }
+        }
+    }
+    true
+}
+
 /// Where a tessellation passes through itself: its pairs of faces that cross
 /// ([`crate::analysis::crossings`]), each as the midpoint of the two faces' centroids. It sees
 /// what the fold check cannot: a patch folded over within its corners' tangent planes (per-vertex
@@ -176,4 +285,55 @@ pub fn crossings(mesh: &PolyMesh) -> Vec<DVec3> {
         .into_iter()
         .map(|(f, g)| 0.5 * (centroid(f) + centroid(g)))
         .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A k × k grid of `f(u, v)`, i + (k + 1)j as `Coons::grid` lists it.
+    fn grid(k: usize, f: impl Fn(f64, f64) -> DVec3) -> Vec<DVec3> {
+        let kf = k as f64;
+        (0..=k)
+            .flat_map(|j| (0..=k).map(move |i| (i as f64 / kf, j as f64 / kf)))
+            .map(|(u, v)| f(u, v))
+            .collect()
+    }
+
+    /// The quick test vouches only for grids the pairwise test clears: a bump, a saddle and a
+    /// cylinder a third round are one to one seen along their mean normal; a cylinder wrapped
+    /// past a full turn (which passes through itself) and a grid with a pleat are not, and the
+    /// pairwise test finds the first one's crossings.
+    #[test]
+    fn a_grid_one_to_one_along_its_mean_normal_has_no_crossing() {
+        let k = 8;
+        let tau = std::f64::consts::TAU;
+        let bump = grid(k, |u, v| {
+            DVec3::new(u, v, 0.3 * (u * (1.0 - u) * v * (1.0 - v)))
+        });
+        let saddle = grid(k, |u, v| DVec3::new(u, v, (u - 0.5) * (v - 0.5)));
+        let arc = grid(k, |u, v| {
+            let a = u * tau / 3.0;
+            DVec3::new(a.sin(), v, -a.cos())
+        });
+        for (name, g) in [("bump", &bump), ("saddle", &saddle), ("arc", &arc)] {
+            assert!(projects_one_to_one(g, k), "{name}");
+            assert_eq!(pairwise_crossings(g, k), 0, "{name}");
+        }
+        // Round 1.2 turns, the radius growing 10 % a turn so that the overlap crosses.
+        let wrapped = grid(k, |u, v| {
+            let a = u * 1.2 * tau;
+            let r = 1.0 + 0.1 * (u - 0.5) + 0.3 * (v - 0.5) * (u - 0.5);
+            DVec3::new(r * a.cos(), r * a.sin(), v)
+        });
+        assert!(!projects_one_to_one(&wrapped, k));
+        assert!(pairwise_crossings(&wrapped, k) > 0);
+        let pleat = grid(k, |u, v| {
+            // The middle column moved past its neighbour: a cell turned over.
+            let x = if (u - 0.5).abs() < 1e-9 { 0.7 } else { u };
+            DVec3::new(x, v, 0.0)
+        });
+        assert!(!projects_one_to_one(&pleat, k));
+        assert_eq!(grid_crossings(&bump, k), 0);
+    }
 }

@@ -47,7 +47,7 @@
 //! five or more sides whose split folds also with each diagonal that cuts off a fat triangle of
 //! two consecutive sides (envelope.md, "Diagonals"): the one that folds fewest is taken.
 //!
-//! A patch that still folds, or has a short side and passes through itself, has its sides'
+//! A patch that still folds, or passes through itself, has its sides'
 //! cross derivatives scaled by `σ(s) = 1 − 4β·s(1 − s)` (1 at the corners, positive), β per
 //! side from a short list, the one that folds and crosses least: a positive multiple of X keeps
 //! the border's normal `C′ × X`, so G1 holds whatever β is (envelope.md, "Folded patches: cross
@@ -939,17 +939,12 @@ pub fn build(net: &mut Network, prims: &[Primitive]) -> (Vec<EnvelopePatch>, Vec
     (out, folded)
 }
 
-/// A patch with a side under this share of its longest is also checked for passing through
-/// itself ([`unfolded`], [`super::folds::self_crossings`]): every patch seen doing so in the
-/// mixed survey had one (shortest to longest 0.015–0.10), and the check costs about 25 µs.
-const CROSSING_CHECKED: f64 = 0.15;
-
 /// The β tried on a folded patch's sides ([`unfolded`], [`Side::scaled`]): the cross
 /// derivative's middle drawn in (β > 0) or pushed out (β < 0).
 const SQUEEZES: [f64; 8] = [0.25, 0.5, 0.75, 0.9, -0.25, -0.5, -1.0, -2.0];
 
-/// `p`, or where it folds (as the report samples it, or `cells` a side) or — with a side under
-/// [`CROSSING_CHECKED`] of its longest — passes through itself, the same patch with its sides'
+/// `p`, or where it folds (as the report samples it, or `cells` a side) or passes through
+/// itself ([`super::folds::self_crossings`]), the same patch with its sides'
 /// cross derivatives scaled between their corners (envelope.md, "Folded patches: cross
 /// derivatives rescaled"); with its folded cells as the report samples them. The scale is 1 at
 /// the corners and positive, so the fits there, the normal along every border and G1 with the
@@ -963,8 +958,7 @@ fn unfolded(net: &Network, p: EnvelopePatch, cells: usize) -> (EnvelopePatch, Ve
     let folds = |p: &EnvelopePatch, k: usize| super::folds::folds(net, std::slice::from_ref(p), k);
     let grid = p.coons.grid(FOLD_CELLS);
     let reported = grid_folds(net, &p, 0, &grid, FOLD_CELLS);
-    let (shortest, longest) = chord_range(net, &p.sides);
-    let crossing = shortest < CROSSING_CHECKED * longest && grid_crossings(&grid, FOLD_CELLS) > 0;
+    let crossing = grid_crossings(&grid, FOLD_CELLS) > 0;
     if !crossing && reported.is_empty() && (cells == FOLD_CELLS || folds(&p, cells).is_empty()) {
         return (p, reported);
     }
