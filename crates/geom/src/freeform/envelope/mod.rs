@@ -331,7 +331,7 @@ impl Envelope {
     pub fn crossing_warning(&self, points: &[DVec3], k: usize) -> Option<String> {
         let p = points.first()?;
         Some(format!(
-            "the surface passes through itself at {} pair(s) of faces of its tessellation at {k}×{k} quads a patch, the first near ({:.4}, {:.4}, {:.4}); a larger t, per-vertex t closer together or primitives further apart usually clear it",
+            "the surface passes through itself at {} pair(s) of faces of its tessellation at {k}×{k} quads a patch, the first near ({:.4}, {:.4}, {:.4}); a t nearer 1, per-vertex t closer together or primitives further apart usually clear it",
             points.len(),
             p.x,
             p.y,
