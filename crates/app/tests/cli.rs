@@ -1018,9 +1018,9 @@ fn envelope_builds_the_bundled_scenes_and_names_bad_ones() {
         "{so}"
     );
     assert!(so.contains(" folded=0 "), "{so}");
-    // Down to t = 0.1, where the tab's slider stops, nothing folds; in a heap of six
-    // primitives a few cells of a narrow lid between three of them do at t = 0.1: counted,
-    // and the first named on stderr (exit 0).
+    // Down to t = 0.1, where the tab's slider stops, nothing folds; in a heap of three
+    // primitives at t = 0.05 a few cells of a primitive's face do: counted, and the first
+    // named on stderr (exit 0).
     let (_, so, _) = succeeds_to(
         "seven-01.obj",
         "envelope assets/table2-seven.envelope.json -o {} --resolution 4 --t 0.1",
@@ -1028,7 +1028,7 @@ fn envelope_builds_the_bundled_scenes_and_names_bad_ones() {
     assert!(so.contains(" folded=0 "), "{so}");
     let (_, so, se) = succeeds_to(
         "heap.obj",
-        "envelope crates/geom/tests/data/envelope/folding-heap.envelope.json -o {} --resolution 4",
+        "envelope crates/geom/tests/data/envelope/still-folding-heap.envelope.json -o {} --resolution 4",
     );
     let count = |key: &str| -> usize {
         so.split_whitespace()
@@ -1043,7 +1043,7 @@ fn envelope_builds_the_bundled_scenes_and_names_bad_ones() {
         se.contains(&format!(
             "warning: {folded} of {} sampled cells fold",
             64 * patches
-        )) && se.contains("the first on region 56 (between primitives)"),
+        )) && se.contains("the first on primitive 2 face 4"),
         "{se}"
     );
     assert!(so.contains(" crossings=0 "), "{so}");

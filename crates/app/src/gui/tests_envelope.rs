@@ -191,8 +191,9 @@ fn the_t_sweep_shows_the_three_t() {
 }
 
 /// Folds are shown in the summary: none on the seven-primitive sample at its own t, at 0.5 or
-/// at 0.1, where the slider stops; a heap of six primitives has cells of a narrow lid between
-/// three of them turned by more than 90° at t = 0.1, counted, with where the first lies.
+/// at 0.1, where the slider stops; a heap of three primitives has cells of a primitive's face
+/// turned by more than 90° at t = 0.05 (below the slider; opened from a file), counted, with
+/// where the first lies.
 #[test]
 fn the_summary_counts_folds() {
     let k = envelope::ENVELOPE_SAMPLES
@@ -200,7 +201,7 @@ fn the_summary_counts_folds() {
         .position(|s| s.1 == "table2-seven.envelope.json")
         .unwrap();
     let heap: prism_geom::freeform::envelope::EnvelopeSpec = serde_json::from_str(include_str!(
-        "../../../geom/tests/data/envelope/folding-heap.envelope.json"
+        "../../../geom/tests/data/envelope/still-folding-heap.envelope.json"
     ))
     .unwrap();
     let seven = envelope::sample(k).unwrap();
@@ -221,10 +222,7 @@ fn the_summary_counts_folds() {
             Some((n, text)) => {
                 assert!(folded && *n > 0);
                 assert_eq!(b.fold_points.len(), *n);
-                assert!(
-                    text.contains("the first on region 56 (between primitives)"),
-                    "{text}"
-                );
+                assert!(text.contains("the first on primitive 2 face 4"), "{text}");
             }
             None => assert!(!folded && b.fold_points.is_empty()),
         }
@@ -285,4 +283,53 @@ fn a_bare_scene_file_opens_on_its_tab() {
     a.wait_idle();
     assert_eq!(a.tab, Tab::Envelope);
     assert_eq!(a.doc.state().envelope.as_ref().unwrap().primitives.len(), 2);
+}
+
+/// A scene whose t, a vertex's own t and resolution lie outside the tab's ranges (t = 0.05 and
+/// 0.02, 40 quads a patch side: the CLI takes any t > 0 and up to 256) keeps them while the
+/// tab shows it, the vertex picked; the sliders clamp only what is dragged or typed (egui's
+/// clamp existing values unless told not to, which turned such a scene into t = 0.1 and 32
+/// quads as it opened). The Skin tab's resolution likewise.
+#[test]
+fn values_outside_the_sliders_are_kept() {
+    let mut h = Harness::builder()
+        .with_size(egui::vec2(1280.0, 800.0))
+        .build_ui_state(|ui, app: &mut PrismApp| app.frame_ui(ui), app());
+    settle(&mut h);
+    h.get_by_label("Envelope").click();
+    settle(&mut h);
+    let mut spec: prism_geom::freeform::envelope::EnvelopeSpec = serde_json::from_str(
+        include_str!("../../../geom/tests/data/envelope/still-folding-heap.envelope.json"),
+    )
+    .unwrap();
+    spec.resolution = 40;
+    let mut vt = vec![0.05; spec.primitives[0].vertices.len()];
+    vt[0] = 0.02;
+    spec.primitives[0].vertex_t = Some(vt);
+    h.state_mut().run(Command::Edit(Edit::SetEnvelope {
+        spec: Some(spec.clone()),
+        gesture: None,
+    }));
+    h.state_mut().envelope.picked = Some((0, 0));
+    settle(&mut h);
+    h.get_by_label_contains("vertex 0");
+    assert_eq!(scene(&h).as_ref(), Some(&spec));
+    {
+        let b = h.state().envelope.built().expect("built");
+        let (e, mesh) = b.result.as_ref().expect("an envelope");
+        assert_eq!(mesh.num_faces(), 40 * 40 * e.patches.len());
+    }
+
+    h.get_by_label("Skin").click();
+    settle(&mut h);
+    h.get_by_label("Spout (6 sections)").click();
+    settle(&mut h);
+    let mut skin = h.state().doc.state().skin.clone().expect("the spout");
+    skin.resolution = 48;
+    h.state_mut().run(Command::Edit(Edit::SetSkin {
+        spec: Some(skin.clone()),
+        gesture: None,
+    }));
+    settle(&mut h);
+    assert_eq!(h.state().doc.state().skin.as_ref(), Some(&skin));
 }

@@ -384,7 +384,12 @@ impl EnvelopeTab {
         ui.separator();
         ui.label("Surface");
         let mut res = spec.resolution;
-        let r = ui.add(egui::Slider::new(&mut res, 1..=32).text("quads a patch side"));
+        // A scene's own resolution (the CLI takes up to 256) is kept until the slider moves.
+        let r = ui.add(
+            egui::Slider::new(&mut res, 1..=32)
+                .clamping(egui::SliderClamping::Edits)
+                .text("quads a patch side"),
+        );
         let g = self.gestures.of(&r);
         if res != spec.resolution {
             let mut s = spec.clone();
@@ -589,8 +594,11 @@ impl EnvelopeTab {
         let mut t = spec.t;
         let r = ui
             .add(
+                // A scene opened with t outside the slider's range (the CLI takes any t > 0)
+                // keeps it until the slider is moved.
                 egui::Slider::new(&mut t, 0.1..=3.0)
                     .logarithmic(true)
+                    .clamping(egui::SliderClamping::Edits)
                     .text("t"),
             )
             .on_hover_text("1: edges are arcs on the primitive's sphere; towards 0 the surface tends to the flat faces; above 1 the edges bulge outside the sphere (polynomial cubics at 3/(1 + 2cos θ), 1.14 on a cube)");
@@ -623,6 +631,7 @@ impl EnvelopeTab {
                     .prefix("own t: ")
                     .speed(0.01)
                     .range(0.1..=3.0)
+                    .clamp_existing_to_range(false)
                     .min_decimals(2)
                     .max_decimals(3),
             );

@@ -293,7 +293,12 @@ impl SkinTab {
         ui.separator();
         ui.label("Surface");
         let mut res = spec.resolution;
-        let r = ui.add(egui::Slider::new(&mut res, 1..=32).text("quads a patch side"));
+        // A scene's own resolution (the CLI takes up to 256) is kept until the slider moves.
+        let r = ui.add(
+            egui::Slider::new(&mut res, 1..=32)
+                .clamping(egui::SliderClamping::Edits)
+                .text("quads a patch side"),
+        );
         let g = self.gestures.of(&r);
         if res != spec.resolution {
             let mut s = spec.clone();
