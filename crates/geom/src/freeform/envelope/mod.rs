@@ -20,6 +20,7 @@ pub mod edges;
 pub mod folds;
 pub mod fusion;
 pub mod hull;
+mod legs;
 pub mod nested;
 pub mod network;
 pub mod patches;
@@ -253,9 +254,8 @@ fn assemble(
             kind: RegionKind::Fusion,
         });
     }
-    network.assign_bases(spec.basis);
     let regions = network.regions.len();
-    let (patches, folded) = patches::build(&mut network, &primitives);
+    let (network, patches, folded) = legs::patched(network, spec.basis, &primitives);
     Ok(Envelope {
         primitives,
         network,

@@ -1,0 +1,101 @@
+//! Short legs given back where a patch folds (docs/algorithms/envelope.md, "Short legs given
+//! back where a patch folds").
+//!
+//! Below t = ½ the polynomial network curves — fusion edges and the cubics that replace hooked
+//! edge pieces — take legs of only `2t` thirds of their chord ([`super::edges`]'s `legs_for`),
+//! so that they hug their chords as the curved edges beside them do. Where such a curve leaves
+//! its ends far from its chord (a fusion edge climbing 0.62 over 0.67 between ends whose
+//! tangent planes lie along the facet), its tangent plane turns fast within the short leg, the
+//! Coons patch carries that turn across a thin strip beside the next side, and the strip
+//! folds. Lengthening every such curve's legs moved the fold to other heaps (a sliver strip
+//! bulged through its neighbour); lengthening only the curves around a folded patch does not:
+//!
+//! 1. Build the patches. If none folds, that is the envelope.
+//! 2. Otherwise, for each share `s` of [`SHARES`] in turn, give every polynomial curve on a
+//!    side of a folded patch's region legs of at least `s` × a third of its chord (directions
+//!    kept, so its end tangents — and the tangent planes and G1 — are unchanged) and build the
+//!    patches again; keep the first build that folds nowhere, or else the one that folds
+//!    least.
+//!
+//! A curve with a T-point or a split point on it keeps its legs (the point would leave it).
+//! The curves chosen come from the folded regions, not from the listing, so the surface does
+//! not depend on the order of the input. The change is discrete: as t or a primitive moves
+//! across the place where a fold would appear, the curves around it lengthen at once.
+
+use super::folds::Fold;
+use super::network::{CurveKind, Network};
+use super::patches::{self, EnvelopePatch};
+use super::primitive::Primitive;
+use crate::freeform::skin::Basis;
+use std::collections::BTreeSet;
+
+/// The shares of a third of the chord tried, in order, as the least legs of the curves
+/// around a fold (the survey's two folds went at the first).
+const SHARES: [f64; 2] = [0.5, 1.0];
+
+/// The network with its bases, the patches and their folded cells.
+type Built = (Network, Vec<EnvelopePatch>, Vec<Fold>);
+
+fn build(mut net: Network, basis: Basis, prims: &[Primitive]) -> Built {
+    net.assign_bases(basis);
+    let (patches, folded) = patches::build(&mut net, prims);
+    (net, patches, folded)
+}
+
+/// The patches of `net` (regions complete, no basis assigned yet), with the short legs around
+/// a fold given back as the module says.
+pub(super) fn patched(net: Network, basis: Basis, prims: &[Primitive]) -> Built {
+    let first = build(net.clone(), basis, prims);
+    if first.2.is_empty() {
+        return first;
+    }
+    let around: BTreeSet<usize> = first
+        .2
+        .iter()
+        .flat_map(|f| net.regions[f.region].sides.iter().map(|s| s.curve))
+        .collect();
+    let mut best = first;
+    for share in SHARES {
+        let mut lengthened = net.clone();
+        let mut changed = false;
+        for &c in &around {
+            changed |= lengthen(&mut lengthened, c, share);
+        }
+        if !changed {
+            continue;
+        }
+        let got = build(lengthened, basis, prims);
+        if got.2.len() < best.2.len() {
+            best = got;
+            if best.2.is_empty() {
+                break;
+            }
+        }
+    }
+    best
+}
+
+/// Gives curve `c` legs of at least `share` × a third of its chord when it is a polynomial
+/// cubic with no point but its ends on it; whether it changed.
+fn lengthen(net: &mut Network, c: usize, share: f64) -> bool {
+    let curve = &mut net.curves[c];
+    if curve.kind == CurveKind::Insertion
+        || curve.pins.len() > 2
+        || curve.bezier.points.len() != 4
+        || curve.bezier.weights.iter().any(|&w| w != 1.0)
+    {
+        return false;
+    }
+    let p = &mut curve.bezier.points;
+    let least = share * p[0].distance(p[3]) / 3.0;
+    let mut changed = false;
+    for (end, inner) in [(0, 1), (3, 2)] {
+        let leg = p[inner] - p[end];
+        let length = leg.length();
+        if length > 0.0 && length < least {
+            p[inner] = p[end] + leg * (least / length);
+            changed = true;
+        }
+    }
+    changed
+}
