@@ -6,7 +6,7 @@
 
 use crate::mesh::PolyMesh;
 use crate::topology::{NONE, Topology};
-use glam::DVec3;
+use glam::{DVec2, DVec3};
 
 /// Newell normal of face `f`: ½ Σ_loops Σ_i V_i × V_(i+1). Its length is the area of a
 /// planar face (holes subtracted).
@@ -122,6 +122,66 @@ pub fn quad_crosses_itself([a, b, c, d]: [DVec3; 4], n: DVec3) -> bool {
     least > 1e-9 * n.length() * l
 }
 
+/// Whether the segments a0–a1 and b0–b1 in the plane meet: cross, touch, or overlap along
+/// one line. An orientation (twice a triangle's signed area) within `tolerance` of zero counts
+/// as zero, so only a clear miss is a miss: with `tolerance` = 0 the test is exact (an extruded
+/// outline's check, `solid.rs`); a check that may only err towards "they meet" passes its
+/// rounding (a patch's outline seen along its normal, `folds.rs::projects_one_to_one`).
+/// Segments on one line (all four orientations zero) meet where their spans along it overlap.
+pub fn segments_meet(a0: DVec2, a1: DVec2, b0: DVec2, b1: DVec2, tolerance: f64) -> bool {
+    let sign = |x: f64| {
+        if x > tolerance {
+            1
+        } else if x < -tolerance {
+            -1
+        } else {
+            0
+        }
+    };
+    let turn = |p: DVec2, q: DVec2, r: DVec2| sign((q - p).perp_dot(r - p));
+    let (t1, t2) = (turn(a0, a1, b0), turn(a0, a1, b1));
+    let (t3, t4) = (turn(b0, b1, a0), turn(b0, b1, a1));
+    if t1 * t2 > 0 || t3 * t4 > 0 {
+        return false;
+    }
+    if t1 == 0 && t2 == 0 && t3 == 0 && t4 == 0 {
+        // Spans along the longer segment's direction (a point, if both are points).
+        let (p0, p1, q0, q1) = if (a1 - a0).length_squared() >= (b1 - b0).length_squared() {
+            (a0, a1, b0, b1)
+        } else {
+            (b0, b1, a0, a1)
+        };
+        let dir = p1 - p0;
+        if dir == DVec2::ZERO {
+            return p0 == q0;
+        }
+        let at = |p: DVec2| (p - p0).dot(dir);
+        let (c0, c1) = (at(q0), at(q1));
+        return c0.max(c1) >= 0.0 && c0.min(c1) <= at(p1);
+    }
+    // Not all on one line, and each segment's ends on both sides of (or on) the other's
+    // line: the two lines cross at one point, which lies on both segments.
+    true
+}
+
+/// The first pair (i, j), i < j, of segments of the closed polygon `p` (segment i runs from
+/// p[i] to p[i + 1]) that meet though they are not neighbours ([`segments_meet`] with
+/// `tolerance`); `None` when the polygon is simple.
+pub fn outline_meets_itself(p: &[DVec2], tolerance: f64) -> Option<(usize, usize)> {
+    let n = p.len();
+    for i in 0..n {
+        for j in i + 2..n {
+            if i == 0 && j == n - 1 {
+                continue;
+            }
+            if segments_meet(p[i], p[(i + 1) % n], p[j], p[(j + 1) % n], tolerance) {
+                return Some((i, j));
+            }
+        }
+    }
+    None
+}
+
 /// Newell normal of every face (raw, not normalised), on every core (each face on its own,
 /// so the result is the serial one).
 pub fn face_normals_raw(mesh: &PolyMesh) -> Vec<DVec3> {
@@ -213,6 +273,58 @@ pub fn signed_volume(mesh: &PolyMesh) -> f64 {
 mod tests {
     use super::*;
     use crate::primitives;
+
+    #[test]
+    fn segments_meet_when_they_cross_touch_or_overlap() {
+        let v = DVec2::new;
+        let o = v(0.0, 0.0);
+        // Crossing, a T, a shared end, collinear overlap: they meet, at any tolerance.
+        for tol in [0.0, 1e-9] {
+            assert!(segments_meet(o, v(2.0, 2.0), v(0.0, 2.0), v(2.0, 0.0), tol));
+            assert!(segments_meet(o, v(2.0, 0.0), v(1.0, 0.0), v(1.0, 3.0), tol));
+            assert!(segments_meet(o, v(2.0, 0.0), v(2.0, 0.0), v(3.0, 5.0), tol));
+            assert!(segments_meet(o, v(2.0, 0.0), v(1.0, 0.0), v(5.0, 0.0), tol));
+            assert!(segments_meet(v(1.0, 1.0), v(1.0, 1.0), o, v(2.0, 2.0), tol));
+            // Clear misses: parallel, on one line apart, a T short of the other.
+            assert!(!segments_meet(
+                o,
+                v(2.0, 0.0),
+                v(0.0, 1.0),
+                v(2.0, 1.0),
+                tol
+            ));
+            assert!(!segments_meet(
+                o,
+                v(1.0, 0.0),
+                v(2.0, 0.0),
+                v(3.0, 0.0),
+                tol
+            ));
+            assert!(!segments_meet(
+                o,
+                v(2.0, 0.0),
+                v(1.0, 0.5),
+                v(1.0, 3.0),
+                tol
+            ));
+            assert!(!segments_meet(
+                v(1.0, 1.0),
+                v(1.0, 1.0),
+                v(3.0, 3.0),
+                v(4.0, 4.0),
+                tol
+            ));
+        }
+        // A T short of the other by 1e-12: a miss exactly, a touch within the tolerance.
+        let (a, b) = (v(1.0, 1e-12), v(1.0, 3.0));
+        assert!(!segments_meet(o, v(2.0, 0.0), a, b, 0.0));
+        assert!(segments_meet(o, v(2.0, 0.0), a, b, 1e-9));
+        // A square is simple; a bow-tie meets itself at its two crossing sides.
+        let square = [o, v(1.0, 0.0), v(1.0, 1.0), v(0.0, 1.0)];
+        assert_eq!(outline_meets_itself(&square, 0.0), None);
+        let bow = [o, v(1.0, 1.0), v(1.0, 0.0), v(0.0, 1.0)];
+        assert_eq!(outline_meets_itself(&bow, 0.0), Some((0, 2)));
+    }
 
     #[test]
     fn volumes_and_normals_of_the_test_solids() {

@@ -5,6 +5,7 @@
 //! parameter out of range, an outline that crosses itself (the two segments), a hole that
 //! does not fit inside.
 
+use crate::geometry::{outline_meets_itself, segments_meet};
 use crate::mesh::PolyMesh;
 use crate::primitives;
 use glam::{DVec2, DVec3};
@@ -162,40 +163,6 @@ fn area2(p: &[DVec2]) -> f64 {
         .sum()
 }
 
-/// Whether segments `a0a1` and `b0b1` meet (touching included).
-fn segments_meet(a0: DVec2, a1: DVec2, b0: DVec2, b1: DVec2) -> bool {
-    let side = |p: DVec2, q: DVec2, r: DVec2| (q - p).perp_dot(r - p);
-    let (d1, d2) = (side(b0, b1, a0), side(b0, b1, a1));
-    let (d3, d4) = (side(a0, a1, b0), side(a0, a1, b1));
-    if ((d1 > 0.0 && d2 < 0.0) || (d1 < 0.0 && d2 > 0.0))
-        && ((d3 > 0.0 && d4 < 0.0) || (d3 < 0.0 && d4 > 0.0))
-    {
-        return true;
-    }
-    let on = |p: DVec2, q: DVec2, r: DVec2, d: f64| {
-        d == 0.0
-            && r.x >= p.x.min(q.x)
-            && r.x <= p.x.max(q.x)
-            && r.y >= p.y.min(q.y)
-            && r.y <= p.y.max(q.y)
-    };
-    on(b0, b1, a0, d1) || on(b0, b1, a1, d2) || on(a0, a1, b0, d3) || on(a0, a1, b1, d4)
-}
-
-/// The first pair of non-adjacent segments of the closed polygon `p` that meet.
-fn self_intersection(p: &[DVec2]) -> Option<(usize, usize)> {
-    let n = p.len();
-    for i in 0..n {
-        for j in i + 1..n {
-            let adjacent = j == i + 1 || (i == 0 && j == n - 1);
-            if !adjacent && segments_meet(p[i], p[(i + 1) % n], p[j], p[(j + 1) % n]) {
-                return Some((i, j));
-            }
-        }
-    }
-    None
-}
-
 /// Whether `q` is inside the closed polygon `p` (even-odd rule).
 fn inside(p: &[DVec2], q: DVec2) -> bool {
     let mut c = false;
@@ -225,7 +192,7 @@ fn extrusion(outline: &[DVec2], height: f64, hole: Option<f64>) -> Result<PolyMe
             expected: "finite coordinates",
         });
     }
-    if let Some((a, b)) = self_intersection(&p) {
+    if let Some((a, b)) = outline_meets_itself(&p, 0.0) {
         return Err(SolidError::SelfIntersecting {
             a,
             a1: (a + 1) % p.len(),
@@ -268,8 +235,9 @@ fn extrusion(outline: &[DVec2], height: f64, hole: Option<f64>) -> Result<PolyMe
                 });
             }
             let crosses = (0..h.len()).any(|i| {
-                (0..p.len())
-                    .any(|j| segments_meet(h[i], h[(i + 1) % h.len()], p[j], p[(j + 1) % p.len()]))
+                (0..p.len()).any(|j| {
+                    segments_meet(h[i], h[(i + 1) % h.len()], p[j], p[(j + 1) % p.len()], 0.0)
+                })
             });
             if crosses || !h.iter().all(|&q| inside(&p, q)) {
                 return Err(SolidError::HoleOutside {

@@ -17,8 +17,9 @@
 
 use super::network::Network;
 use super::patches::EnvelopePatch;
+use crate::geometry::outline_meets_itself;
 use crate::mesh::PolyMesh;
-use glam::DVec3;
+use glam::{DVec2, DVec3};
 
 /// Cells along each side of a patch that the check samples.
 pub const FOLD_CELLS: usize = 8;
@@ -216,55 +217,16 @@ fn projects_one_to_one(g: &[DVec3], k: usize) -> bool {
         }
     }
     // The outline, counter-clockwise in (u, v): no two segments but neighbours may meet.
-    let outline: Vec<(f64, f64)> = (0..k)
+    // Turns within `least` of zero count as zero, so a touch or an overlap along one line
+    // counts as meeting (only a clear miss is a miss).
+    let outline: Vec<DVec2> = (0..k)
         .map(|i| flat[idx(i, 0)])
         .chain((0..k).map(|j| flat[idx(k, j)]))
         .chain((0..k).map(|i| flat[idx(k - i, k)]))
         .chain((0..k).map(|j| flat[idx(0, k - j)]))
+        .map(|(x, y)| DVec2::new(x, y))
         .collect();
-    let m = outline.len();
-    // Turns within `least` of zero count as zero: segments on one line meet where their spans
-    // along it overlap, and a touch counts as meeting (only a clear miss is a miss).
-    let sign = |x: f64| {
-        if x > least {
-            1
-        } else if x < -least {
-            -1
-        } else {
-            0
-        }
-    };
-    let meet = |a: (f64, f64), b: (f64, f64), c: (f64, f64), d: (f64, f64)| {
-        let (t1, t2) = (sign(turn(a, b, c)), sign(turn(a, b, d)));
-        let (t3, t4) = (sign(turn(c, d, a)), sign(turn(c, d, b)));
-        if t1 * t2 > 0 || t3 * t4 > 0 {
-            return false;
-        }
-        if t1 == 0 && t2 == 0 && t3 == 0 && t4 == 0 {
-            let dir = (b.0 - a.0, b.1 - a.1);
-            let at = |p: (f64, f64)| (p.0 - a.0) * dir.0 + (p.1 - a.1) * dir.1;
-            let (c0, c1) = (at(c), at(d));
-            let len = at(b);
-            return c0.max(c1) >= 0.0 && c0.min(c1) <= len;
-        }
-        true
-    };
-    for a in 0..m {
-        for b in a + 2..m {
-            if a == 0 && b == m - 1 {
-                continue;
-            }
-            if meet(
-                outline[a],
-                outline[(a + 1) % m],
-                outline[b],
-                outline[(b + 1) % m],
-            ) {
-                return false;
-            }
-        }
-    }
-    true
+    outline_meets_itself(&outline, least).is_none()
 }
 
 /// Where a tessellation passes through itself: its pairs of faces that cross
