@@ -52,7 +52,8 @@ fn succeeds(o: Output) -> (String, String) {
 }
 
 fn tmp(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("prism-cli-{}", std::process::id()));
+    // In target/tmp, each name overwritten by the next run (not left in the system's /tmp).
+    let d = Path::new(env!("CARGO_TARGET_TMPDIR")).join("cli");
     std::fs::create_dir_all(&d).unwrap();
     d.join(name)
 }

@@ -31,18 +31,13 @@ fn window_command() -> Command {
 }
 
 fn screenshot(name: &str, args: &[&str]) -> image::RgbaImage {
-    let out: PathBuf =
-        std::env::temp_dir().join(format!("prism-gui-{}-{name}.png", std::process::id()));
-    let runtime = std::env::temp_dir().join(format!("prism-xdg-{}", std::process::id()));
-    std::fs::create_dir_all(&runtime).unwrap();
-    #[cfg(unix)]
-    {
-        use std::os::unix::fs::PermissionsExt;
-        std::fs::set_permissions(&runtime, std::fs::Permissions::from_mode(0o700)).unwrap();
-    }
+    // The last run's screenshots stay in target/tmp to be looked at.
+    let out: PathBuf = Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("gui-{name}.png"));
+    // A private runtime folder (tempfile makes it 0700), removed when the window has closed.
+    let runtime = tempfile::tempdir().unwrap();
     let mut cmd = window_command();
     if std::env::var_os("XDG_RUNTIME_DIR").is_none() {
-        cmd.env("XDG_RUNTIME_DIR", &runtime);
+        cmd.env("XDG_RUNTIME_DIR", runtime.path());
     }
     let o = cmd
         .args(["--screenshot", out.to_str().unwrap()])
@@ -145,12 +140,9 @@ fn the_curves_tab_draws_curves_and_the_curvature_plot() {
 }
 
 /// A `.prism.json` written by `prism COMMAND INPUT -o …` (a skin or envelope block with its
-/// mesh), in the temporary folder.
+/// mesh), in target/tmp.
 fn document_by(command: &str, input: &str, name: &str) -> std::path::PathBuf {
-    let doc = std::env::temp_dir().join(format!(
-        "prism-gui-{}-{name}.prism.json",
-        std::process::id()
-    ));
+    let doc = Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("gui-{name}.prism.json"));
     let o = Command::new(env!("CARGO_BIN_EXE_prism"))
         .args([command, input, "-o", doc.to_str().unwrap()])
         .current_dir(Path::new(env!("CARGO_MANIFEST_DIR")).join("../.."))

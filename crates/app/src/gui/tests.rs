@@ -157,7 +157,8 @@ fn the_new_user_walk_through() {
     assert_eq!(a.model.views.len(), 1);
 
     // Save and reopen.
-    let path = std::env::temp_dir().join(format!("prism-walk-{}.prism.json", std::process::id()));
+    let scratch = tempfile::tempdir().unwrap();
+    let path = scratch.path().join("walk.prism.json");
     a.save_to(&path).unwrap();
     let mut b = opened(&path);
     assert_eq!(b.doc.state().pipelines[0], a.doc.state().pipelines[0]);
@@ -388,7 +389,8 @@ fn bundled_samples_open_and_bad_files_say_why() {
         a.wait_idle();
         assert!(a.doc.state().mesh.num_faces() > 0, "sample {k}");
     }
-    let bad = std::env::temp_dir().join(format!("prism-bad-{}.obj", std::process::id()));
+    let scratch = tempfile::tempdir().unwrap();
+    let bad = scratch.path().join("bad.obj");
     std::fs::write(&bad, "v 0 0 0\nv 1 0 0\nv nan 1 0\nf 1 2 3\n").unwrap();
     let faces = a.doc.state().mesh.num_faces();
     a.run(Command::Open(bad.clone()));
@@ -412,7 +414,7 @@ fn bundled_samples_open_and_bad_files_say_why() {
     a.wait_idle();
     assert!(a.doc.state().mesh.num_faces() > 0);
     // A step's error about the opened OBJ names its faces as the file does.
-    let twice = std::env::temp_dir().join(format!("prism-twice-{}.obj", std::process::id()));
+    let twice = scratch.path().join("twice.obj");
     let tet = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n";
     std::fs::write(&twice, format!("{tet}f 1 2 3\nf 1 2 4\nf 2 3 4\nf 3 1 4\n")).unwrap();
     a.run(Command::Open(twice.clone()));
@@ -423,7 +425,6 @@ fn bundled_samples_open_and_bad_files_say_why() {
         error.contains("edge 1-2 is traversed 1→2 by both face 1 (line 5) and face 2 (line 6)"),
         "{error}"
     );
-    std::fs::remove_file(&twice).ok();
 }
 
 #[test]

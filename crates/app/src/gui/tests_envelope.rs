@@ -113,8 +113,8 @@ fn the_envelope_tab_places_edits_undoes_saves_and_exports_an_envelope() {
     h.state_mut().envelope.mouse = envelope::Mouse::Orbit;
 
     // Saved with the document and reopened; exported as STL from the tab.
-    let dir = std::env::temp_dir().join(format!("prism-envelope-tab-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let scratch = tempfile::tempdir().unwrap();
+    let dir = scratch.path();
     let doc = dir.join("tet.prism.json");
     h.state_mut().save_to(&doc).unwrap();
     let stl = dir.join("tet.stl");

@@ -106,8 +106,8 @@ fn the_skin_tab_places_edits_undoes_saves_and_exports_a_skin() {
     h.state_mut().skin.mouse = skin::Mouse::Orbit;
 
     // Saved with the document and reopened; exported as STL from the tab.
-    let dir = std::env::temp_dir().join(format!("prism-skin-tab-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let scratch = tempfile::tempdir().unwrap();
+    let dir = scratch.path();
     let doc = dir.join("spout.prism.json");
     h.state_mut().save_to(&doc).unwrap();
     let stl = dir.join("spout.stl");

@@ -153,15 +153,10 @@ mod tests {
     use super::*;
     use std::os::unix::fs::PermissionsExt;
 
-    fn dir() -> PathBuf {
-        let d = std::env::temp_dir().join(format!("prism-atomic-{}", std::process::id()));
-        std::fs::create_dir_all(&d).unwrap();
-        d
-    }
-
     #[test]
     fn permissions_links_read_only_and_stale_temporaries() {
-        let d = dir();
+        let scratch = tempfile::tempdir().unwrap();
+        let d = scratch.path();
         // Permission bits are kept.
         let f = d.join("private.obj");
         std::fs::write(&f, "old").unwrap();

@@ -677,9 +677,8 @@ mod tests {
     /// A cancelled read stops with `Cancelled`; progress runs to 1 on a whole read.
     #[test]
     fn reading_reports_progress_and_stops_when_cancelled() {
-        let dir = std::env::temp_dir().join(format!("prism-progress-{}", std::process::id()));
-        std::fs::create_dir_all(&dir).unwrap();
-        let path = dir.join("cube.obj");
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("cube.obj");
         write_obj(
             &path,
             &primitives::cuboid(DVec3::ZERO, DVec3::ONE),
@@ -702,7 +701,6 @@ mod tests {
         let bytes = std::fs::read(&path).unwrap();
         let e = parse_in(&path, &bytes, &progress, 8).unwrap_err();
         assert!(matches!(e, IoError::Cancelled { .. }), "{e}");
-        std::fs::remove_dir_all(&dir).unwrap();
     }
 
     /// Coordinates are written as the shortest decimal that reads back to the same double:
