@@ -295,6 +295,18 @@ fn the_listing_order_of_many_does_not_matter() {
             )),
             0.1,
         ),
+        // Short legs given back around a fold (envelope.md, "Short legs given back where a
+        // patch folds"): the curves chosen do not depend on the listing either.
+        (
+            bundled(include_str!("data/envelope/folding-heap.envelope.json")),
+            0.1,
+        ),
+        (
+            bundled(include_str!(
+                "data/envelope/hooked-needle-heap.envelope.json"
+            )),
+            0.1,
+        ),
     ] {
         let one = build(scene.clone(), t).tessellate(4).unwrap();
         let mut turned = scene.clone();
