@@ -192,16 +192,13 @@ fn projects_one_to_one(g: &[DVec3], k: usize) -> bool {
     };
     let e1 = n.any_orthonormal_vector();
     let e2 = n.cross(e1);
-    let flat: Vec<(f64, f64)> = g.iter().map(|p| (p.dot(e1), p.dot(e2))).collect();
-    let (lo, hi) = flat.iter().fold(
-        ((f64::MAX, f64::MAX), (f64::MIN, f64::MIN)),
-        |(lo, hi), &(x, y)| ((lo.0.min(x), lo.1.min(y)), (hi.0.max(x), hi.1.max(y))),
-    );
-    let size = (hi.0 - lo.0).max(hi.1 - lo.1);
+    let flat: Vec<DVec2> = g.iter().map(|p| DVec2::new(p.dot(e1), p.dot(e2))).collect();
+    let (lo, hi) = flat.iter().fold((DVec2::MAX, DVec2::MIN), |(lo, hi), &p| {
+        (lo.min(p), hi.max(p))
+    });
+    let size = (hi - lo).max_element();
     // Orientation of (a, b, c): twice the signed area.
-    let turn = |a: (f64, f64), b: (f64, f64), c: (f64, f64)| {
-        (b.0 - a.0) * (c.1 - a.1) - (b.1 - a.1) * (c.0 - a.0)
-    };
+    let turn = |a: DVec2, b: DVec2, c: DVec2| (b - a).perp_dot(c - a);
     let least = 1e-12 * size * size;
     for j in 0..k {
         for i in 0..k {
@@ -224,7 +221,6 @@ fn projects_one_to_one(g: &[DVec3], k: usize) -> bool {
         .chain((0..k).map(|j| flat[idx(k, j)]))
         .chain((0..k).map(|i| flat[idx(k - i, k)]))
         .chain((0..k).map(|j| flat[idx(0, k - j)]))
-        .map(|(x, y)| DVec2::new(x, y))
         .collect();
     outline_meets_itself(&outline, least).is_none()
 }
