@@ -466,9 +466,7 @@ fn remembered_settings_reopen_the_last_file_with_the_display_options() {
 fn the_panels_buttons_and_keys_drive_the_document() {
     use egui_kittest::Harness;
     use egui_kittest::kittest::Queryable;
-    let mut h = Harness::builder()
-        .with_size(egui::vec2(1280.0, 800.0))
-        .build_ui_state(|ui, app: &mut PrismApp| app.frame_ui(ui), app());
+    let mut h = harness(app());
     let settle = |h: &mut Harness<'_, PrismApp>| {
         for _ in 0..3 {
             h.step();
@@ -630,6 +628,14 @@ fn a_big_level_gets_its_scene_on_a_thread_and_the_old_one_stays_meanwhile() {
 }
 
 /// A few frames with the background work finished between them (the harness tests).
+/// The app `a` in a 1280 × 800 window of egui_kittest, its panels driven as a user's clicks
+/// and keys would.
+pub(super) fn harness(a: PrismApp) -> Harness<'static, PrismApp> {
+    Harness::builder()
+        .with_size(egui::vec2(1280.0, 800.0))
+        .build_ui_state(|ui, app: &mut PrismApp| app.frame_ui(ui), a)
+}
+
 pub(super) fn settle(h: &mut Harness<'_, PrismApp>) {
     for _ in 0..3 {
         h.step();
@@ -664,9 +670,7 @@ pub(super) fn drag_right(h: &mut Harness<'_, PrismApp>, at: egui::Pos2, steps: &
 #[test]
 fn the_curve_scheme_menu_uses_the_cli_names_and_keeps_its_place() {
     use egui_kittest::kittest::Queryable;
-    let mut h = Harness::builder()
-        .with_size(egui::vec2(1280.0, 800.0))
-        .build_ui_state(|ui, app: &mut PrismApp| app.frame_ui(ui), app());
+    let mut h = harness(app());
     settle(&mut h);
     h.get_by_label("Curves").click();
     settle(&mut h);
@@ -725,9 +729,7 @@ fn every_disabled_control_says_why() {
 /// opened one (the Computer room's framing around the small tripod).
 #[test]
 fn undoing_an_open_frames_the_document_it_brings_back() {
-    let mut h = Harness::builder()
-        .with_size(egui::vec2(1280.0, 800.0))
-        .build_ui_state(|ui, app: &mut PrismApp| app.frame_ui(ui), app());
+    let mut h = harness(app());
     settle(&mut h);
     let tripod = h.state().model.camera.distance;
     let room = SAMPLES_FILES
@@ -809,9 +811,7 @@ fn each_compare_view_frames_its_own_model() {
 /// step, go back or toggle the display. Keys typed after that work again.
 #[test]
 fn keys_typed_while_a_file_dialog_was_open_are_dropped() {
-    let mut h = Harness::builder()
-        .with_size(egui::vec2(1280.0, 800.0))
-        .build_ui_state(|ui, app: &mut PrismApp| app.frame_ui(ui), app());
+    let mut h = harness(app());
     settle(&mut h);
     let wire = h.state().model.display.wireframe;
     // What the dialog functions mark when rfd returns (a real dialog needs a desktop).
@@ -873,9 +873,7 @@ fn the_model_tab_fits_1280_by_800() {
         });
     }
     a.model.tool = Tool::Edges;
-    let mut h = Harness::builder()
-        .with_size(egui::vec2(1280.0, 800.0))
-        .build_ui_state(|ui, app: &mut PrismApp| app.frame_ui(ui), a);
+    let mut h = harness(a);
     settle(&mut h);
     let window = egui::Rect::from_min_size(egui::Pos2::ZERO, egui::vec2(1280.0, 800.0));
     let inside = |h: &Harness<'_, PrismApp>, label: &str| {

@@ -78,7 +78,6 @@ fn a_discarded_copy_is_gone() {
 /// The offer is a window with two buttons; clicking "Restore it" restores.
 #[test]
 fn the_offer_window_restores_on_click() {
-    use egui_kittest::Harness;
     use egui_kittest::kittest::Queryable;
     let dir = scratch("window");
     let mut a = app_in(&dir);
@@ -86,9 +85,7 @@ fn the_offer_window_restores_on_click() {
     a.autosave.tick(&a.doc, true).unwrap();
     let work = a.doc.state().curve.clone();
     drop(a);
-    let mut h = Harness::builder()
-        .with_size(egui::vec2(1280.0, 800.0))
-        .build_ui_state(|ui, app: &mut PrismApp| app.frame_ui(ui), app_in(&dir));
+    let mut h = super::tests::harness(app_in(&dir));
     super::tests::settle(&mut h);
     h.get_by_label("Restore it").click();
     super::tests::settle(&mut h);

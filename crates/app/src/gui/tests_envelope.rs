@@ -4,7 +4,7 @@
 //! scene saved with the document and reopened, exported, and undone across tabs.
 
 use super::command::Edit;
-use super::tests::{app, drag_right, settle};
+use super::tests::{app, drag_right, harness, settle};
 use super::*;
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
@@ -15,9 +15,7 @@ fn scene(h: &Harness<'_, PrismApp>) -> Option<prism_geom::freeform::envelope::En
 
 #[test]
 fn the_envelope_tab_places_edits_undoes_saves_and_exports_an_envelope() {
-    let mut h = Harness::builder()
-        .with_size(egui::vec2(1280.0, 800.0))
-        .build_ui_state(|ui, app: &mut PrismApp| app.frame_ui(ui), app());
+    let mut h = harness(app());
     settle(&mut h);
     h.get_by_label("Envelope").click();
     settle(&mut h);
@@ -292,9 +290,7 @@ fn a_bare_scene_file_opens_on_its_tab() {
 /// quads as it opened). The Skin tab's resolution likewise.
 #[test]
 fn values_outside_the_sliders_are_kept() {
-    let mut h = Harness::builder()
-        .with_size(egui::vec2(1280.0, 800.0))
-        .build_ui_state(|ui, app: &mut PrismApp| app.frame_ui(ui), app());
+    let mut h = harness(app());
     settle(&mut h);
     h.get_by_label("Envelope").click();
     settle(&mut h);

@@ -2,9 +2,8 @@
 //! while it reads, the document comes when it is done, and Cancel leaves the document as it
 //! was (the reader stops at its next block).
 
-use super::tests::{app, settle};
+use super::tests::{app, harness, settle};
 use super::*;
-use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
 
 fn scratch(name: &str) -> std::path::PathBuf {
@@ -12,12 +11,6 @@ fn scratch(name: &str) -> std::path::PathBuf {
     let _ = std::fs::remove_dir_all(&d);
     std::fs::create_dir_all(&d).unwrap();
     d
-}
-
-fn harness(a: PrismApp) -> Harness<'static, PrismApp> {
-    Harness::builder()
-        .with_size(egui::vec2(1280.0, 800.0))
-        .build_ui_state(|ui, app: &mut PrismApp| app.frame_ui(ui), a)
 }
 
 #[test]

@@ -4,7 +4,7 @@
 //! with the document and reopened, and exported.
 
 use super::command::Edit;
-use super::tests::{app, drag_right, settle};
+use super::tests::{app, drag_right, harness, settle};
 use super::*;
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
@@ -20,9 +20,7 @@ fn sections(h: &Harness<'_, PrismApp>) -> usize {
 
 /// The app at 1280 × 800 on the Skin tab, with the spout placed from the tab's button.
 fn spout_in_the_skin_tab() -> Harness<'static, PrismApp> {
-    let mut h = Harness::builder()
-        .with_size(egui::vec2(1280.0, 800.0))
-        .build_ui_state(|ui, app: &mut PrismApp| app.frame_ui(ui), app());
+    let mut h = harness(app());
     settle(&mut h);
     h.get_by_label("Skin").click();
     settle(&mut h);
