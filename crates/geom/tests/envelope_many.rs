@@ -1269,6 +1269,48 @@ fn a_patch_through_itself_is_found_whatever_its_sides() {
     }
 }
 
+/// Three heaps of the mixed survey whose tessellation crossed itself, though their surfaces do
+/// not: the border cells, which hold the other side's samples too, were left to the renderer's
+/// ear clipping, which took ears of three neighbouring border points (envelope.md,
+/// "Tessellation"). In heaps 600210 and 300013 at t = 0.16 a fusion strip's side is a piece of a
+/// silhouette curve ending at a T-point at 0.5000005 and 0.857143 of it, so the strip samples
+/// the curve a ten-millionth from where the face beside it does, and the sliver of two such
+/// samples had a normal of noise (1–3 and 1–5 pairs at K = 16 to 32); in heap 300332 at t = 3
+/// the sliver of three samples of a bent curve stood in its osculating plane, across the face
+/// beside it (3–7 pairs at K = 8 and 16). Each border cell is a fan from its inner corners
+/// now: no crossing, and every face a quad or a triangle with a point inside its patch.
+#[test]
+fn border_cells_are_fans_from_their_inner_corners() {
+    use prism_geom::freeform::envelope::folds::crossings;
+    for (scene, ks) in [
+        (
+            include_str!("data/envelope/t-point-samples-heap.envelope.json"),
+            &[8, 16, 32][..],
+        ),
+        (
+            include_str!("data/envelope/t-point-samples-heap-of-three.envelope.json"),
+            &[8, 16, 32],
+        ),
+        (
+            include_str!("data/envelope/border-sliver-heap.envelope.json"),
+            &[8, 16],
+        ),
+    ] {
+        let spec: EnvelopeSpec = serde_json::from_str(scene).unwrap();
+        let e = fold_free_at(&spec, spec.t);
+        for &k in ks {
+            let m = e.tessellate(k).unwrap();
+            closed(&m).unwrap();
+            assert!(
+                (0..m.num_faces()).all(|f| m.face_corners(f).len() <= 4),
+                "t = {}, K = {k}",
+                spec.t
+            );
+            assert!(crossings(&m).is_empty(), "t = {}, K = {k}", spec.t);
+        }
+    }
+}
+
 /// Four cubes placed apart (the equal-cube survey's `APART=1` scene 32) at t = 0.1: a triangle
 /// patched as one quad with its tip collapsed was then tried split round an inserted point as a
 /// quad with a short side, the insertion curve to the collapsed side's middle ended at the tip
@@ -1387,13 +1429,15 @@ fn has_nested_pair(prims: &[PrimitiveInput]) -> bool {
 
 /// An ignored survey of heaps of 2–6 primitives of every library shape (envelope.md, "Left"):
 /// per t, the heaps with a folded cell ([`Envelope::folds`]), with faces passing through each
-/// other at K = 8, and errors. `HEAPS` heaps per count (default 60), `TS` the t values
-/// (default "1"); each failing heap is printed with its seed so that it can be rebuilt, and
+/// other at K quads a patch side (`K`, default 8), and errors. `HEAPS` heaps per count (default
+/// 60), `TS` the t values (default "1"); each failing heap is printed with its seed so that it can be rebuilt, and
 /// written as `heap-SEED.envelope.json` into the folder `DUMP` when it is set.
 #[test]
 #[ignore]
 fn survey_mixed_heaps() {
     let heaps: usize = std::env::var("HEAPS").map_or(60, |v| v.parse().unwrap());
+    // The tessellation checked for crossing itself, K quads a patch side.
+    let k: usize = std::env::var("K").map_or(8, |v| v.parse().unwrap());
     let ts: Vec<f64> = std::env::var("TS").map_or(vec![1.0], |v| {
         v.split(',').map(|x| x.parse().unwrap()).collect()
     });
@@ -1433,7 +1477,7 @@ fn survey_mixed_heaps() {
                                 e.fold_warning(&folds).unwrap_or_default()
                             );
                         }
-                        let m = e.tessellate(8).unwrap();
+                        let m = e.tessellate(k).unwrap();
                         let pts = prism_geom::freeform::envelope::folds::crossings(&m);
                         if !pts.is_empty() {
                             crossed += 1;

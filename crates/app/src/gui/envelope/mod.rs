@@ -450,7 +450,7 @@ impl EnvelopeTab {
         match &b.result {
             Ok((e, m)) => {
                 ui.label(format!(
-                    "{} primitive(s), {} regions, {} patches, {} quads",
+                    "{} primitive(s), {} regions, {} patches, {} faces",
                     e.primitives.len(),
                     e.regions,
                     e.patches.len(),

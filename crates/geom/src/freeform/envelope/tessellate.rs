@@ -6,9 +6,11 @@
 //! every patch side on it (parameters equal to 1e-12 merged), evaluated once on the curve
 //! itself; network vertices are shared by every curve through them. Each patch keeps its own
 //! K + 1 samples as its grid's border row and puts the other side's extra samples into its
-//! border cells, which become polygons: every mesh edge is in exactly two faces, so the mesh
-//! is closed with no T-junction crack. A needle's collapsed tip (a curve of one point) gives
-//! all its samples the tip's vertex, and the cells there drop the repeated corner (triangles).
+//! border cells, which become fans of triangles from the cell's corners inside the patch
+//! (`push_border_cell`): every mesh edge is in exactly two faces, so the mesh is closed with
+//! no T-junction crack, and no triangle is made of border points alone. A needle's collapsed
+//! tip (a curve of one point) gives all its samples the tip's vertex, and the cells there drop
+//! the repeated corner (triangles).
 
 use super::network::Network;
 use super::patches::EnvelopePatch;
@@ -87,6 +89,7 @@ pub fn tessellate(net: &Network, patches: &[EnvelopePatch], k: usize) -> PolyMes
     };
     let mut mesh = PolyMesh::new();
     let mut poly = Vec::with_capacity(4 * k);
+    let mut tris = Vec::with_capacity(4 * k);
     for (p, inner) in patches.iter().zip(grids) {
         let n = k + 1;
         let mut grid = vec![0u32; n * n];
@@ -130,7 +133,11 @@ pub fn tessellate(net: &Network, patches: &[EnvelopePatch], k: usize) -> PolyMes
                     }
                 };
                 poly.clear();
+                let mut inner = [None; 2];
                 for (e, &(ci, cj)) in corners.iter().enumerate() {
+                    if ci > 0 && ci < k && cj > 0 && cj < k {
+                        inner[usize::from(inner[0].is_some())] = Some(grid[at(ci, cj)]);
+                    }
                     poly.push(grid[at(ci, cj)]);
                     if let Some((side, a, b)) = on_border(e) {
                         let ps = &p.sides[side];
@@ -142,7 +149,9 @@ pub fn tessellate(net: &Network, patches: &[EnvelopePatch], k: usize) -> PolyMes
                 if poly.len() > 1 && poly[0] == poly[poly.len() - 1] {
                     poly.pop();
                 }
-                if poly.len() >= 3 {
+                if poly.len() > 4 && inner[0].is_some() {
+                    push_border_cell(&mut mesh, &positions, &poly, inner, &mut tris);
+                } else if poly.len() >= 3 {
                     mesh.push_polygon(&poly);
                 }
             }
@@ -150,4 +159,55 @@ pub fn tessellate(net: &Network, patches: &[EnvelopePatch], k: usize) -> PolyMes
     }
     mesh.positions = positions;
     mesh
+}
+
+/// A border cell with the other side's samples on its border (`poly`, counter-clockwise, at
+/// least five points), as triangles that each hold a grid point inside the patch (`inner`: one
+/// or two of the cell's corners): a fan from the inner corner, or with two, a fan from each
+/// over its half of the border run and the triangle joining them at the run's point nearest
+/// its middle. Left as one polygon, the cell's triangles were whatever the renderer's ear
+/// clipping found in the cell's mean plane, and it took ears of three neighbouring border
+/// points: a sliver in the border curve's osculating plane, which can stand across the
+/// surface (a fusion strip's first row "through" the face beside it, heap 300332 at t = 3), or
+/// of two samples a ten-millionth apart, whose normal is noise (heaps 300013 and 600210 at
+/// t = 0.16, where a T-point's piece of a curve samples it almost where the whole curve does).
+fn push_border_cell(
+    mesh: &mut PolyMesh,
+    positions: &[DVec3],
+    poly: &[u32],
+    inner: [Option<u32>; 2],
+    tris: &mut Vec<[u32; 3]>,
+) {
+    let n = poly.len();
+    let is_inner = |v: u32| inner.contains(&Some(v));
+    // Start at the inner corner the border run follows: poly = a, p₀, …, p_m [, b].
+    let Some(start) = (0..n).find(|&i| is_inner(poly[i]) && !is_inner(poly[(i + 1) % n])) else {
+        mesh.push_polygon(poly);
+        return;
+    };
+    let at = |i: usize| poly[(start + i) % n];
+    let a = at(0);
+    let b = is_inner(at(n - 1)).then(|| at(n - 1));
+    let run: Vec<u32> = (1..n).map(at).take_while(|&v| !is_inner(v)).collect();
+    tris.clear();
+    match b {
+        None => tris.extend(run.windows(2).map(|w| [a, w[0], w[1]])),
+        Some(b) => {
+            let pos = |v: u32| positions[v as usize];
+            let middle = (pos(run[0]) + pos(run[run.len() - 1])) * 0.5;
+            let mid = (1..run.len() - 1)
+                .min_by(|&i, &j| {
+                    pos(run[i])
+                        .distance_squared(middle)
+                        .total_cmp(&pos(run[j]).distance_squared(middle))
+                })
+                .unwrap_or(0);
+            tris.extend(run[..=mid].windows(2).map(|w| [a, w[0], w[1]]));
+            tris.push([a, run[mid], b]);
+            tris.extend(run[mid..].windows(2).map(|w| [w[0], w[1], b]));
+        }
+    }
+    for t in tris.iter() {
+        mesh.push_polygon(t);
+    }
 }
