@@ -1311,6 +1311,31 @@ fn border_cells_are_fans_from_their_inner_corners() {
     }
 }
 
+/// Two heaps of the mixed survey at t = 3 (300040, and the pair 200274) whose tessellation
+/// crossed itself at K = 16 to 32 and not at 8: a primitive face's sub-quad beside a silhouette
+/// piece 0.007 long (6, 23 pairs at K = 16, 32), and one beside an edge piece of weights 1,
+/// 6.54, 1.94, 1 (3, 10), each bulging through itself between the 8 × 8 samples its check
+/// takes. A patch whose 8 × 8 grid lines turn by more than 20° between samples is checked at
+/// 16 × 16 too (envelope.md, "Patches through themselves"): no crossing at any K, no fold.
+#[test]
+fn a_patch_bending_between_its_samples_is_checked_finer() {
+    use prism_geom::freeform::envelope::folds::crossings;
+    for scene in [
+        include_str!("data/envelope/bulging-between-samples-heap.envelope.json"),
+        include_str!("data/envelope/bulging-between-samples-pair.envelope.json"),
+    ] {
+        let spec: EnvelopeSpec = serde_json::from_str(scene).unwrap();
+        let e = fold_free_at(&spec, spec.t);
+        for k in [8, 16, 24, 32] {
+            assert!(
+                crossings(&e.tessellate(k).unwrap()).is_empty(),
+                "{} primitives, K = {k}",
+                spec.primitives.len()
+            );
+        }
+    }
+}
+
 /// Four cubes placed apart (the equal-cube survey's `APART=1` scene 32) at t = 0.1: a triangle
 /// patched as one quad with its tip collapsed was then tried split round an inserted point as a
 /// quad with a short side, the insertion curve to the collapsed side's middle ended at the tip

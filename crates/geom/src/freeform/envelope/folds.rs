@@ -171,6 +171,29 @@ fn pairwise_crossings(g: &[DVec3], k: usize) -> usize {
     pairs
 }
 
+/// The largest angle (radians) between consecutive segments of the lines of the grid `g` (`k`
+/// cells a side), both ways: where it is large, the surface bends much between the samples, and
+/// may pass through itself between them.
+pub(crate) fn largest_turn(g: &[DVec3], k: usize) -> f64 {
+    let idx = |i: usize, j: usize| i + (k + 1) * j;
+    let mut worst = 0.0f64;
+    for j in 0..=k {
+        for i in 1..k {
+            let (a, b) = (
+                g[idx(i, j)] - g[idx(i - 1, j)],
+                g[idx(i + 1, j)] - g[idx(i, j)],
+            );
+            worst = worst.max(a.angle_between(b));
+            let (a, b) = (
+                g[idx(j, i)] - g[idx(j, i - 1)],
+                g[idx(j, i + 1)] - g[idx(j, i)],
+            );
+            worst = worst.max(a.angle_between(b));
+        }
+    }
+    worst
+}
+
 /// Whether the grid `g` (`k` cells a side, each cut along its diagonal from (i, j) as
 /// [`grid_crossings`] cuts it), seen along its mean normal, is one to one: every triangle turns
 /// the same way as the mean normal and the outline crosses and touches itself nowhere. A

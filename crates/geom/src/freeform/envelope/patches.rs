@@ -55,7 +55,7 @@
 
 use super::coons::{Coons, Side};
 use super::edges::curved_edge;
-use super::folds::{FOLD_CELLS, Fold, grid_crossings, grid_folds, self_crossings};
+use super::folds::{FOLD_CELLS, Fold, grid_crossings, grid_folds, largest_turn, self_crossings};
 use super::network::{CurveKind, Network, PatchSide, Region, RegionKind};
 use super::primitive::Primitive;
 use crate::freeform::bezier::RationalBezier;
@@ -939,12 +939,18 @@ pub fn build(net: &mut Network, prims: &[Primitive]) -> (Vec<EnvelopePatch>, Vec
     (out, folded)
 }
 
+/// A patch whose 8 × 8 grid lines turn by more than this (radians, 20°) from one segment to the
+/// next is checked for passing through itself at 16 × 16 too ([`unfolded`]; envelope.md,
+/// "Patches through themselves").
+const TURN_CHECKED_FINER: f64 = 20.0 * std::f64::consts::PI / 180.0;
+
 /// The β tried on a folded patch's sides ([`unfolded`], [`Side::scaled`]): the cross
 /// derivative's middle drawn in (β > 0) or pushed out (β < 0).
 const SQUEEZES: [f64; 8] = [0.25, 0.5, 0.75, 0.9, -0.25, -0.5, -1.0, -2.0];
 
 /// `p`, or where it folds (as the report samples it, or `cells` a side) or passes through
-/// itself ([`super::folds::self_crossings`]), the same patch with its sides'
+/// itself ([`super::folds::self_crossings`] at 8 cells a side, and at 16 where the 8 × 8 grid
+/// lines turn by more than [`TURN_CHECKED_FINER`]), the same patch with its sides'
 /// cross derivatives scaled between their corners (envelope.md, "Folded patches: cross
 /// derivatives rescaled"); with its folded cells as the report samples them. The scale is 1 at
 /// the corners and positive, so the fits there, the normal along every border and G1 with the
@@ -958,7 +964,11 @@ fn unfolded(net: &Network, p: EnvelopePatch, cells: usize) -> (EnvelopePatch, Ve
     let folds = |p: &EnvelopePatch, k: usize| super::folds::folds(net, std::slice::from_ref(p), k);
     let grid = p.coons.grid(FOLD_CELLS);
     let reported = grid_folds(net, &p, 0, &grid, FOLD_CELLS);
-    let crossing = grid_crossings(&grid, FOLD_CELLS) > 0;
+    // A patch whose grid lines turn sharply between the samples may bulge through itself
+    // between them: checked at twice as many.
+    let crossing = grid_crossings(&grid, FOLD_CELLS) > 0
+        || (largest_turn(&grid, FOLD_CELLS) > TURN_CHECKED_FINER
+            && self_crossings(&p, 2 * FOLD_CELLS) > 0);
     if !crossing && reported.is_empty() && (cells == FOLD_CELLS || folds(&p, cells).is_empty()) {
         return (p, reported);
     }
