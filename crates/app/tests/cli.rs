@@ -1019,7 +1019,7 @@ fn envelope_builds_the_bundled_scenes_and_names_bad_ones() {
         "{so}"
     );
     assert!(so.contains(" folded=0 "), "{so}");
-    // Down to t = 0.1, where the tab's slider stops, nothing folds; in a heap of three
+    // Down to t = 0.1, where the tab's slider stops, nothing folds; in a heap of six
     // primitives at t = 0.05 a few cells of a primitive's face do: counted, and the first
     // named on stderr (exit 0).
     let (_, so, _) = succeeds_to(
@@ -1044,11 +1044,11 @@ fn envelope_builds_the_bundled_scenes_and_names_bad_ones() {
         se.contains(&format!(
             "warning: {folded} of {} sampled cells fold",
             64 * patches
-        )) && se.contains("the first on primitive 2 face 4"),
+        )) && se.contains("the first on primitive 4 face 0"),
         "{se}"
     );
     assert!(so.contains(" crossings=0 "), "{so}");
-    // A heap of four at t = 0.05 whose surface passes through itself: counted, and where the
+    // A heap of six at t = 0.05 whose surface passes through itself: counted, and where the
     // first pair lies said on stderr (exit 0).
     let (_, so, se) = succeeds_to(
         "crossing.obj",

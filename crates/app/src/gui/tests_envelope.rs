@@ -189,7 +189,7 @@ fn the_t_sweep_shows_the_three_t() {
 }
 
 /// Folds are shown in the summary: none on the seven-primitive sample at its own t, at 0.5 or
-/// at 0.1, where the slider stops; a heap of three primitives has cells of a primitive's face
+/// at 0.1, where the slider stops; a heap of six primitives has cells of a primitive's face
 /// turned by more than 90° at t = 0.05 (below the slider; opened from a file), counted, with
 /// where the first lies.
 #[test]
@@ -220,14 +220,14 @@ fn the_summary_counts_folds() {
             Some((n, text)) => {
                 assert!(folded && *n > 0);
                 assert_eq!(b.fold_points.len(), *n);
-                assert!(text.contains("the first on primitive 2 face 4"), "{text}");
+                assert!(text.contains("the first on primitive 4 face 0"), "{text}");
             }
             None => assert!(!folded && b.fold_points.is_empty()),
         }
     }
 }
 
-/// Faces that pass through each other (a heap of four at t = 0.05) are found on a thread after
+/// Faces that pass through each other (a heap of six at t = 0.05) are found on a thread after
 /// the build, counted in the summary with where the first lies, and marked; the
 /// seven-primitive sample has none.
 #[test]

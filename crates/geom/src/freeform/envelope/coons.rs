@@ -14,6 +14,7 @@
 //! (s = v), side 2 v = 1 (s = 1 − u), side 3 u = 0 (s = 1 − v); each side's X points into
 //! the patch.
 
+use super::reparam::Reparam;
 use crate::freeform::bezier::RationalBezier;
 use crate::freeform::g1::fit;
 use glam::DVec3;
@@ -48,6 +49,8 @@ pub struct Side {
     /// β of the cross derivative's scale `σ(s) = 1 − 4β·s(1 − s)` between the corners
     /// ([`Side::scaled`]; 0: the fitted one as is).
     pub squeeze: f64,
+    /// The side run along its curve by φ, `τ = φ(s)` ([`Side::run_by`]; none: τ = s).
+    pub reparam: Option<Reparam>,
 }
 
 impl Side {
@@ -70,6 +73,7 @@ impl Side {
             direct: 0.0,
             collapsed: false,
             squeeze: 0.0,
+            reparam: None,
         }
     }
 
@@ -88,6 +92,7 @@ impl Side {
             direct: 0.0,
             collapsed: true,
             squeeze: 0.0,
+            reparam: None,
         }
     }
 
@@ -110,6 +115,67 @@ impl Side {
     pub fn scaled(mut self, beta: f64) -> Side {
         self.squeeze = beta;
         self
+    }
+
+    /// This side run along its curve by `reparam` (envelope.md, "Sides run by arc length"),
+    /// its cross derivative fitted again to the legs `a0` and `a1` (the neighbouring sides'
+    /// derivatives, which change with their own runs): the basis is taken at the same curve
+    /// point, so G1 with the patch across holds.
+    pub fn run_by(mut self, reparam: Reparam, a0: DVec3, a1: DVec3) -> Side {
+        if self.collapsed {
+            self.legs = (a0, a1);
+            return self;
+        }
+        self.reparam = Some(reparam);
+        self.refitted(a0, a1)
+    }
+
+    /// This side's cross derivative fitted again to the legs `a0` and `a1`, its run kept.
+    pub fn refitted(mut self, a0: DVec3, a1: DVec3) -> Side {
+        if self.collapsed {
+            self.legs = (a0, a1);
+            return self;
+        }
+        let (d0, d1) = (self.d1(0.0), self.d1(1.0));
+        let (k0, h0) = fit(a0, self.g.0, d0);
+        let (k1, h1) = fit(a1, self.g.1, d1);
+        self.k = (k0, k1);
+        self.h = (h0, h1);
+        self.speed = (d0.length(), d1.length());
+        self.legs = (a0, a1);
+        self
+    }
+
+    /// τ = φ(s) and φ′(s).
+    pub fn phi(&self, s: f64) -> (f64, f64) {
+        match &self.reparam {
+            Some(r) => r.at(s),
+            None => (s, 1.0),
+        }
+    }
+
+    /// The side's point at s.
+    pub fn point(&self, s: f64) -> DVec3 {
+        self.curve.eval(self.phi(s).0)
+    }
+
+    /// The side's derivative at s.
+    pub fn d1(&self, s: f64) -> DVec3 {
+        let (t, dt) = self.phi(s);
+        self.curve.derivatives(t).d1 * dt
+    }
+
+    /// The basis g at s and its s-derivative (linear in the curve's parameter).
+    fn basis(&self, s: f64) -> (DVec3, DVec3) {
+        let (t, dt) = self.phi(s);
+        (self.g.0.lerp(self.g.1, t), (self.g.1 - self.g.0) * dt)
+    }
+
+    /// The unit tangent at s and its s-derivative.
+    fn tangent(&self, s: f64) -> (DVec3, DVec3) {
+        let (t, dt) = self.phi(s);
+        let (d, dd) = unit_tangent(&self.curve, t);
+        (d, dd * dt)
     }
 
     /// The cross derivative and its s-derivative at s.
@@ -138,11 +204,11 @@ impl Side {
 
     /// The short-side form of the cross derivative ([`Side::short`]) and its s-derivative.
     fn short_cross(&self, s: f64) -> (DVec3, DVec3) {
-        let (t, dt) = unit_tangent(&self.curve, s);
+        let (t, dt) = self.tangent(s);
         if t == DVec3::ZERO {
             return (DVec3::ZERO, DVec3::ZERO);
         }
-        let (g, dg) = (self.g.0.lerp(self.g.1, s), self.g.1 - self.g.0);
+        let (g, dg) = self.basis(s);
         let (k, dk) = (self.k.0 + (self.k.1 - self.k.0) * s, self.k.1 - self.k.0);
         // The fitted part across the side, its length and direction.
         let g_across = g - g.dot(t) * t;
@@ -206,11 +272,10 @@ impl Side {
 
     /// `k g + a·unit(C′)` ([`Side::along`]) and its s-derivative.
     fn fitted_cross(&self, s: f64) -> (DVec3, DVec3) {
-        let g = self.g.0.lerp(self.g.1, s);
-        let dg = self.g.1 - self.g.0;
+        let (g, dg) = self.basis(s);
         let (phi, dphi) = self.k_share(s);
         let k = self.k.0 + (self.k.1 - self.k.0) * phi;
-        let (dir, ddir) = unit_tangent(&self.curve, s);
+        let (dir, ddir) = self.tangent(s);
         let (a, da) = self.along(s);
         let x = k * g + a * dir;
         let dx = (self.k.1 - self.k.0) * dphi * g + k * dg + da * dir + a * ddir;
@@ -272,10 +337,10 @@ type Line = [DVec3; 4];
 impl Coons {
     fn corners(&self) -> Corners {
         let [s0, s1, s2, s3] = &self.sides;
-        let p00 = s0.curve.eval(0.0);
-        let p10 = s1.curve.eval(0.0);
-        let p11 = s2.curve.eval(0.0);
-        let p01 = s3.curve.eval(0.0);
+        let p00 = s0.point(0.0);
+        let p10 = s1.point(0.0);
+        let p11 = s2.point(0.0);
+        let p01 = s3.point(0.0);
         let (x0a, dx0a) = s0.cross(0.0);
         let (x0b, dx0b) = s0.cross(1.0);
         let (x1a, dx1a) = s1.cross(0.0);
@@ -299,8 +364,8 @@ impl Coons {
     fn u_line(&self, u: f64) -> Line {
         let [s0, _, s2, _] = &self.sides;
         [
-            s0.curve.eval(u),
-            s2.curve.eval(1.0 - u),
+            s0.point(u),
+            s2.point(1.0 - u),
             s0.cross(u).0,
             -s2.cross(1.0 - u).0,
         ]
@@ -310,8 +375,8 @@ impl Coons {
     fn v_line(&self, v: f64) -> Line {
         let [_, s1, _, s3] = &self.sides;
         [
-            s3.curve.eval(1.0 - v),
-            s1.curve.eval(v),
+            s3.point(1.0 - v),
+            s1.point(v),
             s3.cross(1.0 - v).0,
             -s1.cross(v).0,
         ]
@@ -411,6 +476,65 @@ mod tests {
                 let fd = (scaled.cross(hi).0 - scaled.cross(lo).0) / (hi - lo);
                 assert!((fd - dx).length() < 1e-5 * (1.0 + dx.length()), "{s}");
             }
+        }
+    }
+
+    /// A side run along its curve by φ (envelope.md, "Sides run along their curves") passes
+    /// through the same points, fits the new legs at its corners, and its cross derivative at
+    /// s lies in the plane of g and C′ at the curve point φ(s) on the same side of the curve as
+    /// the side's own there, so the border's normal (and G1 with the patch across) is
+    /// unchanged; the s-derivatives are difference quotients.
+    #[test]
+    fn a_side_run_along_its_curve_keeps_the_border_normal() {
+        // Crowded at both ends, as a rational edge is for small t.
+        let curve = RationalBezier::new(
+            vec![
+                DVec3::ZERO,
+                DVec3::new(0.3, 0.2, 0.0),
+                DVec3::new(0.7, 0.1, 0.05),
+                DVec3::new(1.0, 0.0, 0.0),
+            ],
+            vec![1.0, 0.04, 0.005, 1.0],
+        )
+        .unwrap();
+        let g = (DVec3::Y, DVec3::new(0.1, 1.0, 0.05));
+        let a0 = 0.4 * g.0 + 0.3 * curve.derivatives(0.0).d1;
+        let a1 = 0.2 * g.1 - 0.1 * curve.derivatives(1.0).d1;
+        let side = Side::fitted(curve.clone(), g, a0, a1);
+        let phi = Reparam::arc_length(&curve).unwrap();
+        // New legs in the corners' tangent planes, far longer along the side.
+        let (t0, t1) = (
+            curve.derivatives(0.0).d1.normalize(),
+            curve.derivatives(1.0).d1.normalize(),
+        );
+        let (b0, b1) = (0.5 * g.0 + 2.0 * t0, 0.3 * g.1 - 1.5 * t1);
+        let run = side.clone().run_by(phi, b0, b1);
+        assert!((run.cross(0.0).0 - b0).length() < 1e-12);
+        assert!((run.cross(1.0).0 - b1).length() < 1e-12);
+        for i in 0..=40 {
+            let s = i as f64 / 40.0;
+            let tau = run.phi(s).0;
+            assert!((run.point(s) - curve.eval(tau)).length() < 1e-14);
+            let n_run = run.d1(s).cross(run.cross(s).0).normalize();
+            let n_own = side.d1(tau).cross(side.cross(tau).0).normalize();
+            assert!(
+                n_run.dot(n_own) > 1.0 - 1e-12,
+                "s = {s}: {n_run} against {n_own}"
+            );
+            // One-sided at the ends, where φ bends fast: a shorter step there.
+            let h = if i == 0 || i == 40 { 1e-9 } else { 1e-6 };
+            let (lo, hi) = ((s - h).max(0.0), (s + h).min(1.0));
+            let fd = (run.cross(hi).0 - run.cross(lo).0) / (hi - lo);
+            let dx = run.cross(s).1;
+            assert!(
+                (fd - dx).length() < 1e-4 * (1.0 + dx.length()),
+                "{s}: {fd} against {dx}"
+            );
+            let fd = (run.point(hi) - run.point(lo)) / (hi - lo);
+            assert!(
+                (fd - run.d1(s)).length() < 1e-4 * (1.0 + fd.length()),
+                "{s}"
+            );
         }
     }
 

@@ -25,6 +25,7 @@ pub mod nested;
 pub mod network;
 pub mod patches;
 pub mod primitive;
+pub mod reparam;
 pub mod tessellate;
 mod wrap;
 

@@ -58,6 +58,7 @@ use super::edges::curved_edge;
 use super::folds::{FOLD_CELLS, Fold, grid_crossings, grid_folds, largest_turn, self_crossings};
 use super::network::{CurveKind, Network, PatchSide, Region, RegionKind};
 use super::primitive::Primitive;
+use super::reparam::Reparam;
 use crate::freeform::bezier::RationalBezier;
 use glam::DVec3;
 
@@ -162,6 +163,29 @@ pub struct EnvelopePatch {
     pub coons: Coons,
     /// The region it lies in.
     pub region: usize,
+}
+
+impl EnvelopePatch {
+    /// The network curve's parameter at side `k`'s parameter s (the side's own run along it,
+    /// [`Side::phi`], then its piece of the curve).
+    pub fn tau(&self, k: usize, s: f64) -> f64 {
+        self.sides[k].tau(self.coons.sides[k].phi(s).0)
+    }
+
+    /// The side parameter at which side `k` reaches the network curve's parameter `tau`, if
+    /// its piece holds it.
+    pub fn side_parameter(&self, k: usize, tau: f64) -> Option<f64> {
+        let s = self.sides[k];
+        let (lo, hi) = (s.t0.min(s.t1), s.t0.max(s.t1));
+        if tau < lo - 1e-12 || tau > hi + 1e-12 {
+            return None;
+        }
+        let share = (tau - s.t0) / (s.t1 - s.t0);
+        Some(match &self.coons.sides[k].reparam {
+            Some(r) => r.inverse(share),
+            None => share,
+        })
+    }
 }
 
 /// The part of `c` from t0 to t1 (backwards when t0 > t1), parametrised on [0, 1].
@@ -982,45 +1006,131 @@ fn unfolded(net: &Network, p: EnvelopePatch, cells: usize) -> (EnvelopePatch, Ve
         };
         (folds(q, fine).len(), crossings)
     };
-    let mut least = score(&p);
-    let mut best = None;
-    // Sides in an order of their own (longest first, then by their middle's position), never
-    // the region's listing, so that the surface does not depend on it.
-    let key = |k: usize| {
-        let s = &p.sides[k];
-        let mid = net.curves[s.curve].bezier.eval(0.5 * (s.t0 + s.t1));
-        [-chord(net, s), mid.x, mid.y, mid.z]
-    };
-    let mut order = [0, 1, 2, 3];
-    order.sort_by(|&a, &b| by_keys(&key(a), &key(b)));
-    // Best first: each round every side not yet scaled tries every β from the patch so far,
-    // and the one change that helps most is kept (a side scaled once stays so).
-    let mut scaled = [false; 4];
-    while least != (0, 0) {
-        let mut round: Option<((usize, usize), usize, EnvelopePatch)> = None;
-        for side in order.into_iter().filter(|&k| !scaled[k]) {
-            for beta in SQUEEZES {
-                let mut q = best.as_ref().unwrap_or(&p).clone();
-                q.coons.sides[side] = q.coons.sides[side].clone().scaled(beta);
-                let n = score(&q);
-                if n < round.as_ref().map_or(least, |r| r.0) {
-                    round = Some((n, side, q));
+    let search = |p: &EnvelopePatch| -> (EnvelopePatch, (usize, usize)) {
+        let p = p.clone();
+        let mut least = score(&p);
+        let mut best = None;
+        // Sides in an order of their own (longest first, then by their middle's position), never
+        // the region's listing, so that the surface does not depend on it.
+        let key = |k: usize| {
+            let s = &p.sides[k];
+            let mid = net.curves[s.curve].bezier.eval(0.5 * (s.t0 + s.t1));
+            [-chord(net, s), mid.x, mid.y, mid.z]
+        };
+        let mut order = [0, 1, 2, 3];
+        order.sort_by(|&a, &b| by_keys(&key(a), &key(b)));
+        // Best first: each round every side not yet scaled tries every β from the patch so far,
+        // and the one change that helps most is kept (a side scaled once stays so).
+        let mut scaled = [false; 4];
+        while least != (0, 0) {
+            let mut round: Option<((usize, usize), usize, EnvelopePatch)> = None;
+            for side in order.into_iter().filter(|&k| !scaled[k]) {
+                for beta in SQUEEZES {
+                    let mut q = best.as_ref().unwrap_or(&p).clone();
+                    q.coons.sides[side] = q.coons.sides[side].clone().scaled(beta);
+                    let n = score(&q);
+                    if n < round.as_ref().map_or(least, |r| r.0) {
+                        round = Some((n, side, q));
+                    }
                 }
             }
+            let Some((n, side, q)) = round else {
+                break;
+            };
+            (least, best) = (n, Some(q));
+            scaled[side] = true;
         }
-        let Some((n, side, q)) = round else {
+        match best {
+            Some(q) => (q, least),
+            None => (p.clone(), least),
+        }
+    };
+    let (mut best, mut least) = search(&p);
+    // Still folding: the sides run by arc length, and the search again from there.
+    for run in [Run::ArcLength, Run::Matched] {
+        if least.0 == 0 {
             break;
-        };
-        (least, best) = (n, Some(q));
-        scaled[side] = true;
-    }
-    match best {
-        Some(q) => {
-            let reported = folds(&q, FOLD_CELLS);
-            (q, reported)
         }
-        None => (p, reported),
+        let (q, n) = search(&run_along(&p, run));
+        if n < least {
+            (best, least) = (q, n);
+        }
     }
+    let reported = folds(&best, FOLD_CELLS);
+    (best, reported)
+}
+
+/// How a still-folding patch's sides are run along their curves ([`run_along`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Run {
+    /// Every side at nearly even speed.
+    ArcLength,
+    /// Of each two opposite sides, the one slower at its ends (for its length) as it is, the
+    /// other so that it covers its length in the same shares.
+    Matched,
+}
+
+/// `p` with its sides run along their curves as `run` says ([`Reparam`]; envelope.md, "Sides
+/// run along their curves"), the cross derivatives fitted again to the legs that follow; scales
+/// left out (the search starts again from there).
+fn run_along(p: &EnvelopePatch, run: Run) -> EnvelopePatch {
+    let mut sides: Vec<Side> = p
+        .coons
+        .sides
+        .iter()
+        .map(|s| {
+            let mut s = s.clone();
+            s.squeeze = 0.0;
+            if !s.collapsed && run == Run::ArcLength {
+                s.reparam = Reparam::arc_length(&s.curve);
+            }
+            s
+        })
+        .collect();
+    if run == Run::Matched {
+        // How slow a side is at its ends for its length.
+        let crowd = |s: &Side| {
+            let len = s
+                .curve
+                .eval(0.0)
+                .distance(s.curve.eval(1.0))
+                .max(f64::MIN_POSITIVE);
+            (s.curve.derivatives(0.0).d1.length() + s.curve.derivatives(1.0).d1.length()) / len
+        };
+        for (a, b) in [(0, 2), (1, 3)] {
+            if sides[a].collapsed || sides[b].collapsed {
+                continue;
+            }
+            let (ca, cb) = (crowd(&sides[a]), crowd(&sides[b]));
+            // Alike (a patch with a symmetry): neither is chosen over the other.
+            if (ca - cb).abs() <= 1e-9 * ca.max(cb) {
+                continue;
+            }
+            let (keep, follow) = if ca < cb { (a, b) } else { (b, a) };
+            let kept = sides[keep].curve.clone();
+            if let Some(share) = super::reparam::arc_share(&kept) {
+                // Side `follow` at s faces side `keep` at 1 − s.
+                let target = |s: f64| {
+                    let (a, da) = share(1.0 - s);
+                    (1.0 - a, da)
+                };
+                sides[follow].reparam = Reparam::following(&sides[follow].curve, target);
+            }
+        }
+    }
+    let ends: Vec<(DVec3, DVec3)> = sides.iter().map(|s| (s.d1(0.0), s.d1(1.0))).collect();
+    for k in 0..4 {
+        let a0 = -ends[(k + 3) % 4].1;
+        let a1 = ends[(k + 1) % 4].0;
+        let side = sides[k].clone();
+        sides[k] = match side.reparam.clone() {
+            Some(r) => side.run_by(r, a0, a1),
+            None => side.refitted(a0, a1),
+        };
+    }
+    let mut q = p.clone();
+    q.coons.sides = sides.try_into().expect("four sides");
+    q
 }
 
 /// The largest angle (degrees) between the two sides' normals along every border, sampled at
@@ -1034,22 +1144,15 @@ pub fn largest_border_jump(net: &Network, patches: &[EnvelopePatch], samples: us
         }
     }
     let normal = |p: usize, k: usize, tau: f64| -> Option<DVec3> {
-        let s = &patches[p].sides[k];
-        let (lo, hi) = (s.t0.min(s.t1), s.t0.max(s.t1));
-        if tau < lo - 1e-12 || tau > hi + 1e-12 {
-            return None;
-        }
-        let sp = (tau - s.t0) / (s.t1 - s.t0);
+        let sp = patches[p].side_parameter(k, tau)?;
         let side = &patches[p].coons.sides[k];
-        let d = side.curve.derivatives(sp).d1;
-        Some(d.cross(side.cross(sp).0).normalize_or_zero())
+        Some(side.d1(sp).cross(side.cross(sp).0).normalize_or_zero())
     };
     let mut worst = 0.0f64;
     for users in &on {
         for &(p, k) in users {
-            let s = patches[p].sides[k];
             for j in 0..=samples {
-                let tau = s.tau(j as f64 / samples as f64);
+                let tau = patches[p].tau(k, j as f64 / samples as f64);
                 let n0 = normal(p, k, tau).unwrap_or(DVec3::ZERO);
                 for &(q, l) in users {
                     if q == p {

@@ -53,8 +53,8 @@ pub fn tessellate(net: &Network, patches: &[EnvelopePatch], k: usize) -> PolyMes
     let mut positions: Vec<DVec3> = net.vertices.iter().map(|v| v.position).collect();
     let mut wanted: Vec<Vec<f64>> = vec![Vec::new(); net.curves.len()];
     for p in patches {
-        for s in &p.sides {
-            wanted[s.curve].extend((0..=k).map(|j| s.tau(j as f64 / kf)));
+        for (side, s) in p.sides.iter().enumerate() {
+            wanted[s.curve].extend((0..=k).map(|j| p.tau(side, j as f64 / kf)));
         }
     }
     let mut params = Vec::with_capacity(net.curves.len());
@@ -108,10 +108,7 @@ pub fn tessellate(net: &Network, patches: &[EnvelopePatch], k: usize) -> PolyMes
                     None
                 };
                 grid[at(i, j)] = match side_s {
-                    Some((side, s)) => {
-                        let ps = &p.sides[side];
-                        samples.id(ps.curve, ps.tau(s))
-                    }
+                    Some((side, s)) => samples.id(p.sides[side].curve, p.tau(side, s)),
                     None => {
                         positions.push(inner[at(i, j)]);
                         (positions.len() - 1) as u32
@@ -140,8 +137,8 @@ pub fn tessellate(net: &Network, patches: &[EnvelopePatch], k: usize) -> PolyMes
                     }
                     poly.push(grid[at(ci, cj)]);
                     if let Some((side, a, b)) = on_border(e) {
-                        let ps = &p.sides[side];
-                        samples.push_between(&mut poly, ps.curve, ps.tau(a), ps.tau(b));
+                        let (ta, tb) = (p.tau(side, a), p.tau(side, b));
+                        samples.push_between(&mut poly, p.sides[side].curve, ta, tb);
                     }
                 }
                 // Cells at a collapsed side lose their repeated corner (triangles).
