@@ -1048,7 +1048,7 @@ fn envelope_builds_the_bundled_scenes_and_names_bad_ones() {
         "{se}"
     );
     assert!(so.contains(" crossings=0 "), "{so}");
-    // A heap of six at t = 0.05 whose surface passes through itself: counted, and where the
+    // A heap of six at t = 0.02 whose surface passes through itself: counted, and where the
     // first pair lies said on stderr (exit 0).
     let (_, so, se) = succeeds_to(
         "crossing.obj",

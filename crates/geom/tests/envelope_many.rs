@@ -1413,13 +1413,13 @@ fn per_vertex_t_far_apart_does_not_fold_the_sharp_corner() {
     }
 }
 
-/// A heap of six primitives at t = 0.05 (below the tab's slider, which stops at 0.1; the CLI
-/// takes any t) whose surface passes through itself (heap 600111 of the mixed survey). The
-/// crossing check of the tessellation finds the pairs, more as it refines (32, 61, 104 at K = 8,
-/// 16, 32). (The heaps this test held before no longer cross at K = 8: the heap of six at t = 0.1
+/// A heap of six primitives at t = 0.02 (below the tab's slider, which stops at 0.1; the CLI
+/// takes any t) whose surface passes through itself where no patch folds (heap 600002 of the
+/// mixed survey). The crossing check of the tessellation finds the pairs, more as it refines
+/// (16, 30, 66 at K = 8, 16, 32). (The heaps this test held before no longer cross at K = 8: the heap of six at t = 0.1
 /// since folded patches have their cross derivatives rescaled, the heap of three at t = 0.1
-/// since patches that pass through themselves are too, the heap of four at t = 0.05 since a
-/// patch that still folds has its sides run along their curves afresh.)
+/// since patches that pass through themselves are too, a heap of four and one of six at t =
+/// 0.05 since a patch that still folds has its sides run along their curves afresh.)
 #[test]
 fn the_crossing_check_finds_a_heap_through_itself() {
     use prism_geom::freeform::envelope::folds::crossings;

@@ -227,7 +227,7 @@ fn the_summary_counts_folds() {
     }
 }
 
-/// Faces that pass through each other (a heap of six at t = 0.05) are found on a thread after
+/// Faces that pass through each other (a heap of six at t = 0.02) are found on a thread after
 /// the build, counted in the summary with where the first lies, and marked; the
 /// seven-primitive sample has none.
 #[test]

@@ -1047,7 +1047,7 @@ fn unfolded(net: &Network, p: EnvelopePatch, cells: usize) -> (EnvelopePatch, Ve
     };
     let (mut best, mut least) = search(&p);
     // Still folding: the sides run by arc length, and the search again from there.
-    for run in [Run::ArcLength, Run::Matched] {
+    for run in [Run::ArcLength, Run::Matched, Run::MatchedToFaster] {
         if least.0 == 0 {
             break;
         }
@@ -1068,6 +1068,8 @@ enum Run {
     /// Of each two opposite sides, the one slower at its ends (for its length) as it is, the
     /// other so that it covers its length in the same shares.
     Matched,
+    /// The same with the faster one kept.
+    MatchedToFaster,
 }
 
 /// `p` with its sides run along their curves as `run` says ([`Reparam`]; envelope.md, "Sides
@@ -1087,7 +1089,7 @@ fn run_along(p: &EnvelopePatch, run: Run) -> EnvelopePatch {
             s
         })
         .collect();
-    if run == Run::Matched {
+    if run != Run::ArcLength {
         // How slow a side is at its ends for its length.
         let crowd = |s: &Side| {
             let len = s
@@ -1106,7 +1108,12 @@ fn run_along(p: &EnvelopePatch, run: Run) -> EnvelopePatch {
             if (ca - cb).abs() <= 1e-9 * ca.max(cb) {
                 continue;
             }
-            let (keep, follow) = if ca < cb { (a, b) } else { (b, a) };
+            let slower_kept = run == Run::Matched;
+            let (keep, follow) = if (ca < cb) == slower_kept {
+                (a, b)
+            } else {
+                (b, a)
+            };
             let kept = sides[keep].curve.clone();
             if let Some(share) = super::reparam::arc_share(&kept) {
                 // Side `follow` at s faces side `keep` at 1 − s.
