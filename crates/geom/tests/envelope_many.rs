@@ -1370,6 +1370,26 @@ fn the_bundled_scenes_hold_below_the_slider() {
     }
 }
 
+/// A heap of four primitives at t = 0.05 (heap 400187 of the mixed survey) whose patch on
+/// primitive 0's face 0 still folded (1 cell) with its sides run by arc length or matched to the
+/// slower of each two opposite sides: matched the other way, to the faster one, it folds
+/// nowhere and does not pass through itself (envelope.md, "Sides run along their curves").
+#[test]
+fn opposite_sides_are_also_matched_the_other_way() {
+    use prism_geom::freeform::envelope::folds::crossings;
+    let spec: EnvelopeSpec = serde_json::from_str(include_str!(
+        "data/envelope/matched-other-way-heap.envelope.json"
+    ))
+    .unwrap();
+    let e = fold_free_at(&spec, 0.05);
+    assert!(crossings(&e.tessellate(8).unwrap()).is_empty());
+    assert!(
+        e.patches
+            .iter()
+            .any(|p| p.coons.sides.iter().any(|s| s.reparam.is_some()))
+    );
+}
+
 /// Four cubes placed apart (the equal-cube survey's `APART=1` scene 32) at t = 0.1: a triangle
 /// patched as one quad with its tip collapsed was then tried split round an inserted point as a
 /// quad with a short side, the insertion curve to the collapsed side's middle ended at the tip
