@@ -49,7 +49,8 @@ pub struct Side {
     /// β of the cross derivative's scale `σ(s) = 1 − 4β·s(1 − s)` between the corners
     /// ([`Side::scaled`]; 0: the fitted one as is).
     pub squeeze: f64,
-    /// The side run along its curve by φ, `τ = φ(s)` ([`Side::run_by`]; none: τ = s).
+    /// The side run along its curve by φ, `τ = φ(s)` (set, then [`Side::refitted`]; none:
+    /// τ = s).
     pub reparam: Option<Reparam>,
 }
 
@@ -57,24 +58,19 @@ impl Side {
     /// A side whose cross derivative is fitted to the legs `a0` (at s = 0) and `a1` (at
     /// s = 1), the neighbouring sides' derivatives leaving those corners into the patch.
     pub fn fitted(curve: RationalBezier, g: (DVec3, DVec3), a0: DVec3, a1: DVec3) -> Side {
-        // The fits are the paper's: k g + h C′ at both ends.
-        let d0 = curve.derivatives(0.0).d1;
-        let d1 = curve.derivatives(1.0).d1;
-        let (k0, h0) = fit(a0, g.0, d0);
-        let (k1, h1) = fit(a1, g.1, d1);
-        let speed = (d0.length(), d1.length());
         Side {
             curve,
             g,
-            k: (k0, k1),
-            h: (h0, h1),
-            speed,
+            k: (0.0, 0.0),
+            h: (0.0, 0.0),
+            speed: (0.0, 0.0),
             legs: (a0, a1),
             direct: 0.0,
             collapsed: false,
             squeeze: 0.0,
             reparam: None,
         }
+        .refitted(a0, a1)
     }
 
     /// A side collapsed to the point `p`: the tip of a needle patched as one quad
@@ -117,20 +113,11 @@ impl Side {
         self
     }
 
-    /// This side run along its curve by `reparam` (envelope.md, "Sides run by arc length"),
-    /// its cross derivative fitted again to the legs `a0` and `a1` (the neighbouring sides'
-    /// derivatives, which change with their own runs): the basis is taken at the same curve
-    /// point, so G1 with the patch across holds.
-    pub fn run_by(mut self, reparam: Reparam, a0: DVec3, a1: DVec3) -> Side {
-        if self.collapsed {
-            self.legs = (a0, a1);
-            return self;
-        }
-        self.reparam = Some(reparam);
-        self.refitted(a0, a1)
-    }
-
-    /// This side's cross derivative fitted again to the legs `a0` and `a1`, its run kept.
+    /// This side's cross derivative fitted to the legs `a0` and `a1` (the neighbouring sides'
+    /// derivatives leaving its corners), the paper's `k g + h C′` at both ends, with C′ the
+    /// derivative of the side as it runs ([`Side::reparam`]; envelope.md, "Sides run along their
+    /// curves"): the basis is taken at the same curve point, so G1 with the patch across holds
+    /// whatever the run. A collapsed side only takes the legs.
     pub fn refitted(mut self, a0: DVec3, a1: DVec3) -> Side {
         if self.collapsed {
             self.legs = (a0, a1);
@@ -300,7 +287,8 @@ pub struct Coons {
     pub sides: [Side; 4],
 }
 
-fn hermite(t: f64) -> [f64; 4] {
+/// The cubic Hermite functions `H₀, H₁, G₀, G₁` at t.
+pub(super) fn hermite(t: f64) -> [f64; 4] {
     let (t2, t3) = (t * t, t * t * t);
     [
         2.0 * t3 - 3.0 * t2 + 1.0,
@@ -508,7 +496,11 @@ mod tests {
             curve.derivatives(1.0).d1.normalize(),
         );
         let (b0, b1) = (0.5 * g.0 + 2.0 * t0, 0.3 * g.1 - 1.5 * t1);
-        let run = side.clone().run_by(phi, b0, b1);
+        let run = Side {
+            reparam: Some(phi),
+            ..side.clone()
+        }
+        .refitted(b0, b1);
         assert!((run.cross(0.0).0 - b0).length() < 1e-12);
         assert!((run.cross(1.0).0 - b1).length() < 1e-12);
         for i in 0..=40 {

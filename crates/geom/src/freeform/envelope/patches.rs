@@ -1129,11 +1129,7 @@ fn run_along(p: &EnvelopePatch, run: Run) -> EnvelopePatch {
     for k in 0..4 {
         let a0 = -ends[(k + 3) % 4].1;
         let a1 = ends[(k + 1) % 4].0;
-        let side = sides[k].clone();
-        sides[k] = match side.reparam.clone() {
-            Some(r) => side.run_by(r, a0, a1),
-            None => side.refitted(a0, a1),
-        };
+        sides[k] = sides[k].clone().refitted(a0, a1);
     }
     let mut q = p.clone();
     q.coons.sides = sides.try_into().expect("four sides");

@@ -1,5 +1,5 @@
 //! A patch side run along its curve at nearly even speed (docs/algorithms/envelope.md,
-//! "Sides run by arc length"): `τ = φ(s)`, φ the inverse of the curve's arc length as a share
+//! "Sides run along their curves"): `τ = φ(s)`, φ the inverse of the curve's arc length as a share
 //! of the whole, through [`NODES`] + 1 samples joined by monotone cubic Hermite pieces
 //! (Fritsch–Carlson: each node's slope is the exact `L/|C′(τ)|`, capped at three times the
 //! secants beside it so that every piece stays monotone). A rational edge for small t runs
@@ -8,6 +8,7 @@
 //! whatever φ is, since the cross derivative is taken in the plane of g and C′ at the same
 //! curve point.
 
+use super::coons::hermite;
 use crate::freeform::bezier::RationalBezier;
 
 /// Pieces of φ.
@@ -37,23 +38,17 @@ impl Reparam {
         curve: &RationalBezier,
         target: impl Fn(f64) -> (f64, f64),
     ) -> Option<Reparam> {
-        let n = NODES * STEPS;
-        let mut length = vec![0.0; n + 1];
-        let mut prev = curve.eval(0.0);
-        for i in 1..=n {
-            let p = curve.eval(i as f64 / n as f64);
-            length[i] = length[i - 1] + p.distance(prev);
-            prev = p;
-        }
+        let length = length_table(curve)?;
+        let n = length.len() - 1;
         let total = length[n];
-        if !(total > 0.0 && total.is_finite()) {
-            return None;
-        }
-        // τ where the length is the share i / NODES of the whole, the table read linearly.
+        let targets: Vec<(f64, f64)> = (0..=NODES)
+            .map(|i| target(i as f64 / NODES as f64))
+            .collect();
+        // τ where the length is the share targets[i] of the whole, the table read linearly.
         let mut tau = Vec::with_capacity(NODES + 1);
         let mut j = 0;
-        for i in 0..=NODES {
-            let want = total * target(i as f64 / NODES as f64).0;
+        for &(share, _) in &targets {
+            let want = total * share;
             while j + 1 < n && length[j + 1] < want {
                 j += 1;
             }
@@ -72,7 +67,7 @@ impl Reparam {
         let slope = (0..=NODES)
             .map(|i| {
                 let speed = curve.derivatives(tau[i]).d1.length();
-                let rate = target(i as f64 / NODES as f64).1;
+                let rate = targets[i].1;
                 let exact = if speed > 0.0 {
                     rate * total / speed
                 } else {
@@ -97,11 +92,9 @@ impl Reparam {
         let h = 1.0 / NODES as f64;
         let (p0, p1) = (self.tau[i], self.tau[i + 1]);
         let (m0, m1) = (self.slope[i] * h, self.slope[i + 1] * h);
-        let (u2, u3) = (u * u, u * u * u);
-        let value = (2.0 * u3 - 3.0 * u2 + 1.0) * p0
-            + (u3 - 2.0 * u2 + u) * m0
-            + (-2.0 * u3 + 3.0 * u2) * p1
-            + (u3 - u2) * m1;
+        let [h0, h1, g0, g1] = hermite(u);
+        let value = h0 * p0 + g0 * m0 + h1 * p1 + g1 * m1;
+        let u2 = u * u;
         let d = (6.0 * u2 - 6.0 * u) * p0
             + (3.0 * u2 - 4.0 * u + 1.0) * m0
             + (-6.0 * u2 + 6.0 * u) * p1
@@ -127,6 +120,21 @@ impl Reparam {
 /// The share of `curve`'s length covered at parameter s, and its s-derivative, from a table
 /// of [`NODES`] × [`STEPS`] chords read linearly.
 pub fn arc_share(curve: &RationalBezier) -> Option<impl Fn(f64) -> (f64, f64) + '_> {
+    let length = length_table(curve)?;
+    let n = length.len() - 1;
+    let total = length[n];
+    Some(move |s: f64| {
+        let x = s.clamp(0.0, 1.0) * n as f64;
+        let i = (x.floor() as usize).min(n - 1);
+        let f = x - i as f64;
+        let share = (length[i] + f * (length[i + 1] - length[i])) / total;
+        (share, curve.derivatives(s).d1.length() / total)
+    })
+}
+
+/// The curve's length from τ = 0 to each of [`NODES`] × [`STEPS`] + 1 even steps of τ (chords
+/// summed), or `None` for a curve of no length, or one not finite.
+fn length_table(curve: &RationalBezier) -> Option<Vec<f64>> {
     let n = NODES * STEPS;
     let mut length = vec![0.0; n + 1];
     let mut prev = curve.eval(0.0);
@@ -136,16 +144,7 @@ pub fn arc_share(curve: &RationalBezier) -> Option<impl Fn(f64) -> (f64, f64) + 
         prev = p;
     }
     let total = length[n];
-    if !(total > 0.0 && total.is_finite()) {
-        return None;
-    }
-    Some(move |s: f64| {
-        let x = s.clamp(0.0, 1.0) * n as f64;
-        let i = (x.floor() as usize).min(n - 1);
-        let f = x - i as f64;
-        let share = (length[i] + f * (length[i + 1] - length[i])) / total;
-        (share, curve.derivatives(s).d1.length() / total)
-    })
+    (total > 0.0 && total.is_finite()).then_some(length)
 }
 
 #[cfg(test)]
