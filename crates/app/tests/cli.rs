@@ -1044,7 +1044,7 @@ fn envelope_builds_the_bundled_scenes_and_names_bad_ones() {
         se.contains(&format!(
             "warning: {folded} of {} sampled cells fold",
             64 * patches
-        )) && se.contains("the first on primitive 4 face 0"),
+        )) && se.contains("the first on primitive 5 face 6"),
         "{se}"
     );
     assert!(so.contains(" crossings=0 "), "{so}");

@@ -395,13 +395,16 @@ fn fold_free_at(spec: &EnvelopeSpec, t: f64) -> Envelope {
 /// nor at t = 0.5 on a heap of four equal cubes whose cuts leave a thin four-sided region
 /// (chords about 0.60, 0.04, 0.61, 0.01), which folded before corners inside a face were drawn
 /// to their neighbours' distance (envelope.md, "Corners inside a face"); a heap of six
-/// primitives at t = 0.05, below the tab's slider (heap 600332 of the mixed survey), has cells
-/// turned by more than 90° on a primitive's face, and the warning names where the first lies.
+/// primitives at t = 0.05, below the tab's slider (heap 600349 of the mixed survey, turned by
+/// 180° about x), has cells turned by more than 90° on a primitive's face, and the warning
+/// names where the first lies.
 /// (The heaps this test showed folding before no longer do: a fusion strip a thousandth wide
 /// at t = 0.5, since corners inside a face are drawn together by their distance across it; a
 /// heap of six at t = 0.2, since folded patches have their cross derivatives rescaled, and at
 /// t = 0.1, since short legs are given back where a patch folds; a heap of three at t = 0.05,
-/// since a patch that still folds has its sides run along their curves afresh.)
+/// since a patch that still folds has its sides run along their curves afresh; a heap of six
+/// at t = 0.05 (600332), since the rescaling search also counts the folds at the report's own
+/// samples.)
 #[test]
 fn folds_are_found_patch_by_patch() {
     for text in [
@@ -442,7 +445,7 @@ fn folds_are_found_patch_by_patch() {
         prism_geom::freeform::envelope::folds::folds(&e.network, &e.patches, 8)
     );
     let w = e.fold_warning(&folds).unwrap();
-    assert!(w.contains("the first on primitive 4 face 0"), "{w}");
+    assert!(w.contains("the first on primitive 5 face 6"), "{w}");
     assert!(
         w.contains(&format!(
             "{} of {} sampled cells fold",
@@ -1388,6 +1391,24 @@ fn opposite_sides_are_also_matched_the_other_way() {
             .iter()
             .any(|p| p.coons.sides.iter().any(|s| s.reparam.is_some()))
     );
+}
+
+/// A needle beside its tip (heap 600332 of the mixed survey at t = 0.05, below the slider: a
+/// triangle of sides 0.45, 0.46 and 0.60 on primitive 4's face 0, patched as one quad with its
+/// 34° corner collapsed, one leg there 15 times the other). Its grid lines near the tip bunch
+/// towards the shorter leg: two cells beside the tip turned over at 8 cells a side (the
+/// report's samples, and the tessellation at K = 8) and one at 16. The rescaling search scored
+/// the folds at 16 a side only, and ended with that one still there. It now scores the
+/// folds at the report's samples too (envelope.md, "Folded patches: cross derivatives
+/// rescaled"), takes changes that clear those, and ends with none at 8 or 16 cells a side.
+#[test]
+fn the_rescaling_search_counts_the_reports_samples() {
+    use prism_geom::freeform::envelope::folds::{crossings, folds};
+    let spec: EnvelopeSpec =
+        serde_json::from_str(include_str!("data/envelope/needle-tip-heap.envelope.json")).unwrap();
+    let e = fold_free_at(&spec, 0.05);
+    assert!(folds(&e.network, &e.patches, 16).is_empty());
+    assert!(crossings(&e.tessellate(8).unwrap()).is_empty());
 }
 
 /// Four cubes placed apart (the equal-cube survey's `APART=1` scene 32) at t = 0.1: a triangle

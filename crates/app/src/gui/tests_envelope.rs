@@ -220,7 +220,7 @@ fn the_summary_counts_folds() {
             Some((n, text)) => {
                 assert!(folded && *n > 0);
                 assert_eq!(b.fold_points.len(), *n);
-                assert!(text.contains("the first on primitive 4 face 0"), "{text}");
+                assert!(text.contains("the first on primitive 5 face 6"), "{text}");
             }
             None => assert!(!folded && b.fold_points.is_empty()),
         }

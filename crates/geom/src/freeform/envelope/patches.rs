@@ -980,7 +980,9 @@ const SQUEEZES: [f64; 8] = [0.25, 0.5, 0.75, 0.9, -0.25, -0.5, -1.0, -2.0];
 /// the corners and positive, so the fits there, the normal along every border and G1 with the
 /// patch across hold whatever it is. Round by round, of every side not yet scaled and every β
 /// of [`SQUEEZES`], the one change is kept that leaves fewest folded cells sampled at twice
-/// `cells` (a fold at the samples is not traded for one between them) and then, where the
+/// `cells` and at the report's [`FOLD_CELLS`] together (a fold at the samples is not traded for
+/// one between them, nor one between them left because it shows only at the report's
+/// samples; envelope.md, "At the report's samples too") and then, where the
 /// patch crossed itself, fewest crossing triangle pairs at 8 and 16 cells a side; among changes
 /// alike the longest side's and the least |β| come first (never the listing's order). Other
 /// patches are kept as built.
@@ -997,14 +999,15 @@ fn unfolded(net: &Network, p: EnvelopePatch, cells: usize) -> (EnvelopePatch, Ve
         return (p, reported);
     }
     let fine = 2 * cells;
-    // Folded cells first, then the crossing pairs: a fold is never traded for fewer crossings.
+    // Folded cells first (twice as fine and at the report's samples), then the crossing pairs:
+    // a fold is never traded for fewer crossings.
     let score = |q: &EnvelopePatch| {
         let crossings = if crossing {
             self_crossings(q, FOLD_CELLS) + self_crossings(q, 2 * FOLD_CELLS)
         } else {
             0
         };
-        (folds(q, fine).len(), crossings)
+        (folds(q, fine).len() + folds(q, FOLD_CELLS).len(), crossings)
     };
     let search = |p: &EnvelopePatch| -> (EnvelopePatch, (usize, usize)) {
         let p = p.clone();
