@@ -1019,8 +1019,8 @@ fn envelope_builds_the_bundled_scenes_and_names_bad_ones() {
         "{so}"
     );
     assert!(so.contains(" folded=0 "), "{so}");
-    // Down to t = 0.1, where the tab's slider stops, nothing folds; in a heap of six
-    // primitives at t = 0.05 a few cells of a primitive's face do: counted, and the first
+    // Down to t = 0.1, where the tab's slider stops, nothing folds; in a heap of four
+    // primitives at t = 0.02 a cell of a region between primitives does: counted, and the first
     // named on stderr (exit 0).
     let (_, so, _) = succeeds_to(
         "seven-01.obj",
@@ -1044,7 +1044,7 @@ fn envelope_builds_the_bundled_scenes_and_names_bad_ones() {
         se.contains(&format!(
             "warning: {folded} of {} sampled cells fold",
             64 * patches
-        )) && se.contains("the first on primitive 5 face 6"),
+        )) && se.contains("the first on region 39 (between primitives)"),
         "{se}"
     );
     assert!(so.contains(" crossings=0 "), "{so}");

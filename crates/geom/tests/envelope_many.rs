@@ -394,17 +394,18 @@ fn fold_free_at(spec: &EnvelopeSpec, t: f64) -> Envelope {
 /// primitives and pairs for any t from 0.1 to 1, nor on the bundled scenes (the test above),
 /// nor at t = 0.5 on a heap of four equal cubes whose cuts leave a thin four-sided region
 /// (chords about 0.60, 0.04, 0.61, 0.01), which folded before corners inside a face were drawn
-/// to their neighbours' distance (envelope.md, "Corners inside a face"); a heap of six
-/// primitives at t = 0.05, below the tab's slider (heap 600349 of the mixed survey, turned by
-/// 180° about x), has cells turned by more than 90° on a primitive's face, and the warning
-/// names where the first lies.
+/// to their neighbours' distance (envelope.md, "Corners inside a face"); a heap of four
+/// primitives at t = 0.02, below the tab's slider (heap 400039 of the mixed survey), has a cell
+/// turned by more than 90° in a region between primitives, and the warning names where it
+/// lies.
 /// (The heaps this test showed folding before no longer do: a fusion strip a thousandth wide
 /// at t = 0.5, since corners inside a face are drawn together by their distance across it; a
 /// heap of six at t = 0.2, since folded patches have their cross derivatives rescaled, and at
 /// t = 0.1, since short legs are given back where a patch folds; a heap of three at t = 0.05,
 /// since a patch that still folds has its sides run along their curves afresh; a heap of six
 /// at t = 0.05 (600332), since the rescaling search also counts the folds at the report's own
-/// samples.)
+/// samples; another at t = 0.05 (600349), since every way to patch a region still folding is
+/// tried rescaled.)
 #[test]
 fn folds_are_found_patch_by_patch() {
     for text in [
@@ -436,7 +437,7 @@ fn folds_are_found_patch_by_patch() {
     ))
     .unwrap();
     let e = envelope(&spec).unwrap();
-    assert_eq!(spec.t, 0.05);
+    assert_eq!(spec.t, 0.02);
     let folds = e.folds();
     assert!(!folds.is_empty());
     // Found while building, as the report samples them.
@@ -445,7 +446,10 @@ fn folds_are_found_patch_by_patch() {
         prism_geom::freeform::envelope::folds::folds(&e.network, &e.patches, 8)
     );
     let w = e.fold_warning(&folds).unwrap();
-    assert!(w.contains("the first on primitive 5 face 6"), "{w}");
+    assert!(
+        w.contains("the first on region 39 (between primitives)"),
+        "{w}"
+    );
     assert!(
         w.contains(&format!(
             "{} of {} sampled cells fold",
@@ -1409,6 +1413,30 @@ fn the_rescaling_search_counts_the_reports_samples() {
     let e = fold_free_at(&spec, 0.05);
     assert!(folds(&e.network, &e.patches, 16).is_empty());
     assert!(crossings(&e.tessellate(8).unwrap()).is_empty());
+}
+
+/// Every way to patch a region that still folds once rescaled (heap 600349 of the mixed survey
+/// at t = 0.05, below the slider, turned by 180° about x): a needle triangle on primitive 5's
+/// face 6 (sides about 1.2, 1.15 and 0.09) that the partition choice split round an inserted
+/// point, since its tip folded more cells as built. Rescaled, two of the split's sub-quads
+/// still folded in 2 cells, beside insertion curves whose tangent planes turn by 68° and 85°
+/// along 0.07; the tip, rescaled, folds in none. Each way is now tried rescaled where the
+/// chosen one still folds (`patches.rs`, `build`; envelope.md, "Every way, rescaled").
+#[test]
+fn every_way_is_tried_rescaled_where_a_region_still_folds() {
+    use prism_geom::freeform::envelope::folds::crossings;
+    let spec: EnvelopeSpec =
+        serde_json::from_str(include_str!("data/envelope/every-way-heap.envelope.json")).unwrap();
+    let e = fold_free_at(&spec, 0.05);
+    assert!(crossings(&e.tessellate(8).unwrap()).is_empty());
+    // The face is one quad with its tip collapsed.
+    let face: Vec<_> = (0..e.regions)
+        .filter(|&r| e.describe_region(r) == "primitive 5 face 6")
+        .collect();
+    assert_eq!(face.len(), 1);
+    let patches: Vec<_> = e.patches.iter().filter(|p| p.region == face[0]).collect();
+    assert_eq!(patches.len(), 1);
+    assert!(patches[0].coons.sides.iter().any(|s| s.collapsed));
 }
 
 /// Four cubes placed apart (the equal-cube survey's `APART=1` scene 32) at t = 0.1: a triangle

@@ -189,8 +189,8 @@ fn the_t_sweep_shows_the_three_t() {
 }
 
 /// Folds are shown in the summary: none on the seven-primitive sample at its own t, at 0.5 or
-/// at 0.1, where the slider stops; a heap of six primitives has cells of a primitive's face
-/// turned by more than 90° at t = 0.05 (below the slider; opened from a file), counted, with
+/// at 0.1, where the slider stops; a heap of four primitives has a cell of a region between
+/// primitives turned by more than 90° at t = 0.02 (below the slider; opened from a file), counted, with
 /// where the first lies.
 #[test]
 fn the_summary_counts_folds() {
@@ -220,7 +220,10 @@ fn the_summary_counts_folds() {
             Some((n, text)) => {
                 assert!(folded && *n > 0);
                 assert_eq!(b.fold_points.len(), *n);
-                assert!(text.contains("the first on primitive 5 face 6"), "{text}");
+                assert!(
+                    text.contains("the first on region 39 (between primitives)"),
+                    "{text}"
+                );
             }
             None => assert!(!folded && b.fold_points.is_empty()),
         }
@@ -298,6 +301,7 @@ fn values_outside_the_sliders_are_kept() {
         include_str!("../../../geom/tests/data/envelope/still-folding-heap.envelope.json"),
     )
     .unwrap();
+    spec.t = 0.05;
     spec.resolution = 40;
     let mut vt = vec![0.05; spec.primitives[0].vertices.len()];
     vt[0] = 0.02;

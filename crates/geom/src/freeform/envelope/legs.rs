@@ -16,6 +16,8 @@
 //!    kept, so its end tangents — and the tangent planes and G1 — are unchanged) and build the
 //!    patches again; keep the first build that folds nowhere, or else the one that folds
 //!    least.
+//! 3. If that still folds, build it once more with every way to patch a region that still
+//!    folds tried rescaled (`patches.rs`, `build`; envelope.md, "Every way, rescaled").
 //!
 //! A curve with a T-point or a split point on it keeps its legs (the point would leave it).
 //! The curves chosen come from the folded regions, not from the listing, so the surface does
@@ -36,16 +38,16 @@ const SHARES: [f64; 2] = [0.5, 1.0];
 /// The network with its bases, the patches and their folded cells.
 type Built = (Network, Vec<EnvelopePatch>, Vec<Fold>);
 
-fn build(mut net: Network, basis: Basis, prims: &[Primitive]) -> Built {
+fn build(mut net: Network, basis: Basis, prims: &[Primitive], every_way: bool) -> Built {
     net.assign_bases(basis);
-    let (patches, folded) = patches::build(&mut net, prims);
+    let (patches, folded) = patches::build(&mut net, prims, every_way);
     (net, patches, folded)
 }
 
 /// The patches of `net` (regions complete, no basis assigned yet), with the short legs around
 /// a fold given back as the module says.
 pub(super) fn patched(net: Network, basis: Basis, prims: &[Primitive]) -> Built {
-    let first = build(net.clone(), basis, prims);
+    let first = build(net.clone(), basis, prims, false);
     if first.2.is_empty() {
         return first;
     }
@@ -55,6 +57,7 @@ pub(super) fn patched(net: Network, basis: Basis, prims: &[Primitive]) -> Built 
         .flat_map(|f| net.regions[f.region].sides.iter().map(|s| s.curve))
         .collect();
     let mut best = first;
+    let mut input = net.clone();
     for share in SHARES {
         let mut lengthened = net.clone();
         let mut changed = false;
@@ -64,13 +67,19 @@ pub(super) fn patched(net: Network, basis: Basis, prims: &[Primitive]) -> Built 
         if !changed {
             continue;
         }
-        let got = build(lengthened, basis, prims);
+        let got = build(lengthened.clone(), basis, prims, false);
         if got.2.len() < best.2.len() {
             best = got;
+            input = lengthened;
             if best.2.is_empty() {
-                break;
+                return best;
             }
         }
+    }
+    // Still folding: every way to patch a region that folds, each rescaled.
+    let last = build(input, basis, prims, true);
+    if last.2.len() < best.2.len() {
+        best = last;
     }
     best
 }

@@ -51,7 +51,10 @@
 //! cross derivatives scaled by `σ(s) = 1 − 4β·s(1 − s)` (1 at the corners, positive), β per
 //! side from a short list, the one that folds and crosses least: a positive multiple of X keeps
 //! the border's normal `C′ × X`, so G1 holds whatever β is (envelope.md, "Folded patches: cross
-//! derivatives rescaled").
+//! derivatives rescaled"). Where a build still folds after that and after its short legs are
+//! given back (`legs.rs`), each region of other than four sides that folds is patched every
+//! way it can be, each rescaled, and the way folding fewest kept ([`build`]; envelope.md,
+//! "Every way, rescaled").
 
 use super::coons::{Coons, Side};
 use super::edges::curved_edge;
@@ -861,6 +864,84 @@ fn quad_patches(
 /// ([`quad_patches`]).
 const QUAD_SHORT: f64 = 0.05;
 
+/// The partitions of a region of other than four sides tried where its split folds
+/// ([`region_patches`]): its runs of short sides closed off, a triangle's narrow corners as
+/// tips, and for five or more sides the diagonals that cut off a fat triangle.
+fn partitions(net: &Network, region: &Region) -> Vec<Partition> {
+    let n = region.sides.len();
+    let mut tries = Vec::new();
+    if let Some(runs) = short_runs(net, region) {
+        tries.push(Partition::Runs(runs));
+    }
+    if n == 3 {
+        // Each narrow corner as the tip of one quad (envelope.md, "Narrow corners as tips").
+        tries.extend(
+            (0..3)
+                .filter(|&k| {
+                    let [p, tip, q] = cut_off(net, region, (k + 1) % 3);
+                    (p - tip).angle_between(q - tip) < NARROW_TIP
+                })
+                .map(Partition::Tip),
+        );
+    }
+    if n >= 5 {
+        tries.extend(
+            (0..n)
+                .filter(|&k| fat(cut_off(net, region, k)))
+                .map(|k| Partition::Runs(vec![(k, 2)])),
+        );
+    }
+    tries
+}
+
+/// One way to patch a region of other than four sides ([`Way::patches`]), tried again where
+/// the way [`region_patches`] chose still folds once its patches are rescaled ([`build`]).
+enum Way {
+    /// As [`region_patches`] chooses.
+    Chosen,
+    /// Split round one inserted point.
+    Split,
+    /// Cut into parts ([`partitioned`]).
+    Parts(Partition),
+}
+
+impl Way {
+    /// Every way to patch `region`: as chosen first, then its split round an inserted point and
+    /// the partitions of [`partitions`]. A four-sided region has only the way chosen: its one
+    /// other, the split, is tried already where a side is short ([`quad_patches`]), and tried
+    /// on every quad left folding it cost a heap of four at t = 0.02 1.2 s and cleared no fold
+    /// at t = 0.05 or 0.02 (envelope.md, "Every way, rescaled").
+    fn all(net: &Network, region: &Region) -> Vec<Way> {
+        let mut ways = vec![Way::Chosen];
+        if region.sides.len() != 4 {
+            ways.push(Way::Split);
+            // In [`rank`]'s order, never the listing's.
+            let mut parts: Vec<([f64; 8], Partition)> = partitions(net, region)
+                .into_iter()
+                .map(|p| (rank(net, region, &p), p))
+                .collect();
+            parts.sort_by(|a, b| by_keys(&a.0, &b.0));
+            ways.extend(parts.into_iter().map(|(_, p)| Way::Parts(p)));
+        }
+        ways
+    }
+
+    /// The patches of `region` (number `r`) made this way.
+    fn patches(
+        &self,
+        net: &mut Network,
+        region: &Region,
+        r: usize,
+        prims: &[Primitive],
+    ) -> Vec<EnvelopePatch> {
+        match self {
+            Way::Chosen => region_patches(net, region.clone(), r, prims),
+            Way::Split => split(net, region.clone(), r, prims),
+            Way::Parts(p) => partitioned(net, region, p, r, prims),
+        }
+    }
+}
+
 /// The patches of `region` (number `r`): [`quad_patches`] if it is four-sided, else its split
 /// round one inserted point — or, where that split folds, the partition that folds fewest of
 /// its cells and stays G1 across the curves it adds (envelope.md, "Runs of short sides",
@@ -875,32 +956,10 @@ fn region_patches(
     r: usize,
     prims: &[Primitive],
 ) -> Vec<EnvelopePatch> {
-    let n = region.sides.len();
-    if n == 4 {
+    if region.sides.len() == 4 {
         return quad_patches(net, region, r, prims);
     }
-    let mut tries = Vec::new();
-    if let Some(runs) = short_runs(net, &region) {
-        tries.push(Partition::Runs(runs));
-    }
-    if n == 3 {
-        // Each narrow corner as the tip of one quad (envelope.md, "Narrow corners as tips").
-        tries.extend(
-            (0..3)
-                .filter(|&k| {
-                    let [p, tip, q] = cut_off(net, &region, (k + 1) % 3);
-                    (p - tip).angle_between(q - tip) < NARROW_TIP
-                })
-                .map(Partition::Tip),
-        );
-    }
-    if n >= 5 {
-        tries.extend(
-            (0..n)
-                .filter(|&k| fat(cut_off(net, &region, k)))
-                .map(|k| Partition::Runs(vec![(k, 2)])),
-        );
-    }
+    let tries = partitions(net, &region);
     if tries.is_empty() {
         return split(net, region, r, prims);
     }
@@ -947,14 +1006,50 @@ fn region_patches(
 /// The patches of every region of `net` ([`region_patches`]), each that still folds or passes
 /// through itself with its cross derivatives rescaled ([`unfolded`]), and their folded cells as
 /// the report samples them ([`FOLD_CELLS`] a side: what [`super::Envelope::folds`] returns).
-pub fn build(net: &mut Network, prims: &[Primitive]) -> (Vec<EnvelopePatch>, Vec<Fold>) {
+pub fn build(
+    net: &mut Network,
+    prims: &[Primitive],
+    every_way: bool,
+) -> (Vec<EnvelopePatch>, Vec<Fold>) {
     let mut out = Vec::new();
     let mut folded = Vec::new();
     for r in 0..net.regions.len() {
         let region = net.regions[r].clone();
         let cells = choice_cells(net, &region, prims);
-        for p in region_patches(net, region, r, prims) {
-            let (p, folds) = unfolded(net, p, cells);
+        let unfold = |net: &mut Network, way: &Way| -> Vec<(EnvelopePatch, Vec<Fold>)> {
+            let made = way.patches(net, &region, r, prims);
+            made.into_iter().map(|p| unfolded(net, p, cells)).collect()
+        };
+        let count = |made: &[(EnvelopePatch, Vec<Fold>)]| made.iter().map(|m| m.1.len()).sum();
+        let (nv, nc) = (net.vertices.len(), net.curves.len());
+        let mut made = unfold(net, &Way::Chosen);
+        let mut least: usize = count(&made);
+        if least > 0 && every_way {
+            // Still folding once rescaled: every other way to patch the region, each rescaled,
+            // and the one that folds fewest (envelope.md, "Every way, rescaled"); on a tie the
+            // way chosen, then the order of [`Way::all`] (the region's geometry).
+            let ways = Way::all(net, &region);
+            let mut best = 0;
+            for (i, way) in ways.iter().enumerate().skip(1) {
+                net.truncate(nv, nc);
+                let other = unfold(net, way);
+                let patches: Vec<EnvelopePatch> = other.iter().map(|m| m.0.clone()).collect();
+                let n = count(&other);
+                if n < least && largest_border_jump(net, &patches, 8) < G1_KEPT {
+                    (least, best) = (n, i);
+                    if n == 0 {
+                        // Built last: the network holds its curves.
+                        made = other;
+                        break;
+                    }
+                }
+            }
+            if least > 0 {
+                net.truncate(nv, nc);
+                made = unfold(net, &ways[best]);
+            }
+        }
+        for (p, folds) in made {
             let patch = out.len();
             folded.extend(folds.into_iter().map(|f| Fold { patch, ..f }));
             out.push(p);
