@@ -427,11 +427,8 @@ impl Coons {
 mod tests {
     use super::*;
 
-    /// A rescaled cross derivative keeps the corner fits, is a positive multiple of the
-    /// fitted one between them (so the border's normal `C′ × X`, and G1, are the same), and
-    /// its s-derivative is its difference quotient.
-    #[test]
-    fn a_rescaled_cross_derivative_keeps_the_fits_and_the_border_normal() {
+    /// A test side's curve (a cubic with these weights), basis and corner legs.
+    fn side_data(weights: Vec<f64>) -> (RationalBezier, (DVec3, DVec3), DVec3, DVec3) {
         let curve = RationalBezier::new(
             vec![
                 DVec3::ZERO,
@@ -439,12 +436,21 @@ mod tests {
                 DVec3::new(0.7, 0.1, 0.05),
                 DVec3::new(1.0, 0.0, 0.0),
             ],
-            vec![1.0, 0.7, 1.2, 1.0],
+            weights,
         )
         .unwrap();
         let g = (DVec3::Y, DVec3::new(0.1, 1.0, 0.05));
         let a0 = 0.4 * g.0 + 0.3 * curve.derivatives(0.0).d1;
         let a1 = 0.2 * g.1 - 0.1 * curve.derivatives(1.0).d1;
+        (curve, g, a0, a1)
+    }
+
+    /// A rescaled cross derivative keeps the corner fits, is a positive multiple of the
+    /// fitted one between them (so the border's normal `C′ × X`, and G1, are the same), and
+    /// its s-derivative is its difference quotient.
+    #[test]
+    fn a_rescaled_cross_derivative_keeps_the_fits_and_the_border_normal() {
+        let (curve, g, a0, a1) = side_data(vec![1.0, 0.7, 1.2, 1.0]);
         let side = Side::fitted(curve, g, a0, a1);
         for beta in [0.9, 0.5, -0.5, -2.0] {
             let scaled = side.clone().scaled(beta);
@@ -475,19 +481,7 @@ mod tests {
     #[test]
     fn a_side_run_along_its_curve_keeps_the_border_normal() {
         // Crowded at both ends, as a rational edge is for small t.
-        let curve = RationalBezier::new(
-            vec![
-                DVec3::ZERO,
-                DVec3::new(0.3, 0.2, 0.0),
-                DVec3::new(0.7, 0.1, 0.05),
-                DVec3::new(1.0, 0.0, 0.0),
-            ],
-            vec![1.0, 0.04, 0.005, 1.0],
-        )
-        .unwrap();
-        let g = (DVec3::Y, DVec3::new(0.1, 1.0, 0.05));
-        let a0 = 0.4 * g.0 + 0.3 * curve.derivatives(0.0).d1;
-        let a1 = 0.2 * g.1 - 0.1 * curve.derivatives(1.0).d1;
+        let (curve, g, a0, a1) = side_data(vec![1.0, 0.04, 0.005, 1.0]);
         let side = Side::fitted(curve.clone(), g, a0, a1);
         let phi = Reparam::arc_length(&curve).unwrap();
         // New legs in the corners' tangent planes, far longer along the side.
