@@ -1351,6 +1351,45 @@ fn a_patch_bending_between_its_samples_is_checked_finer() {
     }
 }
 
+/// Heap 600313 of the mixed survey at t = 0.12: primitive 2's face 3 is split round an
+/// inserted point, and one of its sub-quads, beside an edge piece 0.001 long, turns its 8 × 8
+/// grid lines by 77°. Each sub-quad is one to one, but between the samples that one bulged into
+/// its neighbour across the insertion curve they share (11, 17 and 19 pairs of faces through
+/// each other at K = 16, 24 and 32, none at 8). A patch turning that sharply is checked at
+/// 16 × 16 against its neighbours in the region and rescaled with those crossings counted
+/// (`patches.rs`, `kept_apart`; envelope.md, "Patches through themselves", *Finer still, and
+/// into a neighbour*).
+#[test]
+fn sub_quads_of_a_region_are_kept_apart() {
+    use prism_geom::freeform::envelope::folds::crossings;
+    let spec: EnvelopeSpec = serde_json::from_str(include_str!(
+        "data/envelope/sub-quads-through-each-other.envelope.json"
+    ))
+    .unwrap();
+    let e = fold_free_at(&spec, 0.12);
+    for k in [8, 16, 24, 32] {
+        assert!(crossings(&e.tessellate(k).unwrap()).is_empty(), "K = {k}");
+    }
+}
+
+/// Heap 600350 of the mixed survey at t = 0.7: a patch of primitive 2's face 5 with a side
+/// 0.0056 long against 0.94 turns by only 8° between its 8 × 8 samples, and folded in the strip
+/// beside that side finer than them (1, 4 and 11 cells at 16, 32 and 48 a side; the tessellation
+/// through itself at K = 16 and 32). A patch whose shortest side is under 1 % of its longest is
+/// checked at 16 × 16 too (envelope.md, "Patches through themselves", *Finer still, and into a
+/// neighbour*).
+#[test]
+fn a_patch_beside_a_very_short_side_is_checked_finer() {
+    use prism_geom::freeform::envelope::folds::{crossings, folds};
+    let spec: EnvelopeSpec =
+        serde_json::from_str(include_str!("data/envelope/short-side-bulge.envelope.json")).unwrap();
+    let e = fold_free_at(&spec, 0.7);
+    for k in [8, 16, 24, 32] {
+        assert!(crossings(&e.tessellate(k).unwrap()).is_empty(), "K = {k}");
+    }
+    assert!(folds(&e.network, &e.patches, 16).is_empty());
+}
+
 /// Below the slider, which stops at t = 0.1 (the CLI and scene files take any t > 0), the
 /// bundled scenes of several primitives fold nowhere and do not pass through themselves down to
 /// t = 0.001. The five folded at t <= 0.01 (1 to 10 cells) in a thin region on primitive 3's
@@ -1590,6 +1629,10 @@ fn survey_mixed_heaps() {
                             .unwrap();
                     }
                 };
+                if std::env::var("SEEDS").is_ok_and(|v| v.split(',').any(|x| x == seed.to_string()))
+                {
+                    dump(&scene);
+                }
                 match envelope(&scene) {
                     Err(e) => {
                         errors += 1;
@@ -1604,6 +1647,9 @@ fn survey_mixed_heaps() {
                                 "t = {t}: heap {seed}: {}",
                                 e.fold_warning(&folds).unwrap_or_default()
                             );
+                        }
+                        if std::env::var("FINE").is_ok() {
+                            finer_than_the_report(&e, t, seed);
                         }
                         let m = e.tessellate(k).unwrap();
                         let pts = prism_geom::freeform::envelope::folds::crossings(&m);
@@ -1621,6 +1667,41 @@ fn survey_mixed_heaps() {
         }
         println!(
             "t = {t}: of {total} heaps {folded} with a folded cell, {crossed} crossing themselves, {errors} errors; {close} heaps have a centre inside a larger primitive's sphere, {close_failing} of them fail"
+        );
+    }
+}
+
+/// The survey's `FINE=1`: every patch with folded cells at 16 or 32 cells a side, or passing
+/// through itself at 16, finer than the report's 8 × 8 (envelope.md, "Left", *Finer than the
+/// report*), with its shortest side over its longest and the angle at its narrowest corner.
+fn finer_than_the_report(e: &Envelope, t: f64, seed: u64) {
+    use prism_geom::freeform::envelope::folds::{folds, self_crossings};
+    for (i, p) in e.patches.iter().enumerate() {
+        let count = |k| folds(&e.network, std::slice::from_ref(p), k).len();
+        let (f16, f32, s16) = (count(16), count(32), self_crossings(p, 16));
+        if f16 + f32 + s16 == 0 {
+            continue;
+        }
+        let chords: Vec<f64> = p
+            .coons
+            .sides
+            .iter()
+            .filter(|s| !s.collapsed)
+            .map(|s| s.point(0.0).distance(s.point(1.0)))
+            .collect();
+        let share = chords.iter().copied().fold(f64::INFINITY, f64::min)
+            / chords.iter().copied().fold(0.0, f64::max);
+        // The corners' angles between the sides leaving them (a collapsed side's legs).
+        let corner = (0..4)
+            .map(|c| {
+                let (a, b) = (&p.coons.sides[c], &p.coons.sides[(c + 3) % 4]);
+                a.d1(0.0).angle_between(-b.d1(1.0)).to_degrees()
+            })
+            .filter(|x| x.is_finite())
+            .fold(180.0f64, f64::min);
+        println!(
+            "FINE t = {t}: heap {seed} patch {i} ({}): folded at 16, 32: {f16}, {f32}; through itself at 16: {s16}; shortest side {share:.4} of the longest; narrowest corner {corner:.1}°",
+            e.describe_region(p.region)
         );
     }
 }

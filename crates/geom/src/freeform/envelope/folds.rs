@@ -171,6 +171,76 @@ fn pairwise_crossings(g: &[DVec3], k: usize) -> usize {
     pairs
 }
 
+/// Pairs of triangles, one of grid `a` and one of grid `b` (two patches' grids, `k` cells a
+/// side, each cell cut as [`grid_crossings`] cuts it), that pass through each other
+/// ([`crate::analysis::triangles_cross`]): patches of one region bulging into each other
+/// between the samples. Triangles with a point in common (to 10⁻⁹ of the grids' size: the
+/// two sides of a curve they share sample it alike) only touch there, and are skipped.
+pub(crate) fn grids_crossing(a: &[DVec3], b: &[DVec3], k: usize) -> usize {
+    let (ca, cb) = (Cell::all(a, k), Cell::all(b, k));
+    let (ja, jb) = (Cell::joint(&ca), Cell::joint(&cb));
+    if !boxes_meet(ja, jb) {
+        return 0;
+    }
+    let same = 1e-9 * (ja.1 - ja.0).max(jb.1 - jb.0).max_element();
+    let touch =
+        |x: &[DVec3; 3], y: &[DVec3; 3]| x.iter().any(|p| y.iter().any(|q| p.distance(*q) <= same));
+    let near_b: Vec<&Cell> = cb.iter().filter(|y| boxes_meet(y.bounds, ja)).collect();
+    let mut pairs = 0;
+    for x in ca.iter().filter(|x| boxes_meet(x.bounds, jb)) {
+        for y in near_b.iter().filter(|y| boxes_meet(x.bounds, y.bounds)) {
+            for ta in &x.tris {
+                for tb in &y.tris {
+                    if !touch(ta, tb) {
+                        pairs += usize::from(crate::analysis::triangles_cross(*ta, *tb));
+                    }
+                }
+            }
+        }
+    }
+    pairs
+}
+
+/// An axis-aligned box, (least, greatest) corner.
+type Bounds = (DVec3, DVec3);
+
+fn boxes_meet(x: Bounds, y: Bounds) -> bool {
+    x.0.cmple(y.1).all() && y.0.cmple(x.1).all()
+}
+
+/// One cell of a grid as [`grids_crossing`] tests it: its two triangles and its box.
+struct Cell {
+    tris: [[DVec3; 3]; 2],
+    bounds: Bounds,
+}
+
+impl Cell {
+    /// The cells of grid `g`, `k` a side, cut along the diagonal from (i, j).
+    fn all(g: &[DVec3], k: usize) -> Vec<Cell> {
+        let idx = |i: usize, j: usize| i + (k + 1) * j;
+        (0..k * k)
+            .map(|c| {
+                let (i, j) = (c % k, c / k);
+                let q = [idx(i, j), idx(i + 1, j), idx(i + 1, j + 1), idx(i, j + 1)].map(|v| g[v]);
+                Cell {
+                    tris: [[q[0], q[1], q[2]], [q[0], q[2], q[3]]],
+                    bounds: (
+                        q[0].min(q[1]).min(q[2]).min(q[3]),
+                        q[0].max(q[1]).max(q[2]).max(q[3]),
+                    ),
+                }
+            })
+            .collect()
+    }
+
+    /// The box of all of `cells`.
+    fn joint(cells: &[Cell]) -> Bounds {
+        cells.iter().fold((DVec3::MAX, DVec3::MIN), |(lo, hi), c| {
+            (lo.min(c.bounds.0), hi.max(c.bounds.1))
+        })
+    }
+}
+
 /// The largest angle (radians) between consecutive segments of the lines of the grid `g` (`k`
 /// cells a side), both ways: where it is large, the surface bends much between the samples, and
 /// may pass through itself between them.

@@ -51,14 +51,18 @@
 //! cross derivatives scaled by `σ(s) = 1 − 4β·s(1 − s)` (1 at the corners, positive), β per
 //! side from a short list, the one that folds and crosses least: a positive multiple of X keeps
 //! the border's normal `C′ × X`, so G1 holds whatever β is (envelope.md, "Folded patches: cross
-//! derivatives rescaled"). Where a build still folds after that and after its short legs are
+//! derivatives rescaled"); one whose grid bends sharply between its samples, or that has a
+//! side under a hundredth of its longest, is checked at 16 × 16 too, and one bending more
+//! sharply still against its neighbours in the region, whose grids it may pass into between
+//! the samples ([`kept_apart`]; envelope.md, "Patches through themselves", *Finer still, and
+//! into a neighbour*). Where a build still folds after that and after its short legs are
 //! given back (`legs.rs`), each region of other than four sides that folds is patched every
 //! way it can be, each rescaled, and the way folding fewest kept ([`build`]; envelope.md,
 //! "Every way, rescaled").
 
 use super::coons::{Coons, Side};
 use super::edges::curved_edge;
-use super::folds::{FOLD_CELLS, Fold, grid_crossings, grid_folds, largest_turn, self_crossings};
+use super::folds::{FOLD_CELLS, Fold, grid_crossings, grid_folds, grids_crossing, largest_turn};
 use super::network::{CurveKind, Network, PatchSide, Region, RegionKind};
 use super::primitive::Primitive;
 use super::reparam::Reparam;
@@ -1016,11 +1020,13 @@ pub fn build(
     for r in 0..net.regions.len() {
         let region = net.regions[r].clone();
         let cells = choice_cells(net, &region, prims);
-        let unfold = |net: &mut Network, way: &Way| -> Vec<(EnvelopePatch, Vec<Fold>)> {
+        let unfold = |net: &mut Network, way: &Way| -> Vec<Unfolded> {
             let made = way.patches(net, &region, r, prims);
-            made.into_iter().map(|p| unfolded(net, p, cells)).collect()
+            made.into_iter()
+                .map(|p| unfolded(net, p, cells, &[]))
+                .collect()
         };
-        let count = |made: &[(EnvelopePatch, Vec<Fold>)]| made.iter().map(|m| m.1.len()).sum();
+        let count = |made: &[Unfolded]| made.iter().map(|m| m.folds.len()).sum();
         let (nv, nc) = (net.vertices.len(), net.curves.len());
         let mut made = unfold(net, &Way::Chosen);
         let mut least: usize = count(&made);
@@ -1033,7 +1039,7 @@ pub fn build(
             for (i, way) in ways.iter().enumerate().skip(1) {
                 net.truncate(nv, nc);
                 let other = unfold(net, way);
-                let patches: Vec<EnvelopePatch> = other.iter().map(|m| m.0.clone()).collect();
+                let patches: Vec<EnvelopePatch> = other.iter().map(|m| m.patch.clone()).collect();
                 let n = count(&other);
                 if n < least && largest_border_jump(net, &patches, 8) < G1_KEPT {
                     (least, best) = (n, i);
@@ -1049,7 +1055,11 @@ pub fn build(
                 made = unfold(net, &ways[best]);
             }
         }
-        for (p, folds) in made {
+        kept_apart(net, &mut made, cells);
+        for Unfolded {
+            patch: p, folds, ..
+        } in made
+        {
             let patch = out.len();
             folded.extend(folds.into_iter().map(|f| Fold { patch, ..f }));
             out.push(p);
@@ -1063,37 +1073,140 @@ pub fn build(
 /// "Patches through themselves").
 const TURN_CHECKED_FINER: f64 = 20.0 * std::f64::consts::PI / 180.0;
 
+/// A patch whose shortest side (not collapsed) is under this share of its longest is checked
+/// for folded cells at 16 × 16 too ([`unfolded`]; envelope.md, "Patches through themselves",
+/// *Finer still, and into a neighbour*): beside a side that short the patch can turn over
+/// within a cell of the 8 × 8 grid.
+const SHORT_CHECKED_FINER: f64 = 0.01;
+
+/// A patch whose 8 × 8 grid lines turn by more than this (radians, 45°) is checked against its
+/// neighbours at 16 × 16 ([`kept_apart`]).
+const TURN_CHECKED_AGAINST: f64 = 45.0 * std::f64::consts::PI / 180.0;
+
+/// Of one region's patches, each whose 8 × 8 grid lines turn by more than
+/// [`TURN_CHECKED_AGAINST`] and whose 16 × 16 grid passes through a neighbour's (one across a
+/// curve they share; [`grids_crossing`]) is rescaled again ([`unfolded`]) with those crossings
+/// counted, in the order the region's patches are made (its geometry): sub-quads of a split
+/// face beside a short or heavily weighted side bulged into each other between the samples
+/// (envelope.md, "Patches through themselves", *Finer still, and into a neighbour*).
+fn kept_apart(net: &Network, made: &mut [Unfolded], cells: usize) {
+    if made.len() < 2 || made.iter().all(|m| m.turn <= TURN_CHECKED_AGAINST) {
+        return;
+    }
+    let k = 2 * FOLD_CELLS;
+    // Each patch's 16 × 16 grid, evaluated once (again where the patch changes).
+    let mut fine: Vec<Option<Vec<DVec3>>> = vec![None; made.len()];
+    for i in 0..made.len() {
+        if made[i].turn <= TURN_CHECKED_AGAINST {
+            continue;
+        }
+        // Its neighbours: the patches across a curve it shares.
+        let beside: Vec<usize> = (0..made.len())
+            .filter(|&j| {
+                j != i
+                    && made[i]
+                        .patch
+                        .sides
+                        .iter()
+                        .any(|a| made[j].patch.sides.iter().any(|b| a.curve == b.curve))
+            })
+            .collect();
+        for &j in beside.iter().chain([&i]) {
+            fine[j].get_or_insert_with(|| made[j].patch.coons.grid(k));
+        }
+        let grid = |j: usize| fine[j].as_ref().expect("evaluated above");
+        if beside
+            .iter()
+            .all(|&j| grids_crossing(grid(i), grid(j), k) == 0)
+        {
+            continue;
+        }
+        let others: Vec<Vec<DVec3>> = beside.iter().map(|&j| grid(j).clone()).collect();
+        made[i] = unfolded(net, made[i].patch.clone(), cells, &others);
+        fine[i] = None;
+    }
+}
+
+/// The shortest side's chord over the longest's, of the sides not collapsed.
+fn side_share(p: &EnvelopePatch) -> f64 {
+    let (lo, hi) = p
+        .coons
+        .sides
+        .iter()
+        .filter(|s| !s.collapsed)
+        .map(|s| s.point(0.0).distance(s.point(1.0)))
+        .fold((f64::INFINITY, 0.0f64), |(lo, hi), c| {
+            (lo.min(c), hi.max(c))
+        });
+    if hi > 0.0 { lo / hi } else { 1.0 }
+}
+
+/// A patch as [`unfolded`] leaves it.
+struct Unfolded {
+    patch: EnvelopePatch,
+    /// Its folded cells as the report samples them ([`FOLD_CELLS`] a side).
+    folds: Vec<Fold>,
+    /// How sharply the lines of that grid turn ([`largest_turn`]).
+    turn: f64,
+}
+
 /// The β tried on a folded patch's sides ([`unfolded`], [`Side::scaled`]): the cross
 /// derivative's middle drawn in (β > 0) or pushed out (β < 0).
 const SQUEEZES: [f64; 8] = [0.25, 0.5, 0.75, 0.9, -0.25, -0.5, -1.0, -2.0];
 
 /// `p`, or where it folds (as the report samples it, or `cells` a side) or passes through
-/// itself ([`super::folds::self_crossings`] at 8 cells a side, and at 16 where the 8 × 8 grid
-/// lines turn by more than [`TURN_CHECKED_FINER`]), the same patch with its sides'
-/// cross derivatives scaled between their corners (envelope.md, "Folded patches: cross
-/// derivatives rescaled"); with its folded cells as the report samples them. The scale is 1 at
-/// the corners and positive, so the fits there, the normal along every border and G1 with the
-/// patch across hold whatever it is. Round by round, of every side not yet scaled and every β
-/// of [`SQUEEZES`], the one change is kept that leaves fewest folded cells sampled at twice
-/// `cells` and at the report's [`FOLD_CELLS`] together (a fold at the samples is not traded for
-/// one between them, nor one between them left because it shows only at the report's
-/// samples; envelope.md, "At the report's samples too") and then, where the
-/// patch crossed itself, fewest crossing triangle pairs at 8 and 16 cells a side; among changes
-/// alike the longest side's and the least |β| come first (never the listing's order). Other
-/// patches are kept as built.
-fn unfolded(net: &Network, p: EnvelopePatch, cells: usize) -> (EnvelopePatch, Vec<Fold>) {
+/// itself ([`super::folds::self_crossings`] at 8 cells a side) — and where it folds at 16
+/// if the 8 × 8 grid lines turn by more than [`TURN_CHECKED_FINER`] (or passes through itself
+/// there) or a side is under [`SHORT_CHECKED_FINER`] of the longest — or passes through one of
+/// the grids `others` (16 × 16 grids of its neighbours, [`kept_apart`]), the same patch with
+/// its sides' cross derivatives scaled between their corners (envelope.md, "Folded patches:
+/// cross derivatives rescaled"); with its folded cells as the report samples them. The scale
+/// is 1 at the corners and positive, so the fits there, the normal along every border and G1
+/// with the patch across hold whatever it is. Round by round, of every side not yet scaled and
+/// every β of [`SQUEEZES`], the one change is kept that leaves fewest folded cells sampled at
+/// twice `cells` (32 a side for a patch checked at 16) and at the report's [`FOLD_CELLS`]
+/// together (a fold at the samples is not traded for one between them, nor one between them
+/// left because it shows only at the report's samples; envelope.md, "At the report's samples
+/// too") and then, where the patch crossed itself or a neighbour, fewest crossing triangle
+/// pairs at 8 and 16 cells a side; among changes alike the longest side's and the least |β|
+/// come first (never the listing's order). Other patches are kept as built.
+fn unfolded(net: &Network, p: EnvelopePatch, cells: usize, others: &[Vec<DVec3>]) -> Unfolded {
     let folds = |p: &EnvelopePatch, k: usize| super::folds::folds(net, std::slice::from_ref(p), k);
     let grid = p.coons.grid(FOLD_CELLS);
     let reported = grid_folds(net, &p, 0, &grid, FOLD_CELLS);
-    // A patch whose grid lines turn sharply between the samples may bulge through itself
-    // between them: checked at twice as many.
+    // The crossings of a 16 × 16 grid with the other patches given.
+    let apart = |g: &[DVec3]| -> usize {
+        others
+            .iter()
+            .map(|o| grids_crossing(g, o, 2 * FOLD_CELLS))
+            .sum()
+    };
+    // A patch whose grid lines turn sharply between the samples, or beside a very short side,
+    // may fold or bulge through itself between them: checked at twice as many.
+    let turn = largest_turn(&grid, FOLD_CELLS);
+    let bends = turn > TURN_CHECKED_FINER;
+    let finer = bends || side_share(&p) < SHORT_CHECKED_FINER;
+    let twice = (finer || !others.is_empty()).then(|| p.coons.grid(2 * FOLD_CELLS));
+    let between = |g: &[DVec3]| finer && !grid_folds(net, &p, 0, g, 2 * FOLD_CELLS).is_empty();
     let crossing = grid_crossings(&grid, FOLD_CELLS) > 0
-        || (largest_turn(&grid, FOLD_CELLS) > TURN_CHECKED_FINER
-            && self_crossings(&p, 2 * FOLD_CELLS) > 0);
-    if !crossing && reported.is_empty() && (cells == FOLD_CELLS || folds(&p, cells).is_empty()) {
-        return (p, reported);
+        || twice
+            .as_ref()
+            .is_some_and(|g| (bends && grid_crossings(g, 2 * FOLD_CELLS) > 0) || apart(g) > 0);
+    let folded_between = twice.as_ref().is_some_and(|g| between(g));
+    if !crossing
+        && !folded_between
+        && reported.is_empty()
+        && (cells == FOLD_CELLS || folds(&p, cells).is_empty())
+    {
+        return Unfolded {
+            patch: p,
+            folds: reported,
+            turn,
+        };
     }
-    let fine = 2 * cells;
+    // Twice `cells` a side; four times the report's where the patch was checked finer (a fold
+    // cleared at 16 a side was left in a strip thinner than that: 5 and 12 cells at 24 and 32).
+    let fine = if finer { 4 * FOLD_CELLS } else { 2 * cells };
     // Folded cells first (twice as fine and at the report's samples), then the crossing pairs:
     // a fold is never traded for fewer crossings.
     // One grid evaluated `fine` a side; the report's 8 × 8 (and 16 × 16) are every few of its
@@ -1106,10 +1219,14 @@ fn unfolded(net: &Network, p: EnvelopePatch, cells: usize) -> (EnvelopePatch, Ve
         let crossings = if crossing {
             let twice = if fine == 2 * FOLD_CELLS {
                 g
+            } else if fine % (2 * FOLD_CELLS) == 0 {
+                every_nth_line(&g, fine, 2 * FOLD_CELLS)
             } else {
                 q.coons.grid(2 * FOLD_CELLS)
             };
-            grid_crossings(&coarse, FOLD_CELLS) + grid_crossings(&twice, 2 * FOLD_CELLS)
+            grid_crossings(&coarse, FOLD_CELLS)
+                + grid_crossings(&twice, 2 * FOLD_CELLS)
+                + apart(&twice)
         } else {
             0
         };
@@ -1165,8 +1282,12 @@ fn unfolded(net: &Network, p: EnvelopePatch, cells: usize) -> (EnvelopePatch, Ve
             (best, least) = (q, n);
         }
     }
-    let reported = folds(&best, FOLD_CELLS);
-    (best, reported)
+    let grid = best.coons.grid(FOLD_CELLS);
+    Unfolded {
+        folds: grid_folds(net, &best, 0, &grid, FOLD_CELLS),
+        turn: largest_turn(&grid, FOLD_CELLS),
+        patch: best,
+    }
 }
 
 /// The grid `m` cells a side within the grid `g` of `k` ([`Coons::grid`]; `k` a multiple of
