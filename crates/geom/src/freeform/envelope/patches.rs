@@ -52,7 +52,7 @@
 //! side from a short list, the one that folds and crosses least: a positive multiple of X keeps
 //! the border's normal `C′ × X`, so G1 holds whatever β is (envelope.md, "Folded patches: cross
 //! derivatives rescaled"); one whose grid bends sharply between its samples, or that has a
-//! side under a hundredth of its longest, is checked at 16 × 16 too, and one bending more
+//! side under a hundredth of its longest or a corner under 20°, is checked at 16 × 16 too, and one bending more
 //! sharply still against its neighbours in the region, whose grids it may pass into between
 //! the samples ([`kept_apart`]; envelope.md, "Patches through themselves", *Finer still, and
 //! into a neighbour*). Where a build still folds after that and after its short legs are
@@ -1141,6 +1141,22 @@ fn side_share(p: &EnvelopePatch) -> f64 {
     if hi > 0.0 { lo / hi } else { 1.0 }
 }
 
+/// A patch with a corner narrower than this (radians, 20°; the sides leaving it, not a collapsed
+/// tip) is checked for folded cells at 16 × 16 too ([`unfolded`]): the Coons twist near such a
+/// corner outweighs `S_u × S_v` within a few hundredths of the patch.
+const NARROW_CHECKED_FINER: f64 = 20.0 * std::f64::consts::PI / 180.0;
+
+/// The least angle (radians) between the two sides leaving a corner of `p`, of the corners
+/// with no collapsed side.
+fn narrowest_corner(p: &EnvelopePatch) -> f64 {
+    let sides = &p.coons.sides;
+    (0..4)
+        .filter(|&c| !sides[c].collapsed && !sides[(c + 3) % 4].collapsed)
+        .map(|c| sides[c].d1(0.0).angle_between(-sides[(c + 3) % 4].d1(1.0)))
+        .filter(|a| a.is_finite())
+        .fold(std::f64::consts::PI, f64::min)
+}
+
 /// A patch as [`unfolded`] leaves it.
 struct Unfolded {
     patch: EnvelopePatch,
@@ -1157,9 +1173,9 @@ const SQUEEZES: [f64; 8] = [0.25, 0.5, 0.75, 0.9, -0.25, -0.5, -1.0, -2.0];
 /// `p`, or where it folds (as the report samples it, or `cells` a side) or passes through
 /// itself ([`super::folds::self_crossings`] at 8 cells a side) — and where it folds at 16
 /// if the 8 × 8 grid lines turn by more than [`TURN_CHECKED_FINER`] (or passes through itself
-/// there) or a side is under [`SHORT_CHECKED_FINER`] of the longest — or passes through one of
-/// the grids `others` (16 × 16 grids of its neighbours, [`kept_apart`]), the same patch with
-/// its sides' cross derivatives scaled between their corners (envelope.md, "Folded patches:
+/// there), a side is under [`SHORT_CHECKED_FINER`] of the longest or a corner narrower than
+/// [`NARROW_CHECKED_FINER`] — or passes through one of the grids `others` (16 × 16 grids of
+/// its neighbours, [`kept_apart`]), the same patch with its sides' cross derivatives scaled between their corners (envelope.md, "Folded patches:
 /// cross derivatives rescaled"); with its folded cells as the report samples them. The scale
 /// is 1 at the corners and positive, so the fits there, the normal along every border and G1
 /// with the patch across hold whatever it is. Round by round, of every side not yet scaled and
@@ -1185,7 +1201,9 @@ fn unfolded(net: &Network, p: EnvelopePatch, cells: usize, others: &[Vec<DVec3>]
     // may fold or bulge through itself between them: checked at twice as many.
     let turn = largest_turn(&grid, FOLD_CELLS);
     let bends = turn > TURN_CHECKED_FINER;
-    let finer = bends || side_share(&p) < SHORT_CHECKED_FINER;
+    let finer = bends
+        || side_share(&p) < SHORT_CHECKED_FINER
+        || narrowest_corner(&p) < NARROW_CHECKED_FINER;
     let twice = (finer || !others.is_empty()).then(|| p.coons.grid(2 * FOLD_CELLS));
     let between = |g: &[DVec3]| finer && !grid_folds(net, &p, 0, g, 2 * FOLD_CELLS).is_empty();
     let crossing = grid_crossings(&grid, FOLD_CELLS) > 0
