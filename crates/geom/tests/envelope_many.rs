@@ -390,6 +390,18 @@ fn fold_free_at(spec: &EnvelopeSpec, t: f64) -> Envelope {
     e
 }
 
+/// Asserts that `e`'s tessellation passes through itself at none of the resolutions `ks` (K
+/// quads a patch side); `what` names the case in the message.
+fn crosses_nowhere(e: &Envelope, ks: &[usize], what: &str) {
+    for &k in ks {
+        let m = e.tessellate(k).unwrap();
+        assert!(
+            prism_geom::freeform::envelope::folds::crossings(&m).is_empty(),
+            "{what}, K = {k}"
+        );
+    }
+}
+
 /// Folds are found patch by patch (envelope.md, "Folds, reported"): none on single
 /// primitives and pairs for any t from 0.1 to 1, nor on the bundled scenes (the test above),
 /// nor at t = 0.5 on a heap of four equal cubes whose cuts leave a thin four-sided region
@@ -1217,7 +1229,7 @@ fn a_short_leg_at_a_split_point_is_lengthened() {
 /// 32), nor does the tessellation pass through itself; G1 holds.
 #[test]
 fn folded_patches_are_unfolded_by_rescaling_their_cross_derivatives() {
-    use prism_geom::freeform::envelope::folds::{crossings, folds};
+    use prism_geom::freeform::envelope::folds::folds;
     for text in [
         include_str!("data/envelope/tiny-side-quad.envelope.json"),
         include_str!("data/envelope/short-sides-pentagon.envelope.json"),
@@ -1226,12 +1238,7 @@ fn folded_patches_are_unfolded_by_rescaling_their_cross_derivatives() {
         for t in [1.0, 0.5, 0.3, 0.2, 0.1] {
             let e = fold_free_at(&spec, t);
             assert_eq!(folds(&e.network, &e.patches, 32), vec![], "t = {t}");
-            for k in [8, 16] {
-                assert!(
-                    crossings(&e.tessellate(k).unwrap()).is_empty(),
-                    "t = {t}, K = {k}"
-                );
-            }
+            crosses_nowhere(&e, &[8, 16], &format!("t = {t}"));
         }
     }
 }
@@ -1245,19 +1252,13 @@ fn folded_patches_are_unfolded_by_rescaling_their_cross_derivatives() {
 /// fold, G1.
 #[test]
 fn patches_through_themselves_are_rescaled_too() {
-    use prism_geom::freeform::envelope::folds::crossings;
     let spec: EnvelopeSpec = serde_json::from_str(include_str!(
         "data/envelope/self-crossing-patches.envelope.json"
     ))
     .unwrap();
     for t in [1.0, 0.5, 0.2, 0.1] {
         let e = fold_free_at(&spec, t);
-        for k in [8, 16, 32] {
-            assert!(
-                crossings(&e.tessellate(k).unwrap()).is_empty(),
-                "t = {t}, K = {k}"
-            );
-        }
+        crosses_nowhere(&e, &[8, 16, 32], &format!("t = {t}"));
     }
 }
 
@@ -1268,19 +1269,13 @@ fn patches_through_themselves_are_rescaled_too() {
 /// itself now (envelope.md, "Patches through themselves"): no crossing at any K, no fold, G1.
 #[test]
 fn a_patch_through_itself_is_found_whatever_its_sides() {
-    use prism_geom::freeform::envelope::folds::crossings;
     let spec: EnvelopeSpec = serde_json::from_str(include_str!(
         "data/envelope/bulging-patch-through-itself.envelope.json"
     ))
     .unwrap();
     for t in [3.0, 2.0, 1.0] {
         let e = fold_free_at(&spec, t);
-        for k in [6, 8, 16, 32] {
-            assert!(
-                crossings(&e.tessellate(k).unwrap()).is_empty(),
-                "t = {t}, K = {k}"
-            );
-        }
+        crosses_nowhere(&e, &[6, 8, 16, 32], &format!("t = {t}"));
     }
 }
 
@@ -1334,20 +1329,14 @@ fn border_cells_are_fans_from_their_inner_corners() {
 /// 16 × 16 too (envelope.md, "Patches through themselves"): no crossing at any K, no fold.
 #[test]
 fn a_patch_bending_between_its_samples_is_checked_finer() {
-    use prism_geom::freeform::envelope::folds::crossings;
     for scene in [
         include_str!("data/envelope/bulging-between-samples-heap.envelope.json"),
         include_str!("data/envelope/bulging-between-samples-pair.envelope.json"),
     ] {
         let spec: EnvelopeSpec = serde_json::from_str(scene).unwrap();
         let e = fold_free_at(&spec, spec.t);
-        for k in [8, 16, 24, 32] {
-            assert!(
-                crossings(&e.tessellate(k).unwrap()).is_empty(),
-                "{} primitives, K = {k}",
-                spec.primitives.len()
-            );
-        }
+        let what = format!("{} primitives", spec.primitives.len());
+        crosses_nowhere(&e, &[8, 16, 24, 32], &what);
     }
 }
 
@@ -1361,15 +1350,12 @@ fn a_patch_bending_between_its_samples_is_checked_finer() {
 /// into a neighbour*).
 #[test]
 fn sub_quads_of_a_region_are_kept_apart() {
-    use prism_geom::freeform::envelope::folds::crossings;
     let spec: EnvelopeSpec = serde_json::from_str(include_str!(
         "data/envelope/sub-quads-through-each-other.envelope.json"
     ))
     .unwrap();
     let e = fold_free_at(&spec, 0.12);
-    for k in [8, 16, 24, 32] {
-        assert!(crossings(&e.tessellate(k).unwrap()).is_empty(), "K = {k}");
-    }
+    crosses_nowhere(&e, &[8, 16, 24, 32], "t = 0.12");
 }
 
 /// Heap 600350 of the mixed survey at t = 0.7: a patch of primitive 2's face 5 with a side
@@ -1380,13 +1366,11 @@ fn sub_quads_of_a_region_are_kept_apart() {
 /// neighbour*).
 #[test]
 fn a_patch_beside_a_very_short_side_is_checked_finer() {
-    use prism_geom::freeform::envelope::folds::{crossings, folds};
+    use prism_geom::freeform::envelope::folds::folds;
     let spec: EnvelopeSpec =
         serde_json::from_str(include_str!("data/envelope/short-side-bulge.envelope.json")).unwrap();
     let e = fold_free_at(&spec, 0.7);
-    for k in [8, 16, 24, 32] {
-        assert!(crossings(&e.tessellate(k).unwrap()).is_empty(), "K = {k}");
-    }
+    crosses_nowhere(&e, &[8, 16, 24, 32], "t = 0.7");
     assert!(folds(&e.network, &e.patches, 16).is_empty());
 }
 

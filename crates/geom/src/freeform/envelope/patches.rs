@@ -52,13 +52,13 @@
 //! side from a short list, the one that folds and crosses least: a positive multiple of X keeps
 //! the border's normal `C′ × X`, so G1 holds whatever β is (envelope.md, "Folded patches: cross
 //! derivatives rescaled"); one whose grid bends sharply between its samples, or that has a
-//! side under a hundredth of its longest or a corner under 20°, is checked at 16 × 16 too, and one bending more
-//! sharply still against its neighbours in the region, whose grids it may pass into between
-//! the samples ([`kept_apart`]; envelope.md, "Patches through themselves", *Finer still, and
-//! into a neighbour*). Where a build still folds after that and after its short legs are
-//! given back (`legs.rs`), each region of other than four sides that folds is patched every
-//! way it can be, each rescaled, and the way folding fewest kept ([`build`]; envelope.md,
-//! "Every way, rescaled").
+//! side under a hundredth of its longest or a corner under 20°, is checked at 16 × 16 too, and
+//! one bending more sharply still against its neighbours in the region, whose grids it may
+//! pass into between the samples ([`kept_apart`]; envelope.md, "Patches through themselves",
+//! *Finer still, and into a neighbour*). Where a build still folds after that and after its
+//! short legs are given back (`legs.rs`), each region of other than four sides that folds is
+//! patched every way it can be, each rescaled, and the way folding fewest kept ([`build`];
+//! envelope.md, "Every way, rescaled").
 
 use super::coons::{Coons, Side};
 use super::edges::curved_edge;
@@ -1175,15 +1175,15 @@ const SQUEEZES: [f64; 8] = [0.25, 0.5, 0.75, 0.9, -0.25, -0.5, -1.0, -2.0];
 /// if the 8 × 8 grid lines turn by more than [`TURN_CHECKED_FINER`] (or passes through itself
 /// there), a side is under [`SHORT_CHECKED_FINER`] of the longest or a corner narrower than
 /// [`NARROW_CHECKED_FINER`] — or passes through one of the grids `others` (16 × 16 grids of
-/// its neighbours, [`kept_apart`]), the same patch with its sides' cross derivatives scaled between their corners (envelope.md, "Folded patches:
-/// cross derivatives rescaled"); with its folded cells as the report samples them. The scale
-/// is 1 at the corners and positive, so the fits there, the normal along every border and G1
-/// with the patch across hold whatever it is. Round by round, of every side not yet scaled and
-/// every β of [`SQUEEZES`], the one change is kept that leaves fewest folded cells sampled at
-/// twice `cells` (32 a side for a patch checked at 16) and at the report's [`FOLD_CELLS`]
-/// together (a fold at the samples is not traded for one between them, nor one between them
-/// left because it shows only at the report's samples; envelope.md, "At the report's samples
-/// too") and then, where the patch crossed itself or a neighbour, fewest crossing triangle
+/// its neighbours, [`kept_apart`]), the same patch with its sides' cross derivatives scaled
+/// between their corners (envelope.md, "Folded patches: cross derivatives rescaled"); with its
+/// folded cells as the report samples them. The scale is 1 at the corners and positive, so the
+/// fits there, the normal along every border and G1 with the patch across hold whatever it is.
+/// Round by round, of every side not yet scaled and every β of [`SQUEEZES`], the one change
+/// is kept that leaves fewest folded cells sampled at twice `cells` (32 a side for a patch
+/// checked at 16) and at the report's [`FOLD_CELLS`] together (a fold at the samples is not
+/// traded for one between them, nor one between them left because it shows only at the
+/// report's samples; envelope.md, "At the report's samples too") and then, where the patch crossed itself or a neighbour, fewest crossing triangle
 /// pairs at 8 and 16 cells a side; among changes alike the longest side's and the least |β|
 /// come first (never the listing's order). Other patches are kept as built.
 fn unfolded(net: &Network, p: EnvelopePatch, cells: usize, others: &[Vec<DVec3>]) -> Unfolded {
@@ -1205,12 +1205,14 @@ fn unfolded(net: &Network, p: EnvelopePatch, cells: usize, others: &[Vec<DVec3>]
         || side_share(&p) < SHORT_CHECKED_FINER
         || narrowest_corner(&p) < NARROW_CHECKED_FINER;
     let twice = (finer || !others.is_empty()).then(|| p.coons.grid(2 * FOLD_CELLS));
-    let between = |g: &[DVec3]| finer && !grid_folds(net, &p, 0, g, 2 * FOLD_CELLS).is_empty();
     let crossing = grid_crossings(&grid, FOLD_CELLS) > 0
         || twice
             .as_ref()
             .is_some_and(|g| (bends && grid_crossings(g, 2 * FOLD_CELLS) > 0) || apart(g) > 0);
-    let folded_between = twice.as_ref().is_some_and(|g| between(g));
+    let folded_between = finer
+        && twice
+            .as_ref()
+            .is_some_and(|g| !grid_folds(net, &p, 0, g, 2 * FOLD_CELLS).is_empty());
     if !crossing
         && !folded_between
         && reported.is_empty()
