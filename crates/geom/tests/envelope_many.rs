@@ -1374,6 +1374,39 @@ fn a_patch_beside_a_very_short_side_is_checked_finer() {
     assert!(folds(&e.network, &e.patches, 16).is_empty());
 }
 
+/// Patches sound at their 8 × 8 samples with a cell there nearly flattened (the sine of its
+/// corner angle, tilted from the normal expected there, under 0.3) folded in a strip between
+/// them. Heap 600105 of the mixed survey at t = 0.1, a patch of primitive 2's face 0 with no
+/// corner under 68° and no side under 24 % of its longest: 3, 8 and 10 folded cells at 16, 24
+/// and 32 a side; heap 500275 at t = 3: 2, 6 and 11. Such a patch is checked finer, at 16 and
+/// 32 a side, and its search scores both (envelope.md, "Patches through themselves", *Nearly
+/// flat cells, and 32 a side*). Heap 400183 at t = 0.1 folded in one cell at 16 a side and 24, none at 32: the search of a
+/// patch checked finer counts its folds at 16 too. Heap 600161 at t = 0.1 folded in 15 cells at
+/// 32 a side and none at 16, in a strip along a side of a patch of primitive 4's face 0: a patch
+/// checked finer is checked at 32 a side as well as at 16.
+#[test]
+fn a_patch_with_a_nearly_flat_cell_is_checked_finer() {
+    use prism_geom::freeform::envelope::folds::folds;
+    for scene in [
+        include_str!("data/envelope/nearly-flat-cell-heap.envelope.json"),
+        include_str!("data/envelope/nearly-flat-cell-heap-at-3.envelope.json"),
+        include_str!("data/envelope/fold-between-32-samples.envelope.json"),
+        include_str!("data/envelope/fold-between-16-samples.envelope.json"),
+    ] {
+        let spec: EnvelopeSpec = serde_json::from_str(scene).unwrap();
+        let e = fold_free_at(&spec, spec.t);
+        let what = format!("{} primitives, t = {}", spec.primitives.len(), spec.t);
+        for k in [16, 24, 32] {
+            assert_eq!(
+                folds(&e.network, &e.patches, k),
+                vec![],
+                "{what}, {k} a side"
+            );
+        }
+        crosses_nowhere(&e, &[16], &what);
+    }
+}
+
 /// Below the slider, which stops at t = 0.1 (the CLI and scene files take any t > 0), the
 /// bundled scenes of several primitives fold nowhere and do not pass through themselves down to
 /// t = 0.001. The five folded at t <= 0.01 (1 to 10 cells) in a thin region on primitive 3's

@@ -52,8 +52,49 @@ pub(crate) fn grid_folds(
     g: &[DVec3],
     k: usize,
 ) -> Vec<Fold> {
-    let kf = k as f64;
     let mut out = Vec::new();
+    cells(net, p, g, k, |u, v, turn, _| {
+        // A cell with a non-finite point counts as folded (never chosen, always reported).
+        if turn < 0.0 || turn.is_nan() {
+            out.push(Fold {
+                patch: pi,
+                region: p.region,
+                u,
+                v,
+            });
+        }
+    });
+    out
+}
+
+/// The least, over the cells of patch `p`'s grid `g` (`k` cells a side), of
+/// `(∂S/∂u × ∂S/∂v) · n / (|∂S/∂u| |∂S/∂v| |n|)` with `n` the outward normal expected there
+/// (as [`grid_folds`] takes it): the sine of the cell's corner angle, tilted away from `n`.
+/// A patch sound at its samples but with a cell nearly flattened (near 0) can fold over in a
+/// strip between them (envelope.md, "Patches through themselves", *Nearly flat cells*); 1 for
+/// a grid of square cells facing `n`, and a cell measured as 0/0 (a collapsed side) counts 1.
+pub(crate) fn least_sine(net: &Network, p: &EnvelopePatch, g: &[DVec3], k: usize) -> f64 {
+    let mut least = 1.0f64;
+    cells(net, p, g, k, |_, _, turn, size| {
+        if size > 0.0 && turn.is_finite() {
+            least = least.min(turn / size);
+        }
+    });
+    least
+}
+
+/// Every cell of patch `p`'s grid `g` (`k` cells a side), in order: its centre (u, v),
+/// `(∂S/∂u × ∂S/∂v) · n` from the cell's four corners with `n` the patch's corner normals
+/// (outward, those of the network's vertices) blended bilinearly to the centre, and
+/// `|∂S/∂u| |∂S/∂v| |n|`.
+fn cells(
+    net: &Network,
+    p: &EnvelopePatch,
+    g: &[DVec3],
+    k: usize,
+    mut each: impl FnMut(f64, f64, f64, f64),
+) {
+    let kf = k as f64;
     // Corners (0, 0), (1, 0), (1, 1), (0, 1): the starts of sides 0 to 3.
     let n: Vec<DVec3> = p
         .sides
@@ -73,19 +114,14 @@ pub(crate) fn grid_folds(
                 + n[1] * (u * (1.0 - v))
                 + n[2] * (u * v)
                 + n[3] * ((1.0 - u) * v);
-            // A cell with a non-finite point counts as folded (never chosen, always reported).
-            let turn = du.cross(dv).dot(expected);
-            if turn < 0.0 || turn.is_nan() {
-                out.push(Fold {
-                    patch: pi,
-                    region: p.region,
-                    u,
-                    v,
-                });
-            }
+            each(
+                u,
+                v,
+                du.cross(dv).dot(expected),
+                du.length() * dv.length() * expected.length(),
+            );
         }
     }
-    out
 }
 
 /// Pairs of triangles of patch `p`'s own `k` × `k` grid (each cell cut along its diagonal from
