@@ -371,8 +371,17 @@ impl Coons {
     }
 
     fn combine(c: &Corners, u: f64, v: f64, ul: &Line, vl: &Line) -> DVec3 {
-        let hu = hermite(u);
-        let hv = hermite(v);
+        Coons::combine_at(c, (u, hermite(u)), (v, hermite(v)), ul, vl)
+    }
+
+    /// [`Coons::combine`] with the Hermite functions at u and v given.
+    fn combine_at(
+        c: &Corners,
+        (u, hu): (f64, [f64; 4]),
+        (v, hv): (f64, [f64; 4]),
+        ul: &Line,
+        vl: &Line,
+    ) -> DVec3 {
         let lu = hu[0] * vl[0] + hu[1] * vl[1] + hu[2] * vl[2] + hu[3] * vl[3];
         let lv = hv[0] * ul[0] + hv[1] * ul[1] + hv[2] * ul[2] + hv[3] * ul[3];
         let [(f00, e00), (f01, e01), (f10, e10), (f11, e11)] = c.twists;
@@ -407,16 +416,17 @@ impl Coons {
         let c = self.corners();
         let ul: Vec<Line> = (0..=k).map(|i| self.u_line(i as f64 / kf)).collect();
         let vl: Vec<Line> = (0..=k).map(|j| self.v_line(j as f64 / kf)).collect();
+        // The Hermite functions at each line's parameter, once (the same values `combine` takes).
+        let h: Vec<(f64, [f64; 4])> = (0..=k)
+            .map(|i| {
+                let s = i as f64 / kf;
+                (s, hermite(s))
+            })
+            .collect();
         let mut out = Vec::with_capacity((k + 1) * (k + 1));
-        for (j, vline) in vl.iter().enumerate() {
-            for (i, uline) in ul.iter().enumerate() {
-                out.push(Coons::combine(
-                    &c,
-                    i as f64 / kf,
-                    j as f64 / kf,
-                    uline,
-                    vline,
-                ));
+        for (vline, &hv) in vl.iter().zip(&h) {
+            for (uline, &hu) in ul.iter().zip(&h) {
+                out.push(Coons::combine_at(&c, hu, hv, uline, vline));
             }
         }
         out
