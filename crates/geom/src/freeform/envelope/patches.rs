@@ -1255,9 +1255,10 @@ fn unfolded(net: &Network, p: EnvelopePatch, cells: usize, others: &[Vec<DVec3>]
     let score = |q: &EnvelopePatch| {
         let g = q.coons.grid(fine);
         let coarse = every_nth_line(&g, fine, FOLD_CELLS);
-        // At 16 a side too where the patch was checked there: a fold there can lie between
-        // the samples at 32 (heap 400183 at t = 0.1 folded in one cell at 16, none at 32).
-        let middle = (fine == 4 * FOLD_CELLS).then(|| every_nth_line(&g, fine, 2 * FOLD_CELLS));
+        // At 16 a side too where the patch was checked finer (`fine` is 32): a fold there can
+        // lie between the samples at 32 (heap 400183 at t = 0.1 folded in one cell at 16, none
+        // at 32).
+        let middle = finer.then(|| every_nth_line(&g, fine, 2 * FOLD_CELLS));
         let folded = grid_folds(net, q, 0, &g, fine).len()
             + middle
                 .as_ref()
