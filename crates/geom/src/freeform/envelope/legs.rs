@@ -10,14 +10,17 @@
 //! folds. Lengthening every such curve's legs moved the fold to other heaps (a sliver strip
 //! bulged through its neighbour); lengthening only the curves around a folded patch does not:
 //!
-//! 1. Build the patches. If none folds, that is the envelope.
+//! 1. Build the patches. If none folds, that is the envelope: at the report's samples, nor
+//!    between them where the rescaling search looked (16 and 32 cells a side for a patch
+//!    checked finer, `patches.rs`, `unfolded`).
 //! 2. Otherwise, for each share `s` of [`SHARES`] in turn, give every polynomial curve on a
 //!    side of a folded patch's region legs of at least `s` × a third of its chord (directions
 //!    kept, so its end tangents — and the tangent planes and G1 — are unchanged) and build the
 //!    patches again; keep the first build that folds nowhere, or else the one that folds
-//!    least.
-//! 3. If that still folds, build it once more with every way to patch a region that still
-//!    folds tried rescaled (`patches.rs`, `build`; envelope.md, "Every way, rescaled").
+//!    least (fewest cells at the report's samples, then between them).
+//! 3. If that still folds at the report's samples, build it once more with every way to patch
+//!    a region that still folds tried rescaled (`patches.rs`, `build`; envelope.md, "Every
+//!    way, rescaled").
 //!
 //! A curve with a T-point or a split point on it keeps its legs (the point would leave it).
 //! The curves chosen come from the folded regions, not from the listing, so the surface does
@@ -35,26 +38,36 @@ use std::collections::BTreeSet;
 /// around a fold (the survey's two folds went at the first).
 const SHARES: [f64; 2] = [0.5, 1.0];
 
-/// The network with its bases, the patches and their folded cells.
-type Built = (Network, Vec<EnvelopePatch>, Vec<Fold>);
+/// The network with its bases, the patches, their folded cells as the report samples them,
+/// and the regions still folding between those samples with how many cells
+/// ([`patches::build`]).
+type Built = (Network, Vec<EnvelopePatch>, Vec<Fold>, Vec<(usize, usize)>);
 
 fn build(mut net: Network, basis: Basis, prims: &[Primitive], every_way: bool) -> Built {
     net.assign_bases(basis);
-    let (patches, folded) = patches::build(&mut net, prims, every_way);
-    (net, patches, folded)
+    let (patches, folded, between) = patches::build(&mut net, prims, every_way);
+    (net, patches, folded, between)
+}
+
+/// How much `b` folds: its folded cells at the report's samples, then those between them (a
+/// fold at the samples is never traded for folds between them).
+fn folding(b: &Built) -> (usize, usize) {
+    (b.2.len(), b.3.iter().map(|&(_, cells)| cells).sum())
 }
 
 /// The patches of `net` (regions complete, no basis assigned yet), with the short legs around
 /// a fold given back as the module says.
 pub(super) fn patched(net: Network, basis: Basis, prims: &[Primitive]) -> Built {
     let first = build(net.clone(), basis, prims, false);
-    if first.2.is_empty() {
+    if folding(&first) == (0, 0) {
         return first;
     }
     let around: BTreeSet<usize> = first
         .2
         .iter()
-        .flat_map(|f| net.regions[f.region].sides.iter().map(|s| s.curve))
+        .map(|f| f.region)
+        .chain(first.3.iter().map(|&(r, _)| r))
+        .flat_map(|r| net.regions[r].sides.iter().map(|s| s.curve))
         .collect();
     let mut best = first;
     let mut input = net.clone();
@@ -68,17 +81,21 @@ pub(super) fn patched(net: Network, basis: Basis, prims: &[Primitive]) -> Built 
             continue;
         }
         let got = build(lengthened.clone(), basis, prims, false);
-        if got.2.len() < best.2.len() {
+        if folding(&got) < folding(&best) {
             best = got;
             input = lengthened;
-            if best.2.is_empty() {
+            if folding(&best) == (0, 0) {
                 return best;
             }
         }
     }
-    // Still folding: every way to patch a region that folds, each rescaled.
+    if best.2.is_empty() {
+        return best;
+    }
+    // Still folding at the report's samples: every way to patch a region that folds there,
+    // each rescaled.
     let last = build(input, basis, prims, true);
-    if last.2.len() < best.2.len() {
+    if folding(&last) < folding(&best) {
         best = last;
     }
     best

@@ -256,7 +256,7 @@ fn assemble(
         });
     }
     let regions = network.regions.len();
-    let (network, patches, folded) = legs::patched(network, spec.basis, &primitives);
+    let (network, patches, folded, _) = legs::patched(network, spec.basis, &primitives);
     Ok(Envelope {
         primitives,
         network,

@@ -1010,15 +1010,19 @@ fn region_patches(
 }
 
 /// The patches of every region of `net` ([`region_patches`]), each that still folds or passes
-/// through itself with its cross derivatives rescaled ([`unfolded`]), and their folded cells as
-/// the report samples them ([`FOLD_CELLS`] a side: what [`super::Envelope::folds`] returns).
+/// through itself with its cross derivatives rescaled ([`unfolded`]), their folded cells as
+/// the report samples them ([`FOLD_CELLS`] a side: what [`super::Envelope::folds`] returns),
+/// and the regions whose patches still fold between those samples, with how many cells
+/// (region, cells; envelope.md, "Short legs given back where a patch folds", *Between the
+/// samples too*).
 pub fn build(
     net: &mut Network,
     prims: &[Primitive],
     every_way: bool,
-) -> (Vec<EnvelopePatch>, Vec<Fold>) {
+) -> (Vec<EnvelopePatch>, Vec<Fold>, Vec<(usize, usize)>) {
     let mut out = Vec::new();
     let mut folded = Vec::new();
+    let mut between = Vec::new();
     for r in 0..net.regions.len() {
         let region = net.regions[r].clone();
         let cells = choice_cells(net, &region, prims);
@@ -1058,6 +1062,10 @@ pub fn build(
             }
         }
         kept_apart(net, &mut made, cells);
+        let left: usize = made.iter().map(|m| m.between).sum();
+        if left > 0 {
+            between.push((r, left));
+        }
         for Unfolded {
             patch: p, folds, ..
         } in made
@@ -1067,7 +1075,7 @@ pub fn build(
             out.push(p);
         }
     }
-    (out, folded)
+    (out, folded, between)
 }
 
 /// A patch whose 8 × 8 grid lines turn by more than this (radians, 20°) from one segment to the
@@ -1173,11 +1181,16 @@ struct Unfolded {
     folds: Vec<Fold>,
     /// How sharply the lines of that grid turn ([`largest_turn`]).
     turn: f64,
+    /// Folded cells the rescaling search left between the report's samples (at twice `cells`
+    /// a side, or at 16 and 32 for a patch checked finer); 0 where it was not needed.
+    between: usize,
 }
 
 /// The β tried on a folded patch's sides ([`unfolded`], [`Side::scaled`]): the cross
-/// derivative's middle drawn in (β > 0) or pushed out (β < 0).
-const SQUEEZES: [f64; 8] = [0.25, 0.5, 0.75, 0.9, -0.25, -0.5, -1.0, -2.0];
+/// derivative's middle drawn in (β > 0) or pushed out (β < 0; at −4 to five times the fitted
+/// one, tried last: a crease along a long side of heap 500132 needed more than −2, envelope.md,
+/// *Pushed out further*).
+const SQUEEZES: [f64; 9] = [0.25, 0.5, 0.75, 0.9, -0.25, -0.5, -1.0, -2.0, -4.0];
 
 /// `p`, or where it folds (as the report samples it, or `cells` a side) or passes through
 /// itself ([`super::folds::self_crossings`] at 8 cells a side) — and where it folds at 16 or
@@ -1242,6 +1255,7 @@ fn unfolded(net: &Network, p: EnvelopePatch, cells: usize, others: &[Vec<DVec3>]
             patch: p,
             folds: reported,
             turn,
+            between: 0,
         };
     }
     // Twice `cells` a side; four times the report's where the patch was checked finer (a fold
@@ -1331,8 +1345,11 @@ fn unfolded(net: &Network, p: EnvelopePatch, cells: usize, others: &[Vec<DVec3>]
         }
     }
     let grid = best.coons.grid(FOLD_CELLS);
+    let folds = grid_folds(net, &best, 0, &grid, FOLD_CELLS);
     Unfolded {
-        folds: grid_folds(net, &best, 0, &grid, FOLD_CELLS),
+        // The search's score counts the report's samples once more.
+        between: least.0.saturating_sub(folds.len()),
+        folds,
         turn: largest_turn(&grid, FOLD_CELLS),
         patch: best,
     }
