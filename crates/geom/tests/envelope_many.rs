@@ -390,6 +390,18 @@ fn fold_free_at(spec: &EnvelopeSpec, t: f64) -> Envelope {
     e
 }
 
+/// Asserts that no cell of `e`'s patches folds sampled at any of `ks` cells a side
+/// ([`prism_geom::freeform::envelope::folds::folds`]); `what` names the case in the message.
+fn folds_nowhere(e: &Envelope, ks: &[usize], what: &str) {
+    for &k in ks {
+        assert_eq!(
+            prism_geom::freeform::envelope::folds::folds(&e.network, &e.patches, k),
+            vec![],
+            "{what}, {k} a side"
+        );
+    }
+}
+
 /// Asserts that `e`'s tessellation passes through itself at none of the resolutions `ks` (K
 /// quads a patch side); `what` names the case in the message.
 fn crosses_nowhere(e: &Envelope, ks: &[usize], what: &str) {
@@ -490,7 +502,6 @@ fn folds_are_found_patch_by_patch() {
 #[test]
 fn short_legs_are_given_back_where_a_patch_folds() {
     use prism_geom::freeform::envelope::CurveKind;
-    use prism_geom::freeform::envelope::folds::{crossings, folds};
     for (text, ts) in [
         (
             include_str!("data/envelope/folding-heap.envelope.json"),
@@ -506,15 +517,8 @@ fn short_legs_are_given_back_where_a_patch_folds() {
             let e = envelope(&EnvelopeSpec { t, ..spec.clone() }).unwrap();
             assert_eq!(e.folds(), vec![], "t = {t}");
             assert!(e.largest_border_jump() < 1e-6, "t = {t}");
-            for k in [8, 16, 32] {
-                let m = e.tessellate(k).unwrap();
-                assert!(crossings(&m).is_empty(), "t = {t}, K = {k}");
-                assert_eq!(
-                    folds(&e.network, &e.patches, k),
-                    vec![],
-                    "t = {t}, {k} a side"
-                );
-            }
+            crosses_nowhere(&e, &[8, 16, 32], &format!("t = {t}"));
+            folds_nowhere(&e, &[8, 16, 32], &format!("t = {t}"));
             // Some fusion edges or rebuilt edge pieces (polynomial cubics with legs of 2t thirds
             // of their chord) now have longer legs.
             let long = e
@@ -1238,7 +1242,6 @@ fn a_short_leg_at_a_split_point_is_lengthened() {
 /// 32), nor does the tessellation pass through itself; G1 holds.
 #[test]
 fn folded_patches_are_unfolded_by_rescaling_their_cross_derivatives() {
-    use prism_geom::freeform::envelope::folds::folds;
     for text in [
         include_str!("data/envelope/tiny-side-quad.envelope.json"),
         include_str!("data/envelope/short-sides-pentagon.envelope.json"),
@@ -1246,7 +1249,7 @@ fn folded_patches_are_unfolded_by_rescaling_their_cross_derivatives() {
         let spec: EnvelopeSpec = serde_json::from_str(text).unwrap();
         for t in [1.0, 0.5, 0.3, 0.2, 0.1] {
             let e = fold_free_at(&spec, t);
-            assert_eq!(folds(&e.network, &e.patches, 32), vec![], "t = {t}");
+            folds_nowhere(&e, &[32], &format!("t = {t}"));
             crosses_nowhere(&e, &[8, 16], &format!("t = {t}"));
         }
     }
@@ -1375,12 +1378,11 @@ fn sub_quads_of_a_region_are_kept_apart() {
 /// neighbour*).
 #[test]
 fn a_patch_beside_a_very_short_side_is_checked_finer() {
-    use prism_geom::freeform::envelope::folds::folds;
     let spec: EnvelopeSpec =
         serde_json::from_str(include_str!("data/envelope/short-side-bulge.envelope.json")).unwrap();
     let e = fold_free_at(&spec, 0.7);
     crosses_nowhere(&e, &[8, 16, 24, 32], "t = 0.7");
-    assert!(folds(&e.network, &e.patches, 16).is_empty());
+    folds_nowhere(&e, &[16], "t = 0.7");
 }
 
 /// Patches sound at their 8 × 8 samples with a cell there nearly flattened (the sine of its
@@ -1395,7 +1397,6 @@ fn a_patch_beside_a_very_short_side_is_checked_finer() {
 /// checked finer is checked at 32 a side as well as at 16.
 #[test]
 fn a_patch_with_a_nearly_flat_cell_is_checked_finer() {
-    use prism_geom::freeform::envelope::folds::folds;
     for scene in [
         include_str!("data/envelope/nearly-flat-cell-heap.envelope.json"),
         include_str!("data/envelope/nearly-flat-cell-heap-at-3.envelope.json"),
@@ -1405,13 +1406,7 @@ fn a_patch_with_a_nearly_flat_cell_is_checked_finer() {
         let spec: EnvelopeSpec = serde_json::from_str(scene).unwrap();
         let e = fold_free_at(&spec, spec.t);
         let what = format!("{} primitives, t = {}", spec.primitives.len(), spec.t);
-        for k in [16, 24, 32] {
-            assert_eq!(
-                folds(&e.network, &e.patches, k),
-                vec![],
-                "{what}, {k} a side"
-            );
-        }
+        folds_nowhere(&e, &[16, 24, 32], &what);
         crosses_nowhere(&e, &[16], &what);
     }
 }
@@ -1424,15 +1419,12 @@ fn a_patch_with_a_nearly_flat_cell_is_checked_finer() {
 /// "Folded patches: cross derivatives rescaled", *Pushed out further*).
 #[test]
 fn a_crease_along_a_long_side_is_pushed_out_further() {
-    use prism_geom::freeform::envelope::folds::folds;
     let spec: EnvelopeSpec = serde_json::from_str(include_str!(
         "data/envelope/crease-along-a-long-side.envelope.json"
     ))
     .unwrap();
     let e = fold_free_at(&spec, 0.1);
-    for k in [16, 24, 32] {
-        assert_eq!(folds(&e.network, &e.patches, k), vec![], "{k} a side");
-    }
+    folds_nowhere(&e, &[16, 24, 32], "t = 0.1");
     crosses_nowhere(&e, &[16, 32], "t = 0.1");
 }
 
@@ -1492,12 +1484,11 @@ fn opposite_sides_are_also_matched_the_other_way() {
 /// rescaled"), takes changes that clear those, and ends with none at 8 or 16 cells a side.
 #[test]
 fn the_rescaling_search_counts_the_reports_samples() {
-    use prism_geom::freeform::envelope::folds::{crossings, folds};
     let spec: EnvelopeSpec =
         serde_json::from_str(include_str!("data/envelope/needle-tip-heap.envelope.json")).unwrap();
     let e = fold_free_at(&spec, 0.05);
-    assert!(folds(&e.network, &e.patches, 16).is_empty());
-    assert!(crossings(&e.tessellate(8).unwrap()).is_empty());
+    folds_nowhere(&e, &[16], "t = 0.05");
+    crosses_nowhere(&e, &[8], "t = 0.05");
 }
 
 /// Every way to patch a region that still folds once rescaled (heap 600349 of the mixed survey
