@@ -1020,8 +1020,8 @@ fn envelope_builds_the_bundled_scenes_and_names_bad_ones() {
     );
     assert!(so.contains(" folded=0 "), "{so}");
     // Down to t = 0.1, where the tab's slider stops, nothing folds; in a heap of four
-    // primitives at t = 0.02 a cell of a region between primitives does: counted, and the first
-    // named on stderr (exit 0).
+    // primitives at t = 0.01 a cell on a primitive's face does: counted, and the first named on
+    // stderr (exit 0).
     let (_, so, _) = succeeds_to(
         "seven-01.obj",
         "envelope assets/table2-seven.envelope.json -o {} --resolution 4 --t 0.1",
@@ -1044,7 +1044,7 @@ fn envelope_builds_the_bundled_scenes_and_names_bad_ones() {
         se.contains(&format!(
             "warning: {folded} of {} sampled cells fold",
             64 * patches
-        )) && se.contains("the first on region 39 (between primitives)"),
+        )) && se.contains("the first on primitive 3 face 1"),
         "{se}"
     );
     assert!(so.contains(" crossings=0 "), "{so}");

@@ -189,9 +189,9 @@ fn the_t_sweep_shows_the_three_t() {
 }
 
 /// Folds are shown in the summary: none on the seven-primitive sample at its own t, at 0.5 or
-/// at 0.1, where the slider stops; a heap of four primitives has a cell of a region between
-/// primitives turned by more than 90° at t = 0.02 (below the slider; opened from a file), counted, with
-/// where the first lies.
+/// at 0.1, where the slider stops; a heap of four primitives has a cell on a primitive's face
+/// turned over at t = 0.01 (below the slider; opened from a file), counted, with where the
+/// first lies.
 #[test]
 fn the_summary_counts_folds() {
     let k = envelope::ENVELOPE_SAMPLES
@@ -220,10 +220,7 @@ fn the_summary_counts_folds() {
             Some((n, text)) => {
                 assert!(folded && *n > 0);
                 assert_eq!(b.fold_points.len(), *n);
-                assert!(
-                    text.contains("the first on region 39 (between primitives)"),
-                    "{text}"
-                );
+                assert!(text.contains("the first on primitive 3 face 1"), "{text}");
             }
             None => assert!(!folded && b.fold_points.is_empty()),
         }

@@ -5,7 +5,13 @@
 //! patch's four corners blended bilinearly to the cell's centre is **folded**: the surface
 //! there has turned past the tangent planes it spans between. The corners are network
 //! vertices, whose normals are the tangent planes every curve through them touches (outward),
-//! so the test needs no other part of the surface and costs one grid per patch. It sees
+//! so the test needs no other part of the surface and costs one grid per patch. The report
+//! (and [`folds`]) excuses a cell that still faces within 90° of the tangent plane the network
+//! prescribes along the patch's nearest side (its G1 plane, shared with the patch across),
+//! blended towards the corners' normal as the cell lies further in: a step along a border that
+//! climbs steeply between corners whose normals agree stands on edge but has not turned over
+//! (envelope.md, "Folds, reported", *Steps along a border*). The build repairs every cell turned
+//! past its corners' normals, steps included ([`grid_folds`], [`folds_past_corners`]). It sees
 //! folds that a winding-number test at a step off the face misses (a cell tilted by 95° in a
 //! pleat is outside-facing enough to pass that one); it does not see two distant parts of
 //! the surface passing through each other, nor a patch folding over within its corners'
@@ -13,7 +19,7 @@
 //! patch's own grid, which the build runs on every patch (most are cleared at once by
 //! `projects_one_to_one`: one to one along their mean normal). The build checks every
 //! patch as it makes it (and rescales those that fold or cross, `patches.rs`), so
-//! [`super::Envelope::folds`] returns what it found.
+//! [`super::Envelope::folds`] returns what it found, less the steps ([`reported`]).
 
 use super::network::Network;
 use super::patches::EnvelopePatch;
@@ -33,8 +39,22 @@ pub struct Fold {
     pub v: f64,
 }
 
-/// The folded cells of `patches` sampled `k` × `k`, patch by patch, in order.
+/// The folded cells of `patches` sampled `k` × `k`, patch by patch, in order: those turned
+/// past the normals of their patch's corners blended to them **and** past the tangent plane
+/// prescribed along their nearest side (the report's test; a step along a border is not a
+/// fold, [`follows_its_border`]).
 pub fn folds(net: &Network, patches: &[EnvelopePatch], k: usize) -> Vec<Fold> {
+    let k = k.max(1);
+    let mut out = Vec::new();
+    for (pi, p) in patches.iter().enumerate() {
+        out.extend(turned_cells(net, p, pi, &p.coons.grid(k), k, Test::Report));
+    }
+    out
+}
+
+/// The cells of `patches` sampled `k` × `k` turned past the normals of their patch's corners
+/// blended to them, steps along a border included (the build's test, [`grid_folds`]).
+pub fn folds_past_corners(net: &Network, patches: &[EnvelopePatch], k: usize) -> Vec<Fold> {
     let k = k.max(1);
     let mut out = Vec::new();
     for (pi, p) in patches.iter().enumerate() {
@@ -43,8 +63,24 @@ pub fn folds(net: &Network, patches: &[EnvelopePatch], k: usize) -> Vec<Fold> {
     out
 }
 
-/// The folded cells of patch `p` (number `pi`) from its grid `g`, `k` cells a side
-/// ([`super::coons::Coons::grid`]).
+/// Of the cells `folded` that the build left turned past their corners' normals
+/// ([`grid_folds`], [`FOLD_CELLS`] a side), those the report calls folded ([`folds`]): each
+/// patch with such a cell is sampled again.
+pub(crate) fn reported(net: &Network, patches: &[EnvelopePatch], folded: &[Fold]) -> Vec<Fold> {
+    let mut out = Vec::new();
+    for (pi, p) in patches.iter().enumerate() {
+        if folded.iter().any(|f| f.patch == pi) {
+            let g = p.coons.grid(FOLD_CELLS);
+            out.extend(turned_cells(net, p, pi, &g, FOLD_CELLS, Test::Report));
+        }
+    }
+    out
+}
+
+/// The cells of patch `p` (number `pi`) from its grid `g`, `k` cells a side
+/// ([`super::coons::Coons::grid`]), turned past the normals of its corners blended to them:
+/// the build's test. It repairs what it can of every such cell, a step along a border
+/// included (which it can seldom move: the plane along a border is the network's).
 pub(crate) fn grid_folds(
     net: &Network,
     p: &EnvelopePatch,
@@ -52,15 +88,37 @@ pub(crate) fn grid_folds(
     g: &[DVec3],
     k: usize,
 ) -> Vec<Fold> {
+    turned_cells(net, p, pi, g, k, Test::Build)
+}
+
+/// Which cells are called folded.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Test {
+    /// Turned past the corners' normals blended.
+    Build,
+    /// Turned past those and past the plane along the nearest side ([`follows_its_border`]).
+    Report,
+}
+
+fn turned_cells(
+    net: &Network,
+    p: &EnvelopePatch,
+    pi: usize,
+    g: &[DVec3],
+    k: usize,
+    test: Test,
+) -> Vec<Fold> {
     let mut out = Vec::new();
-    cells(net, p, g, k, |u, v, turn, _| {
+    cells(net, p, g, k, |c| {
         // A cell with a non-finite point counts as folded (never chosen, always reported).
-        if turn < 0.0 || turn.is_nan() {
+        let turned = c.turn.is_nan()
+            || (c.turn < 0.0 && (test == Test::Build || !follows_its_border(p, &c)));
+        if turned {
             out.push(Fold {
                 patch: pi,
                 region: p.region,
-                u,
-                v,
+                u: c.u,
+                v: c.v,
             });
         }
     });
@@ -75,25 +133,32 @@ pub(crate) fn grid_folds(
 /// a grid of square cells facing `n`, and a cell measured as 0/0 (a collapsed side) counts 1.
 pub(crate) fn least_sine(net: &Network, p: &EnvelopePatch, g: &[DVec3], k: usize) -> f64 {
     let mut least = 1.0f64;
-    cells(net, p, g, k, |_, _, turn, size| {
-        if size > 0.0 && turn.is_finite() {
-            least = least.min(turn / size);
+    cells(net, p, g, k, |c| {
+        if c.size > 0.0 && c.turn.is_finite() {
+            least = least.min(c.turn / c.size);
         }
     });
     least
 }
 
-/// Every cell of patch `p`'s grid `g` (`k` cells a side), in order: its centre (u, v),
-/// `(∂S/∂u × ∂S/∂v) · n` from the cell's four corners with `n` the patch's corner normals
-/// (outward, those of the network's vertices) blended bilinearly to the centre, and
-/// `|∂S/∂u| |∂S/∂v| |n|`.
-fn cells(
-    net: &Network,
-    p: &EnvelopePatch,
-    g: &[DVec3],
-    k: usize,
-    mut each: impl FnMut(f64, f64, f64, f64),
-) {
+/// A cell of a patch's grid, as [`cells`] gives it.
+struct GridCell {
+    /// Its centre.
+    u: f64,
+    v: f64,
+    /// `∂S/∂u × ∂S/∂v` from the cell's four corners.
+    normal: DVec3,
+    /// `n`: the patch's corner normals (outward, those of the network's vertices) blended
+    /// bilinearly to the centre.
+    expected: DVec3,
+    /// `(∂S/∂u × ∂S/∂v) · n`.
+    turn: f64,
+    /// `|∂S/∂u| |∂S/∂v| |n|`.
+    size: f64,
+}
+
+/// Every cell of patch `p`'s grid `g` (`k` cells a side), in order.
+fn cells(net: &Network, p: &EnvelopePatch, g: &[DVec3], k: usize, mut each: impl FnMut(GridCell)) {
     let kf = k as f64;
     // Corners (0, 0), (1, 0), (1, 1), (0, 1): the starts of sides 0 to 3.
     let n: Vec<DVec3> = p
@@ -114,14 +179,49 @@ fn cells(
                 + n[1] * (u * (1.0 - v))
                 + n[2] * (u * v)
                 + n[3] * ((1.0 - u) * v);
-            each(
+            let normal = du.cross(dv);
+            each(GridCell {
                 u,
                 v,
-                du.cross(dv).dot(expected),
-                du.length() * dv.length() * expected.length(),
-            );
+                normal,
+                expected,
+                turn: normal.dot(expected),
+                size: du.length() * dv.length() * expected.length(),
+            });
         }
     }
+}
+
+/// Whether a cell turned past its corners' normals blended there still faces the way the
+/// network prescribes beside its nearest side (envelope.md, "Folds, reported", *Steps along
+/// a border*): within 90° of that side's unit normal
+/// `C′ × X` (its G1 tangent plane, shared with the patch across) at the foot (u or v along
+/// it), blended with the corners' unit normal as the cell lies further in, `(1 − 2d)·b + 2d·n`
+/// for a cell `d` from the side in the patch's parameters. A cell equally near two sides must
+/// follow both; a collapsed side prescribes no plane. Such a cell follows a border that climbs
+/// steeply between corners whose normals agree (a fusion edge of a cone between primitives of
+/// unequal sizes at small t): the surface stands on edge there, as its neighbour across does,
+/// but has not turned over.
+fn follows_its_border(p: &EnvelopePatch, c: &GridCell) -> bool {
+    let (u, v) = (c.u, c.v);
+    // (distance from the side, the side, the foot's parameter along it)
+    let near = [
+        (v, 0, u),
+        (1.0 - u, 1, v),
+        (1.0 - v, 2, 1.0 - u),
+        (u, 3, 1.0 - v),
+    ];
+    let d = near.iter().map(|n| n.0).fold(f64::INFINITY, f64::min);
+    d < 0.5
+        && near.iter().filter(|n| n.0 == d).all(|&(_, k, s)| {
+            let side = &p.coons.sides[k];
+            let b = side.d1(s).cross(side.cross(s).0).normalize_or_zero();
+            !side.collapsed
+                && b != DVec3::ZERO
+                && c.normal
+                    .dot(b * (1.0 - 2.0 * d) + c.expected.normalize_or_zero() * (2.0 * d))
+                    > 0.0
+        })
 }
 
 /// Pairs of triangles of patch `p`'s own `k` × `k` grid (each cell cut along its diagonal from

@@ -96,7 +96,7 @@ pub struct Envelope {
     pub regions: usize,
     pub patches: Vec<EnvelopePatch>,
     /// The folded cells of `patches` as built, [`folds::FOLD_CELLS`] a side (found while
-    /// building them: [`Envelope::folds`]).
+    /// building them, less steps along a border: [`Envelope::folds`]).
     pub folded: Vec<folds::Fold>,
     /// Primitives swallowed by the others (indices in the scene): centre not a corner of the
     /// hull of the centres, or within a tenth of its radius of the others' hull ([`hull`]), or
@@ -257,6 +257,9 @@ fn assemble(
     }
     let regions = network.regions.len();
     let (network, patches, folded, _) = legs::patched(network, spec.basis, &primitives);
+    // The build repairs every cell turned past its corners' normals; the report names those
+    // turned past the plane along their nearest side too (a step along a border is no fold).
+    let folded = folds::reported(&network, &patches, &folded);
     Ok(Envelope {
         primitives,
         network,

@@ -851,13 +851,13 @@ fn quad_patches(
         return one;
     }
     let cells = choice_cells(net, &region, prims);
-    let before = super::folds::folds(net, &one, cells).len();
+    let before = super::folds::folds_past_corners(net, &one, cells).len();
     if before == 0 {
         return one;
     }
     let (nv, nc) = (net.vertices.len(), net.curves.len());
     let other = split(net, region, r, prims);
-    if super::folds::folds(net, &other, cells).len() < before
+    if super::folds::folds_past_corners(net, &other, cells).len() < before
         && largest_border_jump(net, &other, 8) < G1_KEPT
     {
         return other;
@@ -970,8 +970,9 @@ fn region_patches(
         return split(net, region, r, prims);
     }
     let cells = choice_cells(net, &region, prims);
-    let folded =
-        |net: &Network, patches: &[EnvelopePatch]| super::folds::folds(net, patches, cells).len();
+    let folded = |net: &Network, patches: &[EnvelopePatch]| {
+        super::folds::folds_past_corners(net, patches, cells).len()
+    };
     let (nv, nc) = (net.vertices.len(), net.curves.len());
     let plain = split(net, region.clone(), r, prims);
     let mut least = folded(net, &plain);
@@ -1211,7 +1212,9 @@ const SQUEEZES: [f64; 9] = [0.25, 0.5, 0.75, 0.9, -0.25, -0.5, -1.0, -2.0, -4.0]
 /// pairs at 8 and 16 cells a side; among changes alike the longest side's and the least |β|
 /// come first (never the listing's order). Other patches are kept as built.
 fn unfolded(net: &Network, p: EnvelopePatch, cells: usize, others: &[Vec<DVec3>]) -> Unfolded {
-    let folds = |p: &EnvelopePatch, k: usize| super::folds::folds(net, std::slice::from_ref(p), k);
+    let folds = |p: &EnvelopePatch, k: usize| {
+        super::folds::folds_past_corners(net, std::slice::from_ref(p), k)
+    };
     let grid = p.coons.grid(FOLD_CELLS);
     let reported = grid_folds(net, &p, 0, &grid, FOLD_CELLS);
     // The crossings of a 16 × 16 grid with the other patches given.
