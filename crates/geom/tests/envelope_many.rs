@@ -1702,7 +1702,8 @@ fn has_nested_pair(prims: &[PrimitiveInput]) -> bool {
 /// per t, the heaps with a folded cell ([`Envelope::folds`]), with faces passing through each
 /// other at K quads a patch side (`K`, default 8), and errors. `HEAPS` heaps per count (default
 /// 60), `TS` the t values (default "1"); each failing heap is printed with its seed so that it can be rebuilt, and
-/// written as `heap-SEED.envelope.json` into the folder `DUMP` when it is set.
+/// written as `heap-SEED.envelope.json` into the folder `DUMP` when it is set. `SLOW=ms` prints
+/// every heap whose `envelope()` takes longer than that.
 #[test]
 #[ignore]
 fn survey_mixed_heaps() {
@@ -1737,7 +1738,13 @@ fn survey_mixed_heaps() {
                 {
                     dump(&scene);
                 }
-                match envelope(&scene) {
+                let started = std::time::Instant::now();
+                let built = envelope(&scene);
+                let ms = started.elapsed().as_secs_f64() * 1e3;
+                if std::env::var("SLOW").is_ok_and(|v| ms > v.parse::<f64>().unwrap()) {
+                    println!("SLOW t = {t}: heap {seed}: {ms:.1} ms");
+                }
+                match built {
                     Err(e) => {
                         errors += 1;
                         println!("t = {t}: heap {seed}: error {e}");

@@ -246,7 +246,9 @@ pub(crate) fn grid_crossings(g: &[DVec3], k: usize) -> usize {
 
 /// The pairs of cells of the grid `g` whose boxes in the patch's own frame overlap, then their
 /// triangles that share no grid point and pass through each other (those that share one only
-/// touch there, or fold, which the cell check sees).
+/// touch there, or fold, which the cell check sees). The cells are swept along the patch's
+/// first side (sorted by where their boxes start), and each triangle's plane is found once; a
+/// pair of triangles whose own boxes are apart is not tested further.
 fn pairwise_crossings(g: &[DVec3], k: usize) -> usize {
     let idx = |i: usize, j: usize| i + (k + 1) * j;
     // Boxes in the patch's own frame (along its first side, across it, and off it), where a
@@ -262,43 +264,57 @@ fn pairwise_crossings(g: &[DVec3], k: usize) -> usize {
             DVec3::new(d.dot(e1), d.dot(e2), d.dot(n))
         })
         .collect();
-    // Each cell's two triangles (grid indices), cut along its diagonal from (i, j).
-    let cells: Vec<[[usize; 3]; 2]> = (0..k * k)
+    // Each cell's two triangles (grid indices), cut along its diagonal from (i, j), with their
+    // points, unit normals and boxes in the patch's frame.
+    struct Tri {
+        v: [usize; 3],
+        p: [DVec3; 3],
+        n: Option<DVec3>,
+        lo: DVec3,
+        hi: DVec3,
+    }
+    let tri = |v: [usize; 3]| {
+        let p = v.map(|v| g[v]);
+        let q = v.map(|v| local[v]);
+        Tri {
+            v,
+            p,
+            n: crate::analysis::plane(&p),
+            lo: q[0].min(q[1]).min(q[2]),
+            hi: q[0].max(q[1]).max(q[2]),
+        }
+    };
+    let cells: Vec<[Tri; 2]> = (0..k * k)
         .map(|c| {
             let (i, j) = (c % k, c / k);
             let (a, b, cc, d) = (idx(i, j), idx(i + 1, j), idx(i + 1, j + 1), idx(i, j + 1));
-            [[a, b, cc], [a, cc, d]]
+            [tri([a, b, cc]), tri([a, cc, d])]
         })
         .collect();
     let boxes: Vec<(DVec3, DVec3)> = cells
         .iter()
-        .map(|[t, u]| {
-            let q = [t[0], t[1], t[2], u[2]].map(|v| local[v]);
-            (
-                q[0].min(q[1]).min(q[2]).min(q[3]),
-                q[0].max(q[1]).max(q[2]).max(q[3]),
-            )
-        })
+        .map(|[t, u]| (t.lo.min(u.lo), t.hi.max(u.hi)))
         .collect();
+    let apart = |(la, ha): (DVec3, DVec3), (lb, hb): (DVec3, DVec3)| {
+        lb.x > ha.x || la.x > hb.x || lb.y > ha.y || la.y > hb.y || lb.z > ha.z || la.z > hb.z
+    };
+    // The cells in the order their boxes start along the first side: a cell's box meets only
+    // those after it that start before it ends.
+    let mut order: Vec<usize> = (0..cells.len()).collect();
+    order.sort_by(|&a, &b| boxes[a].0.x.total_cmp(&boxes[b].0.x));
     let mut pairs = 0;
-    for a in 0..cells.len() {
-        let (la, ha) = boxes[a];
-        for b in a + 1..cells.len() {
-            let (lb, hb) = boxes[b];
-            if lb.x > ha.x
-                || la.x > hb.x
-                || lb.y > ha.y
-                || la.y > hb.y
-                || lb.z > ha.z
-                || la.z > hb.z
-            {
+    for (s, &a) in order.iter().enumerate() {
+        let ha = boxes[a].1;
+        for &b in order[s + 1..].iter().take_while(|&&b| boxes[b].0.x <= ha.x) {
+            if apart(boxes[a], boxes[b]) {
                 continue;
             }
-            for ta in cells[a] {
-                for tb in cells[b] {
-                    if ta.iter().all(|v| !tb.contains(v)) {
-                        let (pa, pb) = (ta.map(|v| g[v]), tb.map(|v| g[v]));
-                        pairs += usize::from(crate::analysis::triangles_cross(pa, pb));
+            for ta in &cells[a] {
+                for tb in &cells[b] {
+                    if ta.v.iter().all(|v| !tb.v.contains(v))
+                        && !apart((ta.lo, ta.hi), (tb.lo, tb.hi))
+                    {
+                        pairs += usize::from(crate::analysis::planes_cross(ta.p, ta.n, tb.p, tb.n));
                     }
                 }
             }

@@ -1269,7 +1269,10 @@ fn unfolded(net: &Network, p: EnvelopePatch, cells: usize, others: &[Vec<DVec3>]
     // a fold is never traded for fewer crossings.
     // One grid evaluated `fine` a side; the report's 8 × 8 (and 16 × 16) are every few of its
     // lines, the same points.
-    let score = |q: &EnvelopePatch| {
+    // A change is kept only if it scores below `beat` (the best so far): where its folded cells
+    // already reach past `beat`'s, or its crossings counted so far reach `beat`'s, it cannot,
+    // and the rest is not counted (it scores `usize::MAX` crossings then).
+    let score = |q: &EnvelopePatch, beat: Option<(usize, usize)>| {
         let g = q.coons.grid(fine);
         let coarse = every_nth_line(&g, fine, FOLD_CELLS);
         // At 16 a side too where the patch was checked finer (`fine` is 32): a fold there can
@@ -1281,25 +1284,33 @@ fn unfolded(net: &Network, p: EnvelopePatch, cells: usize, others: &[Vec<DVec3>]
                 .as_ref()
                 .map_or(0, |m| grid_folds(net, q, 0, m, 2 * FOLD_CELLS).len())
             + grid_folds(net, q, 0, &coarse, FOLD_CELLS).len();
-        let crossings = if crossing {
-            let twice = if fine == 2 * FOLD_CELLS {
-                g
-            } else if fine % (2 * FOLD_CELLS) == 0 {
-                every_nth_line(&g, fine, 2 * FOLD_CELLS)
-            } else {
-                q.coons.grid(2 * FOLD_CELLS)
-            };
-            grid_crossings(&coarse, FOLD_CELLS)
-                + grid_crossings(&twice, 2 * FOLD_CELLS)
-                + apart(&twice)
+        if !crossing {
+            return (folded, 0);
+        }
+        let lost = |crossings: usize| beat.is_some_and(|b| (folded, crossings) >= b);
+        if lost(0) {
+            return (folded, usize::MAX);
+        }
+        let twice = if fine == 2 * FOLD_CELLS {
+            g
+        } else if fine % (2 * FOLD_CELLS) == 0 {
+            every_nth_line(&g, fine, 2 * FOLD_CELLS)
         } else {
-            0
+            q.coons.grid(2 * FOLD_CELLS)
         };
-        (folded, crossings)
+        let mut crossings = grid_crossings(&coarse, FOLD_CELLS);
+        if lost(crossings) {
+            return (folded, usize::MAX);
+        }
+        crossings += grid_crossings(&twice, 2 * FOLD_CELLS);
+        if lost(crossings) {
+            return (folded, usize::MAX);
+        }
+        (folded, crossings + apart(&twice))
     };
     let search = |p: &EnvelopePatch| -> (EnvelopePatch, (usize, usize)) {
         let p = p.clone();
-        let mut least = score(&p);
+        let mut least = score(&p, None);
         let mut best = None;
         // Sides in an order of their own (longest first, then by their middle's position), never
         // the region's listing, so that the surface does not depend on it.
@@ -1319,8 +1330,9 @@ fn unfolded(net: &Network, p: EnvelopePatch, cells: usize, others: &[Vec<DVec3>]
                 for beta in SQUEEZES {
                     let mut q = best.as_ref().unwrap_or(&p).clone();
                     q.coons.sides[side] = q.coons.sides[side].clone().scaled(beta);
-                    let n = score(&q);
-                    if n < round.as_ref().map_or(least, |r| r.0) {
+                    let beat = round.as_ref().map_or(least, |r| r.0);
+                    let n = score(&q, Some(beat));
+                    if n < beat {
                         round = Some((n, side, q));
                     }
                 }
