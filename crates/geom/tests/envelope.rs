@@ -37,6 +37,13 @@ const SHAPES: [Shape; 6] = [
 
 use prism_geom::analysis::winding_number as winding;
 
+/// The cells of `e`'s patches turned past their corners' normals at the report's 8 × 8 samples
+/// ([`prism_geom::freeform::envelope::folds::folds_past_corners`]: the build's test, which
+/// counts a step along a border too, so none of these means the report has none either).
+fn past_corners(e: &Envelope) -> Vec<prism_geom::freeform::envelope::folds::Fold> {
+    prism_geom::freeform::envelope::folds::folds_past_corners(&e.network, &e.patches, 8)
+}
+
 fn face_normal(m: &PolyMesh, f: usize) -> (DVec3, DVec3) {
     let vs: Vec<DVec3> = m
         .face_corners(f)
@@ -232,7 +239,7 @@ fn closed_outward_and_g1_for_every_t() {
             assert_closed_outward(&m, &what);
             let jump = e.largest_border_jump();
             assert!(jump < 1e-9, "{what}: border jump {jump}°");
-            assert_eq!(e.folds().len(), 0, "{what}: folded cells");
+            assert_eq!(past_corners(&e).len(), 0, "{what}: folded cells");
             let fine = e.tessellate(16).unwrap();
             let crossing = prism_geom::analysis::crossings(&fine);
             assert!(
@@ -518,7 +525,7 @@ fn a_turned_pair_at_small_t_does_not_fold() {
             cube_at(gb, [20.0, 35.0, 10.0]),
             t,
         );
-        assert_eq!(e.folds(), vec![], "t = {t}");
+        assert_eq!(past_corners(&e), vec![], "t = {t}");
         assert!(e.largest_border_jump() < 1e-9);
         let m = e.tessellate(6).unwrap();
         assert_closed_outward_from(&m, DVec3::ZERO, DVec3::from_array(gb), &format!("t = {t}"));
@@ -581,7 +588,7 @@ fn an_off_axis_pair_keeps_the_edge_where_the_rebuilt_piece_would_hook() {
         assert!(jump < 1e-9, "t = {t}: {jump}°");
         let m = e.tessellate(8).unwrap();
         assert_closed_outward_from(&m, DVec3::ZERO, gb, &format!("t = {t}"));
-        assert_eq!(e.folds(), vec![], "t = {t}");
+        assert_eq!(past_corners(&e), vec![], "t = {t}");
     }
 }
 

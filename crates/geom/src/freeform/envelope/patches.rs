@@ -1087,8 +1087,9 @@ const TURN_CHECKED_FINER: f64 = 20.0 * std::f64::consts::PI / 180.0;
 /// A patch whose shortest side (not collapsed) is under this share of its longest is checked
 /// for folded cells at 16 and 32 a side too ([`unfolded`]; envelope.md, "Patches through
 /// themselves", *Finer still, and into a neighbour*): beside a side that short the patch can
-/// turn over within a cell of the 8 × 8 grid.
-const SHORT_CHECKED_FINER: f64 = 0.01;
+/// turn over within a cell of the 8 × 8 grid (heap 600327 at t = 3, a side 1.2 % of the
+/// longest: 3 cells at 32 a side, none at 16).
+const SHORT_CHECKED_FINER: f64 = 0.02;
 
 /// A patch whose 8 × 8 grid lines turn by more than this (radians, 45°) is checked against its
 /// neighbours at 16 × 16 ([`kept_apart`]).
