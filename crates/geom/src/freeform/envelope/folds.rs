@@ -100,6 +100,8 @@ enum Test {
     Report,
 }
 
+/// The cells of patch `p` (number `pi`) from its grid `g`, `k` cells a side, that `test`
+/// calls folded.
 fn turned_cells(
     net: &Network,
     p: &EnvelopePatch,
@@ -193,15 +195,14 @@ fn cells(net: &Network, p: &EnvelopePatch, g: &[DVec3], k: usize, mut each: impl
 }
 
 /// Whether a cell turned past its corners' normals blended there still faces the way the
-/// network prescribes beside its nearest side (envelope.md, "Folds, reported", *Steps along
-/// a border*): within 90° of that side's unit normal
-/// `C′ × X` (its G1 tangent plane, shared with the patch across) at the foot (u or v along
-/// it), blended with the corners' unit normal as the cell lies further in, `(1 − 2d)·b + 2d·n`
-/// for a cell `d` from the side in the patch's parameters. A cell equally near two sides must
-/// follow both; a collapsed side prescribes no plane. Such a cell follows a border that climbs
-/// steeply between corners whose normals agree (a fusion edge of a cone between primitives of
-/// unequal sizes at small t): the surface stands on edge there, as its neighbour across does,
-/// but has not turned over.
+/// network prescribes beside its nearest side (envelope.md, "Folds, reported", *Steps along a
+/// border*): within 90° of that side's unit normal `C′ × X` (its G1 tangent plane, shared with
+/// the patch across) at the foot (u or v along it), blended with the corners' unit normal as
+/// the cell lies further in, `(1 − 2d)·b + 2d·n` for a cell `d` from the side in the patch's
+/// parameters. A cell equally near two sides must follow both; a collapsed side prescribes no
+/// plane. Such a cell follows a border that climbs steeply between corners whose normals agree
+/// (a fusion edge of a cone between primitives of unequal sizes at small t): the surface
+/// stands on edge there, as its neighbour across does, but has not turned over.
 fn follows_its_border(p: &EnvelopePatch, c: &GridCell) -> bool {
     let (u, v) = (c.u, c.v);
     // (distance from the side, the side, the foot's parameter along it)
