@@ -318,7 +318,7 @@ impl Envelope {
         let mut patches: Vec<usize> = folds.iter().map(|f| f.patch).collect();
         patches.dedup();
         Some(format!(
-            "{} of {} sampled cells fold ({} of {} patches: the surface turns more than 90° from the tangent planes at the patch's corners), the first on {} (patch {}, u = {:.2}, v = {:.2}); a larger t or primitives further apart usually clear it",
+            "{} of {} sampled cells fold ({} of {} patches: the surface turns more than 90° from the tangent planes at the patch's corners and along its nearest side), the first on {} (patch {}, u = {:.2}, v = {:.2}); a larger t or primitives further apart usually clear it",
             folds.len(),
             self.patches.len() * folds::FOLD_CELLS * folds::FOLD_CELLS,
             patches.len(),
