@@ -558,6 +558,29 @@ fn a_step_along_a_border_is_not_a_fold() {
     }
 }
 
+/// Heap 500291 of the mixed survey at t = 0.01, below the slider: a patch of primitive 4's face
+/// 2 still folded in a cell beside its side 1 after every scale of its sides' cross
+/// derivatives and every run along their curves. The search then also leans a side's cross
+/// derivative across it (`μ(s)·g(s)`, zero at both corners: the fits and G1 hold; envelope.md,
+/// "Folded patches: cross derivatives rescaled", *Leaned across*), which clears it at the
+/// report's samples; every lean kept leaves the part across its side pointing the way it did.
+#[test]
+fn a_side_leaned_across_clears_a_fold() {
+    let spec: EnvelopeSpec =
+        serde_json::from_str(include_str!("data/envelope/leaned-side-heap.envelope.json")).unwrap();
+    assert_eq!(spec.t, 0.01);
+    // No cell turned past its corners' normals at the report's samples.
+    let e = fold_free_at(&spec, spec.t);
+    let leaned: Vec<_> = e
+        .patches
+        .iter()
+        .flat_map(|p| &p.coons.sides)
+        .filter(|s| s.lean != (0.0, 0.0))
+        .collect();
+    assert!(!leaned.is_empty());
+    assert!(leaned.iter().all(|s| s.lean_keeps_its_side()));
+}
+
 /// Short legs given back where a patch folds (`legs.rs`, envelope.md, "Short legs given back
 /// where a patch folds"): the two heaps of the mixed survey that still folded on the tab's
 /// slider. A heap of six (600182, turned by 180° about the vertical) whose narrow lid between
@@ -1717,7 +1740,7 @@ fn has_nested_pair(prims: &[PrimitiveInput]) -> bool {
 
 /// An ignored survey of heaps of 2–6 primitives of every library shape (envelope.md, "Left"):
 /// per t, the heaps with a folded cell ([`Envelope::folds`]), with faces passing through each
-/// other at K quads a patch side (`K`, default 8), and errors. `HEAPS` heaps per count (default
+/// other at K quads a patch side (`K`, default 8), and errors (a border normal jump over 10⁻⁶° counts as one). `HEAPS` heaps per count (default
 /// 60), `TS` the t values (default "1"); each failing heap is printed with its seed so that it can be rebuilt, and
 /// written as `heap-SEED.envelope.json` into the folder `DUMP` when it is set. `SLOW=ms` prints
 /// every heap whose `envelope()` takes longer than that.
@@ -1775,6 +1798,11 @@ fn survey_mixed_heaps() {
                                 "t = {t}: heap {seed}: {}",
                                 e.fold_warning(&folds).unwrap_or_default()
                             );
+                        }
+                        let jump = e.largest_border_jump();
+                        if jump.is_nan() || jump >= 1e-6 {
+                            errors += 1;
+                            println!("t = {t}: heap {seed}: border jump {jump}°");
                         }
                         if std::env::var("FINE").is_ok() {
                             finer_than_the_report(&e, t, seed);

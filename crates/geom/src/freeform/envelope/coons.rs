@@ -52,6 +52,9 @@ pub struct Side {
     /// The side run along its curve by φ, `τ = φ(s)` (set, then [`Side::refitted`]; none:
     /// τ = s).
     pub reparam: Option<Reparam>,
+    /// μ′(0) and μ′(1) of the lean `μ(s)·g(s)` added to the cross derivative, `μ(s) =
+    /// μ′(0)·s(1 − s)² − μ′(1)·s²(1 − s)` ([`Side::leaned`]; (0, 0): none).
+    pub lean: (f64, f64),
 }
 
 impl Side {
@@ -69,6 +72,7 @@ impl Side {
             collapsed: false,
             squeeze: 0.0,
             reparam: None,
+            lean: (0.0, 0.0),
         }
         .refitted(a0, a1)
     }
@@ -89,6 +93,7 @@ impl Side {
             collapsed: true,
             squeeze: 0.0,
             reparam: None,
+            lean: (0.0, 0.0),
         }
     }
 
@@ -111,6 +116,35 @@ impl Side {
     pub fn scaled(mut self, beta: f64) -> Side {
         self.squeeze = beta;
         self
+    }
+
+    /// This side with `μ(s)·g(s)` added to its cross derivative, μ zero at both corners with
+    /// the slopes `lean` there ([`Side::lean`]): the fits at the corners hold, and the cross
+    /// derivative stays in the plane of g and C′, so G1 with the patch across is untouched.
+    pub fn leaned(mut self, lean: (f64, f64)) -> Side {
+        self.lean = lean;
+        self
+    }
+
+    /// Whether the lean keeps the cross derivative's part across the side pointing the way the
+    /// unleaned one does, at least a quarter of it, at 65 points along the side: otherwise the
+    /// plane of C′ and X would turn over with it (the border's normal reversed, no longer G1
+    /// with the patch across).
+    pub fn lean_keeps_its_side(&self) -> bool {
+        if self.lean == (0.0, 0.0) {
+            return true;
+        }
+        let plain = Side {
+            lean: (0.0, 0.0),
+            ..self.clone()
+        };
+        (0..=64).all(|i| {
+            let s = f64::from(i) / 64.0;
+            let t = self.d1(s).normalize_or_zero();
+            let across = |x: DVec3| x - x.dot(t) * t;
+            let (x, o) = (across(self.cross(s).0), across(plain.cross(s).0));
+            x.dot(o) >= 0.25 * o.length_squared() && x.is_finite()
+        })
     }
 
     /// This side's cross derivative fitted to the legs `a0` and `a1` (the neighbouring sides'
@@ -153,7 +187,7 @@ impl Side {
     }
 
     /// The basis g at s and its s-derivative (linear in the curve's parameter).
-    fn basis(&self, s: f64) -> (DVec3, DVec3) {
+    pub(crate) fn basis(&self, s: f64) -> (DVec3, DVec3) {
         let (t, dt) = self.phi(s);
         (self.g.0.lerp(self.g.1, t), (self.g.1 - self.g.0) * dt)
     }
@@ -167,6 +201,19 @@ impl Side {
 
     /// The cross derivative and its s-derivative at s.
     pub fn cross(&self, s: f64) -> (DVec3, DVec3) {
+        let (x, dx) = self.scaled_cross(s);
+        if self.lean == (0.0, 0.0) {
+            return (x, dx);
+        }
+        let (m0, m1) = self.lean;
+        let mu = m0 * s * (1.0 - s) * (1.0 - s) - m1 * s * s * (1.0 - s);
+        let d_mu = m0 * (1.0 - s) * (1.0 - 3.0 * s) - m1 * s * (2.0 - 3.0 * s);
+        let (g, dg) = self.basis(s);
+        (x + mu * g, dx + d_mu * g + mu * dg)
+    }
+
+    /// The cross derivative scaled ([`Side::scaled`]) and its s-derivative at s.
+    fn scaled_cross(&self, s: f64) -> (DVec3, DVec3) {
         let (x, dx) = self.unscaled_cross(s);
         if self.squeeze == 0.0 {
             return (x, dx);
@@ -481,6 +528,39 @@ mod tests {
                 assert!((fd - dx).length() < 1e-5 * (1.0 + dx.length()), "{s}");
             }
         }
+    }
+
+    /// A leaned cross derivative keeps the corner fits, lies in the plane of g and C′ (so the
+    /// border's normal, and G1, are the same where its part across the side keeps its way), and
+    /// its s-derivative is its difference quotient; a lean that turns that part over is refused.
+    #[test]
+    fn a_leaned_cross_derivative_keeps_the_fits_and_the_border_plane() {
+        let (curve, g, a0, a1) = side_data(vec![1.0, 0.7, 1.2, 1.0]);
+        let side = Side::fitted(curve, g, a0, a1);
+        for lean in [(0.5, -0.5), (2.0, -2.0), (-0.3, 0.3), (1.0, 0.4)] {
+            let leaned = side.clone().leaned(lean);
+            assert!((leaned.cross(0.0).0 - a0).length() < 1e-12);
+            assert!((leaned.cross(1.0).0 - a1).length() < 1e-12);
+            for i in 0..=20 {
+                let s = i as f64 / 20.0;
+                let (x, dx) = leaned.cross(s);
+                let plane = side.d1(s).cross(side.cross(s).0).normalize();
+                assert!(x.dot(plane).abs() < 1e-12 * (1.0 + x.length()), "{s}");
+                let h = 1e-6;
+                let (lo, hi) = ((s - h).max(0.0), (s + h).min(1.0));
+                let fd = (leaned.cross(hi).0 - leaned.cross(lo).0) / (hi - lo);
+                assert!((fd - dx).length() < 1e-5 * (1.0 + dx.length()), "{s}");
+            }
+        }
+        assert!(side.clone().leaned((0.5, -0.5)).lean_keeps_its_side());
+        // Far enough against the part across the side to turn it over in the middle.
+        let k = side.cross(0.5).0.length() / side.basis(0.5).0.length();
+        assert!(
+            !side
+                .clone()
+                .leaned((-40.0 * k, 40.0 * k))
+                .lean_keeps_its_side()
+        );
     }
 
     /// A side run along its curve by φ (envelope.md, "Sides run along their curves") passes

@@ -1194,6 +1194,19 @@ struct Unfolded {
 /// *Pushed out further*).
 const SQUEEZES: [f64; 9] = [0.25, 0.5, 0.75, 0.9, -0.25, -0.5, -1.0, -2.0, -4.0];
 
+/// What the rescaling search ([`unfolded`]) may change on a side.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Moves {
+    /// Its cross derivative's scale ([`SQUEEZES`]).
+    Scales,
+    /// That, or a lean across the side ([`LEANS`]).
+    ScalesAndLeans,
+}
+
+/// The leans tried on a folded patch's sides after the β ([`unfolded`], [`Side::leaned`]):
+/// `c·|X(½)|/|g(½)|·4s(1 − s)·g(s)` added to the cross derivative, c of these.
+const LEANS: [f64; 6] = [0.25, 0.5, 1.0, 2.0, -0.25, -0.5];
+
 /// `p`, or where it folds (as the report samples it, or `cells` a side) or passes through
 /// itself ([`super::folds::self_crossings`] at 8 cells a side) — and where it folds at 16 or
 /// 32 if it is checked finer: its 8 × 8 grid lines turn by more than [`TURN_CHECKED_FINER`]
@@ -1309,7 +1322,7 @@ fn unfolded(net: &Network, p: EnvelopePatch, cells: usize, others: &[Vec<DVec3>]
         }
         (folded, crossings + apart(&twice))
     };
-    let search = |p: &EnvelopePatch| -> (EnvelopePatch, (usize, usize)) {
+    let search = |p: &EnvelopePatch, moves: Moves| -> (EnvelopePatch, (usize, usize)) {
         let p = p.clone();
         let mut least = score(&p, None);
         let mut best = None;
@@ -1337,6 +1350,27 @@ fn unfolded(net: &Network, p: EnvelopePatch, cells: usize, others: &[Vec<DVec3>]
                         round = Some((n, side, q));
                     }
                 }
+                let here = &best.as_ref().unwrap_or(&p).coons.sides[side];
+                if moves == Moves::Scales || here.collapsed {
+                    continue;
+                }
+                let unit = here.cross(0.5).0.length() / here.basis(0.5).0.length().max(1e-300);
+                for c in LEANS {
+                    let m = 4.0 * c * unit;
+                    if !m.is_finite() {
+                        continue;
+                    }
+                    let mut q = best.as_ref().unwrap_or(&p).clone();
+                    q.coons.sides[side] = q.coons.sides[side].clone().leaned((m, -m));
+                    if !q.coons.sides[side].lean_keeps_its_side() {
+                        continue;
+                    }
+                    let beat = round.as_ref().map_or(least, |r| r.0);
+                    let n = score(&q, Some(beat));
+                    if n < beat {
+                        round = Some((n, side, q));
+                    }
+                }
             }
             let Some((n, side, q)) = round else {
                 break;
@@ -1349,13 +1383,20 @@ fn unfolded(net: &Network, p: EnvelopePatch, cells: usize, others: &[Vec<DVec3>]
             None => (p.clone(), least),
         }
     };
-    let (mut best, mut least) = search(&p);
+    let (mut best, mut least) = search(&p, Moves::Scales);
     // Still folding: the sides run by arc length, and the search again from there.
     for run in [Run::ArcLength, Run::Matched, Run::MatchedToFaster] {
         if least.0 == 0 {
             break;
         }
-        let (q, n) = search(&run_along(&p, run));
+        let (q, n) = search(&run_along(&p, run), Moves::Scales);
+        if n < least {
+            (best, least) = (q, n);
+        }
+    }
+    // Still folding: the search again with the sides' cross derivatives leaned across them too.
+    if least.0 > 0 {
+        let (q, n) = search(&p, Moves::ScalesAndLeans);
         if n < least {
             (best, least) = (q, n);
         }
