@@ -502,6 +502,13 @@ mod tests {
         (curve, g, a0, a1)
     }
 
+    /// The difference quotient of `side`'s cross derivative at s, a step `h` either side
+    /// (one-sided at the ends), against which its s-derivative is checked.
+    fn cross_quotient(side: &Side, s: f64, h: f64) -> DVec3 {
+        let (lo, hi) = ((s - h).max(0.0), (s + h).min(1.0));
+        (side.cross(hi).0 - side.cross(lo).0) / (hi - lo)
+    }
+
     /// A rescaled cross derivative keeps the corner fits, is a positive multiple of the
     /// fitted one between them (so the border's normal `C′ × X`, and G1, are the same), and
     /// its s-derivative is its difference quotient.
@@ -522,9 +529,7 @@ mod tests {
                     "{s}"
                 );
                 assert!(x.dot(y) > 0.0, "β = {beta}, s = {s}");
-                let h = 1e-6;
-                let (lo, hi) = ((s - h).max(0.0), (s + h).min(1.0));
-                let fd = (scaled.cross(hi).0 - scaled.cross(lo).0) / (hi - lo);
+                let fd = cross_quotient(&scaled, s, 1e-6);
                 assert!((fd - dx).length() < 1e-5 * (1.0 + dx.length()), "{s}");
             }
         }
@@ -546,9 +551,7 @@ mod tests {
                 let (x, dx) = leaned.cross(s);
                 let plane = side.d1(s).cross(side.cross(s).0).normalize();
                 assert!(x.dot(plane).abs() < 1e-12 * (1.0 + x.length()), "{s}");
-                let h = 1e-6;
-                let (lo, hi) = ((s - h).max(0.0), (s + h).min(1.0));
-                let fd = (leaned.cross(hi).0 - leaned.cross(lo).0) / (hi - lo);
+                let fd = cross_quotient(&leaned, s, 1e-6);
                 assert!((fd - dx).length() < 1e-5 * (1.0 + dx.length()), "{s}");
             }
         }
@@ -600,7 +603,7 @@ mod tests {
             // One-sided at the ends, where φ bends fast: a shorter step there.
             let h = if i == 0 || i == 40 { 1e-9 } else { 1e-6 };
             let (lo, hi) = ((s - h).max(0.0), (s + h).min(1.0));
-            let fd = (run.cross(hi).0 - run.cross(lo).0) / (hi - lo);
+            let fd = cross_quotient(&run, s, h);
             let dx = run.cross(s).1;
             assert!(
                 (fd - dx).length() < 1e-4 * (1.0 + dx.length()),
@@ -642,9 +645,7 @@ mod tests {
             let gs = g.0.lerp(g.1, s);
             let n = gs.cross(curve.derivatives(s).d1).normalize();
             assert!(x.dot(n).abs() < 1e-12 * x.length(), "{s}");
-            let h = 1e-6;
-            let (lo, hi) = ((s - h).max(0.0), (s + h).min(1.0));
-            let fd = (side.cross(hi).0 - side.cross(lo).0) / (hi - lo);
+            let fd = cross_quotient(&side, s, 1e-6);
             assert!(
                 (fd - dx).length() < 1e-5 * (1.0 + dx.length()),
                 "{s}: {fd} {dx}"

@@ -44,35 +44,37 @@ pub struct Fold {
 /// prescribed along their nearest side (the report's test; a step along a border is not a
 /// fold, [`follows_its_border`]).
 pub fn folds(net: &Network, patches: &[EnvelopePatch], k: usize) -> Vec<Fold> {
-    let k = k.max(1);
-    let mut out = Vec::new();
-    for (pi, p) in patches.iter().enumerate() {
-        out.extend(turned_cells(net, p, pi, &p.coons.grid(k), k, Test::Report));
-    }
-    out
+    sampled(net, patches, k, Test::Report, |_| true)
 }
 
 /// The cells of `patches` sampled `k` × `k` turned past the normals of their patch's corners
 /// blended to them, steps along a border included (the build's test, [`grid_folds`]).
 pub fn folds_past_corners(net: &Network, patches: &[EnvelopePatch], k: usize) -> Vec<Fold> {
-    let k = k.max(1);
-    let mut out = Vec::new();
-    for (pi, p) in patches.iter().enumerate() {
-        out.extend(grid_folds(net, p, pi, &p.coons.grid(k), k));
-    }
-    out
+    sampled(net, patches, k, Test::Build, |_| true)
 }
 
 /// Of the cells `folded` that the build left turned past their corners' normals
 /// ([`grid_folds`], [`FOLD_CELLS`] a side), those the report calls folded ([`folds`]): each
 /// patch with such a cell is sampled again.
 pub(crate) fn reported(net: &Network, patches: &[EnvelopePatch], folded: &[Fold]) -> Vec<Fold> {
+    sampled(net, patches, FOLD_CELLS, Test::Report, |pi| {
+        folded.iter().any(|f| f.patch == pi)
+    })
+}
+
+/// The cells that `test` calls folded of the patches numbered as `wanted` says, each sampled
+/// `k` × `k`, patch by patch, in order.
+fn sampled(
+    net: &Network,
+    patches: &[EnvelopePatch],
+    k: usize,
+    test: Test,
+    wanted: impl Fn(usize) -> bool,
+) -> Vec<Fold> {
+    let k = k.max(1);
     let mut out = Vec::new();
-    for (pi, p) in patches.iter().enumerate() {
-        if folded.iter().any(|f| f.patch == pi) {
-            let g = p.coons.grid(FOLD_CELLS);
-            out.extend(turned_cells(net, p, pi, &g, FOLD_CELLS, Test::Report));
-        }
+    for (pi, p) in patches.iter().enumerate().filter(|&(pi, _)| wanted(pi)) {
+        out.extend(turned_cells(net, p, pi, &p.coons.grid(k), k, test));
     }
     out
 }

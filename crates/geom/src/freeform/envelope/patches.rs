@@ -1207,6 +1207,23 @@ enum Moves {
 /// `c·|X(½)|/|g(½)|·4s(1 − s)·g(s)` added to the cross derivative, c of these.
 const LEANS: [f64; 6] = [0.25, 0.5, 1.0, 2.0, -0.25, -0.5];
 
+/// `side` leaned across by each of [`LEANS`] ([`Side::leaned`]), those that keep its cross
+/// derivative's part across it pointing the way it did ([`Side::lean_keeps_its_side`]); none
+/// for a collapsed side.
+fn leans(side: &Side) -> Vec<Side> {
+    if side.collapsed {
+        return Vec::new();
+    }
+    let unit = side.cross(0.5).0.length() / side.basis(0.5).0.length().max(1e-300);
+    LEANS
+        .iter()
+        .map(|c| 4.0 * c * unit)
+        .filter(|m| m.is_finite())
+        .map(|m| side.clone().leaned((m, -m)))
+        .filter(Side::lean_keeps_its_side)
+        .collect()
+}
+
 /// `p`, or where it folds (as the report samples it, or `cells` a side) or passes through
 /// itself ([`super::folds::self_crossings`] at 8 cells a side) — and where it folds at 16 or
 /// 32 if it is checked finer: its 8 × 8 grid lines turn by more than [`TURN_CHECKED_FINER`]
@@ -1341,30 +1358,15 @@ fn unfolded(net: &Network, p: EnvelopePatch, cells: usize, others: &[Vec<DVec3>]
         while least != (0, 0) {
             let mut round: Option<((usize, usize), usize, EnvelopePatch)> = None;
             for side in order.into_iter().filter(|&k| !scaled[k]) {
-                for beta in SQUEEZES {
-                    let mut q = best.as_ref().unwrap_or(&p).clone();
-                    q.coons.sides[side] = q.coons.sides[side].clone().scaled(beta);
-                    let beat = round.as_ref().map_or(least, |r| r.0);
-                    let n = score(&q, Some(beat));
-                    if n < beat {
-                        round = Some((n, side, q));
-                    }
-                }
                 let here = &best.as_ref().unwrap_or(&p).coons.sides[side];
-                if moves == Moves::Scales || here.collapsed {
-                    continue;
-                }
-                let unit = here.cross(0.5).0.length() / here.basis(0.5).0.length().max(1e-300);
-                for c in LEANS {
-                    let m = 4.0 * c * unit;
-                    if !m.is_finite() {
-                        continue;
-                    }
+                let scaled = SQUEEZES.map(|beta| here.clone().scaled(beta));
+                let leaned = match moves {
+                    Moves::Scales => Vec::new(),
+                    Moves::ScalesAndLeans => leans(here),
+                };
+                for changed in scaled.into_iter().chain(leaned) {
                     let mut q = best.as_ref().unwrap_or(&p).clone();
-                    q.coons.sides[side] = q.coons.sides[side].clone().leaned((m, -m));
-                    if !q.coons.sides[side].lean_keeps_its_side() {
-                        continue;
-                    }
+                    q.coons.sides[side] = changed;
                     let beat = round.as_ref().map_or(least, |r| r.0);
                     let n = score(&q, Some(beat));
                     if n < beat {
