@@ -1020,7 +1020,7 @@ fn envelope_builds_the_bundled_scenes_and_names_bad_ones() {
     );
     assert!(so.contains(" folded=0 "), "{so}");
     // Down to t = 0.1, where the tab's slider stops, nothing folds; in a heap of four
-    // primitives at t = 0.01 a cell on a primitive's face does: counted, and the first named on
+    // primitives at t = 0.003 a cell on a primitive's face does: counted, and the first named on
     // stderr (exit 0).
     let (_, so, _) = succeeds_to(
         "seven-01.obj",

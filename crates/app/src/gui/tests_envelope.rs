@@ -190,7 +190,7 @@ fn the_t_sweep_shows_the_three_t() {
 
 /// Folds are shown in the summary: none on the seven-primitive sample at its own t, at 0.5 or
 /// at 0.1, where the slider stops; a heap of four primitives has a cell on a primitive's face
-/// turned over at t = 0.01 (below the slider; opened from a file), counted, with where the
+/// turned over at t = 0.003 (below the slider; opened from a file), counted, with where the
 /// first lies.
 #[test]
 fn the_summary_counts_folds() {

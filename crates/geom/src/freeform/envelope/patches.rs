@@ -155,6 +155,11 @@ const NEEDLE: f64 = 0.2;
 /// neighbours around P_i: a sub-quad's corner there must stay well below 180°.
 const STAR: f64 = 150.0 * std::f64::consts::PI / 180.0;
 
+/// The narrowest sector (radians) the insertion curves' tangents may leave between neighbours
+/// around P_i: two leaving nearly along one direction give the sub-quad between them a cusp
+/// there, whose Coons twist turns it over (envelope.md, "Legs at P_i apart").
+const CUSP: f64 = 5.0 * std::f64::consts::PI / 180.0;
+
 /// The widest corner (radians, 60°) of a three-sided region that [`region_patches`] tries as
 /// the collapsed tip of one quad: every triangle but an equilateral one has one narrower, and
 /// a fan over a wider corner gave faces turned inwards where the split round P_i had none
@@ -398,29 +403,31 @@ fn place(
     }
 }
 
-/// The widest angle (radians) between consecutive directions (projected into the plane
-/// normal to `n` at `p`), counter-clockwise about n in their order; 2π when they do not go
-/// round once in that order.
-fn widest_sector(p: DVec3, n: DVec3, dirs: impl Iterator<Item = DVec3>) -> f64 {
-    let _ = p;
+/// The angles (radians) between consecutive directions (projected into the plane normal to
+/// `n`), counter-clockwise about n in their order; none when they do not go round once in that
+/// order.
+fn sectors(n: DVec3, dirs: impl Iterator<Item = DVec3>) -> Option<Vec<f64>> {
     let d: Vec<DVec3> = dirs.map(|v| v - v.dot(n) * n).collect();
     let m = d.len();
-    let mut total = 0.0;
-    let mut widest = 0.0f64;
-    for k in 0..m {
-        let (a, c) = (d[k], d[(k + 1) % m]);
-        let s = n
-            .dot(a.cross(c))
-            .atan2(a.dot(c))
-            .rem_euclid(std::f64::consts::TAU);
-        total += s;
-        widest = widest.max(s);
-    }
-    if (total - std::f64::consts::TAU).abs() > 1e-6 {
-        std::f64::consts::TAU
-    } else {
-        widest
-    }
+    let s: Vec<f64> = (0..m)
+        .map(|k| {
+            let (a, c) = (d[k], d[(k + 1) % m]);
+            n.dot(a.cross(c))
+                .atan2(a.dot(c))
+                .rem_euclid(std::f64::consts::TAU)
+        })
+        .collect();
+    ((s.iter().sum::<f64>() - std::f64::consts::TAU).abs() <= 1e-6).then_some(s)
+}
+
+/// The widest of the [`sectors`]; 2π when they do not go round once.
+fn widest_sector(n: DVec3, dirs: impl Iterator<Item = DVec3>) -> f64 {
+    sectors(n, dirs).map_or(std::f64::consts::TAU, |s| s.into_iter().fold(0.0, f64::max))
+}
+
+/// The narrowest of the [`sectors`]; 0 when they do not go round once.
+fn narrowest_sector(n: DVec3, dirs: impl Iterator<Item = DVec3>) -> f64 {
+    sectors(n, dirs).map_or(0.0, |s| s.into_iter().fold(f64::INFINITY, f64::min))
 }
 
 /// Splits region `r` (not four-sided) into quads around an inserted point (§11.7), adding the
@@ -460,7 +467,7 @@ fn split(net: &mut Network, region: Region, r: usize, prims: &[Primitive]) -> Ve
                 tangent_d,
                 mean.lerp(centroid, mu),
             );
-            let sector = widest_sector(p, nrm, pd.iter().map(|q| *q - p));
+            let sector = widest_sector(nrm, pd.iter().map(|q| *q - p));
             if best.is_none_or(|b| sector < b.0) {
                 best = Some((sector, p, nrm));
             }
@@ -556,9 +563,11 @@ fn split(net: &mut Network, region: Region, r: usize, prims: &[Primitive]) -> Ve
             leg.1 *= least / len;
         }
     }
-    // Legs that do not go round P_i with every sector below STAR point straight at their P_d
-    // (projected) instead, keeping their length.
-    if widest_sector(pi_, normal, legs.iter().map(|l| l.0)) > STAR {
+    // Legs that do not go round P_i with every sector below STAR, or leave two of them nearly
+    // along one direction (a cusp in the sub-quad between them: envelope.md, "Legs at P_i
+    // apart"), point straight at their P_d (projected) instead, keeping their length.
+    let leaving = || legs.iter().map(|l| l.0);
+    if widest_sector(normal, leaving()) > STAR || narrowest_sector(normal, leaving()) < CUSP {
         for (k, leg) in legs.iter_mut().enumerate() {
             leg.0 = proj(pd[k] - pi_).normalize_or_zero() * leg.0.length();
         }
@@ -1201,11 +1210,18 @@ enum Moves {
     Scales,
     /// That, or a lean across the side ([`LEANS`]).
     ScalesAndLeans,
+    /// Those, or a scale pushing further out ([`FAR_SQUEEZES`]).
+    Further,
 }
 
 /// The leans tried on a folded patch's sides after the β ([`unfolded`], [`Side::leaned`]):
 /// `c·|X(½)|/|g(½)|·4s(1 − s)·g(s)` added to the cross derivative, c of these.
 const LEANS: [f64; 6] = [0.25, 0.5, 1.0, 2.0, -0.25, -0.5];
+
+/// The β tried after [`SQUEEZES`] and the leans on a patch still folding after every other
+/// move ([`unfolded`], [`Moves::Further`]): the cross derivative's middle pushed out to 9 and
+/// 17 times the fitted one (envelope.md, *Pushed out further still*).
+const FAR_SQUEEZES: [f64; 2] = [-8.0, -16.0];
 
 /// `side` leaned across by each of [`LEANS`] ([`Side::leaned`]), those that keep its cross
 /// derivative's part across it pointing the way it did ([`Side::lean_keeps_its_side`]); none
@@ -1360,11 +1376,15 @@ fn unfolded(net: &Network, p: EnvelopePatch, cells: usize, others: &[Vec<DVec3>]
             for side in order.into_iter().filter(|&k| !scaled[k]) {
                 let here = &best.as_ref().unwrap_or(&p).coons.sides[side];
                 let scaled = SQUEEZES.map(|beta| here.clone().scaled(beta));
-                let leaned = match moves {
+                let further: Vec<Side> = match moves {
                     Moves::Scales => Vec::new(),
                     Moves::ScalesAndLeans => leans(here),
+                    Moves::Further => leans(here)
+                        .into_iter()
+                        .chain(FAR_SQUEEZES.map(|beta| here.clone().scaled(beta)))
+                        .collect(),
                 };
-                for changed in scaled.into_iter().chain(leaned) {
+                for changed in scaled.into_iter().chain(further) {
                     let mut q = best.as_ref().unwrap_or(&p).clone();
                     q.coons.sides[side] = changed;
                     let beat = round.as_ref().map_or(least, |r| r.0);
@@ -1396,9 +1416,13 @@ fn unfolded(net: &Network, p: EnvelopePatch, cells: usize, others: &[Vec<DVec3>]
             (best, least) = (q, n);
         }
     }
-    // Still folding: the search again with the sides' cross derivatives leaned across them too.
-    if least.0 > 0 {
-        let (q, n) = search(&p, Moves::ScalesAndLeans);
+    // Still folding: the search again with the sides' cross derivatives leaned across them too,
+    // and then pushed out further still.
+    for moves in [Moves::ScalesAndLeans, Moves::Further] {
+        if least.0 == 0 {
+            break;
+        }
+        let (q, n) = search(&p, moves);
         if n < least {
             (best, least) = (q, n);
         }
