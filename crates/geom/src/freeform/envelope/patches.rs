@@ -1416,13 +1416,19 @@ fn unfolded(net: &Network, p: EnvelopePatch, cells: usize, others: &[Vec<DVec3>]
             (best, least) = (q, n);
         }
     }
-    // Still folding: the search again with the sides' cross derivatives leaned across them too,
-    // and then pushed out further still.
-    for moves in [Moves::ScalesAndLeans, Moves::Further] {
-        if least.0 == 0 {
-            break;
+    // Still folding: the search again with the sides' cross derivatives leaned across them too;
+    // and where the report's own samples still fold, pushed out further still (between them
+    // alone, as on the slider's steps, the push clears nothing and costs a search).
+    if least.0 > 0 {
+        let (q, n) = search(&p, Moves::ScalesAndLeans);
+        if n < least {
+            (best, least) = (q, n);
         }
-        let (q, n) = search(&p, moves);
+    }
+    if least.0 > 0
+        && !grid_folds(net, &best, 0, &best.coons.grid(FOLD_CELLS), FOLD_CELLS).is_empty()
+    {
+        let (q, n) = search(&p, Moves::Further);
         if n < least {
             (best, least) = (q, n);
         }
