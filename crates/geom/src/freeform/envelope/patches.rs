@@ -1218,9 +1218,10 @@ enum Moves {
 /// `c·|X(½)|/|g(½)|·4s(1 − s)·g(s)` added to the cross derivative, c of these.
 const LEANS: [f64; 6] = [0.25, 0.5, 1.0, 2.0, -0.25, -0.5];
 
-/// The β tried after [`SQUEEZES`] and the leans on a patch still folding after every other
-/// move ([`unfolded`], [`Moves::Further`]): the cross derivative's middle pushed out to 9 and
-/// 17 times the fitted one (envelope.md, *Pushed out further still*).
+/// The β tried after [`SQUEEZES`] and the leans on a patch still folding at the report's
+/// samples after every other move ([`unfolded`], [`Moves::Further`]): the cross derivative's
+/// middle pushed out to 9 and 17 times the fitted one (envelope.md, *Pushed out further
+/// still*).
 const FAR_SQUEEZES: [f64; 2] = [-8.0, -16.0];
 
 /// `side` leaned across by each of [`LEANS`] ([`Side::leaned`]), those that keep its cross
