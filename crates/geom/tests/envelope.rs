@@ -3,6 +3,7 @@
 //! listing order, closed and outward for every t, enclosing the primitive, G1.
 
 mod common;
+use common::past_corners;
 use prism_geom::freeform::envelope::network::RegionKind;
 use prism_geom::freeform::envelope::{
     Envelope, EnvelopeError, EnvelopeSpec, Placement, PrimitiveInput, Shape, envelope,
@@ -36,13 +37,6 @@ const SHAPES: [Shape; 6] = [
 ];
 
 use prism_geom::analysis::winding_number as winding;
-
-/// The cells of `e`'s patches turned past their corners' normals at the report's 8 × 8 samples
-/// ([`prism_geom::freeform::envelope::folds::folds_past_corners`]: the build's test, which
-/// counts a step along a border too, so none of these means the report has none either).
-fn past_corners(e: &Envelope) -> Vec<prism_geom::freeform::envelope::folds::Fold> {
-    prism_geom::freeform::envelope::folds::folds_past_corners(&e.network, &e.patches, 8)
-}
 
 fn face_normal(m: &PolyMesh, f: usize) -> (DVec3, DVec3) {
     let vs: Vec<DVec3> = m

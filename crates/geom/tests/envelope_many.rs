@@ -4,6 +4,7 @@
 //! listing.
 
 mod common;
+use common::past_corners;
 use prism_geom::freeform::envelope::network::RegionKind;
 use prism_geom::freeform::envelope::{
     Envelope, EnvelopeSpec, Placement, Primitive, PrimitiveInput, Shape, envelope,
@@ -379,13 +380,6 @@ fn thin_fusion_strips_do_not_fold_at_small_t() {
     for t in [1.0, 0.5, 0.3, 0.2, 0.1] {
         fold_free_at(&spec, t);
     }
-}
-
-/// The cells of `e`'s patches turned past their corners' normals at the report's 8 × 8 samples
-/// ([`prism_geom::freeform::envelope::folds::folds_past_corners`]: the build's test, which
-/// counts a step along a border too, so none of these means the report has none either).
-fn past_corners(e: &Envelope) -> Vec<prism_geom::freeform::envelope::folds::Fold> {
-    prism_geom::freeform::envelope::folds::folds_past_corners(&e.network, &e.patches, 8)
 }
 
 /// `spec` at `t`, asserted to fold nowhere, to be G1 (10⁻⁹°) and to tessellate closed (K = 4).

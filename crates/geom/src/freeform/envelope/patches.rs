@@ -1376,7 +1376,7 @@ fn unfolded(net: &Network, p: EnvelopePatch, cells: usize, others: &[Vec<DVec3>]
             let mut round: Option<((usize, usize), usize, EnvelopePatch)> = None;
             for side in order.into_iter().filter(|&k| !scaled[k]) {
                 let here = &best.as_ref().unwrap_or(&p).coons.sides[side];
-                let scaled = SQUEEZES.map(|beta| here.clone().scaled(beta));
+                let squeezed = SQUEEZES.map(|beta| here.clone().scaled(beta));
                 let further: Vec<Side> = match moves {
                     Moves::Scales => Vec::new(),
                     Moves::ScalesAndLeans => leans(here),
@@ -1385,7 +1385,7 @@ fn unfolded(net: &Network, p: EnvelopePatch, cells: usize, others: &[Vec<DVec3>]
                         .chain(FAR_SQUEEZES.map(|beta| here.clone().scaled(beta)))
                         .collect(),
                 };
-                for changed in scaled.into_iter().chain(further) {
+                for changed in squeezed.into_iter().chain(further) {
                     let mut q = best.as_ref().unwrap_or(&p).clone();
                     q.coons.sides[side] = changed;
                     let beat = round.as_ref().map_or(least, |r| r.0);
