@@ -1015,12 +1015,12 @@ fn envelope_builds_the_bundled_scenes_and_names_bad_ones() {
         "envelope assets/table2-seven.envelope.json -o {} --resolution 4",
     );
     assert!(
-        so.contains("primitives=7 regions=67 patches=135 removed=0"),
+        so.contains("primitives=7 regions=65 patches=128 removed=0"),
         "{so}"
     );
     assert!(so.contains(" folded=0 "), "{so}");
-    // Down to t = 0.1, where the tab's slider stops, nothing folds; in a heap of four
-    // primitives at t = 0.003 a cell on a primitive's face does: counted, and the first named on
+    // Down to t = 0.1, where the tab's slider stops, nothing folds; in a heap of three
+    // primitives at t = 0.005 cells on a primitive's face do: counted, and the first named on
     // stderr (exit 0).
     let (_, so, _) = succeeds_to(
         "seven-01.obj",
@@ -1044,11 +1044,11 @@ fn envelope_builds_the_bundled_scenes_and_names_bad_ones() {
         se.contains(&format!(
             "warning: {folded} of {} sampled cells fold",
             64 * patches
-        )) && se.contains("the first on primitive 3 face 1"),
+        )) && se.contains("the first on primitive 2 face 0"),
         "{se}"
     );
     assert!(so.contains(" crossings=0 "), "{so}");
-    // A heap of six at t = 0.02 whose surface passes through itself: counted, and where the
+    // A heap of five at t = 0.005 whose surface passes through itself: counted, and where the
     // first pair lies said on stderr (exit 0).
     let (_, so, se) = succeeds_to(
         "crossing.obj",

@@ -189,8 +189,8 @@ fn the_t_sweep_shows_the_three_t() {
 }
 
 /// Folds are shown in the summary: none on the seven-primitive sample at its own t, at 0.5 or
-/// at 0.1, where the slider stops; a heap of four primitives has a cell on a primitive's face
-/// turned over at t = 0.003 (below the slider; opened from a file), counted, with where the
+/// at 0.1, where the slider stops; a heap of three primitives has cells on a primitive's face
+/// turned over at t = 0.005 (below the slider; opened from a file), counted, with where the
 /// first lies.
 #[test]
 fn the_summary_counts_folds() {
@@ -220,14 +220,14 @@ fn the_summary_counts_folds() {
             Some((n, text)) => {
                 assert!(folded && *n > 0);
                 assert_eq!(b.fold_points.len(), *n);
-                assert!(text.contains("the first on primitive 3 face 1"), "{text}");
+                assert!(text.contains("the first on primitive 2 face 0"), "{text}");
             }
             None => assert!(!folded && b.fold_points.is_empty()),
         }
     }
 }
 
-/// Faces that pass through each other (a heap of six at t = 0.02) are found on a thread after
+/// Faces that pass through each other (a heap of five at t = 0.005) are found on a thread after
 /// the build, counted in the summary with where the first lies, and marked; the
 /// seven-primitive sample has none.
 #[test]

@@ -167,12 +167,41 @@ pub fn envelope(spec: &EnvelopeSpec) -> Result<Envelope, EnvelopeError> {
 }
 
 /// The envelope of the primitives `active` (ascending) of `primitives`, the others reported
-/// as removed.
+/// as removed: with corners drawn together ([`clip::NEAR_CORNER`]), unless the patches of the
+/// regions at a corner drawn onto are not G1 across their borders (a region of a shape the
+/// patches cannot follow, envelope.md, "Corners drawn together"); then as they lie.
 fn assemble(
     spec: &EnvelopeSpec,
     primitives: Vec<Primitive>,
     active: Vec<usize>,
 ) -> Result<Envelope, EnvelopeError> {
+    let (e, drawn) = assemble_with(spec, primitives.clone(), active.clone(), true)?;
+    if drawn.is_empty() {
+        return Ok(e);
+    }
+    let at_drawn = |r: usize| {
+        e.network.regions[r].sides.iter().any(|s| {
+            let c = &e.network.curves[s.curve];
+            c.ends.iter().any(|v| drawn.contains(v))
+        })
+    };
+    let jump = patches::largest_border_jump_on(&e.network, &e.patches, 16, at_drawn);
+    if jump < G1_CHECK {
+        return Ok(e);
+    }
+    assemble_with(spec, primitives, active, false).map(|(e, _)| e)
+}
+
+/// Normal jump (degrees) across a border that counts as not G1 in [`assemble`]'s check: the
+/// construction gives 10⁻¹⁰° and less.
+const G1_CHECK: f64 = 1e-6;
+
+fn assemble_with(
+    spec: &EnvelopeSpec,
+    primitives: Vec<Primitive>,
+    active: Vec<usize>,
+    draw_together: bool,
+) -> Result<(Envelope, Vec<usize>), EnvelopeError> {
     let centres: Vec<DVec3> = primitives.iter().map(|p| p.centre).collect();
     let largest = primitives.iter().map(|p| p.radius).fold(0.0, f64::max);
     let extent = centres
@@ -183,6 +212,7 @@ fn assemble(
     let lay = hull::layout_swallowing(&centres, &radii, active, 1e-9 * extent, SWALLOW);
     let mut network = Network::default();
     let mut sections: HashMap<(usize, usize), Vec<PatchSide>> = HashMap::new();
+    let mut drawn = Vec::new();
     for &a in &lay.kept {
         // The cuts in an order of their directions, not of the listing, so that rounding in the
         // clipping cannot depend on the listing either.
@@ -198,8 +228,9 @@ fn assemble(
             .iter()
             .map(|&b| (centres[b] - centres[a]).normalize())
             .collect();
-        let found = clip::add_primitive(&mut network, &primitives[a], a, &cuts)?;
-        for (b, s) in partners.into_iter().zip(found) {
+        let found = clip::add_primitive(&mut network, &primitives[a], a, &cuts, draw_together)?;
+        drawn.extend(found.drawn);
+        for (b, s) in partners.into_iter().zip(found.sections) {
             sections.insert((a, b), s);
         }
     }
@@ -260,15 +291,18 @@ fn assemble(
     // The build repairs every cell turned past its corners' normals; the report names those
     // turned past the plane along their nearest side too (a step along a border is no fold).
     let folded = folds::reported(&network, &patches, &folded);
-    Ok(Envelope {
-        primitives,
-        network,
-        regions,
-        patches,
-        folded,
-        removed: lay.removed,
-        straight,
-    })
+    Ok((
+        Envelope {
+            primitives,
+            network,
+            regions,
+            patches,
+            folded,
+            removed: lay.removed,
+            straight,
+        },
+        drawn,
+    ))
 }
 
 impl Envelope {

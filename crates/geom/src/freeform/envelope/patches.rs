@@ -1535,11 +1535,27 @@ fn run_along(p: &EnvelopePatch, run: Run) -> EnvelopePatch {
 /// The largest angle (degrees) between the two sides' normals along every border, sampled at
 /// `samples` + 1 points per patch side: `C′ × X` on each side (analytic, outward).
 pub fn largest_border_jump(net: &Network, patches: &[EnvelopePatch], samples: usize) -> f64 {
+    largest_border_jump_on(net, patches, samples, |_| true)
+}
+
+/// [`largest_border_jump`] along the curves that a side of a patch in region `r` with
+/// `near(r)` lies on.
+pub fn largest_border_jump_on(
+    net: &Network,
+    patches: &[EnvelopePatch],
+    samples: usize,
+    near: impl Fn(usize) -> bool,
+) -> f64 {
     // Per curve, the (side range, normal function) of every patch side on it.
     let mut on: Vec<Vec<(usize, usize)>> = vec![Vec::new(); net.curves.len()];
     for (p, patch) in patches.iter().enumerate() {
         for (k, s) in patch.sides.iter().enumerate() {
             on[s.curve].push((p, k));
+        }
+    }
+    for users in &mut on {
+        if !users.iter().any(|&(p, _)| near(patches[p].region)) {
+            users.clear();
         }
     }
     let normal = |p: usize, k: usize, tau: f64| -> Option<DVec3> {
