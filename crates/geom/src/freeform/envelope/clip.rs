@@ -535,7 +535,7 @@ fn same_corner(a: &Corner, b: &Corner, g: DVec3) -> bool {
 /// The corners of the clipped faces `polys` drawn onto another ([`NEAR_CORNER`]): (corner,
 /// the corner it becomes), each to the nearest of a higher rank, and on from there. Kept only
 /// where the way is short beside the corner's other sides ([`SHORT_SIDE`]) and no face is drawn
-/// into two corners; leaving one out can only make the others' ways look longer, so the
+/// into two corners or through one corner twice; leaving one out can only make the others' ways look longer, so the
 /// leaving out is repeated until nothing more goes.
 fn near_corners(polys: &[(usize, Vec<Corner>)], g: DVec3) -> Vec<(Corner, Corner)> {
     let mut all: Vec<Corner> = Vec::new();
@@ -588,20 +588,24 @@ fn near_corners(polys: &[(usize, Vec<Corner>)], g: DVec3) -> Vec<(Corner, Corner
         };
         // A face drawn into one point vanishes (a small piece where cuts cross near an edge),
         // but never into two: the faces beside it would take its sides, two pieces of one cut
-        // meeting at a straight corner of theirs.
-        let into_two = |poly: &Vec<Corner>| {
+        // meeting at a straight corner of theirs. Nor may a face pass one corner twice.
+        let spoiled = |poly: &Vec<Corner>| {
             let mut kept: Vec<Corner> = Vec::new();
             for c in poly.iter().map(end) {
-                if !kept.iter().any(|k| same_corner(k, &c, g)) {
+                if kept.last().is_none_or(|k| !same_corner(k, &c, g)) {
                     kept.push(c);
                 }
             }
-            kept.len() == 2
+            while kept.len() > 1 && same_corner(&kept[0], &kept[kept.len() - 1], g) {
+                kept.pop();
+            }
+            let twice = (0..kept.len()).any(|i| (0..i).any(|j| same_corner(&kept[i], &kept[j], g)));
+            kept.len() == 2 || twice
         };
         let flat: Vec<&Vec<Corner>> = polys
             .iter()
             .map(|(_, poly)| poly)
-            .filter(|poly| into_two(poly))
+            .filter(|poly| spoiled(poly))
             .collect();
         let before = moved.len();
         let keep: Vec<bool> = moved
@@ -623,7 +627,7 @@ fn near_corners(polys: &[(usize, Vec<Corner>)], g: DVec3) -> Vec<(Corner, Corner
 
 /// What [`add_primitive`] adds: each cut's section, and the network vertices other corners
 /// were drawn onto ([`NEAR_CORNER`]).
-pub struct Section {
+pub struct Clipped {
     pub sections: Vec<Vec<PatchSide>>,
     pub drawn: Vec<usize>,
 }
@@ -638,7 +642,7 @@ pub fn add_primitive(
     index: usize,
     cuts: &[DVec3],
     draw_together: bool,
-) -> Result<Section, EnvelopeError> {
+) -> Result<Clipped, EnvelopeError> {
     let tol = ON_PLANE * p.radius;
     let mut clip = Clipper {
         p,
@@ -735,5 +739,5 @@ pub fn add_primitive(
                 .map(|x| x.1)
         })
         .collect();
-    Ok(Section { sections, drawn })
+    Ok(Clipped { sections, drawn })
 }
