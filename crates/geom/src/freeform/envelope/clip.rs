@@ -419,11 +419,7 @@ impl Clipper<'_> {
         known: Option<Located>,
     ) -> Result<usize, EnvelopeError> {
         let u = (c.flat - self.p.centre).normalize();
-        if let Some(&(_, v, _)) = self
-            .points
-            .iter()
-            .find(|(w, _, _)| w.distance(u) <= SAME_DIRECTION)
-        {
+        if let Some(v) = self.known(u) {
             return Ok(v);
         }
         let l = match known {
@@ -438,6 +434,14 @@ impl Clipper<'_> {
         );
         self.points.push((u, v, c.at));
         Ok(v)
+    }
+
+    /// The network vertex already added in direction u (unit, from G), if any.
+    fn known(&self, u: DVec3) -> Option<usize> {
+        self.points
+            .iter()
+            .find(|(w, _, _)| w.distance(u) <= SAME_DIRECTION)
+            .map(|p| p.1)
     }
 
     fn at_of(&self, v: usize) -> At {
@@ -535,8 +539,8 @@ fn same_corner(a: &Corner, b: &Corner, g: DVec3) -> bool {
 /// The corners of the clipped faces `polys` drawn onto another ([`NEAR_CORNER`]): (corner,
 /// the corner it becomes), each to the nearest of a higher rank, and on from there. Kept only
 /// where the way is short beside the corner's other sides ([`SHORT_SIDE`]) and no face is drawn
-/// into two corners or through one corner twice; leaving one out can only make the others' ways look longer, so the
-/// leaving out is repeated until nothing more goes.
+/// into two corners or through one corner twice; leaving one out can only make the others' ways
+/// look longer, so the leaving out is repeated until nothing more goes.
 fn near_corners(polys: &[(usize, Vec<Corner>)], g: DVec3) -> Vec<(Corner, Corner)> {
     let mut all: Vec<Corner> = Vec::new();
     for c in polys.iter().flat_map(|(_, poly)| poly) {
@@ -664,12 +668,18 @@ pub fn add_primitive(
     } else {
         Vec::new()
     };
+    let drawn_onto = |c: &Corner| {
+        moved
+            .iter()
+            .find(|(from, _)| same_corner(from, c, p.centre))
+            .map(|m| m.1)
+    };
     // Every corner that stays is located in its own face first, so that one drawn onto it
     // from another face finds it (and the listing of the faces cannot change where it lies).
     for (_, poly) in &polys {
         let inside = clip.inside_corners(poly)?;
         for (c, l) in poly.iter().zip(inside) {
-            if !moved.iter().any(|(from, _)| same_corner(from, c, p.centre)) {
+            if drawn_onto(c).is_none() {
                 clip.vertex(net, c, l)?;
             }
         }
@@ -678,14 +688,11 @@ pub fn add_primitive(
         let poly: Vec<Corner> = poly
             .into_iter()
             .map(|c| {
-                moved
-                    .iter()
-                    .find(|(from, _)| same_corner(from, &c, p.centre))
-                    .map_or(c, |(_, to)| Corner {
-                        flat: to.flat,
-                        at: to.at,
-                        along: c.along,
-                    })
+                drawn_onto(&c).map_or(c, |to| Corner {
+                    flat: to.flat,
+                    at: to.at,
+                    along: c.along,
+                })
             })
             .collect();
         let ids = poly
@@ -731,13 +738,7 @@ pub fn add_primitive(
     }
     let drawn = moved
         .iter()
-        .filter_map(|(_, to)| {
-            let u = (to.flat - p.centre).normalize();
-            clip.points
-                .iter()
-                .find(|(w, _, _)| w.distance(u) <= SAME_DIRECTION)
-                .map(|x| x.1)
-        })
+        .filter_map(|(_, to)| clip.known((to.flat - p.centre).normalize()))
         .collect();
     Ok(Clipped { sections, drawn })
 }

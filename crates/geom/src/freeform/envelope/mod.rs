@@ -186,7 +186,7 @@ fn assemble(
         })
     };
     // Five samples a side find a patch turned back along a border (in heap 500308 at t = 0.01
-    // it spans a fifth of the side); sixteen would cost the seven 0.8 ms a build, not 0.2.
+    // it spans a fifth of the side); sixteen would cost the seven 0.8 ms a build, not 0.3.
     let jump = patches::largest_border_jump_on(&e.network, &e.patches, 4, at_drawn);
     if jump < G1_CHECK {
         return Ok(e);
@@ -290,7 +290,6 @@ fn assemble_with(
     }
     let regions = network.regions.len();
     let (network, patches, folded, _) = legs::patched(network, spec.basis, &primitives);
-
     // The build repairs every cell turned past its corners' normals; the report names those
     // turned past the plane along their nearest side too (a step along a border is no fold).
     let folded = folds::reported(&network, &patches, &folded);

@@ -1426,16 +1426,16 @@ fn unfolded(net: &Network, p: EnvelopePatch, cells: usize, others: &[Vec<DVec3>]
             (best, least) = (q, n);
         }
     }
-    if least.0 > 0
-        && !grid_folds(net, &best, 0, &best.coons.grid(FOLD_CELLS), FOLD_CELLS).is_empty()
-    {
+    let mut grid = best.coons.grid(FOLD_CELLS);
+    let mut folds = grid_folds(net, &best, 0, &grid, FOLD_CELLS);
+    if least.0 > 0 && !folds.is_empty() {
         let (q, n) = search(&p, Moves::Further);
         if n < least {
             (best, least) = (q, n);
+            grid = best.coons.grid(FOLD_CELLS);
+            folds = grid_folds(net, &best, 0, &grid, FOLD_CELLS);
         }
     }
-    let grid = best.coons.grid(FOLD_CELLS);
-    let folds = grid_folds(net, &best, 0, &grid, FOLD_CELLS);
     Unfolded {
         // The search's score counts the report's samples once more.
         between: least.0.saturating_sub(folds.len()),
