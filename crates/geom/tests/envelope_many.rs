@@ -728,6 +728,29 @@ fn corners_near_each_other_are_drawn_together() {
     }
 }
 
+/// The build's check of corners drawn together (envelope.md, "Corners drawn together"): heap
+/// 500308 of the mixed survey at t = 0.01 draws two edge points onto a vertex, and a patch of
+/// the five-sided region at that vertex then turned back along a fifth of a border (normal jump
+/// 180°, 75 patches). The regions at a drawn corner are checked for G1, and the scene is built
+/// as it lies: 91 patches, G1 across every border, and nothing folds or crosses itself.
+#[test]
+fn a_drawn_network_that_is_not_g1_is_built_as_it_lies() {
+    let spec: EnvelopeSpec = serde_json::from_str(include_str!(
+        "data/envelope/drawn-not-g1-heap.envelope.json"
+    ))
+    .unwrap();
+    assert_eq!(spec.t, 0.01);
+    let e = envelope(&spec).unwrap();
+    assert_eq!(e.patches.len(), 91);
+    assert!(
+        e.largest_border_jump() < 1e-6,
+        "{}",
+        e.largest_border_jump()
+    );
+    assert_eq!(e.folds(), vec![]);
+    crosses_nowhere(&e, &[8, 16], "heap 500308");
+}
+
 /// Short legs given back where a patch folds (`legs.rs`, envelope.md, "Short legs given back
 /// where a patch folds"): the two heaps of the mixed survey that still folded on the tab's
 /// slider. A heap of six (600182, turned by 180° about the vertical) whose narrow lid between
