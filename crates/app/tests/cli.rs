@@ -939,13 +939,21 @@ fn envelope_builds_the_bundled_scenes_and_names_bad_ones() {
         "{so}"
     );
     assert!(
-        so.contains("largest normal jump across patch borders"),
+        so.contains("surface=charts folded=0 crossings=0 largest normal jump across patch borders"),
+        "{so}"
+    );
+    // The quality report of the mesh as written: closed, nothing inward, the cube inside.
+    assert!(
+        so.contains("quality: triangles=") && so.contains(" inward=0 open_edges=0 enclosure="),
         "{so}"
     );
     let (doc, _) = prism_geom::io::load(&out).unwrap();
     let topo = prism_geom::Topology::build(&doc.mesh).unwrap();
     topo.require_closed(&doc.mesh).unwrap();
-    assert_eq!(doc.mesh.num_faces(), 6 * 64);
+    assert!(
+        so.contains(&format!("quality: triangles={} ", doc.mesh.num_faces())),
+        "{so}"
+    );
     assert_finite(&out);
     let curves = tmp("hex-curves.obj");
     let out = tmp("hex.stl");
@@ -953,17 +961,31 @@ fn envelope_builds_the_bundled_scenes_and_names_bad_ones() {
         "envelope assets/hexagonal-prism.envelope.json -o {} --curves {} --resolution 4",
         &[&out, &curves],
     ));
-    // 8 faces: 6 quads, 2 hexagons split into 6 quads each.
-    assert!(so.contains("regions=8 patches=18"), "{so}");
+    // 8 faces, one chart each (the hexagons too: no split).
+    assert!(so.contains("regions=8 patches=8"), "{so}");
     let polylines = std::fs::read_to_string(&curves).unwrap();
-    // 18 edges and 12 insertion curves, 33 points each.
+    // 18 edges, 33 points each.
     assert_eq!(
         polylines.lines().filter(|l| l.starts_with("l ")).count(),
-        30
+        18
     );
     assert_eq!(
         polylines.lines().filter(|l| l.starts_with("v ")).count(),
-        30 * 33
+        18 * 33
+    );
+    // The paper's patches: 2 hexagons split into 6 quads each, 12 insertion curves.
+    let (so, _) = succeeds(run_with(
+        "envelope assets/hexagonal-prism.envelope.json -o {} --curves {} --resolution 4 --patches paper",
+        &[&out, &curves],
+    ));
+    assert!(
+        so.contains("regions=8 patches=18") && so.contains("surface=paper"),
+        "{so}"
+    );
+    let polylines = std::fs::read_to_string(&curves).unwrap();
+    assert_eq!(
+        polylines.lines().filter(|l| l.starts_with("l ")).count(),
+        30
     );
     // A .prism.json keeps the scene as its "envelope" block, and envelope reads it.
     let (doc, _, _) = succeeds_to(
@@ -997,8 +1019,8 @@ fn envelope_builds_the_bundled_scenes_and_names_bad_ones() {
         "{:?}",
         text(&o)
     );
-    // Two primitives: two cubes side by side (14 regions), on a body diagonal (18 regions, each
-    // cube's 3 triangles and 3 pentagons split: 54 patches).
+    // Two primitives: two cubes side by side (14 regions), on a body diagonal (18 regions, one
+    // chart each; the paper's patches split each cube's 3 triangles and 3 pentagons: 54).
     let (_, so, _) = succeeds_to("two.obj", "envelope assets/two-cubes.envelope.json -o {}");
     assert!(
         so.contains("primitives=2 regions=14 patches=14 removed=0"),
@@ -1008,6 +1030,11 @@ fn envelope_builds_the_bundled_scenes_and_names_bad_ones() {
         "diag.glb",
         "envelope assets/diagonal-cubes.envelope.json -o {} --resolution 4",
     );
+    assert!(so.contains("primitives=2 regions=18 patches=18"), "{so}");
+    let (_, so, _) = succeeds_to(
+        "diag-paper.glb",
+        "envelope assets/diagonal-cubes.envelope.json -o {} --resolution 4 --patches paper",
+    );
     assert!(so.contains("primitives=2 regions=18 patches=54"), "{so}");
     // Scenes like the paper's Table 2: seven and five primitives of five kinds.
     let (_, so, _) = succeeds_to(
@@ -1015,13 +1042,13 @@ fn envelope_builds_the_bundled_scenes_and_names_bad_ones() {
         "envelope assets/table2-seven.envelope.json -o {} --resolution 4",
     );
     assert!(
-        so.contains("primitives=7 regions=65 patches=128 removed=0"),
+        so.contains("primitives=7 regions=67 patches=67 removed=0"),
         "{so}"
     );
     assert!(so.contains(" folded=0 "), "{so}");
-    // Down to t = 0.1, where the tab's slider stops, nothing folds; in a heap of three
-    // primitives at t = 0.005 cells on a primitive's face do: counted, and the first named on
-    // stderr (exit 0).
+    // Down to t = 0.1, where the tab's slider stops, nothing folds; the paper's patches of a heap
+    // of three primitives at t = 0.005 fold on a primitive's face: counted, and the first named
+    // on stderr (exit 0).
     let (_, so, _) = succeeds_to(
         "seven-01.obj",
         "envelope assets/table2-seven.envelope.json -o {} --resolution 4 --t 0.1",
@@ -1029,7 +1056,7 @@ fn envelope_builds_the_bundled_scenes_and_names_bad_ones() {
     assert!(so.contains(" folded=0 "), "{so}");
     let (_, so, se) = succeeds_to(
         "heap.obj",
-        "envelope crates/geom/tests/data/envelope/still-folding-heap.envelope.json -o {} --resolution 4",
+        "envelope crates/geom/tests/data/envelope/still-folding-heap.envelope.json -o {} --resolution 4 --patches paper",
     );
     let count = |key: &str| -> usize {
         so.split_whitespace()
@@ -1052,7 +1079,7 @@ fn envelope_builds_the_bundled_scenes_and_names_bad_ones() {
     // first pair lies said on stderr (exit 0).
     let (_, so, se) = succeeds_to(
         "crossing.obj",
-        "envelope crates/geom/tests/data/envelope/crossing-heap.envelope.json -o {}",
+        "envelope crates/geom/tests/data/envelope/crossing-heap.envelope.json -o {} --patches paper",
     );
     let crossings = so
         .split_whitespace()
@@ -1070,7 +1097,7 @@ fn envelope_builds_the_bundled_scenes_and_names_bad_ones() {
         "envelope assets/table2-five.envelope.json -o {} --resolution 4",
     );
     assert!(
-        so.contains("primitives=5 regions=49 patches=81 removed=0"),
+        so.contains("primitives=5 regions=50 patches=50 removed=0"),
         "{so}"
     );
     // A cube between two others on a line is swallowed, and named.

@@ -43,6 +43,7 @@ fn scene(name: &str) -> EnvelopeSpec {
         primitives,
         resolution: 8,
         basis: Default::default(),
+        patches: Default::default(),
     }
 }
 

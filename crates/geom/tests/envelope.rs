@@ -4,7 +4,6 @@
 
 mod common;
 use common::past_corners;
-use prism_geom::freeform::envelope::network::RegionKind;
 use prism_geom::freeform::envelope::{
     Envelope, EnvelopeError, EnvelopeSpec, Placement, PrimitiveInput, Shape, envelope,
 };
@@ -16,6 +15,7 @@ fn scene(shape: Shape, t: f64) -> EnvelopeSpec {
         primitives: vec![shape.placed(&Placement::default())],
         resolution: 8,
         basis: Default::default(),
+        patches: prism_geom::freeform::envelope::Surfacing::Paper,
     }
 }
 
@@ -194,6 +194,7 @@ fn the_listing_order_does_not_matter() {
                 primitives: vec![q],
                 resolution: 8,
                 basis: Default::default(),
+                patches: prism_geom::freeform::envelope::Surfacing::Paper,
             })
             .unwrap()
             .tessellate(4)
@@ -330,6 +331,7 @@ fn bad_primitives_are_named() {
             primitives: vec![p],
             resolution: 8,
             basis: Default::default(),
+            patches: prism_geom::freeform::envelope::Surfacing::Paper,
         })
         .unwrap_err()
         .to_string()
@@ -368,6 +370,7 @@ fn bad_primitives_are_named() {
             primitives: vec![],
             resolution: 8,
             basis: Default::default(),
+            patches: prism_geom::freeform::envelope::Surfacing::Paper,
         }),
         Err(EnvelopeError::Empty)
     ));
@@ -388,6 +391,7 @@ fn pair(a: PrimitiveInput, b: PrimitiveInput, t: f64) -> Envelope {
         primitives: vec![a, b],
         resolution: 8,
         basis: Default::default(),
+        patches: prism_geom::freeform::envelope::Surfacing::Paper,
     })
     .unwrap()
 }
@@ -423,7 +427,7 @@ fn two_aligned_cubes_fuse_by_translation() {
         let m = e.tessellate(8).unwrap();
         assert_closed_outward_from(&m, DVec3::ZERO, gb, &format!("t = {t}"));
         for p in &e.patches {
-            if e.network.regions[p.region].kind != RegionKind::Fusion {
+            if !e.network.regions[p.region].kind.between() {
                 continue;
             }
             for i in 0..=8 {
@@ -538,6 +542,7 @@ fn primitives_with_one_centre_are_refused() {
         ],
         resolution: 8,
         basis: Default::default(),
+        patches: prism_geom::freeform::envelope::Surfacing::Paper,
     })
     .unwrap_err();
     assert_eq!(e, EnvelopeError::SameCentre { a: 0, b: 1 });
@@ -551,6 +556,7 @@ fn primitives_with_one_centre_are_refused() {
         ],
         resolution: 8,
         basis: Default::default(),
+        patches: prism_geom::freeform::envelope::Surfacing::Paper,
     })
     .unwrap_err();
     assert_eq!(e, EnvelopeError::SameCentre { a: 1, b: 3 });

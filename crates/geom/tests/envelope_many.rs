@@ -25,6 +25,7 @@ fn spec(primitives: Vec<PrimitiveInput>, t: f64) -> EnvelopeSpec {
         primitives,
         resolution: 8,
         basis: Default::default(),
+        patches: prism_geom::freeform::envelope::Surfacing::Paper,
     }
 }
 
@@ -189,7 +190,7 @@ fn three_cubes_in_an_l() {
         };
         let mut fusion_points = 0;
         for p in &e.patches {
-            if e.network.regions[p.region].kind != RegionKind::Fusion {
+            if !e.network.regions[p.region].kind.between() {
                 continue;
             }
             for i in 0..=6 {
@@ -261,11 +262,7 @@ fn the_listing_order_of_many_does_not_matter() {
         cube_at([3.0, 0.5, 0.2], [20.0, 35.0, 10.0]),
         cube_at([0.7, 3.2, 1.1], [5.0, 0.0, 40.0]),
     ];
-    let bundled = |text: &str| {
-        serde_json::from_str::<EnvelopeSpec>(text)
-            .unwrap()
-            .primitives
-    };
+    let bundled = |text: &str| paper_scene(text).unwrap().primitives;
     for (scene, t) in [
         (l_of_three(), 0.5),
         (tetrahedron_of_four(), 1.0),
@@ -355,7 +352,7 @@ fn the_bundled_scenes_of_several_are_sound() {
             include_str!("../../../assets/table2-five.envelope.json"),
         ),
     ] {
-        let spec: EnvelopeSpec = serde_json::from_str(text).unwrap();
+        let spec: EnvelopeSpec = paper_scene(text).unwrap();
         for t in [1.0, 0.7, 0.5, 0.3, 0.2, 0.1] {
             let e = envelope(&EnvelopeSpec { t, ..spec.clone() }).unwrap();
             assert!(e.removed.is_empty());
@@ -373,7 +370,7 @@ fn the_bundled_scenes_of_several_are_sound() {
 /// solid — its primitives overlap deeply — not looked into yet).
 #[test]
 fn thin_fusion_strips_do_not_fold_at_small_t() {
-    let spec: EnvelopeSpec = serde_json::from_str(include_str!(
+    let spec: EnvelopeSpec = paper_scene(include_str!(
         "data/envelope/thin-fusion-strips.envelope.json"
     ))
     .unwrap();
@@ -446,7 +443,7 @@ fn folds_are_found_patch_by_patch() {
         include_str!("../../../assets/two-cubes.envelope.json"),
         include_str!("../../../assets/diagonal-cubes.envelope.json"),
     ] {
-        let spec: EnvelopeSpec = serde_json::from_str(text).unwrap();
+        let spec: EnvelopeSpec = paper_scene(text).unwrap();
         for t in [1.0, 0.7, 0.5, 0.3, 0.1] {
             let mut s = EnvelopeSpec { t, ..spec.clone() };
             for p in &mut s.primitives {
@@ -459,12 +456,12 @@ fn folds_are_found_patch_by_patch() {
         }
     }
     let spec: EnvelopeSpec =
-        serde_json::from_str(include_str!("data/envelope/thin-quad-heap.envelope.json")).unwrap();
+        paper_scene(include_str!("data/envelope/thin-quad-heap.envelope.json")).unwrap();
     assert_eq!(
         envelope(&EnvelopeSpec { t: 0.5, ..spec }).unwrap().folds(),
         vec![]
     );
-    let spec: EnvelopeSpec = serde_json::from_str(include_str!(
+    let spec: EnvelopeSpec = paper_scene(include_str!(
         "data/envelope/still-folding-heap.envelope.json"
     ))
     .unwrap();
@@ -504,7 +501,7 @@ fn folds_are_found_patch_by_patch() {
 fn a_step_along_a_border_is_not_a_fold() {
     use prism_geom::freeform::envelope::folds::folds_past_corners;
     let spec: EnvelopeSpec =
-        serde_json::from_str(include_str!("data/envelope/step-heap.envelope.json")).unwrap();
+        paper_scene(include_str!("data/envelope/step-heap.envelope.json")).unwrap();
     assert_eq!(spec.t, 0.02);
     let e = envelope(&spec).unwrap();
     assert_eq!(e.folds(), vec![]);
@@ -566,7 +563,7 @@ fn a_step_along_a_border_is_not_a_fold() {
 fn a_side_leaned_across_clears_a_fold() {
     use prism_geom::freeform::envelope::folds::folds;
     let spec: EnvelopeSpec =
-        serde_json::from_str(include_str!("data/envelope/leaned-side-heap.envelope.json")).unwrap();
+        paper_scene(include_str!("data/envelope/leaned-side-heap.envelope.json")).unwrap();
     assert_eq!(spec.t, 0.01);
     let e = envelope(&spec).unwrap();
     for k in [8, 16, 32] {
@@ -632,10 +629,10 @@ fn narrowest_at_inserted_points(e: &Envelope) -> f64 {
 fn legs_at_an_inserted_point_leave_apart() {
     use prism_geom::freeform::envelope::folds::folds_past_corners;
     let heap: EnvelopeSpec =
-        serde_json::from_str(include_str!("data/envelope/cusp-heap.envelope.json")).unwrap();
+        paper_scene(include_str!("data/envelope/cusp-heap.envelope.json")).unwrap();
     assert_eq!(heap.t, 0.7);
     let seven: EnvelopeSpec =
-        serde_json::from_str(include_str!("../../../assets/table2-seven.envelope.json")).unwrap();
+        paper_scene(include_str!("../../../assets/table2-seven.envelope.json")).unwrap();
     for (spec, t, ks) in [
         (heap, 0.7, &[8, 16, 32, 64][..]),
         (seven, 1.0, &[8, 16, 32][..]),
@@ -666,7 +663,7 @@ fn legs_at_an_inserted_point_leave_apart() {
 #[test]
 fn a_side_pushed_further_out_clears_a_fold() {
     let spec: EnvelopeSpec =
-        serde_json::from_str(include_str!("data/envelope/pushed-side-heap.envelope.json")).unwrap();
+        paper_scene(include_str!("data/envelope/pushed-side-heap.envelope.json")).unwrap();
     assert_eq!(spec.t, 0.01);
     let e = fold_free_at(&spec, spec.t);
     assert!(
@@ -709,7 +706,7 @@ fn corners_near_each_other_are_drawn_together() {
             0.01,
         ),
     ] {
-        let spec: EnvelopeSpec = serde_json::from_str(text).unwrap();
+        let spec: EnvelopeSpec = paper_scene(text).unwrap();
         assert_eq!(spec.t, t);
         for e in unfolded_both_ways(&spec.primitives, t) {
             let shortest = e
@@ -735,7 +732,7 @@ fn corners_near_each_other_are_drawn_together() {
 /// as it lies: 91 patches, G1 across every border, and nothing folds or crosses itself.
 #[test]
 fn a_drawn_network_that_is_not_g1_is_built_as_it_lies() {
-    let spec: EnvelopeSpec = serde_json::from_str(include_str!(
+    let spec: EnvelopeSpec = paper_scene(include_str!(
         "data/envelope/drawn-not-g1-heap.envelope.json"
     ))
     .unwrap();
@@ -779,7 +776,7 @@ fn short_legs_are_given_back_where_a_patch_folds() {
             &[0.1][..],
         ),
     ] {
-        let spec: EnvelopeSpec = serde_json::from_str(text).unwrap();
+        let spec: EnvelopeSpec = paper_scene(text).unwrap();
         for &t in ts {
             let e = envelope(&EnvelopeSpec { t, ..spec.clone() }).unwrap();
             assert_eq!(past_corners(&e), vec![], "t = {t}");
@@ -881,7 +878,7 @@ fn survey() {
             include_str!("../../../assets/table2-five.envelope.json"),
         ),
     ] {
-        let s: EnvelopeSpec = serde_json::from_str(text).unwrap();
+        let s: EnvelopeSpec = paper_scene(text).unwrap();
         scenes.push((name, s.primitives));
     }
     for (name, prims) in scenes {
@@ -1286,7 +1283,7 @@ fn corners_inside_a_face_lie_as_far_out_as_their_neighbours() {
             false,
         ),
     ] {
-        let spec: EnvelopeSpec = serde_json::from_str(text).unwrap();
+        let spec: EnvelopeSpec = paper_scene(text).unwrap();
         for &t in ts {
             for e in unfolded_both_ways(&spec.primitives, t) {
                 let mut short = 0;
@@ -1344,7 +1341,7 @@ fn four_sided_regions_with_a_short_side_split_where_they_fold() {
             None,
         ),
     ] {
-        let spec: EnvelopeSpec = serde_json::from_str(text).unwrap();
+        let spec: EnvelopeSpec = paper_scene(text).unwrap();
         for t in [1.0, 0.5, 0.2, 0.1] {
             for (way, e) in unfolded_both_ways(&spec.primitives, t).iter().enumerate() {
                 assert!(e.largest_border_jump() < 1e-9, "t = {t}");
@@ -1427,7 +1424,7 @@ fn needles_with_a_tiny_side_are_patched_as_one_quad() {
 /// split round a point, lost that region when nested primitives came to be left out.)
 #[test]
 fn a_narrow_fusion_triangle_is_patched_as_one_quad() {
-    let spec: EnvelopeSpec = serde_json::from_str(include_str!(
+    let spec: EnvelopeSpec = paper_scene(include_str!(
         "data/envelope/narrow-fusion-triangle.envelope.json"
     ))
     .unwrap();
@@ -1440,7 +1437,7 @@ fn a_narrow_fusion_triangle_is_patched_as_one_quad() {
                     let len = chords(&e, r);
                     let shortest = len.iter().cloned().fold(f64::MAX, f64::min);
                     let mut one = e.patches.iter().filter(|p| p.region == r);
-                    region.kind == RegionKind::Fusion
+                    region.kind.between()
                         && len.len() == 3
                         && shortest > 0.2 * len.iter().cloned().fold(0.0, f64::max)
                         && one
@@ -1517,7 +1514,7 @@ fn two_dozen_cubes_on_a_sphere_are_all_kept_and_sound() {
 #[test]
 fn a_grazing_cut_keeps_the_surface_g1() {
     let spec: EnvelopeSpec =
-        serde_json::from_str(include_str!("data/envelope/grazing-cut.envelope.json")).unwrap();
+        paper_scene(include_str!("data/envelope/grazing-cut.envelope.json")).unwrap();
     for t in [1.0, 0.5, 0.45, 0.3, 0.2] {
         let e = envelope(&EnvelopeSpec { t, ..spec.clone() }).unwrap();
         let jump = e.largest_border_jump();
@@ -1539,7 +1536,7 @@ fn a_grazing_cut_keeps_the_surface_g1() {
 #[test]
 fn a_short_leg_at_a_split_point_is_lengthened() {
     let spec: EnvelopeSpec =
-        serde_json::from_str(include_str!("data/envelope/short-leg-heap.envelope.json")).unwrap();
+        paper_scene(include_str!("data/envelope/short-leg-heap.envelope.json")).unwrap();
     for t in [1.0, 0.5, 0.3, 0.2, 0.1] {
         fold_free_at(&spec, t);
     }
@@ -1558,7 +1555,7 @@ fn folded_patches_are_unfolded_by_rescaling_their_cross_derivatives() {
         include_str!("data/envelope/tiny-side-quad.envelope.json"),
         include_str!("data/envelope/short-sides-pentagon.envelope.json"),
     ] {
-        let spec: EnvelopeSpec = serde_json::from_str(text).unwrap();
+        let spec: EnvelopeSpec = paper_scene(text).unwrap();
         for t in [1.0, 0.5, 0.3, 0.2, 0.1] {
             let e = fold_free_at(&spec, t);
             folds_nowhere(&e, &[32], &format!("t = {t}"));
@@ -1576,7 +1573,7 @@ fn folded_patches_are_unfolded_by_rescaling_their_cross_derivatives() {
 /// fold, G1.
 #[test]
 fn patches_through_themselves_are_rescaled_too() {
-    let spec: EnvelopeSpec = serde_json::from_str(include_str!(
+    let spec: EnvelopeSpec = paper_scene(include_str!(
         "data/envelope/self-crossing-patches.envelope.json"
     ))
     .unwrap();
@@ -1593,7 +1590,7 @@ fn patches_through_themselves_are_rescaled_too() {
 /// itself now (envelope.md, "Patches through themselves"): no crossing at any K, no fold, G1.
 #[test]
 fn a_patch_through_itself_is_found_whatever_its_sides() {
-    let spec: EnvelopeSpec = serde_json::from_str(include_str!(
+    let spec: EnvelopeSpec = paper_scene(include_str!(
         "data/envelope/bulging-patch-through-itself.envelope.json"
     ))
     .unwrap();
@@ -1630,7 +1627,7 @@ fn border_cells_are_fans_from_their_inner_corners() {
             &[8, 16],
         ),
     ] {
-        let spec: EnvelopeSpec = serde_json::from_str(scene).unwrap();
+        let spec: EnvelopeSpec = paper_scene(scene).unwrap();
         let e = fold_free_at(&spec, spec.t);
         for &k in ks {
             let m = e.tessellate(k).unwrap();
@@ -1657,7 +1654,7 @@ fn a_patch_bending_between_its_samples_is_checked_finer() {
         include_str!("data/envelope/bulging-between-samples-heap.envelope.json"),
         include_str!("data/envelope/bulging-between-samples-pair.envelope.json"),
     ] {
-        let spec: EnvelopeSpec = serde_json::from_str(scene).unwrap();
+        let spec: EnvelopeSpec = paper_scene(scene).unwrap();
         let e = fold_free_at(&spec, spec.t);
         let what = format!("{} primitives", spec.primitives.len());
         crosses_nowhere(&e, &[8, 16, 24, 32], &what);
@@ -1674,7 +1671,7 @@ fn a_patch_bending_between_its_samples_is_checked_finer() {
 /// into a neighbour*).
 #[test]
 fn sub_quads_of_a_region_are_kept_apart() {
-    let spec: EnvelopeSpec = serde_json::from_str(include_str!(
+    let spec: EnvelopeSpec = paper_scene(include_str!(
         "data/envelope/sub-quads-through-each-other.envelope.json"
     ))
     .unwrap();
@@ -1692,12 +1689,12 @@ fn sub_quads_of_a_region_are_kept_apart() {
 #[test]
 fn a_patch_beside_a_very_short_side_is_checked_finer() {
     let spec: EnvelopeSpec =
-        serde_json::from_str(include_str!("data/envelope/short-side-bulge.envelope.json")).unwrap();
+        paper_scene(include_str!("data/envelope/short-side-bulge.envelope.json")).unwrap();
     let e = fold_free_at(&spec, 0.7);
     crosses_nowhere(&e, &[8, 16, 24, 32], "t = 0.7");
     folds_nowhere(&e, &[16], "t = 0.7");
     let spec: EnvelopeSpec =
-        serde_json::from_str(include_str!("data/envelope/short-side-at-3.envelope.json")).unwrap();
+        paper_scene(include_str!("data/envelope/short-side-at-3.envelope.json")).unwrap();
     let e = fold_free_at(&spec, 3.0);
     crosses_nowhere(&e, &[8, 16, 32], "t = 3");
     folds_nowhere(&e, &[16, 24, 32], "t = 3");
@@ -1721,7 +1718,7 @@ fn a_patch_with_a_nearly_flat_cell_is_checked_finer() {
         include_str!("data/envelope/fold-between-32-samples.envelope.json"),
         include_str!("data/envelope/fold-between-16-samples.envelope.json"),
     ] {
-        let spec: EnvelopeSpec = serde_json::from_str(scene).unwrap();
+        let spec: EnvelopeSpec = paper_scene(scene).unwrap();
         let e = fold_free_at(&spec, spec.t);
         let what = format!("{} primitives, t = {}", spec.primitives.len(), spec.t);
         folds_nowhere(&e, &[16, 24, 32], &what);
@@ -1737,7 +1734,7 @@ fn a_patch_with_a_nearly_flat_cell_is_checked_finer() {
 /// "Folded patches: cross derivatives rescaled", *Pushed out further*).
 #[test]
 fn a_crease_along_a_long_side_is_pushed_out_further() {
-    let spec: EnvelopeSpec = serde_json::from_str(include_str!(
+    let spec: EnvelopeSpec = paper_scene(include_str!(
         "data/envelope/crease-along-a-long-side.envelope.json"
     ))
     .unwrap();
@@ -1760,7 +1757,7 @@ fn the_bundled_scenes_hold_below_the_slider() {
         include_str!("../../../assets/table2-five.envelope.json"),
         include_str!("../../../assets/table2-seven.envelope.json"),
     ] {
-        let spec: EnvelopeSpec = serde_json::from_str(scene).unwrap();
+        let spec: EnvelopeSpec = paper_scene(scene).unwrap();
         for t in [0.05, 0.01, 0.005, 0.002, 0.001] {
             let e = fold_free_at(&spec, t);
             assert!(
@@ -1781,7 +1778,7 @@ fn the_bundled_scenes_hold_below_the_slider() {
 #[test]
 fn opposite_sides_are_also_matched_the_other_way() {
     use prism_geom::freeform::envelope::folds::crossings;
-    let spec: EnvelopeSpec = serde_json::from_str(include_str!(
+    let spec: EnvelopeSpec = paper_scene(include_str!(
         "data/envelope/matched-other-way-heap.envelope.json"
     ))
     .unwrap();
@@ -1809,7 +1806,7 @@ fn opposite_sides_are_also_matched_the_other_way() {
 #[test]
 fn the_rescaling_search_counts_the_reports_samples() {
     let spec: EnvelopeSpec =
-        serde_json::from_str(include_str!("data/envelope/needle-tip-heap.envelope.json")).unwrap();
+        paper_scene(include_str!("data/envelope/needle-tip-heap.envelope.json")).unwrap();
     let e = fold_free_at(&spec, 0.05);
     folds_nowhere(&e, &[16], "t = 0.05");
     crosses_nowhere(&e, &[8], "t = 0.05");
@@ -1826,7 +1823,7 @@ fn the_rescaling_search_counts_the_reports_samples() {
 fn every_way_is_tried_rescaled_where_a_region_still_folds() {
     use prism_geom::freeform::envelope::folds::crossings;
     let spec: EnvelopeSpec =
-        serde_json::from_str(include_str!("data/envelope/every-way-heap.envelope.json")).unwrap();
+        paper_scene(include_str!("data/envelope/every-way-heap.envelope.json")).unwrap();
     let e = fold_free_at(&spec, 0.05);
     assert!(crossings(&e.tessellate(8).unwrap()).is_empty());
     // The face is one quad with its tip collapsed.
@@ -1847,7 +1844,7 @@ fn every_way_is_tried_rescaled_where_a_region_still_folds() {
 /// with a point that is not finite counts as folded, and a tessellation with one is refused.
 #[test]
 fn a_collapsed_tip_is_not_split_again() {
-    let spec: EnvelopeSpec = serde_json::from_str(include_str!(
+    let spec: EnvelopeSpec = paper_scene(include_str!(
         "data/envelope/collapsed-tip-not-split.envelope.json"
     ))
     .unwrap();
@@ -1871,7 +1868,7 @@ fn a_collapsed_tip_is_not_split_again() {
 fn per_vertex_t_far_apart_does_not_fold_the_sharp_corner() {
     use prism_geom::freeform::envelope::folds::crossings;
     let spec: EnvelopeSpec =
-        serde_json::from_str(include_str!("data/envelope/vertex-t-apart.envelope.json")).unwrap();
+        paper_scene(include_str!("data/envelope/vertex-t-apart.envelope.json")).unwrap();
     let e = envelope(&spec).unwrap();
     assert!(past_corners(&e).is_empty());
     assert!(e.largest_border_jump() < 1e-6);
@@ -1895,7 +1892,7 @@ fn per_vertex_t_far_apart_does_not_fold_the_sharp_corner() {
 fn the_crossing_check_finds_a_heap_through_itself() {
     use prism_geom::freeform::envelope::folds::crossings;
     let spec: EnvelopeSpec =
-        serde_json::from_str(include_str!("data/envelope/crossing-heap.envelope.json")).unwrap();
+        paper_scene(include_str!("data/envelope/crossing-heap.envelope.json")).unwrap();
     let e = envelope(&spec).unwrap();
     let counts: Vec<usize> = [8, 16, 32]
         .iter()
@@ -2092,7 +2089,7 @@ fn finer_than_the_report(e: &Envelope, t: f64, seed: u64) {
 #[test]
 fn a_primitive_nested_in_another_is_left_out() {
     let spec: EnvelopeSpec =
-        serde_json::from_str(include_str!("data/envelope/nested-heap.envelope.json")).unwrap();
+        paper_scene(include_str!("data/envelope/nested-heap.envelope.json")).unwrap();
     for t in [1.0, 0.7, 0.5, 0.3, 0.1] {
         let e = build(spec.primitives.clone(), t);
         assert!(past_corners(&e).is_empty(), "t = {t}");
@@ -2142,7 +2139,7 @@ fn a_primitive_nested_in_another_is_left_out() {
 #[test]
 fn nearly_equal_angles_pair_without_a_sliver() {
     let spec: EnvelopeSpec =
-        serde_json::from_str(include_str!("data/envelope/near-angle-heap.envelope.json")).unwrap();
+        paper_scene(include_str!("data/envelope/near-angle-heap.envelope.json")).unwrap();
     for t in [1.0, 0.7, 0.5] {
         for reversed in [false, true] {
             let mut prims = spec.primitives.clone();
@@ -2160,7 +2157,7 @@ fn nearly_equal_angles_pair_without_a_sliver() {
             let thin = net
                 .regions
                 .iter()
-                .filter(|r| matches!(r.kind, RegionKind::Fusion))
+                .filter(|r| r.kind.between())
                 .map(|r| {
                     [0, 2]
                         .map(|k| {
@@ -2178,4 +2175,12 @@ fn nearly_equal_angles_pair_without_a_sliver() {
             assert!(thin.len() <= 2, "t = {t}: fusion quads {thin:?} wide");
         }
     }
+}
+
+/// A scene file read for the paper's patches (what these tests measure; the charts have
+/// their own, envelope_charts.rs).
+fn paper_scene(text: &str) -> Result<EnvelopeSpec, serde_json::Error> {
+    let mut s: EnvelopeSpec = serde_json::from_str(text)?;
+    s.patches = prism_geom::freeform::envelope::Surfacing::Paper;
+    Ok(s)
 }

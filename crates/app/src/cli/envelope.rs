@@ -1,5 +1,5 @@
 //! `prism envelope SCENE.json -o OUT.obj|.prism.json|.stl|.glb [--t T] [--resolution K]
-//! [--basis virtual|one-sided] [--curves CURVES.obj]`: a smooth surface enveloping convex primitives (seed 004;
+//! [--patches charts|paper] [--basis virtual|one-sided] [--curves CURVES.obj]`: a smooth surface enveloping convex primitives (seed 004;
 //! docs/algorithms/envelope.md). SCENE is `{"t": 1.0, "primitives": [{"vertices": [[x, y, z],
 //! ...], "faces": [[i, ...], ...], "t": optional, "vertex_t": [optional, per vertex]}]}`, or a
 //! `.prism.json` with an `"envelope"` block of that form. Primitives, vertices and faces are
@@ -7,7 +7,7 @@
 
 use super::CliError;
 use clap::Args;
-use prism_geom::freeform::envelope::{CurveKind, Envelope, EnvelopeSpec, envelope};
+use prism_geom::freeform::envelope::{CurveKind, Envelope, EnvelopeSpec, Surfacing, envelope};
 use prism_geom::io::{self, Document};
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
@@ -27,9 +27,15 @@ pub struct EnvelopeArgs {
     /// each primitive's sphere, smaller values tend to the flat faces.
     #[arg(long, allow_negative_numbers = true)]
     pub t: Option<f64>,
-    /// Quads along each side of a patch (1 to 256; default: the scene's, else 8).
+    /// Resolution (1 to 256; default: the scene's, else 8): about this many mesh edges along a
+    /// primitive's edge (charts), or quads along each side of a patch (paper).
     #[arg(long)]
     pub resolution: Option<usize>,
+    /// How the regions are filled: `charts` (scalar graphs over flat charts: cannot fold) or
+    /// `paper` (seed 004 §6's vector Coons patches, for comparison; default: the scene's, else
+    /// charts).
+    #[arg(long, value_parser = ["charts", "paper"])]
+    pub patches: Option<String>,
     /// G1 construction of the borders: `virtual` (both sides from the crossing curves;
     /// independent of the listing) or `one-sided` (the paper's: the region listed first leads
     /// each border; default: the scene's, else virtual).
@@ -98,6 +104,11 @@ pub fn run(a: EnvelopeArgs) -> Result<(), CliError> {
     if let Some(k) = a.resolution {
         spec.resolution = k;
     }
+    match a.patches.as_deref() {
+        Some("paper") => spec.patches = Surfacing::Paper,
+        Some(_) => spec.patches = Surfacing::Charts,
+        None => {}
+    }
     match a.basis.as_deref() {
         Some("one-sided") => spec.basis = prism_geom::freeform::Basis::OneSided,
         Some(_) => spec.basis = prism_geom::freeform::Basis::Virtual,
@@ -115,22 +126,23 @@ pub fn run(a: EnvelopeArgs) -> Result<(), CliError> {
     super::skin::check_tessellation(
         &a.memory,
         &a.output,
-        e.patches.len(),
+        e.patch_count(),
         spec.resolution,
         "this envelope",
     )?;
-    let mesh = e.tessellate(spec.resolution).map_err(CliError::input)?;
+    let (mesh, quality) = e.quality(spec.resolution).map_err(CliError::input)?;
     let counts = prism_geom::analysis::counts(&mesh);
     let folds = e.folds();
     // The written mesh, when the check is affordable (3 s and 70 MB a million faces).
     let crossings = (mesh.num_faces() <= CROSSING_CHECK_FACES)
         .then(|| prism_geom::freeform::envelope::folds::crossings(&mesh));
     println!(
-        "primitives={} regions={} patches={} removed={} time_ms={millis:.3} folded={} crossings={} largest normal jump across patch borders {:.2e}°",
+        "primitives={} regions={} patches={} removed={} time_ms={millis:.3} surface={} folded={} crossings={} largest normal jump across patch borders {:.2e}°",
         e.primitives.len(),
         e.regions,
-        e.patches.len(),
+        e.patch_count(),
         e.removed.len(),
+        e.surfacing.name(),
         folds.len(),
         crossings
             .as_ref()
@@ -140,7 +152,11 @@ pub fn run(a: EnvelopeArgs) -> Result<(), CliError> {
     let crossed = crossings
         .as_ref()
         .and_then(|c| e.crossing_warning(c, spec.resolution));
-    for w in [e.fold_warning(&folds), crossed].into_iter().flatten() {
+    println!("quality: {}", quality.summary());
+    for w in [e.fold_warning(&folds), crossed, quality.enclosure_warning()]
+        .into_iter()
+        .flatten()
+    {
         eprintln!("warning: {w}");
     }
     if crossings.is_none() {
@@ -166,12 +182,14 @@ pub fn run(a: EnvelopeArgs) -> Result<(), CliError> {
         ..Document::default()
     };
     super::write_surface(&a.output, a.force, &doc)?;
+    let density = match e.surfacing {
+        Surfacing::Charts => format!("about {} edges along a primitive's edge", spec.resolution),
+        Surfacing::Paper => format!("{0}×{0} quads a patch", spec.resolution),
+    };
     println!(
-        "{} vertices, {} faces ({}×{} quads a patch); wrote {}",
+        "{} vertices, {} faces ({density}); wrote {}",
         counts.vertices,
         counts.faces,
-        spec.resolution,
-        spec.resolution,
         a.output.display()
     );
     Ok(())

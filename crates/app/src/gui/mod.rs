@@ -567,10 +567,14 @@ impl PrismApp {
     pub fn wait_idle(&mut self) {
         self.flush();
         self.model.wait_idle();
+        let spec = self.doc.state().envelope.clone();
+        while self.envelope.building() {
+            self.envelope.sync(spec.as_ref());
+        }
     }
 
     pub fn busy(&self) -> bool {
-        self.model.busy()
+        self.model.busy() || self.envelope.building()
     }
 
     fn keys(&mut self, ctx: &egui::Context) -> Vec<Command> {

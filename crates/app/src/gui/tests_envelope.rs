@@ -26,7 +26,7 @@ fn the_envelope_tab_places_edits_undoes_saves_and_exports_an_envelope() {
     {
         let b = h.state().envelope.built().expect("built");
         let (e, mesh) = b.result.as_ref().expect("an envelope");
-        assert_eq!((e.regions, e.patches.len()), (4, 12));
+        assert_eq!((e.regions, e.patch_count()), (4, 4));
         let topo = prism_geom::Topology::build(mesh).unwrap();
         topo.require_closed(mesh).unwrap();
         assert!(b.jump < 1e-9, "{}", b.jump);
@@ -117,10 +117,17 @@ fn the_envelope_tab_places_edits_undoes_saves_and_exports_an_envelope() {
     h.state_mut().save_to(&doc).unwrap();
     let stl = dir.join("tet.stl");
     h.state_mut().export_to(&stl, false).unwrap();
-    assert_eq!(
-        std::fs::metadata(&stl).unwrap().len(),
-        84 + 50 * 2 * 12 * 64
-    );
+    let triangles = h
+        .state()
+        .envelope
+        .built()
+        .unwrap()
+        .result
+        .as_ref()
+        .unwrap()
+        .1
+        .num_faces() as u64;
+    assert_eq!(std::fs::metadata(&stl).unwrap().len(), 84 + 50 * triangles);
     let (state, _) = document::open(&doc).unwrap();
     assert_eq!(state.envelope.as_ref(), Some(&start));
 
@@ -198,10 +205,11 @@ fn the_summary_counts_folds() {
         .iter()
         .position(|s| s.1 == "table2-seven.envelope.json")
         .unwrap();
-    let heap: prism_geom::freeform::envelope::EnvelopeSpec = serde_json::from_str(include_str!(
-        "../../../geom/tests/data/envelope/still-folding-heap.envelope.json"
-    ))
+    let mut heap: prism_geom::freeform::envelope::EnvelopeSpec = serde_json::from_str(
+        include_str!("../../../geom/tests/data/envelope/still-folding-heap.envelope.json"),
+    )
     .unwrap();
+    heap.patches = prism_geom::freeform::envelope::Surfacing::Paper;
     let seven = envelope::sample(k).unwrap();
     for (spec, folded) in [
         (seven.clone(), false),
@@ -215,6 +223,9 @@ fn the_summary_counts_folds() {
             gesture: None,
         }));
         a.envelope.sync(a.doc.state().envelope.as_ref());
+        while a.envelope.building() {
+            a.envelope.sync(a.doc.state().envelope.as_ref());
+        }
         let b = a.envelope.built().expect("built");
         match &b.folds {
             Some((n, text)) => {
@@ -232,10 +243,11 @@ fn the_summary_counts_folds() {
 /// seven-primitive sample has none.
 #[test]
 fn the_summary_counts_crossings() {
-    let heap: prism_geom::freeform::envelope::EnvelopeSpec = serde_json::from_str(include_str!(
-        "../../../geom/tests/data/envelope/crossing-heap.envelope.json"
-    ))
+    let mut heap: prism_geom::freeform::envelope::EnvelopeSpec = serde_json::from_str(
+        include_str!("../../../geom/tests/data/envelope/crossing-heap.envelope.json"),
+    )
     .unwrap();
+    heap.patches = prism_geom::freeform::envelope::Surfacing::Paper;
     let k = envelope::ENVELOPE_SAMPLES
         .iter()
         .position(|s| s.1 == "table2-seven.envelope.json")
@@ -248,8 +260,10 @@ fn the_summary_counts_crossings() {
         }));
         let (n, warning) = loop {
             a.envelope.sync(a.doc.state().envelope.as_ref());
-            let b = a.envelope.built().expect("built");
-            if let envelope::build::Crossings::Done(p, w) = &b.crossings {
+            if let Some(b) = a.envelope.built()
+                && !a.envelope.building()
+                && let envelope::build::Crossings::Done(p, w) = &b.crossings
+            {
                 break (p.len(), w.clone());
             }
             std::thread::sleep(std::time::Duration::from_millis(2));

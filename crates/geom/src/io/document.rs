@@ -282,6 +282,7 @@ mod tests {
                 ],
                 resolution: 6,
                 basis: Default::default(),
+                patches: crate::freeform::envelope::Surfacing::Paper,
             }),
         };
         let text = document_to_string(&doc);

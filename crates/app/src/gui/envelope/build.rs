@@ -5,6 +5,7 @@
 //! straight edges in their own colours), the picked vertex.
 
 use glam::DVec3;
+use prism_geom::freeform::envelope::chart::quality::Quality;
 use prism_geom::freeform::envelope::{CurveKind, Envelope, EnvelopeSpec, envelope};
 use prism_geom::{EdgeAttrs, PolyMesh};
 use prism_viewport::{ColorBy, Scene, SceneOptions, Shading};
@@ -67,15 +68,18 @@ pub struct Built {
     pub folds: Option<(usize, String)>,
     /// The folded cells' centres on the surface, marked in the view.
     pub fold_points: Vec<DVec3>,
+    /// The quality report of the mesh ([`Envelope::quality`]: angles, normal turns, inward
+    /// faces, enclosure), computed on the crossing check's thread.
+    pub quality: Option<Quality>,
     /// Where the surface passes through itself: checked on a thread
     /// ([`prism_geom::freeform::envelope::folds::crossings`]; 18 ms for the seven-primitive
     /// scene's 8,640 faces, more than a drag's frame can spare).
     pub crossings: Crossings,
 }
 
-/// The crossing check of a build.
+/// The crossing check of a build, with the quality report of its mesh (both on a thread).
 pub enum Crossings {
-    Checking(Receiver<Vec<DVec3>>),
+    Checking(Receiver<(Vec<DVec3>, Option<Quality>)>),
     /// The midpoints of the pairs of faces that pass through each other, and the warning.
     Done(Vec<DVec3>, Option<String>),
     /// No surface, or not checked (the t sweep's views).
@@ -102,18 +106,20 @@ impl Built {
                 let f = e.folds();
                 let points = f
                     .iter()
-                    .map(|c| e.patches[c.patch].coons.eval(c.u, c.v))
+                    .filter_map(|c| e.patches.get(c.patch).map(|p| p.coons.eval(c.u, c.v)))
                     .collect();
                 (e.fold_warning(&f).map(|w| (f.len(), w)), points)
             }
             Err(_) => (None, Vec::new()),
         };
         let crossings = match &result {
-            Ok((_, m)) if check_crossings => {
+            Ok((e, m)) if check_crossings => {
                 let (tx, rx) = std::sync::mpsc::channel();
-                let m = m.clone();
+                let (e, m, k) = (e.clone(), m.clone(), spec.resolution);
                 std::thread::spawn(move || {
-                    let _ = tx.send(prism_geom::freeform::envelope::folds::crossings(&m));
+                    let crossings = prism_geom::freeform::envelope::folds::crossings(&m);
+                    let quality = e.quality(k).ok().map(|(_, q)| q);
+                    let _ = tx.send((crossings, quality));
                 });
                 Crossings::Checking(rx)
             }
@@ -126,6 +132,7 @@ impl Built {
             jump,
             folds,
             fold_points,
+            quality: None,
             crossings,
         }
     }
@@ -136,7 +143,10 @@ impl Built {
             return false;
         };
         let points = match rx.try_recv() {
-            Ok(p) => p,
+            Ok((p, q)) => {
+                self.quality = q;
+                p
+            }
             Err(TryRecvError::Empty) => return false,
             Err(TryRecvError::Disconnected) => Vec::new(),
         };

@@ -1,8 +1,9 @@
 //! The Envelope tab (seed 004; docs/algorithms/envelope.md, docs/user-guide.md "The Envelope
 //! tab"): a primitive from the library, moved, turned and scaled by typed or dragged numbers or
 //! by dragging in the view; the global t and a picked vertex's own t; the envelope rebuilt
-//! live with its curve network. Every change is one [`Edit::SetEnvelope`]; a drag is one undo
-//! step.
+//! live with its curve network — on a worker thread, the last surface shown until the next is
+//! ready (a build that answers within [`BUILD_WAIT`] is shown in the same frame). Every change
+//! is one [`Edit::SetEnvelope`]; a drag is one undo step.
 //! Any number of primitives: those the others swallow (their centre is not a corner of the
 //! hull of the centres) are named in the summary.
 
@@ -16,9 +17,14 @@ use super::viewport;
 use build::{Built, Overlays};
 use glam::{DQuat, DVec3};
 use prism_geom::freeform::Basis;
-use prism_geom::freeform::envelope::{EnvelopeSpec, Placement, PrimitiveInput, Shape};
+use prism_geom::freeform::envelope::{EnvelopeSpec, Placement, PrimitiveInput, Shape, Surfacing};
 use prism_viewport::Scene;
 use std::sync::Arc;
+use std::sync::mpsc::{Receiver, RecvTimeoutError};
+use std::time::Duration;
+
+/// How long a frame waits for the worker's build before it shows the last one instead.
+pub const BUILD_WAIT: Duration = Duration::from_millis(40);
 
 /// The bundled scenes: name, file name, contents.
 pub const ENVELOPE_SAMPLES: [(&str, &str, &str); 6] = [
@@ -84,6 +90,7 @@ pub fn of_shape(shape: Shape) -> EnvelopeSpec {
         primitives: vec![shape.placed(&Placement::default())],
         resolution: 8,
         basis: Default::default(),
+        patches: Default::default(),
     }
 }
 
@@ -144,6 +151,8 @@ pub struct EnvelopeTab {
     sweep_views: Vec<SweepView>,
     pub view: View3d,
     built: Option<Built>,
+    /// The build under way on the worker thread: its scene and where it will answer.
+    pending: Option<(EnvelopeSpec, Receiver<Built>)>,
     shown: Option<(Option<(usize, usize)>, Overlays)>,
     gestures: Gestures,
     gesture: Gesture,
@@ -162,6 +171,7 @@ impl Default for EnvelopeTab {
             sweep_views: Vec::new(),
             view: View3d::new(VIEW_SLOT),
             built: None,
+            pending: None,
             shown: None,
             gestures: Gestures::default(),
             gesture: Gesture {
@@ -200,18 +210,57 @@ impl EnvelopeTab {
         self.built.as_ref()
     }
 
+    /// Whether a build is under way on the worker thread (the view shows the last one).
+    pub fn building(&self) -> bool {
+        self.pending.is_some()
+    }
+
+    /// Starts the build of `spec` on the worker thread unless it is under way, and takes its
+    /// answer when it comes within [`BUILD_WAIT`]; true when a new build was taken.
+    fn rebuild(&mut self, spec: &EnvelopeSpec) -> bool {
+        if self.built.as_ref().is_some_and(|b| &b.spec == spec) {
+            self.pending = None;
+            return false;
+        }
+        if self.pending.as_ref().is_none_or(|(s, _)| s != spec) {
+            let (tx, rx) = std::sync::mpsc::channel();
+            let s = spec.clone();
+            // A build that is no longer wanted finishes and its answer is dropped.
+            std::thread::spawn(move || {
+                let _ = tx.send(Built::new(&s, true));
+            });
+            self.pending = Some((spec.clone(), rx));
+        }
+        let Some((_, rx)) = &self.pending else {
+            return false;
+        };
+        match rx.recv_timeout(BUILD_WAIT) {
+            Ok(b) => {
+                self.built = Some(b);
+                self.pending = None;
+                true
+            }
+            Err(RecvTimeoutError::Timeout) => false,
+            Err(RecvTimeoutError::Disconnected) => {
+                self.pending = None;
+                false
+            }
+        }
+    }
+
     /// Rebuilds the envelope and the scenes when the scene or the overlays changed.
     pub fn sync(&mut self, spec: Option<&EnvelopeSpec>) {
         let Some(spec) = spec else {
             self.built = None;
+            self.pending = None;
             self.view.clear();
             self.shown = None;
             self.picked = None;
             return;
         };
-        let fresh = self.built.as_ref().is_none_or(|b| &b.spec != spec);
-        if fresh {
-            self.built = Some(Built::new(spec, true));
+        let fresh = self.rebuild(spec);
+        if self.built.is_none() {
+            return;
         }
         // The crossings' marks join the overlay when the check's answer comes.
         if let Some(b) = self.built.as_mut()
@@ -383,13 +432,33 @@ impl EnvelopeTab {
         self.curvature(ui, spec);
         ui.separator();
         ui.label("Surface");
+        let mut surfacing = spec.patches;
+        ui.horizontal(|ui| {
+            ui.radio_value(&mut surfacing, Surfacing::Charts, "charts")
+                .on_hover_text("Each region a graph over its flat chart: it cannot fold, the faces are enclosed, G1 along every curve by one shared tangent plane (the default)");
+            ui.radio_value(&mut surfacing, Surfacing::Paper, "paper")
+                .on_hover_text("Seed 004 §6 as printed: vector Coons patches with Gregory's twist, n-sided regions split about an inserted point; may fold (counted below)");
+        });
+        if surfacing != spec.patches {
+            let mut s = spec.clone();
+            s.patches = surfacing;
+            self.set(Some(s), None);
+        }
         let mut res = spec.resolution;
         // A scene's own resolution (the CLI takes up to 256) is kept until the slider moves.
-        let r = ui.add(
-            egui::Slider::new(&mut res, 1..=32)
-                .clamping(egui::SliderClamping::Edits)
-                .text("quads a patch side"),
-        );
+        let r = ui
+            .add(
+                egui::Slider::new(&mut res, 1..=32)
+                    .clamping(egui::SliderClamping::Edits)
+                    .text(match spec.patches {
+                        Surfacing::Charts => "mesh density",
+                        Surfacing::Paper => "quads a patch side",
+                    }),
+            )
+            .on_hover_text(match spec.patches {
+                Surfacing::Charts => "About this many mesh edges along a primitive's edge",
+                Surfacing::Paper => "Quads along each side of a patch",
+            });
         let g = self.gestures.of(&r);
         if res != spec.resolution {
             let mut s = spec.clone();
@@ -397,13 +466,15 @@ impl EnvelopeTab {
             self.set(Some(s), g);
         }
         let mut basis = spec.basis;
-        ui.horizontal(|ui| {
+        ui.add_enabled_ui(spec.patches == Surfacing::Paper, |ui| ui.horizontal(|ui| {
             ui.label("G1 basis");
             ui.radio_value(&mut basis, Basis::Virtual, "virtual")
                 .on_hover_text("Both sides of a border from the crossing curves: the surface does not depend on how faces and primitives are listed (the default)");
             ui.radio_value(&mut basis, Basis::OneSided, "one-sided (paper)")
                 .on_hover_text("The region listed first leads each border and the other follows: G1 too, but a cube's tangent planes tilt 18° into the sphere at mid-edge and the shape depends on the listing");
-        });
+        }))
+        .response
+        .on_disabled_hover_text("The paper's patches only: the charts share one tangent plane per curve");
         if basis != spec.basis {
             let mut s = spec.clone();
             s.basis = basis;
@@ -446,14 +517,28 @@ impl EnvelopeTab {
     }
 
     fn summary(&self, ui: &mut egui::Ui) {
-        let Some(b) = &self.built else { return };
+        let Some(b) = &self.built else {
+            if self.building() {
+                ui.label(egui::RichText::new("Building…").weak());
+                ui.ctx().request_repaint_after(Duration::from_millis(30));
+            }
+            return;
+        };
+        if self.building() {
+            ui.label(egui::RichText::new("Building… (the last surface is shown)").weak());
+            ui.ctx().request_repaint_after(Duration::from_millis(30));
+        }
         match &b.result {
             Ok((e, m)) => {
                 ui.label(format!(
-                    "{} primitive(s), {} regions, {} patches, {} faces",
+                    "{} primitive(s), {} regions, {} {}, {} faces",
                     e.primitives.len(),
                     e.regions,
-                    e.patches.len(),
+                    e.patch_count(),
+                    match e.surfacing {
+                        Surfacing::Charts => "charts",
+                        Surfacing::Paper => "patches",
+                    },
                     m.num_faces()
                 ));
                 if let Some(note) = e.removed_note() {
@@ -478,12 +563,55 @@ impl EnvelopeTab {
                     ui.add(egui::Label::new(text).truncate())
                         .on_hover_text(hover);
                 };
+                match &b.quality {
+                    Some(q) => {
+                        row(
+                            ui,
+                            format!(
+                                "Mesh: angles {:.1}°–{:.1}°, largest turn {:.1}°",
+                                q.smallest_angle, q.largest_angle, q.largest_turn.0
+                            )
+                            .into(),
+                            format!(
+                                "{}\nThe largest turn is between neighbouring triangles of {}; it falls with a finer mesh where the surface is smooth",
+                                q.summary(),
+                                e.describe_region(q.largest_turn.1)
+                            ),
+                        );
+                        match q.enclosure_warning() {
+                            Some(w) => row(
+                                ui,
+                                egui::RichText::new(format!(
+                                    "Enclosure: a primitive reaches {:.3} r outside",
+                                    -q.worst_enclosure().map_or(0.0, |x| x.1)
+                                ))
+                                .color(red),
+                                w,
+                            ),
+                            None => row(
+                                ui,
+                                "Enclosure: every primitive inside".into(),
+                                "Points on every primitive's faces, edges and vertices lie inside the surface".into(),
+                            ),
+                        }
+                    }
+                    None => row(
+                        ui,
+                        egui::RichText::new("Mesh: measuring…").weak(),
+                        "Angles, normal turns and enclosure of the mesh as written".into(),
+                    ),
+                }
                 match &b.folds {
                     Some((n, text)) => row(
                         ui,
                         egui::RichText::new(format!("Folds: {n} cell(s), marked with red crosses"))
                             .color(red),
                         text.clone(),
+                    ),
+                    None if e.surfacing == Surfacing::Charts => row(
+                        ui,
+                        "Folds: none (a graph cannot fold)".into(),
+                        "Every region is a graph of one number over its flat chart".into(),
                     ),
                     None => row(
                         ui,
@@ -718,7 +846,7 @@ impl EnvelopeTab {
             .map(|v| {
                 (
                     v.t,
-                    v.built.result.as_ref().ok().map(|(e, _)| e.patches.len()),
+                    v.built.result.as_ref().ok().map(|(e, _)| e.patch_count()),
                 )
             })
             .collect()

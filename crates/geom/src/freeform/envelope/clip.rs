@@ -147,15 +147,37 @@ fn hooks(c: &RationalBezier, chord: DVec3, near: f64) -> bool {
 
 /// The polynomial cubic from `px` to `py` in the plane through `g` normal to `plane`, leaving
 /// and reaching each end normal to its radius (towards the other end), legs `scale` × a third
-/// of the chord: where a §6.3 piece hooks or nearly does.
-fn third_cubic(g: DVec3, plane: DVec3, px: DVec3, py: DVec3, scale: f64) -> RationalBezier {
+/// of the chord: where a §6.3 piece hooks or nearly does. With `monotone` (the charts) each leg
+/// is at most `|p − g|·tan(γ/3)`
+/// (γ the angle the piece spans at g), so that its inner control points lie within the first
+/// and last third of that angle: the control polygon, and so the curve (variation
+/// diminishing), turns one way about g and meets every ray between its ends once — the radial
+/// chart's side (`chart`) is a graph. Equal radii never meet the bound (a third of the chord is
+/// at most r·tan(γ/3)).
+fn third_cubic(
+    g: DVec3,
+    plane: DVec3,
+    px: DVec3,
+    py: DVec3,
+    scale: f64,
+    monotone: bool,
+) -> RationalBezier {
     let chord = py - px;
     let along = |p: DVec3| {
         let t = plane.cross(p - g).normalize();
         if t.dot(chord) < 0.0 { -t } else { t }
     };
     let l = scale * chord.length() / 3.0;
-    RationalBezier::polynomial(vec![px, px + l * along(px), py - l * along(py), py])
+    let third = if monotone {
+        ((px - g).angle_between(py - g) / 3.0).tan()
+    } else {
+        f64::INFINITY
+    };
+    let (lx, ly) = (
+        l.min((px - g).length() * third),
+        l.min((py - g).length() * third),
+    );
+    RationalBezier::polynomial(vec![px, px + lx * along(px), py - ly * along(py), py])
         .expect("finite points")
 }
 
@@ -243,6 +265,8 @@ struct Clipper<'a> {
     full: HashMap<(usize, usize), RationalBezier>,
     /// Curves by their (unordered) end vertices.
     curves: HashMap<(usize, usize), usize>,
+    /// Legs of a replacing cubic bounded so that it turns one way about G (the charts).
+    monotone: bool,
 }
 
 impl Clipper<'_> {
@@ -482,7 +506,7 @@ impl Clipper<'_> {
                     // parameter room. The cubic that leaves and reaches them along the
                     // section's tangents, a third of the chord long, instead (an inflection,
                     // not a hook; envelope.md).
-                    third_cubic(g, self.cuts[k], px, py, 1.0)
+                    third_cubic(g, self.cuts[k], px, py, 1.0, self.monotone)
                 } else {
                     bez
                 };
@@ -501,7 +525,14 @@ impl Clipper<'_> {
                     // hooks; S keeps its tangent plane (envelope.md, "Where the rebuilt piece
                     // would hook", "Nearly hooked pieces").
                     let t = 0.5 * (t_of(net, x) + t_of(net, y));
-                    third_cubic(g, (px - g).cross(py - g), px, py, legs_for(t))
+                    third_cubic(
+                        g,
+                        (px - g).cross(py - g),
+                        px,
+                        py,
+                        legs_for(t),
+                        self.monotone,
+                    )
                 } else {
                     bez
                 };
@@ -646,6 +677,7 @@ pub fn add_primitive(
     index: usize,
     cuts: &[DVec3],
     draw_together: bool,
+    monotone: bool,
 ) -> Result<Clipped, EnvelopeError> {
     let tol = ON_PLANE * p.radius;
     let mut clip = Clipper {
@@ -656,6 +688,7 @@ pub fn add_primitive(
         points: Vec::new(),
         full: HashMap::new(),
         curves: HashMap::new(),
+        monotone,
     };
     let on_cut = |k: usize, x: DVec3| (x - p.centre).dot(cuts[k]).abs() <= tol;
     let mut sections = vec![Vec::new(); cuts.len()];

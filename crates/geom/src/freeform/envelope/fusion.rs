@@ -35,10 +35,11 @@ use std::f64::consts::{PI, TAU};
 const SAME_ANGLE: f64 = 1e-9;
 
 /// A point of one section and one of the other whose angles are closer than this (radians),
-/// each the other's nearest with nothing between, are a vertex pair as they are: inserting a
-/// T-point for each would leave a fusion quad this thin between them (envelope.md, "Nearly
-/// equal angles").
-const NEAR_ANGLE: f64 = 0.02;
+/// each the other's nearest with nothing between, are a vertex pair as they are for the
+/// paper's patches: inserting a T-point for each would leave a fusion quad this thin between
+/// them (envelope.md, "Nearly equal angles"). The charts pair equal angles only (0), so that
+/// every fusion edge lies in a half-plane through the axis.
+pub const NEAR_ANGLE: f64 = 0.02;
 
 /// How far (radians) a chain's end may lie from its ray (rounding only: both are where the
 /// same two cuts cross).
@@ -229,16 +230,39 @@ fn nearly_equal(ua: &[f64], ub: &[f64], near: f64, circular: bool) -> Vec<(f64, 
 }
 
 /// The fusion edge from network vertex p (on A's section, centre `ga`) to q (on B's, `gb`).
-fn fusion_edge(net: &mut Network, p: usize, q: usize, d: DVec3, (ga, gb): (DVec3, DVec3)) -> usize {
+/// `along_axis` (the charts, which pair equal angles only): both legs along d — the one
+/// direction that lies both in each end's tangent plane (it holds d) and in the half-plane
+/// through the axis at their common angle — so that the edge lies in that half-plane even
+/// where the two sections' radii differ and their tangent planes are not normal to it.
+fn fusion_edge(
+    net: &mut Network,
+    (p, q): (usize, usize),
+    d: DVec3,
+    (ga, gb): (DVec3, DVec3),
+    along_axis: bool,
+) -> usize {
     let (pp, pq) = (net.vertices[p].position, net.vertices[q].position);
     // Each leg a third of the chord, shorter below t = ½ (`legs_for`, t of its own end).
     let lp = legs_for(net.vertices[p].t_about(ga));
     let lq = legs_for(net.vertices[q].t_about(gb));
     let (np, nq) = (net.vertices[p].normal, net.vertices[q].normal);
     let pq_v = pq - pp;
-    let l = pq_v.length();
-    let tp = (pq_v - pq_v.dot(np) * np).normalize_or(d);
-    let tq = (pq_v - pq_v.dot(nq) * nq).normalize_or(d);
+    // A third of the chord; along the axis, no more than a third of the way along d: the edge
+    // then runs one way along the axis (its z control values increase), as the axial chart
+    // needs.
+    let l = if along_axis {
+        pq_v.length().min(pq_v.dot(d).abs())
+    } else {
+        pq_v.length()
+    };
+    let (tp, tq) = if along_axis {
+        (d, d)
+    } else {
+        (
+            (pq_v - pq_v.dot(np) * np).normalize_or(d),
+            (pq_v - pq_v.dot(nq) * nq).normalize_or(d),
+        )
+    };
     let bez =
         RationalBezier::polynomial(vec![pp, pp + lp * l / 3.0 * tp, pq - lq * l / 3.0 * tq, pq])
             .expect("finite points");
@@ -255,6 +279,7 @@ pub fn fuse(
     (gb, sb): (DVec3, &[PatchSide]),
     d: DVec3,
     span: Option<(DVec3, DVec3)>,
+    (from, to, near_angle): (usize, usize, f64),
 ) -> Result<Option<(usize, usize)>, String> {
     let fr = frame(d);
     // Where each section's points lie: their polar angle for whole loops; for chains, the
@@ -300,9 +325,9 @@ pub fn fuse(
     let ((ua, ra), (ub, rb)) = (place(net, sa, ga), place(net, sb, gb));
     // Nearly equal places of the two sections, paired as they are (A's, B's).
     let near = if span.is_some() {
-        NEAR_ANGLE / (ra.1 - ra.0).max(rb.1 - rb.0).max(NEAR_ANGLE)
+        near_angle / (ra.1 - ra.0).max(rb.1 - rb.0).max(NEAR_ANGLE)
     } else {
-        NEAR_ANGLE
+        near_angle
     };
     let matched = nearly_equal(&ua, &ub, near, span.is_none());
     let missing = |have: &[f64], other: &[f64], r: (f64, f64)| -> Vec<f64> {
@@ -391,7 +416,7 @@ pub fn fuse(
         } else {
             point(&wb, k)
         };
-        fusion.push(fusion_edge(net, p, q, d, (ga, gb)));
+        fusion.push(fusion_edge(net, (p, q), d, (ga, gb), near_angle == 0.0));
     }
     for k in 0..n {
         let j = (k + 1) % count;
@@ -404,7 +429,7 @@ pub fn fuse(
                 b_piece.reversed(),
                 PatchSide::whole(fusion[k], false),
             ],
-            kind: RegionKind::Fusion,
+            kind: RegionKind::Fusion { from, to },
         });
     }
     Ok(span.map(|_| (fusion[0], fusion[n])))

@@ -14,6 +14,7 @@
 //! fusion edges and quads ([`fusion`]), and every hull facet is a lid bounded by the fusion
 //! edges at its ray.
 
+pub mod chart;
 pub mod clip;
 pub mod coons;
 pub mod edges;
@@ -57,6 +58,33 @@ pub enum EnvelopeError {
     Resolution(usize),
     #[error("patch {patch} has a point that is not finite (a bug: please report the scene)")]
     NonFinite { patch: usize },
+    #[error("region {region} has no chart: {why} (a bug: please report the scene)")]
+    Chart { region: usize, why: String },
+}
+
+/// How the regions of the network are filled (docs/algorithms/envelope.md).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Surfacing {
+    /// Scalar graphs over flat charts ([`chart`]): cannot fold, G1 by one tangent plane per
+    /// curve, the faces enclosed.
+    #[default]
+    Charts,
+    /// The paper's vector Coons patches with Gregory's twist (seed 004 §6), for comparison.
+    Paper,
+}
+
+impl Surfacing {
+    pub fn name(self) -> &'static str {
+        match self {
+            Surfacing::Charts => "charts",
+            Surfacing::Paper => "paper",
+        }
+    }
+}
+
+fn is_charts(s: &Surfacing) -> bool {
+    *s == Surfacing::Charts
 }
 
 /// A scene: the default t, the primitives and the tessellation's resolution.
@@ -72,6 +100,9 @@ pub struct EnvelopeSpec {
     /// the paper's `one-sided` (the region listed first leads each border).
     #[serde(default, skip_serializing_if = "is_virtual")]
     pub basis: Basis,
+    /// How the regions are filled: `charts` (default) or the paper's `paper` patches.
+    #[serde(default, skip_serializing_if = "is_charts")]
+    pub patches: Surfacing,
 }
 
 fn is_virtual(b: &Basis) -> bool {
@@ -105,6 +136,12 @@ pub struct Envelope {
     /// The straight edges of the sections (§5.1.3), from a kept primitive's centre to where two
     /// of its silhouette planes cross its surface: inside the solid, for display only.
     pub straight: Vec<[DVec3; 2]>,
+    /// How the regions are filled; with [`Surfacing::Charts`], one chart a region (and no
+    /// `patches`).
+    pub surfacing: Surfacing,
+    pub charts: Vec<chart::Chart>,
+    /// The mesh spacing for resolution 1: the mean length of the primitives' edges.
+    pub edge_length: f64,
 }
 
 /// A primitive whose centre lies within this share of its sphere's radius of the hull of the
@@ -175,6 +212,9 @@ fn assemble(
     primitives: Vec<Primitive>,
     active: Vec<usize>,
 ) -> Result<Envelope, EnvelopeError> {
+    if spec.patches == Surfacing::Charts {
+        return assemble_with(spec, primitives, active, false).map(|(e, _)| e);
+    }
     let (e, drawn) = assemble_with(spec, primitives.clone(), active.clone(), true)?;
     if drawn.is_empty() {
         return Ok(e);
@@ -215,6 +255,10 @@ fn assemble_with(
     let mut network = Network::default();
     let mut sections: HashMap<(usize, usize), Vec<PatchSide>> = HashMap::new();
     let mut drawn = Vec::new();
+    let near_angle = match spec.patches {
+        Surfacing::Charts => 0.0,
+        Surfacing::Paper => fusion::NEAR_ANGLE,
+    };
     for &a in &lay.kept {
         // The cuts in an order of their directions, not of the listing, so that rounding in the
         // clipping cannot depend on the listing either.
@@ -230,7 +274,14 @@ fn assemble_with(
             .iter()
             .map(|&b| (centres[b] - centres[a]).normalize())
             .collect();
-        let found = clip::add_primitive(&mut network, &primitives[a], a, &cuts, draw_together)?;
+        let found = clip::add_primitive(
+            &mut network,
+            &primitives[a],
+            a,
+            &cuts,
+            draw_together,
+            spec.patches == Surfacing::Charts,
+        )?;
         drawn.extend(found.drawn);
         for (b, s) in partners.into_iter().zip(found.sections) {
             sections.insert((a, b), s);
@@ -254,6 +305,7 @@ fn assemble_with(
             (centres[e.b], &sections[&(e.b, e.a)]),
             d,
             order.map(|(s, t)| (s.1, t.1)),
+            (e.a, e.b, near_angle),
         )
         .map_err(|why| EnvelopeError::Fusion {
             a: e.a,
@@ -285,10 +337,48 @@ fn assemble_with(
         }
         network.regions.push(Region {
             sides,
-            kind: RegionKind::Fusion,
+            kind: RegionKind::Lid { facet: fi },
         });
     }
     let regions = network.regions.len();
+    let edge_length = {
+        let lengths: Vec<f64> = primitives
+            .iter()
+            .flat_map(|p| {
+                p.faces.iter().flat_map(move |f| {
+                    (0..f.len())
+                        .map(move |k| p.vertices[f[k]].distance(p.vertices[f[(k + 1) % f.len()]]))
+                })
+            })
+            .collect();
+        lengths.iter().sum::<f64>() / lengths.len().max(1) as f64
+    };
+    if spec.patches == Surfacing::Charts {
+        let lids: Vec<chart::LidPlane> = lay
+            .facets
+            .iter()
+            .map(|f| chart::LidPlane {
+                point: centres[f.corners[0]],
+                normal: f.normal,
+            })
+            .collect();
+        let charts = chart::charts(&network, &primitives, &lids)?;
+        return Ok((
+            Envelope {
+                primitives,
+                network,
+                regions,
+                patches: Vec::new(),
+                folded: Vec::new(),
+                removed: lay.removed,
+                straight,
+                surfacing: Surfacing::Charts,
+                charts,
+                edge_length,
+            },
+            drawn,
+        ));
+    }
     let (network, patches, folded, _) = legs::patched(network, spec.basis, &primitives);
     // The build repairs every cell turned past its corners' normals; the report names those
     // turned past the plane along their nearest side too (a step along a border is no fold).
@@ -302,6 +392,9 @@ fn assemble_with(
             folded,
             removed: lay.removed,
             straight,
+            surfacing: Surfacing::Paper,
+            charts: Vec::new(),
+            edge_length,
         },
         drawn,
     ))
@@ -312,6 +405,9 @@ impl Envelope {
     pub fn tessellate(&self, k: usize) -> Result<PolyMesh, EnvelopeError> {
         if k == 0 || k > 256 {
             return Err(EnvelopeError::Resolution(k));
+        }
+        if self.surfacing == Surfacing::Charts {
+            return self.chart_mesh(k).map(|(m, _)| m);
         }
         let mesh = tessellate::tessellate(&self.network, &self.patches, k);
         // Never a mesh with a point that is not finite: the patch it came from is named (each
@@ -328,6 +424,70 @@ impl Envelope {
             });
         }
         Ok(mesh)
+    }
+
+    /// The charts' mesh at resolution `k` (about k segments along a primitive's edge) and the
+    /// region of each triangle.
+    pub fn chart_mesh(&self, k: usize) -> Result<(PolyMesh, Vec<u32>), EnvelopeError> {
+        if k == 0 || k > 256 {
+            return Err(EnvelopeError::Resolution(k));
+        }
+        let spacing = self.edge_length / k as f64;
+        let (mesh, regions) =
+            chart::mesh::tessellate(&self.network, &self.charts, spacing, 64 * k)?;
+        if let Some(v) = mesh.positions.iter().position(|p| !p.is_finite()) {
+            let face = (0..mesh.num_faces())
+                .find(|&f| {
+                    mesh.face_corners(f)
+                        .any(|c| mesh.corner_verts[c] as usize == v)
+                })
+                .unwrap_or(0);
+            return Err(EnvelopeError::NonFinite {
+                patch: regions.get(face).copied().unwrap_or(0) as usize,
+            });
+        }
+        Ok((mesh, regions))
+    }
+
+    /// The tessellation at resolution `k` as triangles and its quality report
+    /// ([`chart::quality`]); a paper build's polygons are measured as fans.
+    pub fn quality(&self, k: usize) -> Result<(PolyMesh, chart::quality::Quality), EnvelopeError> {
+        if self.surfacing == Surfacing::Charts {
+            let (mesh, regions) = self.chart_mesh(k)?;
+            let q = chart::quality::quality(&mesh, &regions, &self.charts, &self.primitives);
+            return Ok((mesh, q));
+        }
+        let mesh = self.tessellate(k)?;
+        let per_patch = k * k;
+        let mut fans = PolyMesh::new();
+        fans.positions = mesh.positions.clone();
+        let mut regions = Vec::new();
+        for f in 0..mesh.num_faces() {
+            let c: Vec<u32> = mesh.face_corners(f).map(|i| mesh.corner_verts[i]).collect();
+            let region = self.patches.get(f / per_patch).map_or(0, |p| p.region) as u32;
+            for j in 1..c.len().saturating_sub(1) {
+                fans.push_face(&[&[c[0], c[j], c[j + 1]]]);
+                regions.push(region);
+            }
+        }
+        let q = chart::quality::quality_with(&fans, &regions, &self.primitives, |r, x| match self
+            .network
+            .regions
+            .get(r as usize)?
+            .kind
+        {
+            RegionKind::Primitive { primitive, .. } => Some(x - self.primitives[primitive].centre),
+            _ => None,
+        });
+        Ok((mesh, q))
+    }
+
+    /// The number of surface pieces: patches, or one chart a region.
+    pub fn patch_count(&self) -> usize {
+        match self.surfacing {
+            Surfacing::Charts => self.charts.len(),
+            Surfacing::Paper => self.patches.len(),
+        }
     }
 
     /// The folded cells of its patches ([`folds::folds`], [`folds::FOLD_CELLS`] a side).
@@ -386,7 +546,12 @@ impl Envelope {
             Some(network::RegionKind::Primitive { primitive, face }) => {
                 format!("primitive {primitive} face {face}")
             }
-            Some(network::RegionKind::Fusion) => format!("region {r} (between primitives)"),
+            Some(network::RegionKind::Fusion { from, to }) => {
+                format!("region {r} (between primitives {from} and {to})")
+            }
+            Some(network::RegionKind::Lid { .. }) => {
+                format!("region {r} (a lid between three or more primitives)")
+            }
             None => format!("region {r}"),
         }
     }
@@ -394,6 +559,9 @@ impl Envelope {
     /// The largest angle in degrees between the two sides' normals along the patch borders
     /// (analytic, 16 samples a side).
     pub fn largest_border_jump(&self) -> f64 {
+        if self.surfacing == Surfacing::Charts {
+            return chart::largest_border_jump(&self.network, &self.charts, 16);
+        }
         patches::largest_border_jump(&self.network, &self.patches, 16)
     }
 }

@@ -116,8 +116,18 @@ impl PatchSide {
 pub enum RegionKind {
     /// (The kept part of) face `face` of primitive `primitive`.
     Primitive { primitive: usize, face: usize },
-    /// A fusion quad between two primitives' silhouette loops.
-    Fusion,
+    /// A fusion quad between the silhouette sections of primitives `from` and `to` (its fusion
+    /// edges run from `from`'s section to `to`'s, along d = unit(G_to − G_from)).
+    Fusion { from: usize, to: usize },
+    /// A lid over facet `facet` of the hull of the centres, bounded by fusion edges.
+    Lid { facet: usize },
+}
+
+impl RegionKind {
+    /// Whether it lies between primitives (a fusion quad or a lid).
+    pub fn between(&self) -> bool {
+        !matches!(self, RegionKind::Primitive { .. })
+    }
 }
 
 /// A face of the network: its sides counter-clockwise seen from outside.

@@ -396,7 +396,7 @@ fn place(
                 (g + d * u, u)
             }
         }
-        RegionKind::Fusion => {
+        RegionKind::Fusion { .. } | RegionKind::Lid { .. } => {
             let m = (0..n).map(|k| tangent_d[k].cross(b[k])).sum::<DVec3>();
             (mean, m.normalize())
         }
@@ -520,7 +520,7 @@ fn split(net: &mut Network, region: Region, r: usize, prims: &[Primitive]) -> Ve
     let (_, pi_, normal) = best;
     let rho_i = match region.kind {
         RegionKind::Primitive { primitive, .. } => pi_.distance(prims[primitive].centre),
-        RegionKind::Fusion => 0.0,
+        RegionKind::Fusion { .. } | RegionKind::Lid { .. } => 0.0,
     };
     let vi = net.add_vertex(pi_, normal, rho_i);
     let proj = |x: DVec3| x - x.dot(normal) * normal;

@@ -1,0 +1,226 @@
+//! The three kinds of flat chart (ALGORITHMS §11.10; docs/algorithms/envelope.md, "Charts"):
+//! each maps a point c of a plane domain and a scalar h to the surface point
+//! `X(c, h) = O(c) + h·N(c)`, with O and N fixed by the scene, so a region is the graph of h.
+//!
+//! - **Radial** (a primitive's face f): `X = G + s·(p − G)`, p = o + c₁e₁ + c₂e₂ on the face's
+//!   plane, h = s. Every network curve of the primitive lies in a plane through G, so the
+//!   central projection maps it onto a straight side of the clipped face.
+//! - **Axial** (a fusion quad between A and B): `X = G_A + z·d + R·e(θ)`, c = (R̄θ, z), h = R;
+//!   a fusion edge joins points of equal polar angle, so it lies on a line θ = const.
+//! - **Height** (a lid over a facet of the hull of the centres): `X = p + H·n`, p on the
+//!   facet's plane, h = H.
+//!
+//! The tangent plane with unit normal n becomes the gradient of h: from `n·∂ₐX = 0`,
+//! `∂ₐh = −(n·∂ₐO + h·n·∂ₐN)/(n·N)`, defined wherever n·N > 0.
+
+use glam::{DVec2, DVec3};
+
+/// How a chart point and a scalar make a surface point.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Frame {
+    /// `X = g + h (o + c₁e₁ + c₂e₂ − g)`; e₁ × e₂ is the face's outward normal.
+    Radial {
+        g: DVec3,
+        o: DVec3,
+        e1: DVec3,
+        e2: DVec3,
+    },
+    /// `X = a + c₂ d + h (cos θ ex + sin θ ey)`, θ = θ₀ + c₁/R̄; (ex, ey, d) right-handed.
+    Axial {
+        a: DVec3,
+        d: DVec3,
+        ex: DVec3,
+        ey: DVec3,
+        rbar: f64,
+        theta0: f64,
+    },
+    /// `X = o + c₁e₁ + c₂e₂ + h n`, n = e₁ × e₂.
+    Height { o: DVec3, e1: DVec3, e2: DVec3 },
+}
+
+/// Two unit vectors completing unit `n` to a right-handed frame (e₁ × e₂ = n), chosen from n
+/// alone.
+pub fn plane_axes(n: DVec3) -> (DVec3, DVec3) {
+    let a = [DVec3::X, DVec3::Y, DVec3::Z]
+        .into_iter()
+        .min_by(|p, q| p.dot(n).abs().total_cmp(&q.dot(n).abs()))
+        .expect("three axes");
+    let e1 = a.cross(n).normalize();
+    (e1, n.cross(e1))
+}
+
+impl Frame {
+    /// The direction N along which h moves the point, at chart point c.
+    pub fn direction(&self, c: DVec2) -> DVec3 {
+        match *self {
+            Frame::Radial { g, o, e1, e2 } => o + c.x * e1 + c.y * e2 - g,
+            Frame::Axial {
+                ex,
+                ey,
+                rbar,
+                theta0,
+                ..
+            } => {
+                let th = theta0 + c.x / rbar;
+                th.cos() * ex + th.sin() * ey
+            }
+            Frame::Height { e1, e2, .. } => e1.cross(e2),
+        }
+    }
+
+    /// The surface point of chart point c and scalar h.
+    pub fn point(&self, c: DVec2, h: f64) -> DVec3 {
+        match *self {
+            Frame::Radial { g, .. } => g + h * self.direction(c),
+            Frame::Axial { a, d, .. } => a + c.y * d + h * self.direction(c),
+            Frame::Height { o, e1, e2 } => o + c.x * e1 + c.y * e2 + h * e1.cross(e2),
+        }
+    }
+
+    /// The chart point and scalar of surface point x (`None` where x is not in the chart's
+    /// half-space: behind the centre, on the axis).
+    pub fn chart(&self, x: DVec3) -> Option<(DVec2, f64)> {
+        match *self {
+            Frame::Radial { g, o, e1, e2 } => {
+                let n = e1.cross(e2);
+                let h = (o - g).dot(n);
+                let along = (x - g).dot(n);
+                if along <= 0.0 || h <= 0.0 {
+                    return None;
+                }
+                let s = along / h;
+                let p = g + (x - g) / s;
+                Some((DVec2::new((p - o).dot(e1), (p - o).dot(e2)), s))
+            }
+            Frame::Axial {
+                a,
+                d,
+                ex,
+                ey,
+                rbar,
+                theta0,
+            } => {
+                let v = x - a;
+                let z = v.dot(d);
+                let r = v - z * d;
+                let len = r.length();
+                if len <= 0.0 {
+                    return None;
+                }
+                let th = r.dot(ey).atan2(r.dot(ex));
+                let rel = (th - theta0 + std::f64::consts::PI).rem_euclid(std::f64::consts::TAU)
+                    - std::f64::consts::PI;
+                Some((DVec2::new(rbar * rel, z), len))
+            }
+            Frame::Height { o, e1, e2 } => {
+                let v = x - o;
+                Some((DVec2::new(v.dot(e1), v.dot(e2)), v.dot(e1.cross(e2))))
+            }
+        }
+    }
+
+    /// The gradient of h at chart point c with scalar h that makes the surface tangent to the
+    /// plane with unit normal n (`None` where n·N ≤ 0: the plane holds the chart's direction).
+    pub fn gradient(&self, c: DVec2, h: f64, n: DVec3) -> Option<DVec2> {
+        let nn = n.dot(self.direction(c));
+        if nn <= 1e-12 * self.direction(c).length() {
+            return None;
+        }
+        Some(match *self {
+            // ∂ₐO = 0, ∂ₐN = eₐ.
+            Frame::Radial { e1, e2, .. } => -h * DVec2::new(n.dot(e1), n.dot(e2)) / nn,
+            // ∂₁O = 0, ∂₁N = e′(θ)/R̄; ∂₂O = d, ∂₂N = 0.
+            Frame::Axial { d, rbar, .. } => {
+                let e = self.direction(c);
+                let e_prime = d.cross(e);
+                DVec2::new(-h * n.dot(e_prime) / (rbar * nn), -n.dot(d) / nn)
+            }
+            // ∂ₐO = eₐ, ∂ₐN = 0.
+            Frame::Height { e1, e2, .. } => -DVec2::new(n.dot(e1), n.dot(e2)) / nn,
+        })
+    }
+
+    /// The surface's partial derivatives ∂X/∂c₁, ∂X/∂c₂ where h has gradient `grad`.
+    pub fn tangents(&self, c: DVec2, h: f64, grad: DVec2) -> (DVec3, DVec3) {
+        let n = self.direction(c);
+        match *self {
+            Frame::Radial { e1, e2, .. } => (grad.x * n + h * e1, grad.y * n + h * e2),
+            Frame::Axial { d, rbar, .. } => (grad.x * n + h * d.cross(n) / rbar, grad.y * n + d),
+            Frame::Height { e1, e2, .. } => (e1 + grad.x * n, e2 + grad.y * n),
+        }
+    }
+
+    /// The scale from chart length to surface length near scalar h (1 for the height and axial
+    /// charts up to the turn of the surface, s for the radial one).
+    pub fn scale(&self, c: DVec2, h: f64) -> f64 {
+        match *self {
+            Frame::Radial { .. } => h,
+            Frame::Axial { rbar, .. } => {
+                let _ = c;
+                (h / rbar).max(1e-3)
+            }
+            Frame::Height { .. } => 1.0,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn frames() -> Vec<Frame> {
+        let (e1, e2) = plane_axes(DVec3::new(0.3, -0.5, 0.8).normalize());
+        let (ex, ey) = plane_axes(DVec3::new(-0.2, 0.9, 0.1).normalize());
+        vec![
+            Frame::Radial {
+                g: DVec3::new(0.1, 0.2, -0.3),
+                o: DVec3::new(0.1, 0.2, -0.3) + 0.7 * e1.cross(e2),
+                e1,
+                e2,
+            },
+            Frame::Axial {
+                a: DVec3::new(1.0, 0.0, 2.0),
+                d: ex.cross(ey),
+                ex,
+                ey,
+                rbar: 1.3,
+                theta0: 0.4,
+            },
+            Frame::Height {
+                o: DVec3::new(-1.0, 0.5, 0.0),
+                e1,
+                e2,
+            },
+        ]
+    }
+
+    #[test]
+    fn chart_inverts_point() {
+        for f in frames() {
+            for (c, h) in [(DVec2::new(0.2, -0.1), 1.3), (DVec2::new(-0.4, 0.5), 0.9)] {
+                let x = f.point(c, h);
+                let (c2, h2) = f.chart(x).unwrap();
+                assert!((c2 - c).length() < 1e-12 && (h2 - h).abs() < 1e-12, "{f:?}");
+            }
+        }
+    }
+
+    /// The gradient from a plane's normal makes the graph tangent to it: the surface's normal
+    /// from difference quotients of X(c, h(c)) with h linear in c is the plane's.
+    #[test]
+    fn gradient_makes_tangent() {
+        for f in frames() {
+            let (c, h) = (DVec2::new(0.15, 0.05), 1.1);
+            let x = f.point(c, h);
+            let n = (f.direction(c).normalize() + DVec3::new(0.2, -0.1, 0.15)).normalize();
+            let grad = f.gradient(c, h, n).unwrap();
+            let e = 1e-6;
+            let at = |dc: DVec2| f.point(c + dc, h + grad.dot(dc));
+            let du = (at(DVec2::new(e, 0.0)) - x) / e;
+            let dv = (at(DVec2::new(0.0, e)) - x) / e;
+            assert!(du.dot(n).abs() < 1e-5 && dv.dot(n).abs() < 1e-5, "{f:?}");
+            // And the graph faces along N.
+            assert!(du.cross(dv).dot(f.direction(c)) > 0.0, "{f:?}");
+        }
+    }
+}

@@ -1,0 +1,325 @@
+//! The envelope over flat charts (docs/algorithms/envelope.md, "Charts"): invariants on scenes
+//! generated from seeds — closed, outward, no crossing, no inward triangle, every kept part of
+//! every primitive enclosed, G1 exactly along the network and by the mesh's own normals,
+//! independent of the listing, and the shapes the construction promises.
+
+use prism_geom::analysis::winding_number;
+use prism_geom::freeform::envelope::chart::quality::{Quality, quality};
+use prism_geom::freeform::envelope::folds::crossings;
+use prism_geom::freeform::envelope::{
+    Envelope, EnvelopeSpec, Placement, PrimitiveInput, Shape, Surfacing, envelope,
+};
+use prism_geom::{DVec3, PolyMesh, Topology};
+
+fn spec(primitives: Vec<PrimitiveInput>, t: f64) -> EnvelopeSpec {
+    EnvelopeSpec {
+        t,
+        primitives,
+        resolution: 8,
+        basis: Default::default(),
+        patches: Surfacing::Charts,
+    }
+}
+
+/// A small generator (SplitMix64), so that every heap is reproducible from its seed.
+struct Rng(u64);
+
+impl Rng {
+    fn next(&mut self) -> f64 {
+        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        ((z ^ (z >> 31)) >> 11) as f64 / (1u64 << 53) as f64
+    }
+}
+
+fn shape(rng: &mut Rng) -> Shape {
+    match (rng.next() * 6.0) as usize {
+        0 => Shape::Cube,
+        1 => Shape::Box {
+            a: 0.3 + rng.next(),
+            b: 0.3 + rng.next(),
+            c: 0.3 + rng.next(),
+        },
+        2 => Shape::Tetrahedron,
+        3 => Shape::Octahedron,
+        4 => Shape::TriangularPrism {
+            height: 0.3 + 2.0 * rng.next(),
+        },
+        _ => Shape::HexagonalPrism {
+            height: 0.3 + 2.0 * rng.next(),
+        },
+    }
+}
+
+/// Heap `seed`: 2 to 6 primitives of every library shape, turned every way, scaled 0.5 to 2,
+/// their centres in a box that grows with the count.
+fn heap(seed: u64) -> Vec<PrimitiveInput> {
+    let mut rng = Rng(seed.wrapping_mul(0x2545_F491_4F6C_DD1D) ^ 0x5EED);
+    let count = 2 + (rng.next() * 5.0) as usize;
+    let side = 1.5 + 1.2 * count as f64;
+    (0..count)
+        .map(|_| {
+            let s = shape(&mut rng);
+            let centre = [side * rng.next(), side * rng.next(), side * rng.next()];
+            let rotation = [360.0 * rng.next(), 360.0 * rng.next(), 360.0 * rng.next()];
+            s.placed(&Placement {
+                centre,
+                scale: 0.5 + 1.5 * rng.next(),
+                rotation,
+            })
+        })
+        .collect()
+}
+
+/// Triangles whose normal is against their chart's direction.
+fn inward(e: &Envelope, m: &PolyMesh, regions: &[u32]) -> usize {
+    (0..m.num_faces())
+        .filter(|&f| {
+            let c: Vec<DVec3> = m
+                .face_corners(f)
+                .map(|i| m.positions[m.corner_verts[i] as usize])
+                .collect();
+            let n = (c[1] - c[0]).cross(c[2] - c[0]);
+            let ch = &e.charts[regions[f] as usize];
+            ch.frame
+                .chart((c[0] + c[1] + c[2]) / 3.0)
+                .is_none_or(|(x, _)| n.dot(ch.frame.direction(x)) <= 0.0)
+        })
+        .count()
+}
+
+/// Points of every kept primitive's faces on the kept side of the planes through its centre
+/// towards every other kept primitive (a part of what the construction keeps), pulled 10⁻⁶ r
+/// towards the centre.
+fn kept_points(e: &Envelope) -> Vec<DVec3> {
+    let kept: Vec<usize> = (0..e.primitives.len())
+        .filter(|i| !e.removed.contains(i))
+        .collect();
+    let mut out = Vec::new();
+    for &i in &kept {
+        let p = &e.primitives[i];
+        let cuts: Vec<DVec3> = kept
+            .iter()
+            .filter(|&&j| j != i)
+            .map(|&j| (e.primitives[j].centre - p.centre).normalize())
+            .collect();
+        for face in &p.faces {
+            let c = face.iter().map(|&v| p.vertices[v]).sum::<DVec3>() / face.len() as f64;
+            for &v in face {
+                for s in [0.0, 0.5, 0.9, 1.0] {
+                    let x = c.lerp(p.vertices[v], s);
+                    if cuts
+                        .iter()
+                        .all(|d| (x - p.centre).dot(*d) <= -1e-9 * p.radius)
+                    {
+                        out.push(p.centre + (x - p.centre) * (1.0 - 1e-6));
+                    }
+                }
+            }
+        }
+    }
+    out
+}
+
+/// Everything the construction promises of one build, with `what` in the messages.
+fn assert_sound(e: &Envelope, k: usize, what: &str) {
+    let jump = e.largest_border_jump();
+    assert!(jump < 1e-7, "{what}: border jump {jump}°");
+    let (m, regions) = e
+        .chart_mesh(k)
+        .unwrap_or_else(|err| panic!("{what}: {err}"));
+    assert!(m.positions.iter().all(|p| p.is_finite()), "{what}");
+    let topo = Topology::build(&m).unwrap();
+    topo.require_closed(&m)
+        .unwrap_or_else(|err| panic!("{what}: {err}"));
+    assert_eq!(inward(e, &m, &regions), 0, "{what}: inward triangles");
+    assert_eq!(crossings(&m).len(), 0, "{what}: crossings");
+    for x in kept_points(e) {
+        let w = winding_number(&m, x);
+        assert!(w > 0.5, "{what}: kept point {x} outside (winding {w})");
+    }
+}
+
+/// 1,000 heaps of 2 to 6 primitives, each at t = 3, 1, 0.5, 0.2 and 0.1: every build succeeds
+/// and is closed, outward, G1, free of crossings, and holds every kept part.
+#[test]
+fn a_thousand_heaps_are_sound_at_every_t() {
+    let from: u64 = std::env::var("HEAPS_FROM")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(0);
+    for seed in from..1000 {
+        let prims = heap(seed);
+        for t in [3.0, 1.0, 0.5, 0.2, 0.1] {
+            let what = format!("heap {seed} at t = {t}");
+            let e = envelope(&spec(prims.clone(), t)).unwrap_or_else(|err| panic!("{what}: {err}"));
+            assert_sound(&e, 3, &what);
+        }
+    }
+}
+
+/// How far x lies from the surface of `e` along its chart's direction (∞ where no chart holds
+/// it): the surface evaluated where x projects, not a mesh.
+fn off_surface(e: &Envelope, x: DVec3) -> f64 {
+    e.charts
+        .iter()
+        .filter_map(|ch| {
+            let (c, h) = ch.frame.chart(x)?;
+            let inside = ch.sides.iter().all(|s| s.coords(c).1 >= -1e-9 * s.length);
+            inside.then(|| (ch.value(c) - h).abs() * ch.frame.direction(c).length())
+        })
+        .fold(f64::INFINITY, f64::min)
+}
+
+/// The 48 rotations and reflections of a cube about its centre: signed permutations.
+fn cube_symmetries() -> Vec<[[f64; 3]; 3]> {
+    let perms = [
+        [0, 1, 2],
+        [0, 2, 1],
+        [1, 0, 2],
+        [1, 2, 0],
+        [2, 0, 1],
+        [2, 1, 0],
+    ];
+    let mut out = Vec::new();
+    for p in perms {
+        for signs in 0..8 {
+            let mut m = [[0.0; 3]; 3];
+            for (row, &col) in p.iter().enumerate() {
+                m[row][col] = if signs >> row & 1 == 1 { -1.0 } else { 1.0 };
+            }
+            out.push(m);
+        }
+    }
+    out
+}
+
+/// One cube's envelope has the cube's 48 symmetries at every t: every mesh vertex, mapped by
+/// each, lies on the surface (to 10⁻⁹), though the mesh itself is not symmetric.
+#[test]
+fn one_cube_has_its_48_symmetries() {
+    for t in [2.0, 1.0, 0.3] {
+        let e = envelope(&spec(vec![Shape::Cube.placed(&Placement::default())], t)).unwrap();
+        let (m, _) = e.chart_mesh(6).unwrap();
+        for s in cube_symmetries() {
+            for x in &m.positions {
+                let y = DVec3::new(
+                    s[0][0] * x.x + s[0][1] * x.y + s[0][2] * x.z,
+                    s[1][0] * x.x + s[1][1] * x.y + s[1][2] * x.z,
+                    s[2][0] * x.x + s[2][1] * x.y + s[2][2] * x.z,
+                );
+                let d = off_surface(&e, y);
+                assert!(d < 1e-9, "t = {t}: {y} is {d} off");
+            }
+        }
+    }
+}
+
+/// The surface does not depend on the listing: primitives listed backwards and every face's
+/// corners started elsewhere give a surface through every vertex of the first's mesh.
+#[test]
+fn the_surface_does_not_depend_on_the_listing() {
+    for seed in 0..40 {
+        let prims = heap(seed);
+        let mut again: Vec<PrimitiveInput> = prims.iter().rev().cloned().collect();
+        for p in &mut again {
+            for f in &mut p.faces {
+                f.rotate_left(1);
+            }
+            p.faces.reverse();
+        }
+        for t in [1.0, 0.3] {
+            let a = envelope(&spec(prims.clone(), t)).unwrap();
+            let b = envelope(&spec(again.clone(), t)).unwrap();
+            let (m, _) = a.chart_mesh(4).unwrap();
+            let size = a.edge_length;
+            for x in &m.positions {
+                let d = off_surface(&b, *x);
+                assert!(d < 1e-9 * size, "heap {seed} at t = {t}: {x} is {d} off");
+            }
+        }
+    }
+}
+
+/// Two equal cubes of one orientation on a line parallel to a cube axis, t = 1: the fusion
+/// strip is the circular cylinder of radius r about the centre line (seed 004's fig. 11), to
+/// rounding; each cube's kept part lies within 5 % of r of its sphere (the charts reproduce
+/// the sphere along every curve and level off at its height over each face's foot, not in
+/// between: envelope.md, "Shape").
+#[test]
+fn two_aligned_cubes_at_t_1_give_a_cylinder_between_spheres() {
+    let cube = |x: f64| {
+        Shape::Cube.placed(&Placement {
+            centre: [x, 0.0, 0.0],
+            ..Placement::default()
+        })
+    };
+    let e = envelope(&spec(vec![cube(0.0), cube(3.0)], 1.0)).unwrap();
+    let r = e.primitives[0].radius;
+    let (m, regions) = e.chart_mesh(8).unwrap();
+    for f in 0..m.num_faces() {
+        let kind = e.network.regions[regions[f] as usize].kind;
+        for c in m.face_corners(f) {
+            let x = m.positions[m.corner_verts[c] as usize];
+            let off = match kind {
+                prism_geom::freeform::envelope::network::RegionKind::Primitive {
+                    primitive,
+                    ..
+                } => (x.distance(e.primitives[primitive].centre) - r) * 1e-9 / 0.05,
+                _ => DVec3::new(0.0, x.y, x.z).length() - r,
+            };
+            assert!(off.abs() < 1e-9 * r, "{kind:?}: {x} is {off} off");
+        }
+    }
+}
+
+/// The mesh's own G1 measure (the angle between the two regions' vertex normals at a border
+/// vertex) falls with the resolution like 1/K: to under 0.4 of its value from K = 8 to 64.
+#[test]
+fn the_mesh_normal_gap_falls_like_one_over_k() {
+    let shapes = [
+        Shape::Cube,
+        Shape::Tetrahedron,
+        Shape::Octahedron,
+        Shape::HexagonalPrism { height: 1.0 },
+    ];
+    for shape in shapes {
+        for t in [1.0, 0.5] {
+            let e = envelope(&spec(vec![shape.placed(&Placement::default())], t)).unwrap();
+            let gap = |k: usize| {
+                let (m, regions) = e.chart_mesh(k).unwrap();
+                quality(&m, &regions, &e.charts, &e.primitives).border_gap
+            };
+            let (coarse, fine) = (gap(8), gap(64));
+            assert!(
+                fine < 0.4 * coarse,
+                "{shape:?} at t = {t}: {coarse}° -> {fine}°"
+            );
+        }
+    }
+}
+
+/// A single primitive of every library shape, turned, is enclosed at every t of the slider
+/// and beyond (its vertices lie on the surface, so the margin is ~0, never negative), the
+/// report finds nothing inward or open, and no angle of the mesh is a needle (the refinement
+/// asks for 20°; beside a corner whose sides it keeps, 8.9° is the least measured).
+#[test]
+fn one_primitive_is_enclosed_at_every_t() {
+    let mut rng = Rng(7);
+    for _ in 0..12 {
+        let p = shape(&mut rng).placed(&Placement {
+            centre: [rng.next(), rng.next(), rng.next()],
+            scale: 0.5 + rng.next(),
+            rotation: [360.0 * rng.next(), 360.0 * rng.next(), 360.0 * rng.next()],
+        });
+        for t in [3.0, 1.0, 0.5, 0.2, 0.1, 0.02] {
+            let e = envelope(&spec(vec![p.clone()], t)).unwrap();
+            let (_, q): (PolyMesh, Quality) = e.quality(6).unwrap();
+            assert!(q.enclosure[0] > -1e-9, "t = {t}: {q:?}");
+            assert_eq!((q.inward, q.open_edges), (0, 0), "t = {t}");
+            assert!(q.smallest_angle > 5.0, "t = {t}: {q:?}");
+        }
+    }
+}
