@@ -259,8 +259,8 @@ fn two_aligned_cubes_at_t_1_give_a_cylinder_between_spheres() {
     let e = envelope(&spec(vec![cube(0.0), cube(3.0)], 1.0)).unwrap();
     let r = e.primitives[0].radius;
     let (m, regions) = e.chart_mesh(8).unwrap();
-    for f in 0..m.num_faces() {
-        let kind = e.network.regions[regions[f] as usize].kind;
+    for (f, &region) in regions.iter().enumerate() {
+        let kind = e.network.regions[region as usize].kind;
         for c in m.face_corners(f) {
             let x = m.positions[m.corner_verts[c] as usize];
             let off = match kind {
