@@ -1,11 +1,13 @@
 //! The envelope the Envelope tab rebuilds while t or a primitive is dragged
-//! (docs/performance.md): network and patches (`envelope`, what `time_ms=` reports) and, apart,
-//! the K = 8 tessellation, for one cube (6 patches), one hexagonal prism (18), two cubes side by
-//! side (14), two cubes on a body diagonal (54) and the bundled scenes like the paper's Table 2
-//! (five primitives: 81 patches; seven: 135), and 20, 50 and 100 cubes on a sphere (all kept:
-//! 376, 842 and 1,697 patches). Time per patch is the figure to compare as scenes grow.
+//! (docs/performance.md): the build (`envelope`, what `time_ms=` reports) and, apart, the K = 8
+//! tessellation, side by side for the charts (the default) and the paper's patches, for one
+//! cube, one hexagonal prism, two cubes side by side, two cubes on a body diagonal, the bundled
+//! scenes like the paper's Table 2 (five and seven primitives), and 20, 50 and 100 cubes on a
+//! sphere (all kept). Time per region is the figure to compare as scenes grow.
 
-use prism_geom::freeform::envelope::{EnvelopeSpec, Placement, PrimitiveInput, Shape, envelope};
+use prism_geom::freeform::envelope::{
+    EnvelopeSpec, Placement, PrimitiveInput, Shape, Surfacing, envelope,
+};
 
 #[path = "../tests/common/mod.rs"]
 mod common;
@@ -66,14 +68,33 @@ const SCENES: [&str; 9] = [
     "sphere-100",
 ];
 
+fn with(name: &str, surfacing: Surfacing) -> EnvelopeSpec {
+    EnvelopeSpec {
+        patches: surfacing,
+        ..scene(name)
+    }
+}
+
 #[divan::bench(args = SCENES)]
-fn network_and_patches(b: divan::Bencher, name: &str) {
-    let s = scene(name);
+fn build_charts(b: divan::Bencher, name: &str) {
+    let s = with(name, Surfacing::Charts);
     b.bench(|| envelope(&s).unwrap());
 }
 
 #[divan::bench(args = SCENES)]
-fn tessellation_k8(b: divan::Bencher, name: &str) {
-    let e = envelope(&scene(name)).unwrap();
+fn build_paper(b: divan::Bencher, name: &str) {
+    let s = with(name, Surfacing::Paper);
+    b.bench(|| envelope(&s).unwrap());
+}
+
+#[divan::bench(args = SCENES)]
+fn tessellation_k8_charts(b: divan::Bencher, name: &str) {
+    let e = envelope(&with(name, Surfacing::Charts)).unwrap();
+    b.bench(|| e.tessellate(8).unwrap());
+}
+
+#[divan::bench(args = SCENES)]
+fn tessellation_k8_paper(b: divan::Bencher, name: &str) {
+    let e = envelope(&with(name, Surfacing::Paper)).unwrap();
     b.bench(|| e.tessellate(8).unwrap());
 }

@@ -552,8 +552,13 @@ impl EnvelopeTab {
                     ));
                 }
                 ui.label(format!(
-                    "G1: largest normal jump across patch borders {:.1e}°; network and patches in {:.2} ms",
-                    b.jump, b.millis
+                    "G1: largest normal jump across region borders {:.1e}°; network and {} in {:.2} ms",
+                    b.jump,
+                    match e.surfacing {
+                        Surfacing::Charts => "charts",
+                        Surfacing::Paper => "patches",
+                    },
+                    b.millis
                 ));
                 // One row each whatever the answer, with the long text on hover: the
                 // crossing check answers a few frames later, and a line that wrapped then

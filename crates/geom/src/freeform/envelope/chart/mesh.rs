@@ -21,6 +21,7 @@ use crate::freeform::envelope::EnvelopeError;
 use crate::freeform::envelope::network::Network;
 use crate::mesh::PolyMesh;
 use glam::{DVec2, DVec3};
+use rayon::prelude::*;
 use spade::{
     AngleLimit, ConstrainedDelaunayTriangulation, Point2, RefinementParameters, Triangulation,
 };
@@ -40,7 +41,7 @@ const GROWTH: f64 = 1.5;
 
 /// Parameters at which a curve piece from τ = a to b is cut: spacing `spacing` in its middle,
 /// growing from `s0` at a and `s1` at b by at most [`GROWTH`] a segment (arc length measured
-/// on 256 chords), a and b included.
+/// on 64 chords), a and b included.
 fn graded_params(
     net: &Network,
     c: usize,
@@ -49,7 +50,7 @@ fn graded_params(
     spacing: f64,
     most: usize,
 ) -> Vec<f64> {
-    const CHORDS: usize = 256;
+    const CHORDS: usize = 64;
     let bez = &net.curves[c].bezier;
     let mut cum = vec![0.0; CHORDS + 1];
     let mut prev = bez.eval(a);
@@ -66,7 +67,7 @@ fn graded_params(
             .min(s1 + (GROWTH - 1.0) * (total - x))
             .max(1e-300)
     };
-    const STEPS: usize = 512;
+    const STEPS: usize = 128;
     let mut count = vec![0.0; STEPS + 1];
     for i in 0..STEPS {
         let x = total * (i as f64 + 0.5) / STEPS as f64;
@@ -162,15 +163,24 @@ impl CurveSamples {
     }
 }
 
-/// Triangulates one chart into `mesh` (positions appended), with border samples `samples`;
-/// `spacing` is the surface spacing. Returns the number of triangles added.
+/// A chart's own new points and its triangles; a vertex with [`LOCAL`] set is its own point
+/// `id & !LOCAL`, else a vertex of the curves' samples.
+pub struct ChartMesh {
+    pub points: Vec<DVec3>,
+    pub triangles: Vec<[u32; 3]>,
+}
+
+/// The mark of a chart's own point in [`ChartMesh::triangles`].
+pub const LOCAL: u32 = 1 << 31;
+
+/// Triangulates one chart with border samples `samples` (their positions in `positions`);
+/// `spacing` is the surface spacing.
 pub fn tessellate_chart(
     chart: &Chart,
     samples: &CurveSamples,
     spacing: f64,
-    positions: &mut Vec<DVec3>,
-    triangles: &mut Vec<[u32; 3]>,
-) -> Result<usize, EnvelopeError> {
+    positions: &[DVec3],
+) -> Result<ChartMesh, EnvelopeError> {
     let fail = |why: &str| EnvelopeError::Chart {
         region: chart.region,
         why: why.to_string(),
@@ -299,11 +309,6 @@ pub fn tessellate_chart(
     if dt.num_vertices() != nb + inner.len() {
         return Err(fail("two of its border samples coincide in the chart"));
     }
-    if conflicts > 0 && std::env::var_os("PRISM_DEBUG_CHART").is_some() {
-        for (k, b) in border.iter().enumerate() {
-            eprintln!("{k}: {:?} v{} sides {:b}", b.0, b.1, b.2);
-        }
-    }
     if conflicts > 0 {
         return Err(fail("its border crosses itself in the chart"));
     }
@@ -316,20 +321,23 @@ pub fn tessellate_chart(
             .with_max_additional_vertices(4 * before_refining + 64),
     );
     let outer: std::collections::HashSet<_> = result.excluded_faces.into_iter().collect();
-    let first_inner = positions.len() as u32;
-    for v in dt.vertices().skip(nb) {
-        let p = v.position();
-        positions.push(chart.point(DVec2::new(p.x, p.y)));
-    }
+    let points: Vec<DVec3> = dt
+        .vertices()
+        .skip(nb)
+        .map(|v| {
+            let p = v.position();
+            chart.point(DVec2::new(p.x, p.y))
+        })
+        .collect();
     let id = |k: usize| -> u32 {
         if k < nb {
             border[k].1
         } else {
-            first_inner + (k - nb) as u32
+            LOCAL | (k - nb) as u32
         }
     };
+    let mut triangles = Vec::new();
     let sides_of = |k: usize| if k < nb { border[k].2 } else { 0 };
-    let before = triangles.len();
     for f in dt.inner_faces() {
         if outer.contains(&f.fix()) {
             continue;
@@ -340,7 +348,7 @@ pub fn tessellate_chart(
         }
         triangles.push([id(a), id(b), id(c)]);
     }
-    Ok(triangles.len() - before)
+    Ok(ChartMesh { points, triangles })
 }
 
 /// The mesh of every chart: welded, and the region of each triangle.
@@ -358,11 +366,31 @@ pub fn tessellate(
         }
     }
     let samples = sample_curves(net, &used, spacing, most, &mut positions);
+    // The charts are independent once the curves are sampled: triangulated in parallel, then
+    // numbered in chart order (the same mesh whatever the number of threads).
+    let parts: Vec<Result<ChartMesh, EnvelopeError>> = charts
+        .par_iter()
+        .map(|ch| tessellate_chart(ch, &samples, spacing, &positions))
+        .collect();
     let mut triangles = Vec::new();
     let mut regions = Vec::new();
-    for ch in charts {
-        let added = tessellate_chart(ch, &samples, spacing, &mut positions, &mut triangles)?;
-        regions.extend(std::iter::repeat_n(ch.region as u32, added));
+    for (ch, part) in charts.iter().zip(parts) {
+        let part = part?;
+        let base = positions.len() as u32;
+        positions.extend(part.points);
+        for t in part.triangles {
+            triangles.push(t.map(|v| {
+                if v & LOCAL != 0 {
+                    base + (v & !LOCAL)
+                } else {
+                    v
+                }
+            }));
+        }
+        regions.extend(std::iter::repeat_n(
+            ch.region as u32,
+            triangles.len() - regions.len(),
+        ));
     }
     let mut mesh = PolyMesh::with_capacity(
         positions.len(),

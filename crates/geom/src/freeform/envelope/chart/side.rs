@@ -225,40 +225,47 @@ impl ChartSide {
         let piece = hi.piece;
         let p = &self.pieces[piece];
         let tau_lo = if lo.piece == piece { lo.tau } else { p.t0 };
-        let sigma_at = |tau: f64| {
-            self.frame
-                .chart(p.bezier.eval(tau))
-                .map_or(f64::NAN, |(c, _)| {
-                    (c - self.a).dot(self.along) / self.length
-                })
+        // σ and dσ/dτ at τ: the chart's map differentiated along C′ by a difference quotient.
+        let sigma_and_slope = |tau: f64| -> Option<(f64, f64)> {
+            let d = p.bezier.derivatives(tau);
+            let (c, _) = self.frame.chart(d.point)?;
+            let eps = 1e-7 / d.d1.length().max(1e-300);
+            let (c2, _) = self.frame.chart(d.point + eps * d.d1)?;
+            let s = (c - self.a).dot(self.along) / self.length;
+            let ds = (c2 - c).dot(self.along) / self.length / eps;
+            Some((s, ds))
         };
-        // Regula falsi with the Illinois step: the bracket shrinks from both ends.
-        let (mut t0, mut f0) = (tau_lo, lo.sigma - sigma);
-        let (mut t1, mut f1) = (hi.tau, hi.sigma - sigma);
-        let mut tau = t0 + (t1 - t0) * f0 / (f0 - f1);
-        let mut side = 0;
-        for _ in 0..64 {
-            let f = sigma_at(tau) - sigma;
-            if !f.is_finite() || f.abs() <= 1e-15 || (t1 - t0).abs() <= 1e-15 {
+        // Newton from the secant between the bracketing marks, kept inside the bracket
+        // (bisection where a step would leave it).
+        let (mut t0, mut t1) = (tau_lo, hi.tau);
+        let (lo_s, hi_s) = (lo.sigma, hi.sigma);
+        let mut tau = t0 + (t1 - t0) * (sigma - lo_s) / (hi_s - lo_s);
+        for _ in 0..32 {
+            let Some((s, ds)) = sigma_and_slope(tau) else {
+                break;
+            };
+            let f = s - sigma;
+            if f.abs() <= 1e-14 {
                 break;
             }
-            if (f < 0.0) == (f0 < 0.0) {
-                (t0, f0) = (tau, f);
-                if side == -1 {
-                    f1 *= 0.5;
-                }
-                side = -1;
+            // t0 is the bracket's end below σ, t1 the end above (τ may run either way).
+            if f < 0.0 {
+                t0 = tau;
             } else {
-                (t1, f1) = (tau, f);
-                if side == 1 {
-                    f0 *= 0.5;
-                }
-                side = 1;
+                t1 = tau;
             }
-            if (f0 - f1).abs() <= 1e-300 {
+            let step = tau - f / ds;
+            let inside = (step - t0) * (step - t1) < 0.0;
+            let next = if ds.is_finite() && ds != 0.0 && inside {
+                step
+            } else {
+                0.5 * (t0 + t1)
+            };
+            if (next - tau).abs() <= 1e-14 {
+                tau = next;
                 break;
             }
-            tau = t0 + (t1 - t0) * f0 / (f0 - f1);
+            tau = next;
         }
         (piece, tau)
     }
