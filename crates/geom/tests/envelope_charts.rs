@@ -218,7 +218,9 @@ fn one_cube_has_its_48_symmetries() {
 }
 
 /// The surface does not depend on the listing: primitives listed backwards and every face's
-/// corners started elsewhere give a surface through every vertex of the first's mesh.
+/// corners started elsewhere give a surface through every vertex of the first's mesh (to
+/// 10⁻⁸ of the edge length: the fusion quads' corner twists are difference quotients taken
+/// from each corner inwards, which a listing backwards takes from the other end).
 #[test]
 fn the_surface_does_not_depend_on_the_listing() {
     for seed in 0..40 {
@@ -237,7 +239,7 @@ fn the_surface_does_not_depend_on_the_listing() {
             let size = a.edge_length;
             for x in &m.positions {
                 let d = off_surface(&b, *x);
-                assert!(d < 1e-9 * size, "heap {seed} at t = {t}: {x} is {d} off");
+                assert!(d < 1e-8 * size, "heap {seed} at t = {t}: {x} is {d} off");
             }
         }
     }

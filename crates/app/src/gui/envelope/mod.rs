@@ -883,6 +883,9 @@ impl EnvelopeTab {
                 );
             }
             let text = match (summary[i].1, &v.built.result) {
+                (Some(n), Ok((e, _))) if e.surfacing == Surfacing::Charts => {
+                    format!("t = {}: {n} charts", v.t)
+                }
                 (Some(n), _) => format!("t = {}: {n} patches", v.t),
                 (None, Err(e)) => format!("t = {}: {e}", v.t),
                 (None, Ok(_)) => format!("t = {}", v.t),

@@ -59,9 +59,133 @@ pub struct Chart {
     pub pieces: Vec<Vec<PatchSide>>,
 }
 
+/// Cubic Hermite basis: values at 0 and 1, then derivatives at 0 and 1.
+fn hermite(t: f64) -> [f64; 4] {
+    let (t2, t3) = (t * t, t * t * t);
+    [
+        2.0 * t3 - 3.0 * t2 + 1.0,
+        -2.0 * t3 + 3.0 * t2,
+        t3 - 2.0 * t2 + t,
+        t3 - t2,
+    ]
+}
+
 impl Chart {
-    /// The scalar at chart point c: the side blend.
+    /// The scalar at chart point c: the Coons blend on a fusion quad's rectangle, the side
+    /// blend elsewhere.
     pub fn value(&self, c: DVec2) -> f64 {
+        if self.is_rectangle() {
+            return self.coons(c);
+        }
+        self.side_blend(c)
+    }
+
+    /// R = exp(F), F the bicubically blended Coons interpolant of ln R — the four sides'
+    /// values and cross slopes (∂ ln R = ∂R/R) — with Gregory's variable twist at the corners
+    /// (ALGORITHMS §9 on a scalar): a fusion quad is the rectangle [x₀, x₁] × [0, D] of its
+    /// chart, sides 0 (z = 0), 1 (x = x₁), 2 (z = D) and 3 (x = x₀). R > 0 whatever the data (a
+    /// graph about the axis), and a strip that does not change along the axis is reproduced
+    /// exactly — the strip between two equal aligned primitives is their section swept along d.
+    fn coons(&self, c: DVec2) -> f64 {
+        let [bottom, right, top, left] = [
+            &self.sides[0],
+            &self.sides[1],
+            &self.sides[2],
+            &self.sides[3],
+        ];
+        let (x0, x1) = (left.a.x, right.a.x);
+        let (z0, z1) = (bottom.a.y, top.a.y);
+        let (w, d) = (x1 - x0, z1 - z0);
+        let u = (c.x - x0) / w;
+        let v = (c.y - z0) / d;
+        // Side data at the point's projections, in (u, v) units: value and the slope across.
+        let log = |d: side::Data| side::Data {
+            h: d.h.ln(),
+            grad: d.grad / d.h,
+            kappa: d.kappa,
+        };
+        let along_x = |s: &side::ChartSide, x: f64| log(s.data((x - s.a.x) / (s.b.x - s.a.x)));
+        let along_z = |s: &side::ChartSide, z: f64| log(s.data((z - s.a.y) / (s.b.y - s.a.y)));
+        let (b, t) = (along_x(bottom, c.x), along_x(top, c.x));
+        let (l, r) = (along_z(left, c.y), along_z(right, c.y));
+        let pu = hermite(u);
+        let pv = hermite(v);
+        let p_u = pu[0] * l.h + pu[1] * r.h + pu[2] * l.grad.x * w + pu[3] * r.grad.x * w;
+        let p_v = pv[0] * b.h + pv[1] * t.h + pv[2] * b.grad.y * d + pv[3] * t.grad.y * d;
+        // Corner data: value, ∂u, ∂v, and the twist from each side's slope's change along it.
+        let corner = |su: &side::ChartSide, sv: &side::ChartSide, at_u: f64, at_v: f64| {
+            // su runs along x (bottom or top) at this corner's end, sv along z (left or right).
+            let eps = 1e-6;
+            let e_u = if at_u == 0.0 { eps } else { -eps };
+            let e_v = if at_v == 0.0 { eps } else { -eps };
+            let x = x0 + at_u * w;
+            let z = z0 + at_v * d;
+            let here = along_x(su, x);
+            let dv_along_u = (along_x(su, x + e_u * w).grad.y * d - here.grad.y * d) / e_u;
+            let there = along_z(sv, z);
+            let du_along_v = (along_z(sv, z + e_v * d).grad.x * w - there.grad.x * w) / e_v;
+            (
+                here.h,
+                here.grad.x * w,
+                here.grad.y * d,
+                dv_along_u,
+                du_along_v,
+            )
+        };
+        let c00 = corner(bottom, left, 0.0, 0.0);
+        let c10 = corner(bottom, right, 1.0, 0.0);
+        let c01 = corner(top, left, 0.0, 1.0);
+        let c11 = corner(top, right, 1.0, 1.0);
+        // Gregory's twist: the bottom or top side's at v = 0 or 1, the left or right side's at
+        // u = 0 or 1, blended between.
+        let twist =
+            |(_, _, _, from_uside, from_vside): (f64, f64, f64, f64, f64), a: f64, b: f64| {
+                if a + b <= 0.0 {
+                    0.5 * (from_uside + from_vside)
+                } else {
+                    (a * from_uside + b * from_vside) / (a + b)
+                }
+            };
+        let t00 = twist(c00, v, u);
+        let t10 = twist(c10, v, 1.0 - u);
+        let t01 = twist(c01, 1.0 - v, u);
+        let t11 = twist(c11, 1.0 - v, 1.0 - u);
+        let m = [
+            [c00.0, c01.0, c00.2, c01.2],
+            [c10.0, c11.0, c10.2, c11.2],
+            [c00.1, c01.1, t00, t01],
+            [c10.1, c11.1, t10, t11],
+        ];
+        let mut p_uv = 0.0;
+        for i in 0..4 {
+            for j in 0..4 {
+                p_uv += pu[i] * m[i][j] * pv[j];
+            }
+        }
+        (p_u + p_v - p_uv).exp()
+    }
+
+    /// Whether the chart is a fusion quad's rectangle: four sides along +x, +z, −x, −z.
+    fn is_rectangle(&self) -> bool {
+        let Frame::Axial { .. } = self.frame else {
+            return false;
+        };
+        let dirs = [
+            DVec2::new(1.0, 0.0),
+            DVec2::new(0.0, 1.0),
+            DVec2::new(-1.0, 0.0),
+            DVec2::new(0.0, -1.0),
+        ];
+        self.sides.len() == 4
+            && self
+                .sides
+                .iter()
+                .zip(dirs)
+                .all(|(s, d)| s.along.distance(d) <= 1e-9)
+    }
+
+    /// The side blend of the sides' ribbons.
+    fn side_blend(&self, c: DVec2) -> f64 {
         let mut num = 0.0;
         let mut den = 0.0;
         for s in &self.sides {
