@@ -47,12 +47,7 @@ const END_ANGLE: f64 = 1e-7;
 
 /// The frame of polar angles about d.
 fn frame(d: DVec3) -> (DVec3, DVec3) {
-    let a = [DVec3::X, DVec3::Y, DVec3::Z]
-        .into_iter()
-        .min_by(|p, q| p.dot(d).abs().total_cmp(&q.dot(d).abs()))
-        .expect("three axes");
-    let x = d.cross(a).normalize();
-    (x, d.cross(x))
+    super::chart::frame::plane_axes(d)
 }
 
 fn angle_of(v: DVec3, (x, y): (DVec3, DVec3)) -> f64 {

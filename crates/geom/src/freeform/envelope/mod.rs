@@ -400,6 +400,19 @@ fn assemble_with(
     ))
 }
 
+/// The first face with a point that is not finite, if any (the face of the first such point).
+fn non_finite_face(mesh: &PolyMesh) -> Option<usize> {
+    let v = mesh.positions.iter().position(|p| !p.is_finite())?;
+    Some(
+        (0..mesh.num_faces())
+            .find(|&f| {
+                mesh.face_corners(f)
+                    .any(|c| mesh.corner_verts[c] as usize == v)
+            })
+            .unwrap_or(0),
+    )
+}
+
 impl Envelope {
     /// The welded tessellation, `k` × `k` quads a patch.
     pub fn tessellate(&self, k: usize) -> Result<PolyMesh, EnvelopeError> {
@@ -412,13 +425,7 @@ impl Envelope {
         let mesh = tessellate::tessellate(&self.network, &self.patches, k);
         // Never a mesh with a point that is not finite: the patch it came from is named (each
         // patch writes k × k faces in order).
-        if let Some(v) = mesh.positions.iter().position(|p| !p.is_finite()) {
-            let face = (0..mesh.num_faces())
-                .find(|&f| {
-                    mesh.face_corners(f)
-                        .any(|c| mesh.corner_verts[c] as usize == v)
-                })
-                .unwrap_or(0);
+        if let Some(face) = non_finite_face(&mesh) {
             return Err(EnvelopeError::NonFinite {
                 patch: face / (k * k),
             });
@@ -435,13 +442,7 @@ impl Envelope {
         let spacing = self.edge_length / k as f64;
         let (mesh, regions) =
             chart::mesh::tessellate(&self.network, &self.charts, spacing, 64 * k)?;
-        if let Some(v) = mesh.positions.iter().position(|p| !p.is_finite()) {
-            let face = (0..mesh.num_faces())
-                .find(|&f| {
-                    mesh.face_corners(f)
-                        .any(|c| mesh.corner_verts[c] as usize == v)
-                })
-                .unwrap_or(0);
+        if let Some(face) = non_finite_face(&mesh) {
             return Err(EnvelopeError::NonFinite {
                 patch: regions.get(face).copied().unwrap_or(0) as usize,
             });

@@ -39,13 +39,14 @@ pub enum Frame {
 }
 
 /// Two unit vectors completing unit `n` to a right-handed frame (e₁ × e₂ = n), chosen from n
-/// alone.
+/// alone: e₁ = unit(n × a), a the world axis least parallel to n, e₂ = n × e₁ (also the polar
+/// angles' frame of the fusion, `fusion.rs`).
 pub fn plane_axes(n: DVec3) -> (DVec3, DVec3) {
     let a = [DVec3::X, DVec3::Y, DVec3::Z]
         .into_iter()
         .min_by(|p, q| p.dot(n).abs().total_cmp(&q.dot(n).abs()))
         .expect("three axes");
-    let e1 = a.cross(n).normalize();
+    let e1 = n.cross(a).normalize();
     (e1, n.cross(e1))
 }
 
