@@ -483,6 +483,30 @@ impl Envelope {
         Ok((mesh, q))
     }
 
+    /// The mesh counts of the tessellation at resolution `k`, estimated before it is built (for
+    /// the memory guard): the paper's K × K quads a patch, or the charts' mesh at resolution
+    /// min(K, 8) (a few milliseconds) scaled by (K/8)², with a quarter to spare.
+    pub fn mesh_counts(&self, k: usize) -> crate::memory::Counts {
+        let k = k.max(1) as u64;
+        if self.surfacing == Surfacing::Paper {
+            return crate::memory::tessellation_counts(self.patches.len() as u64, k);
+        }
+        let k0 = k.min(8);
+        let (v0, t0) = self
+            .chart_mesh(k0 as usize)
+            .map(|(m, _)| (m.num_vertices() as u64, m.num_faces() as u64))
+            .unwrap_or((0, 0));
+        let scale = |x: u64| (x * k * k / (k0 * k0)) * 5 / 4 + 64;
+        let (vertices, triangles) = (scale(v0), scale(t0));
+        crate::memory::Counts {
+            vertices,
+            corners: 3 * triangles,
+            loops: triangles,
+            faces: triangles,
+            edges: 3 * triangles / 2,
+        }
+    }
+
     /// The number of surface pieces: patches, or one chart a region.
     pub fn patch_count(&self) -> usize {
         match self.surfacing {
