@@ -79,7 +79,7 @@ pub struct Built {
 
 /// The crossing check of a build, with the quality report of its mesh (both on a thread).
 pub enum Crossings {
-    Checking(Receiver<(Vec<DVec3>, Option<Quality>)>),
+    Checking(Receiver<(Vec<DVec3>, Quality)>),
     /// The midpoints of the pairs of faces that pass through each other, and the warning.
     Done(Vec<DVec3>, Option<String>),
     /// No surface, or not checked (the t sweep's views).
@@ -93,8 +93,11 @@ impl Built {
         let start = Instant::now();
         let e = envelope(spec);
         let millis = start.elapsed().as_secs_f64() * 1e3;
+        // The region of each face, for the quality report on the check's thread.
+        let mut regions = Vec::new();
         let result = e.map_err(|e| e.to_string()).and_then(|e| {
-            let m = e.tessellate(spec.resolution).map_err(|e| e.to_string())?;
+            let (m, r) = e.mesh(spec.resolution).map_err(|e| e.to_string())?;
+            regions = r;
             Ok((e, m))
         });
         let jump = match &result {
@@ -115,10 +118,10 @@ impl Built {
         let crossings = match &result {
             Ok((e, m)) if check_crossings => {
                 let (tx, rx) = std::sync::mpsc::channel();
-                let (e, m, k) = (e.clone(), m.clone(), spec.resolution);
+                let (e, m) = (e.clone(), m.clone());
                 std::thread::spawn(move || {
                     let crossings = prism_geom::freeform::envelope::folds::crossings(&m);
-                    let quality = e.quality(k).ok().map(|(_, q)| q);
+                    let quality = e.quality_of(&m, &regions);
                     let _ = tx.send((crossings, quality));
                 });
                 Crossings::Checking(rx)
@@ -144,7 +147,7 @@ impl Built {
         };
         let points = match rx.try_recv() {
             Ok((p, q)) => {
-                self.quality = q;
+                self.quality = Some(q);
                 p
             }
             Err(TryRecvError::Empty) => return false,

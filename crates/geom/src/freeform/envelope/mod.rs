@@ -450,36 +450,49 @@ impl Envelope {
         Ok((mesh, regions))
     }
 
-    /// The tessellation at resolution `k` as triangles and its quality report
-    /// ([`chart::quality`]); a paper build's polygons are measured as fans.
-    pub fn quality(&self, k: usize) -> Result<(PolyMesh, chart::quality::Quality), EnvelopeError> {
+    /// The tessellation at resolution `k` and the region of each face: the charts' triangles,
+    /// or the paper's patches (k × k faces a patch, in order).
+    pub fn mesh(&self, k: usize) -> Result<(PolyMesh, Vec<u32>), EnvelopeError> {
         if self.surfacing == Surfacing::Charts {
-            let (mesh, regions) = self.chart_mesh(k)?;
-            let q = chart::quality::quality(&mesh, &regions, &self.charts, &self.primitives);
-            return Ok((mesh, q));
+            return self.chart_mesh(k);
         }
         let mesh = self.tessellate(k)?;
-        let per_patch = k * k;
+        let regions = (0..mesh.num_faces())
+            .map(|f| self.patches.get(f / (k * k)).map_or(0, |p| p.region) as u32)
+            .collect();
+        Ok((mesh, regions))
+    }
+
+    /// The quality report ([`chart::quality`]) of [`Envelope::mesh`]'s mesh and regions; a
+    /// paper build's polygons are measured as fans.
+    pub fn quality_of(&self, mesh: &PolyMesh, regions: &[u32]) -> chart::quality::Quality {
+        if self.surfacing == Surfacing::Charts {
+            return chart::quality::quality(mesh, regions, &self.charts, &self.primitives);
+        }
         let mut fans = PolyMesh::new();
         fans.positions = mesh.positions.clone();
-        let mut regions = Vec::new();
-        for f in 0..mesh.num_faces() {
+        let mut fan_regions = Vec::new();
+        for (f, &region) in regions.iter().enumerate().take(mesh.num_faces()) {
             let c: Vec<u32> = mesh.face_corners(f).map(|i| mesh.corner_verts[i]).collect();
-            let region = self.patches.get(f / per_patch).map_or(0, |p| p.region) as u32;
             for j in 1..c.len().saturating_sub(1) {
                 fans.push_face(&[&[c[0], c[j], c[j + 1]]]);
-                regions.push(region);
+                fan_regions.push(region);
             }
         }
-        let q = chart::quality::quality_with(&fans, &regions, &self.primitives, |r, x| match self
-            .network
-            .regions
-            .get(r as usize)?
-            .kind
-        {
-            RegionKind::Primitive { primitive, .. } => Some(x - self.primitives[primitive].centre),
-            _ => None,
-        });
+        chart::quality::quality_with(&fans, &fan_regions, &self.primitives, |r, x| {
+            match self.network.regions.get(r as usize)?.kind {
+                RegionKind::Primitive { primitive, .. } => {
+                    Some(x - self.primitives[primitive].centre)
+                }
+                _ => None,
+            }
+        })
+    }
+
+    /// The tessellation at resolution `k` and its quality report.
+    pub fn quality(&self, k: usize) -> Result<(PolyMesh, chart::quality::Quality), EnvelopeError> {
+        let (mesh, regions) = self.mesh(k)?;
+        let q = self.quality_of(&mesh, &regions);
         Ok((mesh, q))
     }
 

@@ -123,8 +123,9 @@ impl Frame {
     /// The gradient of h at chart point c with scalar h that makes the surface tangent to the
     /// plane with unit normal n (`None` where n·N ≤ 0: the plane holds the chart's direction).
     pub fn gradient(&self, c: DVec2, h: f64, n: DVec3) -> Option<DVec2> {
-        let nn = n.dot(self.direction(c));
-        if nn <= 1e-12 * self.direction(c).length() {
+        let dir = self.direction(c);
+        let nn = n.dot(dir);
+        if nn <= 1e-12 * dir.length() {
             return None;
         }
         Some(match *self {
@@ -132,8 +133,7 @@ impl Frame {
             Frame::Radial { e1, e2, .. } => -h * DVec2::new(n.dot(e1), n.dot(e2)) / nn,
             // ∂₁O = 0, ∂₁N = e′(θ)/R̄; ∂₂O = d, ∂₂N = 0.
             Frame::Axial { d, rbar, .. } => {
-                let e = self.direction(c);
-                let e_prime = d.cross(e);
+                let e_prime = d.cross(dir);
                 DVec2::new(-h * n.dot(e_prime) / (rbar * nn), -n.dot(d) / nn)
             }
             // ∂ₐO = eₐ, ∂ₐN = 0.
@@ -151,15 +151,12 @@ impl Frame {
         }
     }
 
-    /// The scale from chart length to surface length near scalar h (1 for the height and axial
-    /// charts up to the turn of the surface, s for the radial one).
-    pub fn scale(&self, c: DVec2, h: f64) -> f64 {
+    /// The scale from chart length to surface length at scalar h, up to the turn of the surface:
+    /// s for the radial chart, R/R̄ for the axial one (at least 10⁻³), 1 for the height chart.
+    pub fn scale(&self, h: f64) -> f64 {
         match *self {
             Frame::Radial { .. } => h,
-            Frame::Axial { rbar, .. } => {
-                let _ = c;
-                (h / rbar).max(1e-3)
-            }
+            Frame::Axial { rbar, .. } => (h / rbar).max(1e-3),
             Frame::Height { .. } => 1.0,
         }
     }

@@ -211,15 +211,13 @@ pub fn tessellate_chart(
         }
     }
     // The chart's scale: surface length per chart length, at the corners.
-    let scale = {
-        let cs = chart.corners();
-        cs.iter()
-            .map(|&c| chart.frame.scale(c, chart.value(c)))
-            .sum::<f64>()
-            / cs.len() as f64
-    };
-    let step = spacing / scale.max(1e-12);
     let corners = chart.corners();
+    let scale = corners
+        .iter()
+        .map(|&c| chart.frame.scale(chart.value(c)))
+        .sum::<f64>()
+        / corners.len() as f64;
+    let step = spacing / scale.max(1e-12);
     let (mut lo, mut hi) = (corners[0], corners[0]);
     for c in &corners {
         lo = lo.min(*c);
@@ -228,13 +226,13 @@ pub fn tessellate_chart(
     // A layer inside the border where its segments are short or it turns sharply: a point on
     // the bisector at each such border point, 0.6 of its shorter segment in, so that the
     // triangles there are graded and a corner's angle is split.
-    let nbr = border.len();
+    let nb = border.len();
     let mut layer: Vec<DVec2> = Vec::new();
-    for k in 0..nbr {
+    for k in 0..nb {
         let (p, c, q) = (
-            border[(k + nbr - 1) % nbr].0,
+            border[(k + nb - 1) % nb].0,
             border[k].0,
-            border[(k + 1) % nbr].0,
+            border[(k + 1) % nb].0,
         );
         let (u, v) = ((p - c).normalize_or_zero(), (q - c).normalize_or_zero());
         let l = (p - c).length().min((q - c).length());
@@ -282,7 +280,7 @@ pub fn tessellate_chart(
             }
         }
     }
-    // Layer points closer than a third of their own spacing to one another are one.
+    // Layer points that coincide (two border points' bisectors meeting) are one.
     let mut kept: Vec<DVec2> = Vec::with_capacity(layer.len());
     for x in layer {
         if kept.iter().all(|y| y.distance(x) > 1e-9 * step) {
@@ -298,7 +296,6 @@ pub fn tessellate_chart(
     if pts.iter().any(|p| !(p.x.is_finite() && p.y.is_finite())) {
         return Err(fail("a point of its domain is not finite"));
     }
-    let nb = border.len();
     let edges: Vec<[usize; 2]> = (0..nb).map(|k| [k, (k + 1) % nb]).collect();
     let mut conflicts = 0;
     let mut dt =

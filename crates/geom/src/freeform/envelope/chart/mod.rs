@@ -13,13 +13,15 @@
 //!   normal in the curve's own plane, equal to unit(P − G) at its ends (§6.3);
 //! - a fusion edge: `n = unit(Π((1 − τ)n₀ + τn₁))`, n₀, n₁ its end vertices' normals.
 //!
-//! Inside, h is the **side blend** of the sides' ribbons ([`side`]):
+//! Inside a fusion quad's rectangle, ln R is the Coons interpolant of the four sides' data
+//! ([`Chart::coons`]); inside every other region, h is the **side blend** of the sides'
+//! ribbons ([`side`]):
 //! `h(c) = Σᵢ wᵢ Rᵢ(c) / Σᵢ wᵢ`, `wᵢ = 1/δᵢ²`, δᵢ the distance of c from side i's line.
 //! On side i every other weight vanishes to second order, so h and ∇h are side i's data: the
 //! two regions beside a curve share their tangent plane all along it (G1 by construction, not
 //! by fitting), and the surface does not depend on how the scene is listed. Because X is a
-//! graph of h over a convex domain with h > 0 (radial, axial) — the ribbons' profiles are
-//! chosen so that no ribbon falls below its floor — no region can fold or face inwards.
+//! graph of h over a convex domain with h > 0 (radial: no ribbon falls below its floor; axial:
+//! R = exp(F)), no region can fold or face inwards.
 //!
 //! **Enclosure of the faces.** On a primitive's chart the face itself is s = 1. Every network
 //! curve of the primitive bulges outward (s ≥ 1 on the sides), and the slope across a side is
@@ -57,6 +59,48 @@ pub struct Chart {
     pub frame: Frame,
     pub sides: Vec<ChartSide>,
     pub pieces: Vec<Vec<PatchSide>>,
+    /// A fusion quad's rectangle: the Coons blend's corner data ([`Chart::coons`]), computed
+    /// once; `None` for the side blend.
+    coons: Option<[Corner; 4]>,
+}
+
+/// A corner of a fusion quad's rectangle in ln R and (u, v) units: the value, ∂u, ∂v, and the
+/// twist as the bottom or top side gives it (its ∂v differentiated along u) and as the left or
+/// right side gives it (its ∂u differentiated along v).
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct Corner {
+    h: f64,
+    du: f64,
+    dv: f64,
+    twist_from_u_side: f64,
+    twist_from_v_side: f64,
+}
+
+/// The rectangle of a fusion quad's chart: sides 0 (z = z₀), 1 (x = x₁), 2 (z = z₁), 3 (x = x₀).
+struct Rect {
+    x0: f64,
+    z0: f64,
+    w: f64,
+    d: f64,
+}
+
+/// A side's data at a point of the rectangle in ln R: value and gradient ∇ln R = ∇R/R.
+fn log_data(d: side::Data) -> side::Data {
+    side::Data {
+        h: d.h.ln(),
+        grad: d.grad / d.h,
+        kappa: d.kappa,
+    }
+}
+
+/// Side `s` (along x) at x, in ln R.
+fn along_x(s: &ChartSide, x: f64) -> side::Data {
+    log_data(s.data((x - s.a.x) / (s.b.x - s.a.x)))
+}
+
+/// Side `s` (along z) at z, in ln R.
+fn along_z(s: &ChartSide, z: f64) -> side::Data {
+    log_data(s.data((z - s.a.y) / (s.b.y - s.a.y)))
 }
 
 /// Cubic Hermite basis: values at 0 and 1, then derivatives at 0 and 1.
@@ -74,10 +118,60 @@ impl Chart {
     /// The scalar at chart point c: the Coons blend on a fusion quad's rectangle, the side
     /// blend elsewhere.
     pub fn value(&self, c: DVec2) -> f64 {
-        if self.is_rectangle() {
-            return self.coons(c);
+        match &self.coons {
+            Some(corners) => self.coons(c, corners),
+            None => self.side_blend(c),
         }
-        self.side_blend(c)
+    }
+
+    fn rect(&self) -> Rect {
+        let (left, right, bottom, top) = (
+            &self.sides[3],
+            &self.sides[1],
+            &self.sides[0],
+            &self.sides[2],
+        );
+        Rect {
+            x0: left.a.x,
+            z0: bottom.a.y,
+            w: right.a.x - left.a.x,
+            d: top.a.y - bottom.a.y,
+        }
+    }
+
+    /// The corner data of the rectangle, corners (0, 0), (1, 0), (0, 1), (1, 1) in (u, v); the
+    /// twists are difference quotients taken from the corner inwards.
+    fn coons_corners(&self) -> [Corner; 4] {
+        let Rect { x0, z0, w, d } = self.rect();
+        let [bottom, right, top, left] = [
+            &self.sides[0],
+            &self.sides[1],
+            &self.sides[2],
+            &self.sides[3],
+        ];
+        let corner = |su: &ChartSide, sv: &ChartSide, at_u: f64, at_v: f64| {
+            // su runs along x (bottom or top) through this corner, sv along z (left or right).
+            let eps = 1e-6;
+            let e_u = if at_u == 0.0 { eps } else { -eps };
+            let e_v = if at_v == 0.0 { eps } else { -eps };
+            let x = x0 + at_u * w;
+            let z = z0 + at_v * d;
+            let here = along_x(su, x);
+            let there = along_z(sv, z);
+            Corner {
+                h: here.h,
+                du: here.grad.x * w,
+                dv: here.grad.y * d,
+                twist_from_u_side: (along_x(su, x + e_u * w).grad.y - here.grad.y) * d / e_u,
+                twist_from_v_side: (along_z(sv, z + e_v * d).grad.x - there.grad.x) * w / e_v,
+            }
+        };
+        [
+            corner(bottom, left, 0.0, 0.0),
+            corner(bottom, right, 1.0, 0.0),
+            corner(top, left, 0.0, 1.0),
+            corner(top, right, 1.0, 1.0),
+        ]
     }
 
     /// R = exp(F), F the bicubically blended Coons interpolant of ln R — the four sides'
@@ -86,75 +180,41 @@ impl Chart {
     /// chart, sides 0 (z = 0), 1 (x = x₁), 2 (z = D) and 3 (x = x₀). R > 0 whatever the data (a
     /// graph about the axis), and a strip that does not change along the axis is reproduced
     /// exactly — the strip between two equal aligned primitives is their section swept along d.
-    fn coons(&self, c: DVec2) -> f64 {
+    fn coons(&self, c: DVec2, [c00, c10, c01, c11]: &[Corner; 4]) -> f64 {
+        let Rect { x0, z0, w, d } = self.rect();
         let [bottom, right, top, left] = [
             &self.sides[0],
             &self.sides[1],
             &self.sides[2],
             &self.sides[3],
         ];
-        let (x0, x1) = (left.a.x, right.a.x);
-        let (z0, z1) = (bottom.a.y, top.a.y);
-        let (w, d) = (x1 - x0, z1 - z0);
         let u = (c.x - x0) / w;
         let v = (c.y - z0) / d;
         // Side data at the point's projections, in (u, v) units: value and the slope across.
-        let log = |d: side::Data| side::Data {
-            h: d.h.ln(),
-            grad: d.grad / d.h,
-            kappa: d.kappa,
-        };
-        let along_x = |s: &side::ChartSide, x: f64| log(s.data((x - s.a.x) / (s.b.x - s.a.x)));
-        let along_z = |s: &side::ChartSide, z: f64| log(s.data((z - s.a.y) / (s.b.y - s.a.y)));
         let (b, t) = (along_x(bottom, c.x), along_x(top, c.x));
         let (l, r) = (along_z(left, c.y), along_z(right, c.y));
         let pu = hermite(u);
         let pv = hermite(v);
         let p_u = pu[0] * l.h + pu[1] * r.h + pu[2] * l.grad.x * w + pu[3] * r.grad.x * w;
         let p_v = pv[0] * b.h + pv[1] * t.h + pv[2] * b.grad.y * d + pv[3] * t.grad.y * d;
-        // Corner data: value, ∂u, ∂v, and the twist from each side's slope's change along it.
-        let corner = |su: &side::ChartSide, sv: &side::ChartSide, at_u: f64, at_v: f64| {
-            // su runs along x (bottom or top) at this corner's end, sv along z (left or right).
-            let eps = 1e-6;
-            let e_u = if at_u == 0.0 { eps } else { -eps };
-            let e_v = if at_v == 0.0 { eps } else { -eps };
-            let x = x0 + at_u * w;
-            let z = z0 + at_v * d;
-            let here = along_x(su, x);
-            let dv_along_u = (along_x(su, x + e_u * w).grad.y * d - here.grad.y * d) / e_u;
-            let there = along_z(sv, z);
-            let du_along_v = (along_z(sv, z + e_v * d).grad.x * w - there.grad.x * w) / e_v;
-            (
-                here.h,
-                here.grad.x * w,
-                here.grad.y * d,
-                dv_along_u,
-                du_along_v,
-            )
+        // Gregory's twist: the bottom or top side's at u = 0 or 1, the left or right side's at
+        // v = 0 or 1, blended between.
+        let twist = |k: &Corner, a: f64, b: f64| {
+            if a + b <= 0.0 {
+                0.5 * (k.twist_from_u_side + k.twist_from_v_side)
+            } else {
+                (a * k.twist_from_u_side + b * k.twist_from_v_side) / (a + b)
+            }
         };
-        let c00 = corner(bottom, left, 0.0, 0.0);
-        let c10 = corner(bottom, right, 1.0, 0.0);
-        let c01 = corner(top, left, 0.0, 1.0);
-        let c11 = corner(top, right, 1.0, 1.0);
-        // Gregory's twist: the bottom or top side's at v = 0 or 1, the left or right side's at
-        // u = 0 or 1, blended between.
-        let twist =
-            |(_, _, _, from_uside, from_vside): (f64, f64, f64, f64, f64), a: f64, b: f64| {
-                if a + b <= 0.0 {
-                    0.5 * (from_uside + from_vside)
-                } else {
-                    (a * from_uside + b * from_vside) / (a + b)
-                }
-            };
         let t00 = twist(c00, v, u);
         let t10 = twist(c10, v, 1.0 - u);
         let t01 = twist(c01, 1.0 - v, u);
         let t11 = twist(c11, 1.0 - v, 1.0 - u);
         let m = [
-            [c00.0, c01.0, c00.2, c01.2],
-            [c10.0, c11.0, c10.2, c11.2],
-            [c00.1, c01.1, t00, t01],
-            [c10.1, c11.1, t10, t11],
+            [c00.h, c01.h, c00.dv, c01.dv],
+            [c10.h, c11.h, c10.dv, c11.dv],
+            [c00.du, c01.du, t00, t01],
+            [c10.du, c11.du, t10, t11],
         ];
         let mut p_uv = 0.0;
         for i in 0..4 {
@@ -467,10 +527,15 @@ fn chart(
             return Err(chart_error(r, "its domain is not convex"));
         }
     }
-    Ok(Chart {
+    let mut chart = Chart {
         region: r,
         frame,
         sides,
         pieces: along,
-    })
+        coons: None,
+    };
+    if chart.is_rectangle() {
+        chart.coons = Some(chart.coons_corners());
+    }
+    Ok(chart)
 }
