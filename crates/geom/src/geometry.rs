@@ -126,7 +126,7 @@ pub fn quad_crosses_itself([a, b, c, d]: [DVec3; 4], n: DVec3) -> bool {
 /// one line. An orientation (twice a triangle's signed area) within `tolerance` of zero counts
 /// as zero, so only a clear miss is a miss: with `tolerance` = 0 the test is exact (an extruded
 /// outline's check, `solid.rs`); a check that may only err towards "they meet" passes its
-/// rounding (a patch's outline seen along its normal, `folds.rs::projects_one_to_one`).
+/// rounding.
 /// Segments on one line (all four orientations zero) meet where their spans along it overlap.
 pub fn segments_meet(a0: DVec2, a1: DVec2, b0: DVec2, b1: DVec2, tolerance: f64) -> bool {
     let sign = |x: f64| {

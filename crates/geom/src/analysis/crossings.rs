@@ -216,7 +216,7 @@ impl FaceTris {
 const CHUNK: usize = 1 << 12;
 
 /// The unit normal of triangle `t`, none when it has no area.
-pub(crate) fn plane(t: &[DVec3; 3]) -> Option<DVec3> {
+fn plane(t: &[DVec3; 3]) -> Option<DVec3> {
     let n = (t[1] - t[0]).cross(t[2] - t[0]);
     let l = n.length();
     (l > 0.0).then(|| n / l)
@@ -259,12 +259,7 @@ pub fn triangles_cross(a: [DVec3; 3], b: [DVec3; 3]) -> bool {
 }
 
 /// [`triangles_cross`] with the triangles' unit normals known ([`plane`]).
-pub(crate) fn planes_cross(
-    a: [DVec3; 3],
-    na: Option<DVec3>,
-    b: [DVec3; 3],
-    nb: Option<DVec3>,
-) -> bool {
+fn planes_cross(a: [DVec3; 3], na: Option<DVec3>, b: [DVec3; 3], nb: Option<DVec3>) -> bool {
     let scale2 = a[1..]
         .iter()
         .chain(&b)

@@ -12,7 +12,6 @@ mod winding;
 
 pub use counts::{MeshCounts, counts};
 pub use crossings::{crossed_by, crossing_faces, crossings, crossings_of, triangles_cross};
-pub(crate) use crossings::{plane, planes_cross};
 pub use curvature::mean_curvature;
 pub use fillet::{FilletError, FilletMeasure, FilletSummary, measure_fillet, measure_fillets};
 pub use winding::{Inside, winding_number};

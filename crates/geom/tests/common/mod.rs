@@ -38,13 +38,3 @@ pub fn cubes_on_a_sphere(
         })
         .collect()
 }
-
-/// The cells of `e`'s patches turned past their corners' normals at the report's 8 × 8 samples
-/// ([`prism_geom::freeform::envelope::folds::folds_past_corners`]: the build's test, which
-/// counts a step along a border too, so none of these means the report has none either).
-#[allow(dead_code)] // not every test crate that includes this module uses it
-pub fn past_corners(
-    e: &prism_geom::freeform::envelope::Envelope,
-) -> Vec<prism_geom::freeform::envelope::folds::Fold> {
-    prism_geom::freeform::envelope::folds::folds_past_corners(&e.network, &e.patches, 8)
-}

@@ -544,141 +544,16 @@ impl Clipper<'_> {
     }
 }
 
-/// Corners closer than this (radians, seen from the centre) to a corner of a higher rank (a
-/// point where two cuts cross above a primitive's vertex above a point where a cut crosses an
-/// edge) are drawn onto it: the piece between them would be a sliver side of a region (a cut
-/// passing this close to a vertex, or the ray of two cuts this close to an edge), and the
-/// patches on such a side fold at small t (envelope.md, "Corners drawn together").
-pub(super) const NEAR_CORNER: f64 = 0.02;
-
-/// A corner is drawn onto another only where the way is at most this share of its sides to the
-/// corners that stay apart from it.
-const SHORT_SIDE: f64 = 0.1;
-
-fn rank(at: At) -> u8 {
-    match at {
-        At::Edge { .. } => 0,
-        At::Vertex(_) => 1,
-        At::Inside { .. } => 2,
-    }
-}
-
-fn same_corner(a: &Corner, b: &Corner, g: DVec3) -> bool {
-    (a.flat - g).normalize().distance((b.flat - g).normalize()) <= SAME_DIRECTION
-}
-
-/// The corners of the clipped faces `polys` drawn onto another ([`NEAR_CORNER`]): (corner,
-/// the corner it becomes), each to the nearest of a higher rank, and on from there. Kept only
-/// where the way is short beside the corner's other sides ([`SHORT_SIDE`]) and no face is drawn
-/// into two corners or through one corner twice; leaving one out can only make the others' ways
-/// look longer, so the leaving out is repeated until nothing more goes.
-fn near_corners(polys: &[(usize, Vec<Corner>)], g: DVec3) -> Vec<(Corner, Corner)> {
-    let mut all: Vec<Corner> = Vec::new();
-    for c in polys.iter().flat_map(|(_, poly)| poly) {
-        if !all.iter().any(|a| same_corner(a, c, g)) {
-            all.push(*c);
-        }
-    }
-    let dir = |c: &Corner| (c.flat - g).normalize();
-    let target = |c: &Corner| {
-        all.iter()
-            .filter(|w| rank(w.at) > rank(c.at))
-            .map(|w| (angle(dir(c), dir(w)), *w))
-            .filter(|(a, _)| *a <= NEAR_CORNER)
-            .min_by(|x, y| x.0.total_cmp(&y.0))
-            .map(|(_, w)| w)
-    };
-    let mut moved: Vec<(Corner, Corner)> = Vec::new();
-    for c in &all {
-        let mut to = target(c);
-        // On to the end: an edge's point drawn onto a vertex that is drawn onto a ray.
-        while let Some(w) = to.and_then(|w| target(&w)) {
-            to = Some(w);
-        }
-        if let Some(w) = to {
-            moved.push((*c, w));
-        }
-    }
-    loop {
-        let end = |c: &Corner| {
-            moved
-                .iter()
-                .find(|(from, _)| same_corner(from, c, g))
-                .map_or(*c, |m| m.1)
-        };
-        // The corner's sides to corners that stay apart from it must be much longer than the
-        // way it moves: drawn across a side of comparable length, the sides at the far end
-        // would turn past each other.
-        let far = |c: &Corner, w: &Corner| {
-            let way = angle(dir(c), dir(w));
-            polys.iter().any(|(_, poly)| {
-                let m = poly.len();
-                (0..m).filter(|&i| same_corner(&poly[i], c, g)).any(|i| {
-                    [poly[(i + 1) % m], poly[(i + m - 1) % m]]
-                        .iter()
-                        .filter(|nb| !same_corner(&end(nb), w, g))
-                        .any(|nb| way > SHORT_SIDE * angle(dir(c), dir(nb)))
-                })
-            })
-        };
-        // A face drawn into one point vanishes (a small piece where cuts cross near an edge),
-        // but never into two: the faces beside it would take its sides, two pieces of one cut
-        // meeting at a straight corner of theirs. Nor may a face pass one corner twice.
-        let spoiled = |poly: &Vec<Corner>| {
-            let mut kept: Vec<Corner> = Vec::new();
-            for c in poly.iter().map(end) {
-                if kept.last().is_none_or(|k| !same_corner(k, &c, g)) {
-                    kept.push(c);
-                }
-            }
-            while kept.len() > 1 && same_corner(&kept[0], &kept[kept.len() - 1], g) {
-                kept.pop();
-            }
-            let twice = (0..kept.len()).any(|i| (0..i).any(|j| same_corner(&kept[i], &kept[j], g)));
-            kept.len() == 2 || twice
-        };
-        let flat: Vec<&Vec<Corner>> = polys
-            .iter()
-            .map(|(_, poly)| poly)
-            .filter(|poly| spoiled(poly))
-            .collect();
-        let before = moved.len();
-        let keep: Vec<bool> = moved
-            .iter()
-            .map(|(c, w)| {
-                !far(c, w)
-                    && !flat
-                        .iter()
-                        .any(|poly| poly.iter().any(|x| same_corner(x, c, g)))
-            })
-            .collect();
-        let mut keep = keep.into_iter();
-        moved.retain(|_| keep.next().unwrap_or(false));
-        if moved.len() == before {
-            return moved;
-        }
-    }
-}
-
-/// What [`add_primitive`] adds: each cut's section, and the network vertices other corners
-/// were drawn onto ([`NEAR_CORNER`]).
-pub struct Clipped {
-    pub sections: Vec<Vec<PatchSide>>,
-    pub drawn: Vec<usize>,
-}
-
 /// Adds primitive `index` to `net`, trimmed to `(x − G)·d_k ≤ 0` for every unit `d_k` in
-/// `cuts`: its kept vertices, silhouette points, curves and regions; with `draw_together`,
-/// corners near one of a higher rank drawn onto it first ([`NEAR_CORNER`]). Returns each cut's
+/// `cuts`: its kept vertices, silhouette points, curves and regions. Returns each cut's
 /// section: the silhouette edges on it, in the direction the kept faces run along them.
 pub fn add_primitive(
     net: &mut Network,
     p: &Primitive,
     index: usize,
     cuts: &[DVec3],
-    draw_together: bool,
     monotone: bool,
-) -> Result<Clipped, EnvelopeError> {
+) -> Result<Vec<Vec<PatchSide>>, EnvelopeError> {
     let tol = ON_PLANE * p.radius;
     let mut clip = Clipper {
         p,
@@ -696,38 +571,15 @@ pub fn add_primitive(
         .map(|f| (f, clip_face(p, f, cuts, tol)))
         .filter(|(_, poly)| !poly.is_empty())
         .collect();
-    let moved = if draw_together {
-        near_corners(&polys, p.centre)
-    } else {
-        Vec::new()
-    };
-    let drawn_onto = |c: &Corner| {
-        moved
-            .iter()
-            .find(|(from, _)| same_corner(from, c, p.centre))
-            .map(|m| m.1)
-    };
-    // Every corner that stays is located in its own face first, so that one drawn onto it
-    // from another face finds it (and the listing of the faces cannot change where it lies).
+    // Every corner is located in its own face first (the listing of the faces cannot change
+    // where it lies).
     for (_, poly) in &polys {
         let inside = clip.inside_corners(poly)?;
         for (c, l) in poly.iter().zip(inside) {
-            if drawn_onto(c).is_none() {
-                clip.vertex(net, c, l)?;
-            }
+            clip.vertex(net, c, l)?;
         }
     }
     for (f, poly) in polys {
-        let poly: Vec<Corner> = poly
-            .into_iter()
-            .map(|c| {
-                drawn_onto(&c).map_or(c, |to| Corner {
-                    flat: to.flat,
-                    at: to.at,
-                    along: c.along,
-                })
-            })
-            .collect();
         let ids = poly
             .iter()
             .map(|c| clip.vertex(net, c, None))
@@ -746,8 +598,7 @@ pub fn add_primitive(
                 Along::Edge(..) => (0..cuts.len())
                     .find(|&k| on_cut(k, poly[i].flat) && on_cut(k, poly[(i + 1) % m].flat)),
             };
-            // A side of two faces once corners are drawn together (a face piece between them
-            // collapsed) is one piece of the section.
+            // A side of two faces (a kept edge in a cut plane) is one piece of the section.
             if let Some(k) = cut
                 && !sections[k]
                     .iter()
@@ -769,9 +620,5 @@ pub fn add_primitive(
             },
         });
     }
-    let drawn = moved
-        .iter()
-        .filter_map(|(_, to)| clip.known((to.flat - p.centre).normalize()))
-        .collect();
-    Ok(Clipped { sections, drawn })
+    Ok(sections)
 }

@@ -21,12 +21,10 @@ pub mod edges;
 pub mod folds;
 pub mod fusion;
 pub mod hull;
-mod legs;
 pub mod nested;
 pub mod network;
 pub mod patches;
 pub mod primitive;
-pub mod reparam;
 pub mod tessellate;
 mod wrap;
 
@@ -204,46 +202,12 @@ pub fn envelope(spec: &EnvelopeSpec) -> Result<Envelope, EnvelopeError> {
 }
 
 /// The envelope of the primitives `active` (ascending) of `primitives`, the others reported
-/// as removed: with corners drawn together ([`clip::NEAR_CORNER`]), unless the patches of the
-/// regions at a corner drawn onto are not G1 across their borders (a region of a shape the
-/// patches cannot follow, envelope.md, "Corners drawn together"); then as they lie.
+/// as removed.
 fn assemble(
     spec: &EnvelopeSpec,
     primitives: Vec<Primitive>,
     active: Vec<usize>,
 ) -> Result<Envelope, EnvelopeError> {
-    if spec.patches == Surfacing::Charts {
-        return assemble_with(spec, primitives, active, false).map(|(e, _)| e);
-    }
-    let (e, drawn) = assemble_with(spec, primitives.clone(), active.clone(), true)?;
-    if drawn.is_empty() {
-        return Ok(e);
-    }
-    let at_drawn = |r: usize| {
-        e.network.regions[r].sides.iter().any(|s| {
-            let c = &e.network.curves[s.curve];
-            c.ends.iter().any(|v| drawn.contains(v))
-        })
-    };
-    // Five samples a side find a patch turned back along a border (in heap 500308 at t = 0.01
-    // it spans a fifth of the side); sixteen would cost the seven 0.8 ms a build, not 0.3.
-    let jump = patches::largest_border_jump_on(&e.network, &e.patches, 4, at_drawn);
-    if jump < G1_CHECK {
-        return Ok(e);
-    }
-    assemble_with(spec, primitives, active, false).map(|(e, _)| e)
-}
-
-/// Normal jump (degrees) across a border that counts as not G1 in [`assemble`]'s check: the
-/// construction gives 10⁻¹⁰° and less.
-const G1_CHECK: f64 = 1e-6;
-
-fn assemble_with(
-    spec: &EnvelopeSpec,
-    primitives: Vec<Primitive>,
-    active: Vec<usize>,
-    draw_together: bool,
-) -> Result<(Envelope, Vec<usize>), EnvelopeError> {
     let centres: Vec<DVec3> = primitives.iter().map(|p| p.centre).collect();
     let largest = primitives.iter().map(|p| p.radius).fold(0.0, f64::max);
     let extent = centres
@@ -254,7 +218,6 @@ fn assemble_with(
     let lay = hull::layout_swallowing(&centres, &radii, active, 1e-9 * extent, SWALLOW);
     let mut network = Network::default();
     let mut sections: HashMap<(usize, usize), Vec<PatchSide>> = HashMap::new();
-    let mut drawn = Vec::new();
     let near_angle = match spec.patches {
         Surfacing::Charts => 0.0,
         Surfacing::Paper => fusion::NEAR_ANGLE,
@@ -279,11 +242,9 @@ fn assemble_with(
             &primitives[a],
             a,
             &cuts,
-            draw_together,
             spec.patches == Surfacing::Charts,
         )?;
-        drawn.extend(found.drawn);
-        for (b, s) in partners.into_iter().zip(found.sections) {
+        for (b, s) in partners.into_iter().zip(found) {
             sections.insert((a, b), s);
         }
     }
@@ -363,41 +324,34 @@ fn assemble_with(
             })
             .collect();
         let charts = chart::charts(&network, &primitives, &lids)?;
-        return Ok((
-            Envelope {
-                primitives,
-                network,
-                regions,
-                patches: Vec::new(),
-                folded: Vec::new(),
-                removed: lay.removed,
-                straight,
-                surfacing: Surfacing::Charts,
-                charts,
-                edge_length,
-            },
-            drawn,
-        ));
-    }
-    let (network, patches, folded, _) = legs::patched(network, spec.basis, &primitives);
-    // The build repairs every cell turned past its corners' normals; the report names those
-    // turned past the plane along their nearest side too (a step along a border is no fold).
-    let folded = folds::reported(&network, &patches, &folded);
-    Ok((
-        Envelope {
+        return Ok(Envelope {
             primitives,
             network,
             regions,
-            patches,
-            folded,
+            patches: Vec::new(),
+            folded: Vec::new(),
             removed: lay.removed,
             straight,
-            surfacing: Surfacing::Paper,
-            charts: Vec::new(),
+            surfacing: Surfacing::Charts,
+            charts,
             edge_length,
-        },
-        drawn,
-    ))
+        });
+    }
+    network.assign_bases(spec.basis);
+    let patches = patches::build(&mut network, &primitives);
+    let folded = folds::folds(&network, &patches, folds::FOLD_CELLS);
+    Ok(Envelope {
+        primitives,
+        network,
+        regions,
+        patches,
+        folded,
+        removed: lay.removed,
+        straight,
+        surfacing: Surfacing::Paper,
+        charts: Vec::new(),
+        edge_length,
+    })
 }
 
 /// The first face with a point that is not finite, if any (the face of the first such point).
@@ -464,7 +418,8 @@ impl Envelope {
     }
 
     /// The quality report ([`chart::quality`]) of [`Envelope::mesh`]'s mesh and regions; a
-    /// paper build's polygons are measured as fans.
+    /// paper build's polygons are measured as fans, a triangle counted inward when it faces
+    /// its primitive's centre or the segment between a fusion strip's two centres.
     pub fn quality_of(&self, mesh: &PolyMesh, regions: &[u32]) -> chart::quality::Quality {
         if self.surfacing == Surfacing::Charts {
             return chart::quality::quality(mesh, regions, &self.charts, &self.primitives);
@@ -484,7 +439,14 @@ impl Envelope {
                 RegionKind::Primitive { primitive, .. } => {
                     Some(x - self.primitives[primitive].centre)
                 }
-                _ => None,
+                // Away from the segment between the two centres.
+                RegionKind::Fusion { from, to } => {
+                    let (a, b) = (self.primitives[from].centre, self.primitives[to].centre);
+                    let d = b - a;
+                    let s = ((x - a).dot(d) / d.length_squared()).clamp(0.0, 1.0);
+                    Some(x - (a + s * d))
+                }
+                RegionKind::Lid { .. } => None,
             }
         })
     }

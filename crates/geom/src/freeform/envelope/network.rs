@@ -211,16 +211,6 @@ impl Network {
         pins.insert(at, (tau, v));
     }
 
-    /// Undoes every vertex and curve added after the first `vertices` and `curves` (a trial
-    /// split), and removes the pins those vertices left on the curves that stay.
-    pub(crate) fn truncate(&mut self, vertices: usize, curves: usize) {
-        self.vertices.truncate(vertices);
-        self.curves.truncate(curves);
-        for c in &mut self.curves {
-            c.pins.retain(|&(_, v)| v < vertices);
-        }
-    }
-
     /// The derivative of a side's curve piece at its start (`end = false`) or end, in the
     /// piece's own parameter.
     pub(crate) fn side_derivative(&self, s: &PatchSide, end: bool) -> DVec3 {
