@@ -46,6 +46,7 @@ fn scene(name: &str) -> EnvelopeSpec {
         resolution: 8,
         basis: Default::default(),
         patches: Default::default(),
+        enclosure: Default::default(),
     }
 }
 
@@ -71,6 +72,7 @@ const SCENES: [&str; 9] = [
 fn with(name: &str, surfacing: Surfacing) -> EnvelopeSpec {
     EnvelopeSpec {
         patches: surfacing,
+        enclosure: Default::default(),
         ..scene(name)
     }
 }

@@ -16,6 +16,7 @@ fn scene(shape: Shape, t: f64) -> EnvelopeSpec {
         resolution: 8,
         basis: Default::default(),
         patches: prism_geom::freeform::envelope::Surfacing::Paper,
+        enclosure: Default::default(),
     }
 }
 
@@ -197,6 +198,7 @@ fn the_listing_order_does_not_matter() {
                 resolution: 8,
                 basis: Default::default(),
                 patches: prism_geom::freeform::envelope::Surfacing::Paper,
+                enclosure: Default::default(),
             })
             .unwrap()
             .tessellate(4)
@@ -369,6 +371,7 @@ fn bad_primitives_are_named() {
             resolution: 8,
             basis: Default::default(),
             patches: prism_geom::freeform::envelope::Surfacing::Paper,
+            enclosure: Default::default(),
         })
         .unwrap_err()
         .to_string()
@@ -408,6 +411,7 @@ fn bad_primitives_are_named() {
             resolution: 8,
             basis: Default::default(),
             patches: prism_geom::freeform::envelope::Surfacing::Paper,
+            enclosure: Default::default(),
         }),
         Err(EnvelopeError::Empty)
     ));
@@ -429,6 +433,7 @@ fn pair(a: PrimitiveInput, b: PrimitiveInput, t: f64) -> Envelope {
         resolution: 8,
         basis: Default::default(),
         patches: prism_geom::freeform::envelope::Surfacing::Paper,
+        enclosure: Default::default(),
     })
     .unwrap()
 }
@@ -579,6 +584,7 @@ fn primitives_with_one_centre_are_refused() {
         resolution: 8,
         basis: Default::default(),
         patches: prism_geom::freeform::envelope::Surfacing::Paper,
+        enclosure: Default::default(),
     })
     .unwrap_err();
     assert_eq!(e, EnvelopeError::SameCentre { a: 0, b: 1 });
@@ -593,6 +599,7 @@ fn primitives_with_one_centre_are_refused() {
         resolution: 8,
         basis: Default::default(),
         patches: prism_geom::freeform::envelope::Surfacing::Paper,
+        enclosure: Default::default(),
     })
     .unwrap_err();
     assert_eq!(e, EnvelopeError::SameCentre { a: 1, b: 3 });

@@ -1,5 +1,5 @@
 //! `prism envelope SCENE.json -o OUT.obj|.prism.json|.stl|.glb [--t T] [--resolution K]
-//! [--patches charts|paper] [--basis virtual|one-sided] [--curves CURVES.obj]`: a smooth surface enveloping convex primitives (seed 004;
+//! [--patches charts|paper] [--enclosure lifted|paper] [--basis virtual|one-sided] [--curves CURVES.obj]`: a smooth surface enveloping convex primitives (seed 004;
 //! docs/algorithms/envelope.md). SCENE is `{"t": 1.0, "primitives": [{"vertices": [[x, y, z],
 //! ...], "faces": [[i, ...], ...], "t": optional, "vertex_t": [optional, per vertex]}]}`, or a
 //! `.prism.json` with an `"envelope"` block of that form. Primitives, vertices and faces are
@@ -36,6 +36,12 @@ pub struct EnvelopeArgs {
     /// charts).
     #[arg(long, value_parser = ["charts", "paper"])]
     pub patches: Option<String>,
+    /// What holds the corners the silhouette plane through each centre cuts off: `lifted`
+    /// (the fusion strips raised over them: every primitive inside) or `paper` (the paper's
+    /// central cut as it lies, for the teaching gallery; default: the scene's, else lifted).
+    /// The charts only.
+    #[arg(long, value_parser = ["lifted", "paper"])]
+    pub enclosure: Option<String>,
     /// G1 construction of the borders: `virtual` (both sides from the crossing curves;
     /// independent of the listing) or `one-sided` (the paper's: the region listed first leads
     /// each border; default: the scene's, else virtual).
@@ -107,6 +113,11 @@ pub fn run(a: EnvelopeArgs) -> Result<(), CliError> {
     match a.patches.as_deref() {
         Some("paper") => spec.patches = Surfacing::Paper,
         Some(_) => spec.patches = Surfacing::Charts,
+        None => {}
+    }
+    match a.enclosure.as_deref() {
+        Some("paper") => spec.enclosure = prism_geom::freeform::envelope::Enclosure::Paper,
+        Some(_) => spec.enclosure = prism_geom::freeform::envelope::Enclosure::Lifted,
         None => {}
     }
     match a.basis.as_deref() {

@@ -283,6 +283,7 @@ mod tests {
                 resolution: 6,
                 basis: Default::default(),
                 patches: crate::freeform::envelope::Surfacing::Paper,
+                enclosure: Default::default(),
             }),
         };
         let text = document_to_string(&doc);

@@ -17,7 +17,9 @@ use super::viewport;
 use build::{Built, Overlays};
 use glam::{DQuat, DVec3};
 use prism_geom::freeform::Basis;
-use prism_geom::freeform::envelope::{EnvelopeSpec, Placement, PrimitiveInput, Shape, Surfacing};
+use prism_geom::freeform::envelope::{
+    Enclosure, EnvelopeSpec, Placement, PrimitiveInput, Shape, Surfacing,
+};
 use prism_viewport::Scene;
 use std::sync::Arc;
 use std::sync::mpsc::{Receiver, RecvTimeoutError};
@@ -91,6 +93,7 @@ pub fn of_shape(shape: Shape) -> EnvelopeSpec {
         resolution: 8,
         basis: Default::default(),
         patches: Default::default(),
+        enclosure: Default::default(),
     }
 }
 
@@ -442,6 +445,23 @@ impl EnvelopeTab {
         if surfacing != spec.patches {
             let mut s = spec.clone();
             s.patches = surfacing;
+            self.set(Some(s), None);
+        }
+        let mut enclosure = spec.enclosure;
+        ui.add_enabled_ui(spec.patches == Surfacing::Charts, |ui| {
+            ui.horizontal(|ui| {
+                ui.label("Cut corners");
+                ui.radio_value(&mut enclosure, Enclosure::Lifted, "held")
+                    .on_hover_text("The fusion strips are raised over the corners the silhouette plane through each centre cuts off: every primitive lies inside (the default)");
+                ui.radio_value(&mut enclosure, Enclosure::Paper, "paper's cut")
+                    .on_hover_text("The paper's central cut as it lies: at small t a cut-off corner can poke out (named in the Enclosure row)");
+            });
+        })
+        .response
+        .on_disabled_hover_text("The charts only: the paper's patches keep the paper's cut");
+        if enclosure != spec.enclosure {
+            let mut s = spec.clone();
+            s.enclosure = enclosure;
             self.set(Some(s), None);
         }
         let mut res = spec.resolution;

@@ -101,6 +101,35 @@ pub struct EnvelopeSpec {
     /// How the regions are filled: `charts` (default) or the paper's `paper` patches.
     #[serde(default, skip_serializing_if = "is_charts")]
     pub patches: Surfacing,
+    /// Whether the charts' fusion strips are lifted over the primitives' removed corners
+    /// (`lifted`, default) or keep the paper's central cut (`paper`).
+    #[serde(default, skip_serializing_if = "is_lifted")]
+    pub enclosure: Enclosure,
+}
+
+fn is_lifted(e: &Enclosure) -> bool {
+    *e == Enclosure::Lifted
+}
+
+/// What holds the primitives' corners that the silhouette plane through each centre cuts off
+/// (docs/algorithms/envelope.md, "Enclosure").
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Enclosure {
+    /// The fusion strips lifted over every removed corner and edge ([`chart::lift`]).
+    #[default]
+    Lifted,
+    /// The paper's central cut as it lies: removed corners may poke out at small t.
+    Paper,
+}
+
+impl Enclosure {
+    pub fn name(self) -> &'static str {
+        match self {
+            Enclosure::Lifted => "lifted",
+            Enclosure::Paper => "paper",
+        }
+    }
 }
 
 fn is_virtual(b: &Basis) -> bool {
@@ -138,6 +167,8 @@ pub struct Envelope {
     /// `patches`).
     pub surfacing: Surfacing,
     pub charts: Vec<chart::Chart>,
+    /// The fusion strips' lifts over the removed corners ([`Enclosure::Lifted`], charts only).
+    pub lifts: Vec<chart::lift::Lift>,
     /// The mesh spacing for resolution 1: the mean length of the primitives' edges.
     pub edge_length: f64,
 }
@@ -324,6 +355,10 @@ fn assemble(
             })
             .collect();
         let charts = chart::charts(&network, &primitives, &lids)?;
+        let lifts = match spec.enclosure {
+            Enclosure::Lifted => chart::lift::lifts(&network, &charts, &primitives),
+            Enclosure::Paper => Vec::new(),
+        };
         return Ok(Envelope {
             primitives,
             network,
@@ -334,6 +369,7 @@ fn assemble(
             straight,
             surfacing: Surfacing::Charts,
             charts,
+            lifts,
             edge_length,
         });
     }
@@ -350,6 +386,7 @@ fn assemble(
         straight,
         surfacing: Surfacing::Paper,
         charts: Vec::new(),
+        lifts: Vec::new(),
         edge_length,
     })
 }
@@ -394,14 +431,43 @@ impl Envelope {
             return Err(EnvelopeError::Resolution(k));
         }
         let spacing = self.edge_length / k as f64;
-        let (mesh, regions) =
+        let (mut mesh, regions) =
             chart::mesh::tessellate(&self.network, &self.charts, spacing, 64 * k)?;
+        self.lift(&mut mesh, &regions);
         if let Some(face) = non_finite_face(&mesh) {
             return Err(EnvelopeError::NonFinite {
                 patch: regions.get(face).copied().unwrap_or(0) as usize,
             });
         }
         Ok((mesh, regions))
+    }
+
+    /// Moves every vertex of a fusion strip's triangles by the strip's lift ([`chart::lift`]):
+    /// one map of the strip's neighbourhood, the identity to first order on its silhouette
+    /// borders and zero at its ends by a lid, so vertices shared with other regions stay put.
+    fn lift(&self, mesh: &mut PolyMesh, regions: &[u32]) {
+        if self.lifts.is_empty() {
+            return;
+        }
+        let mut by: Vec<Option<usize>> = vec![None; mesh.num_vertices()];
+        for (f, &r) in regions.iter().enumerate() {
+            let Some(RegionKind::Fusion { from, to }) =
+                self.network.regions.get(r as usize).map(|x| x.kind)
+            else {
+                continue;
+            };
+            let Some(l) = self.lifts.iter().position(|l| (l.from, l.to) == (from, to)) else {
+                continue;
+            };
+            for c in mesh.face_corners(f) {
+                by[mesh.corner_verts[c] as usize] = Some(l);
+            }
+        }
+        for (v, l) in by.into_iter().enumerate() {
+            if let Some(l) = l {
+                mesh.positions[v] = self.lifts[l].apply(mesh.positions[v]);
+            }
+        }
     }
 
     /// The tessellation at resolution `k` and the region of each face: the charts' triangles,

@@ -35,6 +35,7 @@
 //! levels off at r/h_f — the circumsphere's value at the face's foot.
 
 pub mod frame;
+pub mod lift;
 pub mod mesh;
 pub mod quality;
 pub mod side;

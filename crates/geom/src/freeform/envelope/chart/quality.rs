@@ -273,7 +273,7 @@ impl Quality {
             .collect();
         let (worst, m) = self.worst_enclosure().filter(|w| w.1 < -1e-6)?;
         Some(format!(
-            "{} primitive(s) not wholly inside the surface: primitive {worst} reaches {:.3} r outside (the silhouette plane through each centre, seed 004 §5.1, leaves a cut-off corner out where the part beyond it is wider than the section: envelope.md, \"Enclosure\"); primitives further apart or a t nearer 1 usually clear it",
+            "{} primitive(s) not wholly inside the surface: primitive {worst} reaches {:.3} r outside (a corner cut off by the silhouette plane through a centre, seed 004 §5.1, that no strip's lift reaches: past the partner's centre plane, beside a lid, or with the paper's cut: envelope.md, \"Enclosure\"); primitives further apart or a t nearer 1 usually clear it",
             out.len(),
             -m
         ))

@@ -1,0 +1,243 @@
+//! The strip's lift: the fusion strip raised over the primitives' removed corners
+//! (docs/algorithms/envelope.md, "Enclosure"; ALGORITHMS §11.8, §11.10 item 6).
+//!
+//! The paper cuts each primitive by the plane through its centre normal to d, the direction
+//! to its partner, and joins the two sections by a strip that leaves each section along d. A
+//! primitive wider beyond that plane than at it (a cube seen along a body diagonal) then has
+//! corners outside the strip at small t. The strip is a graph `R(θ, z)` about the axis
+//! `G_A + z·d` (`frame.rs`, Axial), so raising it keeps it a graph: the lifted strip is
+//!
+//! `R′(θ, z) = R(θ, z)·exp(L(θ, z))`, `L = Σ_v λ_v·b_θ(θ − θ_v)·b_z(z; z_v) ≥ 0`,
+//!
+//! one term for every point v of either primitive's removed part (vertices and points along its
+//! edges) that lies between the two silhouette planes, 0 < z_v < D, with
+//! `λ_v = max(0, ln(R_v(1 + μ)/R(θ_v, z_v)))`, μ = [`MARGIN`]. Every term is non-negative and
+//! equals λ_v at its own point, so `R′ ≥ R_v(1 + μ)` at every such point: the removed corners
+//! and edges lie inside. `b_z` rises from 0 at z = 0 to 1 at z_v and falls to 0 at z = D, `b_θ`
+//! falls from 1 to 0 at |θ − θ_v| = w_v, both smoothsteps (value and slope 0 at their ends, 1
+//! and 0 at the top). So L and its gradient vanish on both silhouette sections (the strip's
+//! borders with the primitives' charts, whose tangent planes it keeps: G1 as before), and the
+//! map `(θ, z, R) ↦ (θ, z, R·exp L)` is one smooth map of the strip's whole neighbourhood,
+//! applied alike to both quads beside a fusion edge (G1 kept there too). Where the strip ends
+//! at a lid (three or more primitives), w_v shrinks so that the term vanishes before that
+//! fusion edge: the lid's border is untouched.
+
+use super::Chart;
+use crate::freeform::envelope::network::{CurveKind, Network, RegionKind};
+use crate::freeform::envelope::primitive::Primitive;
+use glam::DVec3;
+use std::f64::consts::PI;
+
+/// A lifted point clears the removed corner by this share of its distance from the axis.
+pub const MARGIN: f64 = 0.05;
+
+/// The half-width (radians) of a term's bump about the axis.
+pub const WIDTH: f64 = 0.5;
+
+/// Points along each edge of a removed part that the lift holds, besides its ends.
+const EDGE_POINTS: usize = 3;
+
+/// One term of L.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct Bump {
+    theta: f64,
+    z: f64,
+    lambda: f64,
+    width: f64,
+}
+
+/// The lift of the strip between primitives `from` and `to` (its axis as the strip's charts
+/// have it).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Lift {
+    pub from: usize,
+    pub to: usize,
+    a: DVec3,
+    d: DVec3,
+    ex: DVec3,
+    ey: DVec3,
+    length: f64,
+    bumps: Vec<Bump>,
+}
+
+fn smoothstep(u: f64) -> f64 {
+    let u = u.clamp(0.0, 1.0);
+    u * u * (3.0 - 2.0 * u)
+}
+
+/// The signed angle from b to a, in (−π, π].
+fn angle_between(a: f64, b: f64) -> f64 {
+    let x = (a - b).rem_euclid(2.0 * PI);
+    if x > PI { x - 2.0 * PI } else { x }
+}
+
+impl Lift {
+    /// (θ, z, R) of x about the strip's axis.
+    fn cylindrical(&self, x: DVec3) -> (f64, f64, f64) {
+        let v = x - self.a;
+        let z = v.dot(self.d);
+        let r = v - z * self.d;
+        (r.dot(self.ey).atan2(r.dot(self.ex)), z, r.length())
+    }
+
+    /// L at (θ, z).
+    pub fn at(&self, theta: f64, z: f64) -> f64 {
+        if !(z > 0.0 && z < self.length) {
+            return 0.0;
+        }
+        self.bumps
+            .iter()
+            .map(|b| {
+                let bz = if z <= b.z {
+                    smoothstep(z / b.z)
+                } else {
+                    smoothstep((self.length - z) / (self.length - b.z))
+                };
+                let bt = smoothstep(1.0 - angle_between(theta, b.theta).abs() / b.width);
+                b.lambda * bz * bt
+            })
+            .sum()
+    }
+
+    /// The lifted point of x.
+    pub fn apply(&self, x: DVec3) -> DVec3 {
+        let (theta, z, r) = self.cylindrical(x);
+        let l = self.at(theta, z);
+        if l == 0.0 || r <= 0.0 {
+            return x;
+        }
+        let radial = x - self.a - z * self.d;
+        x + radial * (l.exp() - 1.0)
+    }
+
+    /// Whether the lift moves nothing.
+    pub fn is_empty(&self) -> bool {
+        self.bumps.is_empty()
+    }
+}
+
+/// The points of primitive `p`'s part beyond the plane through its centre normal to `d`: its
+/// vertices, [`EDGE_POINTS`] points along each edge, each face's centre and the points halfway
+/// from it to the face's corners, those of them beyond the plane.
+fn removed_points(p: &Primitive, d: DVec3) -> Vec<DVec3> {
+    let beyond = |x: DVec3| (x - p.centre).dot(d) > 0.0;
+    let mut out: Vec<DVec3> = p.vertices.iter().copied().filter(|&x| beyond(x)).collect();
+    let edges: std::collections::BTreeSet<(usize, usize)> = p
+        .faces
+        .iter()
+        .flat_map(|f| (0..f.len()).map(move |k| (f[k], f[(k + 1) % f.len()])))
+        .map(|(i, j)| (i.min(j), i.max(j)))
+        .collect();
+    for (i, j) in edges {
+        let (a, b) = (p.vertices[i], p.vertices[j]);
+        for s in 1..=EDGE_POINTS {
+            let x = a.lerp(b, s as f64 / (EDGE_POINTS + 1) as f64);
+            if beyond(x) {
+                out.push(x);
+            }
+        }
+    }
+    for f in &p.faces {
+        let c = f.iter().map(|&i| p.vertices[i]).sum::<DVec3>() / f.len() as f64;
+        let inner = f.iter().map(|&i| c.lerp(p.vertices[i], 0.5));
+        out.extend(std::iter::once(c).chain(inner).filter(|&x| beyond(x)));
+    }
+    out
+}
+
+/// The strip's value R(θ, z) at x's angle and position along the axis, from the chart of its
+/// fusion quad holding it; none where no quad does (beyond the strip's ends).
+fn strip_value(charts: &[&Chart], x: DVec3) -> Option<f64> {
+    charts.iter().find_map(|ch| {
+        let (c, _) = ch.frame.chart(x)?;
+        let inside = ch.sides.iter().all(|s| s.coords(c).1 >= -1e-12 * s.length);
+        inside.then(|| ch.value(c))
+    })
+}
+
+/// The lift of every fusion strip of the network that has a removed point outside it.
+pub fn lifts(net: &Network, charts: &[Chart], prims: &[Primitive]) -> Vec<Lift> {
+    let mut strips: Vec<(usize, usize)> = net
+        .regions
+        .iter()
+        .filter_map(|r| match r.kind {
+            RegionKind::Fusion { from, to } => Some((from, to)),
+            _ => None,
+        })
+        .collect();
+    strips.sort_unstable();
+    strips.dedup();
+    let mut out = Vec::new();
+    for (from, to) in strips {
+        let quads: Vec<&Chart> = charts
+            .iter()
+            .filter(|ch| {
+                matches!(net.regions[ch.region].kind,
+                    RegionKind::Fusion { from: f, to: t } if (f, t) == (from, to))
+            })
+            .collect();
+        let Some(super::Frame::Axial { a, d, ex, ey, .. }) = quads.first().map(|c| c.frame) else {
+            continue;
+        };
+        let length = (prims[to].centre - a).dot(d);
+        let mut lift = Lift {
+            from,
+            to,
+            a,
+            d,
+            ex,
+            ey,
+            length,
+            bumps: Vec::new(),
+        };
+        // The angles of the fusion edges where the strip meets a lid: no term reaches them.
+        let ends: Vec<f64> = net
+            .regions
+            .iter()
+            .filter(|r| matches!(r.kind, RegionKind::Lid { .. }))
+            .flat_map(|r| r.sides.iter())
+            .filter(|s| net.curves[s.curve].kind == CurveKind::Fusion)
+            .filter(|s| {
+                quads
+                    .iter()
+                    .any(|ch| ch.pieces.iter().flatten().any(|p| p.curve == s.curve))
+            })
+            .map(|s| {
+                let x = net.curves[s.curve].bezier.eval(0.5);
+                lift.cylindrical(x).0
+            })
+            .collect();
+        for (p, towards) in [(&prims[from], d), (&prims[to], -d)] {
+            for x in removed_points(p, towards) {
+                let (theta, z, r) = lift.cylindrical(x);
+                if !(z > 0.0 && z < length) || r <= 0.0 {
+                    continue;
+                }
+                let Some(r0) = strip_value(&quads, x) else {
+                    continue;
+                };
+                let lambda = (r * (1.0 + MARGIN) / r0).ln();
+                if lambda.is_nan() || lambda <= 0.0 {
+                    continue;
+                }
+                let width = ends
+                    .iter()
+                    .map(|&e| angle_between(theta, e).abs())
+                    .fold(WIDTH, f64::min);
+                if width <= 1e-9 {
+                    continue;
+                }
+                lift.bumps.push(Bump {
+                    theta,
+                    z,
+                    lambda,
+                    width,
+                });
+            }
+        }
+        if !lift.is_empty() {
+            out.push(lift);
+        }
+    }
+    out
+}
