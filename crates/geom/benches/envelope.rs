@@ -83,6 +83,17 @@ fn build_charts(b: divan::Bencher, name: &str) {
     b.bench(|| envelope(&s).unwrap());
 }
 
+/// The charts with the paper's central cut: no strip lifted, no region raised (the cost of
+/// the enclosure is `build_charts` less this).
+#[divan::bench(args = SCENES)]
+fn build_charts_central_cut(b: divan::Bencher, name: &str) {
+    let s = EnvelopeSpec {
+        enclosure: prism_geom::freeform::envelope::Enclosure::Paper,
+        ..with(name, Surfacing::Charts)
+    };
+    b.bench(|| envelope(&s).unwrap());
+}
+
 #[divan::bench(args = SCENES)]
 fn build_paper(b: divan::Bencher, name: &str) {
     let s = with(name, Surfacing::Paper);

@@ -169,6 +169,8 @@ pub struct Envelope {
     pub charts: Vec<chart::Chart>,
     /// The fusion strips' lifts over the removed corners ([`Enclosure::Lifted`], charts only).
     pub lifts: Vec<chart::lift::Lift>,
+    /// The primitives' and lids' regions raised over the points no lift holds (likewise).
+    pub raises: Vec<chart::lift::Raise>,
     /// The mesh spacing for resolution 1: the mean length of the primitives' edges.
     pub edge_length: f64,
 }
@@ -355,9 +357,13 @@ fn assemble(
             })
             .collect();
         let charts = chart::charts(&network, &primitives, &lids)?;
-        let lifts = match spec.enclosure {
-            Enclosure::Lifted => chart::lift::lifts(&network, &charts, &primitives),
-            Enclosure::Paper => Vec::new(),
+        let (lifts, raises) = match spec.enclosure {
+            Enclosure::Lifted => {
+                let (lifts, held) = chart::lift::lifts(&network, &charts, &primitives);
+                let raises = chart::lift::raises(&network, &charts, &primitives, &held);
+                (lifts, raises)
+            }
+            Enclosure::Paper => (Vec::new(), Vec::new()),
         };
         return Ok(Envelope {
             primitives,
@@ -370,6 +376,7 @@ fn assemble(
             surfacing: Surfacing::Charts,
             charts,
             lifts,
+            raises,
             edge_length,
         });
     }
@@ -387,6 +394,7 @@ fn assemble(
         surfacing: Surfacing::Paper,
         charts: Vec::new(),
         lifts: Vec::new(),
+        raises: Vec::new(),
         edge_length,
     })
 }
@@ -442,30 +450,46 @@ impl Envelope {
         Ok((mesh, regions))
     }
 
-    /// Moves every vertex of a fusion strip's triangles by the strip's lift ([`chart::lift`]):
-    /// one map of the strip's neighbourhood, the identity to first order on its silhouette
-    /// borders and zero at its ends by a lid, so vertices shared with other regions stay put.
+    /// Moves every vertex of a fusion strip's triangles by the strip's lift, and every vertex of
+    /// a raised region by its raise ([`chart::lift`]): each the identity to first order on the
+    /// borders it ends at, so vertices shared with other regions stay put.
     fn lift(&self, mesh: &mut PolyMesh, regions: &[u32]) {
-        if self.lifts.is_empty() {
+        if self.lifts.is_empty() && self.raises.is_empty() {
             return;
         }
-        let mut by: Vec<Option<usize>> = vec![None; mesh.num_vertices()];
+        // Per vertex: the lift of a strip it lies on, and the raises of the regions it lies in.
+        let mut strip: Vec<Option<usize>> = vec![None; mesh.num_vertices()];
+        let mut raised: Vec<Vec<usize>> = vec![Vec::new(); mesh.num_vertices()];
         for (f, &r) in regions.iter().enumerate() {
-            let Some(RegionKind::Fusion { from, to }) =
-                self.network.regions.get(r as usize).map(|x| x.kind)
-            else {
+            let Some(kind) = self.network.regions.get(r as usize).map(|x| x.kind) else {
                 continue;
             };
-            let Some(l) = self.lifts.iter().position(|l| (l.from, l.to) == (from, to)) else {
-                continue;
+            let lift = match kind {
+                RegionKind::Fusion { from, to } => {
+                    self.lifts.iter().position(|l| (l.from, l.to) == (from, to))
+                }
+                _ => None,
             };
+            let raise = self.raises.iter().position(|x| x.region == r as usize);
             for c in mesh.face_corners(f) {
-                by[mesh.corner_verts[c] as usize] = Some(l);
+                let v = mesh.corner_verts[c] as usize;
+                if lift.is_some() {
+                    strip[v] = lift;
+                }
+                if let Some(k) = raise
+                    && !raised[v].contains(&k)
+                {
+                    raised[v].push(k);
+                }
             }
         }
-        for (v, l) in by.into_iter().enumerate() {
-            if let Some(l) = l {
+        for v in 0..mesh.num_vertices() {
+            if let Some(l) = strip[v] {
                 mesh.positions[v] = self.lifts[l].apply(mesh.positions[v]);
+            }
+            for &k in &raised[v] {
+                let x = &self.raises[k];
+                mesh.positions[v] = x.apply(&self.charts[x.region], mesh.positions[v]);
             }
         }
     }

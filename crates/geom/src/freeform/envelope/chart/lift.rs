@@ -1,5 +1,7 @@
-//! The strip's lift: the fusion strip raised over the primitives' removed corners
-//! (docs/algorithms/envelope.md, "Enclosure"; ALGORITHMS §11.8, §11.10 item 6).
+//! Enclosure by construction: the fusion strips lifted, and primitive and lid regions raised,
+//! over the primitives' points the paper's central cut leaves out (docs/algorithms/envelope.md,
+//! "Enclosure", "Raises"; ALGORITHMS §11.8, §11.10 item 6). Both are positive bumps on a
+//! graph, computed once; the surface stays a graph over the same charts ([`Raise`] below).
 //!
 //! The paper cuts each primitive by the plane through its centre normal to d, the direction
 //! to its partner, and joins the two sections by a strip that leaves each section along d. A
@@ -22,10 +24,11 @@
 //! at a lid (three or more primitives), w_v shrinks so that the term vanishes before that
 //! fusion edge: the lid's border is untouched.
 
-use super::Chart;
+use super::{Chart, Frame};
 use crate::freeform::envelope::network::{CurveKind, Network, RegionKind};
 use crate::freeform::envelope::primitive::Primitive;
-use glam::DVec3;
+use glam::{DVec2, DVec3};
+use rayon::prelude::*;
 use std::f64::consts::PI;
 
 /// A lifted point clears the removed corner by this share of its distance from the axis.
@@ -116,12 +119,10 @@ impl Lift {
     }
 }
 
-/// The points of primitive `p`'s part beyond the plane through its centre normal to `d`: its
-/// vertices, [`EDGE_POINTS`] points along each edge, each face's centre and the points halfway
-/// from it to the face's corners, those of them beyond the plane.
-fn removed_points(p: &Primitive, d: DVec3) -> Vec<DVec3> {
-    let beyond = |x: DVec3| (x - p.centre).dot(d) > 0.0;
-    let mut out: Vec<DVec3> = p.vertices.iter().copied().filter(|&x| beyond(x)).collect();
+/// Points of primitive `p`: its vertices, [`EDGE_POINTS`] points along each edge, each face's
+/// centre and the points halfway from it to the face's corners.
+fn sample_points(p: &Primitive) -> Vec<DVec3> {
+    let mut out: Vec<DVec3> = p.vertices.clone();
     let edges: std::collections::BTreeSet<(usize, usize)> = p
         .faces
         .iter()
@@ -130,17 +131,12 @@ fn removed_points(p: &Primitive, d: DVec3) -> Vec<DVec3> {
         .collect();
     for (i, j) in edges {
         let (a, b) = (p.vertices[i], p.vertices[j]);
-        for s in 1..=EDGE_POINTS {
-            let x = a.lerp(b, s as f64 / (EDGE_POINTS + 1) as f64);
-            if beyond(x) {
-                out.push(x);
-            }
-        }
+        out.extend((1..=EDGE_POINTS).map(|s| a.lerp(b, s as f64 / (EDGE_POINTS + 1) as f64)));
     }
     for f in &p.faces {
         let c = f.iter().map(|&i| p.vertices[i]).sum::<DVec3>() / f.len() as f64;
-        let inner = f.iter().map(|&i| c.lerp(p.vertices[i], 0.5));
-        out.extend(std::iter::once(c).chain(inner).filter(|&x| beyond(x)));
+        out.push(c);
+        out.extend(f.iter().map(|&i| c.lerp(p.vertices[i], 0.5)));
     }
     out
 }
@@ -155,8 +151,11 @@ fn strip_value(charts: &[&Chart], x: DVec3) -> Option<f64> {
     })
 }
 
-/// The lift of every fusion strip of the network that has a removed point outside it.
-pub fn lifts(net: &Network, charts: &[Chart], prims: &[Primitive]) -> Vec<Lift> {
+/// The lift of every fusion strip of the network that has a removed point outside it, and the
+/// points the lifts hold: those between a strip's silhouette planes, in its quads' angle and
+/// at least a quarter of [`WIDTH`] from its ends at a lid.
+pub fn lifts(net: &Network, charts: &[Chart], prims: &[Primitive]) -> (Vec<Lift>, Vec<DVec3>) {
+    let mut held = Vec::new();
     let mut strips: Vec<(usize, usize)> = net
         .regions
         .iter()
@@ -176,7 +175,7 @@ pub fn lifts(net: &Network, charts: &[Chart], prims: &[Primitive]) -> Vec<Lift> 
                     RegionKind::Fusion { from: f, to: t } if (f, t) == (from, to))
             })
             .collect();
-        let Some(super::Frame::Axial { a, d, ex, ey, .. }) = quads.first().map(|c| c.frame) else {
+        let Some(Frame::Axial { a, d, ex, ey, .. }) = quads.first().map(|c| c.frame) else {
             continue;
         };
         let length = (prims[to].centre - a).dot(d);
@@ -208,7 +207,11 @@ pub fn lifts(net: &Network, charts: &[Chart], prims: &[Primitive]) -> Vec<Lift> 
             })
             .collect();
         for (p, towards) in [(&prims[from], d), (&prims[to], -d)] {
-            for x in removed_points(p, towards) {
+            // The strip's own two primitives' parts beyond its silhouette planes.
+            for x in sample_points(p) {
+                if (x - p.centre).dot(towards) <= 0.0 {
+                    continue;
+                }
                 let (theta, z, r) = lift.cylindrical(x);
                 if !(z > 0.0 && z < length) || r <= 0.0 {
                     continue;
@@ -216,10 +219,6 @@ pub fn lifts(net: &Network, charts: &[Chart], prims: &[Primitive]) -> Vec<Lift> 
                 let Some(r0) = strip_value(&quads, x) else {
                     continue;
                 };
-                let lambda = (r * (1.0 + MARGIN) / r0).ln();
-                if lambda.is_nan() || lambda <= 0.0 {
-                    continue;
-                }
                 let width = ends
                     .iter()
                     .map(|&e| angle_between(theta, e).abs())
@@ -227,10 +226,18 @@ pub fn lifts(net: &Network, charts: &[Chart], prims: &[Primitive]) -> Vec<Lift> 
                 if width <= 1e-9 {
                     continue;
                 }
+                // A term this narrow is steep: the regions beside raise it too.
+                if width >= 0.25 * WIDTH {
+                    held.push(x);
+                }
+                // Also a point just under the strip: it is cleared by the margin too.
+                if r * (1.0 + MARGIN) <= r0 {
+                    continue;
+                }
                 lift.bumps.push(Bump {
                     theta,
                     z,
-                    lambda,
+                    lambda: (r * (1.0 + MARGIN) / r0).ln(),
                     width,
                 });
             }
@@ -239,5 +246,139 @@ pub fn lifts(net: &Network, charts: &[Chart], prims: &[Primitive]) -> Vec<Lift> 
             out.push(lift);
         }
     }
-    out
+    (out, held)
+}
+
+/// A raise of one primitive's or lid's region over the points that no strip's lift holds: a
+/// corner past the partner's centre plane (primitives overlapping deeply), one beside a lid, a
+/// swallowed primitive's. On the region's chart, `h′(c) = h(c) + Σ_v λ_v·B_v(c)`,
+/// `B_v(c) = Π_i smoothstep(min(1, δ_i(c)/δ_i(c_v)))`, δ_i the distance from the domain's side i:
+/// 1 at the point's own chart point c_v and, with its gradient, 0 on every side of the domain —
+/// the region's borders, their tangent planes and every other region stay as they are.
+/// `λ_v = h_v(1 + μ) − h(c_v)` for a point v at (c_v, h_v) in the chart, not yet μ under the
+/// graph and above it by at most [`RAISE_REACH`] (a point further out lies beyond another part
+/// of the surface, not under this one); a primitive's own regions hold it already (s ≥ 1).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Raise {
+    pub region: usize,
+    bumps: Vec<(DVec2, f64)>,
+}
+
+/// A raise reaches points at most this share of the graph's value above it.
+pub const RAISE_REACH: f64 = 0.5;
+
+impl Raise {
+    /// Σ λ_v B_v at chart point c of `chart` (the chart of [`Raise::region`]).
+    pub fn at(&self, chart: &Chart, c: DVec2) -> f64 {
+        self.bumps
+            .iter()
+            .map(|&(cv, lambda)| {
+                lambda
+                    * chart
+                        .sides
+                        .iter()
+                        .map(|s| {
+                            let (dv, d) = (s.coords(cv).1, s.coords(c).1);
+                            smoothstep(d / dv)
+                        })
+                        .product::<f64>()
+            })
+            .sum()
+    }
+
+    /// The raised point of surface point x of the region.
+    pub fn apply(&self, chart: &Chart, x: DVec3) -> DVec3 {
+        let Some((c, h)) = chart.frame.chart(x) else {
+            return x;
+        };
+        let l = self.at(chart, c);
+        if l == 0.0 {
+            return x;
+        }
+        chart.frame.point(c, h + l)
+    }
+}
+
+/// The raises of the primitives' and lids' regions over every point of every primitive
+/// ([`sample_points`]) that lies above one of them and that no strip's lift holds (`held`).
+pub fn raises(net: &Network, charts: &[Chart], prims: &[Primitive], held: &[DVec3]) -> Vec<Raise> {
+    let held: std::collections::HashSet<[u64; 3]> = held
+        .iter()
+        .map(|x| x.to_array().map(f64::to_bits))
+        .collect();
+    // A primitive's partners: the other ends of its strips. Its part on this side of every
+    // cut towards them lies under its own regions (s ≥ 1): only the rest can stick out.
+    let mut partners: Vec<Vec<usize>> = vec![Vec::new(); prims.len()];
+    for r in &net.regions {
+        if let RegionKind::Fusion { from, to } = r.kind {
+            if !partners[from].contains(&to) {
+                partners[from].push(to);
+            }
+            if !partners[to].contains(&from) {
+                partners[to].push(from);
+            }
+        }
+    }
+    let mut points: Vec<(usize, DVec3)> = Vec::new();
+    for (i, p) in prims.iter().enumerate() {
+        let kept = |x: DVec3| {
+            !partners[i].is_empty()
+                && partners[i]
+                    .iter()
+                    .all(|&j| (x - p.centre).dot(prims[j].centre - p.centre) <= 0.0)
+        };
+        for x in sample_points(p) {
+            if !kept(x) && !held.contains(&x.to_array().map(f64::to_bits)) {
+                points.push((i, x));
+            }
+        }
+    }
+    // Every region's raise on its own (in parallel, like the meshing).
+    let raise = |ch: &Chart| -> Option<Raise> {
+        if matches!(net.regions[ch.region].kind, RegionKind::Fusion { .. }) {
+            return None;
+        }
+        // A primitive's own regions hold its faces by construction (s ≥ 1).
+        let own = match net.regions[ch.region].kind {
+            RegionKind::Primitive { primitive, .. } => Some(primitive),
+            _ => None,
+        };
+        // A ball about the region's corners that holds every point a raise can reach.
+        let corners: Vec<DVec3> = ch
+            .sides
+            .iter()
+            .map(|s| ch.frame.point(s.a, ch.value(s.a)))
+            .collect();
+        let mid = corners.iter().sum::<DVec3>() / corners.len() as f64;
+        let reach =
+            corners.iter().map(|c| c.distance(mid)).fold(0.0, f64::max) * (2.0 + RAISE_REACH);
+        let mut bumps = Vec::new();
+        for &(i, x) in &points {
+            if own == Some(i) || x.distance(mid) > reach {
+                continue;
+            }
+            let Some((c, hx)) = ch.frame.chart(x) else {
+                continue;
+            };
+            let least = ch
+                .sides
+                .iter()
+                .map(|s| s.coords(c).1 / s.length)
+                .fold(f64::INFINITY, f64::min);
+            if least <= 1e-6 {
+                continue;
+            }
+            let h = ch.value(c);
+            let lambda = hx * (1.0 + MARGIN) - h;
+            if lambda <= 0.0 || hx > h * (1.0 + RAISE_REACH) {
+                continue;
+            }
+            bumps.push((c, lambda));
+        }
+        (!bumps.is_empty()).then_some(Raise {
+            region: ch.region,
+            bumps,
+        })
+    };
+    charts.par_iter().filter_map(raise).collect()
 }
