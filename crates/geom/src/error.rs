@@ -1,13 +1,13 @@
 //! Errors and warnings about mesh input, each naming the element at fault.
 //!
 //! Indices are 0-based everywhere in Prism (as in OpenSubdiv's OBJ tag lines); messages
-//! about an input file say them as the file counts them ([`Numbering`]).
+//! about an input file say them as the file counts them (`crate::numbering::Numbering`, which
+//! also writes these types' `Display`, 0-based).
 
-pub use crate::numbering::Numbering;
 use thiserror::Error;
 
 /// Why a polygon mesh cannot be used. Its message numbers elements from 0, as Prism does;
-/// [`Numbering::describe`] says it as the input file counts them.
+/// `Numbering::describe` says it as the input file counts them.
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum MeshError {
     NonFinite { vertex: u32, x: f64, y: f64, z: f64 },
@@ -21,12 +21,6 @@ pub enum MeshError {
     NonManifoldVertex { vertex: u32, fans: u32 },
     NoFaces,
     TooLarge { what: &'static str },
-}
-
-impl std::fmt::Display for MeshError {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str(&Numbering::default().describe(self))
-    }
 }
 
 /// A step whose result would not fit the memory budget, refused before it starts.
@@ -60,10 +54,4 @@ impl OverBudget {
 pub enum MeshWarning {
     /// A vertex that no face uses; it is carried along but takes part in nothing.
     UnusedVertices { count: u32, first: u32 },
-}
-
-impl std::fmt::Display for MeshWarning {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str(&Numbering::default().describe_warning(self))
-    }
 }

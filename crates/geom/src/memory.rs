@@ -22,7 +22,6 @@
 
 use crate::io::ExportFormat;
 use crate::mesh::PolyMesh;
-use crate::pipeline::Level;
 use crate::primal::PrimalScheme;
 use crate::scheme::Scheme;
 
@@ -128,21 +127,6 @@ impl Counts {
 /// `bytes` with the [`SAFETY`] factor.
 fn padded(bytes: u64) -> u64 {
     (bytes as f64 * SAFETY) as u64
-}
-
-/// Bytes a level holds now (its arrays' capacities, its edge marks, tags and provenance).
-pub fn level_bytes(level: &Level) -> u64 {
-    let m = &level.mesh;
-    let mesh = 24 * m.positions.capacity()
-        + 4 * (m.corner_verts.capacity() + m.loop_starts.capacity() + m.face_starts.capacity());
-    // A B-tree entry: key, value and about a third again of node overhead.
-    let marks =
-        48 * level.edge_attrs.len() + 24 * (level.tags.corners.len() + level.tags.holes.len());
-    let prov = level.provenance.as_ref().map_or(0, |p| {
-        p.face_kind.capacity() + 4 * p.face_parent.capacity() + 16 * p.edge_parent.capacity()
-    });
-    let comb = level.combination.as_ref().map_or(0, |c| c.flags.capacity());
-    (mesh + marks + prov + comb) as u64
 }
 
 /// Bytes one step of `scheme` holds on top of the levels kept while it runs: the topology of

@@ -124,6 +124,18 @@ impl Numbering {
     }
 }
 
+impl std::fmt::Display for MeshError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&Numbering::default().describe(self))
+    }
+}
+
+impl std::fmt::Display for MeshWarning {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&Numbering::default().describe_warning(self))
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -40,6 +40,24 @@ pub struct Level {
     pub report: Option<StepReport>,
 }
 
+impl Level {
+    /// Bytes the level holds now (its arrays' capacities, its edge marks, tags and provenance;
+    /// the memory guard's accounting, [`crate::memory`]).
+    pub fn bytes(&self) -> u64 {
+        let m = &self.mesh;
+        let mesh = 24 * m.positions.capacity()
+            + 4 * (m.corner_verts.capacity() + m.loop_starts.capacity() + m.face_starts.capacity());
+        // A B-tree entry: key, value and about a third again of node overhead.
+        let marks =
+            48 * self.edge_attrs.len() + 24 * (self.tags.corners.len() + self.tags.holes.len());
+        let prov = self.provenance.as_ref().map_or(0, |p| {
+            p.face_kind.capacity() + 4 * p.face_parent.capacity() + 16 * p.edge_parent.capacity()
+        });
+        let comb = self.combination.as_ref().map_or(0, |c| c.flags.capacity());
+        (mesh + marks + prov + comb) as u64
+    }
+}
+
 #[derive(Debug, Clone, PartialEq, Error)]
 #[error("step {step} ({scheme}): {source}")]
 pub struct PipelineError {
@@ -263,10 +281,10 @@ impl Pipeline {
         k + 1 < self.levels.len() && !self.kept_after_next(k)
     }
 
-    /// Bytes the levels kept now hold ([`memory::level_bytes`]), with the topologies kept
+    /// Bytes the levels kept now hold ([`Level::bytes`]), with the topologies kept
     /// for moved points and the levels a moved pipeline reuses.
     pub fn kept_bytes(&self) -> u64 {
-        self.levels.iter().map(memory::level_bytes).sum::<u64>()
+        self.levels.iter().map(Level::bytes).sum::<u64>()
             + self
                 .topologies
                 .iter()
@@ -277,7 +295,7 @@ impl Pipeline {
                 .reuse
                 .iter()
                 .flatten()
-                .map(|r| r.topo.heap_bytes() + memory::level_bytes(&r.child))
+                .map(|r| r.topo.heap_bytes() + r.child.bytes())
                 .sum::<u64>()
     }
 
@@ -295,7 +313,7 @@ impl Pipeline {
         let mut peak = kept;
         let last = self.levels.len() - 1;
         let mut counts = memory::Counts::of(&self.levels[last].mesh, None);
-        let mut cur_bytes = memory::level_bytes(&self.levels[last]);
+        let mut cur_bytes = self.levels[last].bytes();
         for k in last..self.steps.len() {
             let s = &self.steps[k];
             let carried_in = k > last && self.carries(k - 1);

@@ -86,7 +86,7 @@ pub fn run(a: BenchArgs) -> Result<(), CliError> {
     let mut estimate =
         Pipeline::with_tags(loaded.mesh, loaded.edge_attrs, loaded.tags, steps.clone());
     estimate.keep = Keep::Needed;
-    let peak = estimate.estimate_peak() + prism_geom::memory::level_bytes(estimate.input());
+    let peak = estimate.estimate_peak() + estimate.input().bytes();
     let budget = a.memory.check(peak, "this benchmark")?;
     let doc = estimate.into_last();
     if a.edit {

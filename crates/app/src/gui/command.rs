@@ -6,7 +6,7 @@
 //! Adding an edit (e.g. for the Skin or Envelope tab): a variant here, its case in `edits::apply_to`,
 //! and a test in `document.rs` that it undoes.
 
-use super::document::{DocState, Origin};
+use super::doc_state::{DocState, Origin};
 use glam::{DVec2, DVec3};
 use prism_geom::curve::{CurveScheme, Polyline};
 use prism_geom::freeform::SkinSpec;

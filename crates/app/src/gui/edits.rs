@@ -3,7 +3,7 @@
 //! succeeds).
 
 use super::command::{CurveEdit, EdgeMark, Edit};
-use super::document::{DocState, Origin};
+use super::doc_state::{DocState, Origin};
 use prism_geom::Scheme;
 use prism_geom::curve::{CurveSketch, MAX_SKETCH_LEVELS};
 

@@ -16,6 +16,7 @@
 mod autosave;
 pub mod command;
 mod curves;
+pub mod doc_state;
 pub mod document;
 mod edits;
 pub(crate) mod envelope;
@@ -27,6 +28,7 @@ mod opening;
 pub(crate) mod skin;
 mod view3d;
 mod viewport;
+pub mod waker;
 
 #[cfg(test)]
 mod tests;

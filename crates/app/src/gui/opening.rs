@@ -5,7 +5,7 @@
 //! once, as they always did.
 
 use super::document::{self, DocState, Origin};
-use super::model::view_pipe::Waker;
+use super::waker::Waker;
 use prism_geom::progress::Progress;
 use std::path::{Path, PathBuf};
 use std::sync::{Arc, mpsc};

@@ -17,12 +17,11 @@
 
 pub mod limit;
 mod points;
-mod ring_order;
 pub(crate) mod sharpness;
 
+pub use crate::refine::RingOrder;
 pub use limit::{LimitPoints, limit_points, limit_points_ordered};
 pub use points::PARALLEL_FACES;
-pub use ring_order::RingOrder;
 
 use crate::edge_attrs::{EdgeAttr, EdgeAttrs};
 use crate::error::{MeshError, OverBudget};
@@ -50,20 +49,6 @@ pub enum PrimalScheme {
 }
 
 impl PrimalScheme {
-    /// Its kind in the scheme catalogue.
-    pub fn kind(self) -> crate::scheme::SchemeKind {
-        use crate::scheme::SchemeKind;
-        match self {
-            PrimalScheme::CatmullClark => SchemeKind::CatmullClark,
-            PrimalScheme::Loop => SchemeKind::Loop,
-            PrimalScheme::CatmullClarkCircle => SchemeKind::CatmullClarkCircle,
-        }
-    }
-
-    pub fn name(self) -> &'static str {
-        self.kind().name()
-    }
-
     /// The split pattern and smooth masks: Catmull–Clark for both of its variants.
     pub fn family(self) -> PrimalScheme {
         match self {
@@ -411,7 +396,7 @@ fn refine(
         holes: child_tags.holes.len(),
         millis: start.elapsed().as_secs_f64() * 1e3,
     };
-    let child_order = order.map(|o| o.child(mesh, &topo, scheme));
+    let child_order = order.map(|o| o.child(mesh, &topo, scheme.split()));
     let child_topo = with.child_topology.then(|| split.topology(mesh, &topo));
     let keep = with.keep_topology;
     let provenance = with.provenance.then(|| {

@@ -17,9 +17,11 @@
 
 pub mod dual_quad;
 pub mod quad;
+mod ring_order;
 pub mod tri;
 
 pub use dual_quad::FaceKind;
+pub use ring_order::RingOrder;
 
 use crate::edge_attrs::{EdgeAttr, EdgeAttrs, EdgeKey};
 use crate::mesh::PolyMesh;
@@ -127,10 +129,10 @@ impl PrimalSplit {
     /// OpenSubdiv's ring order of the child, given the parent's.
     pub(crate) fn ring_order(
         self,
-        order: &crate::primal::RingOrder,
+        order: &RingOrder,
         mesh: &PolyMesh,
         topo: &Topology,
-    ) -> crate::primal::RingOrder {
+    ) -> RingOrder {
         match self {
             PrimalSplit::Quad => quad::ring_order(order, mesh, topo),
             PrimalSplit::Tri => tri::ring_order(order, mesh, topo),

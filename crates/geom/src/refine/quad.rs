@@ -10,9 +10,9 @@
 // Vertices, edges and corners are indices into parallel arrays here.
 #![allow(clippy::needless_range_loop)]
 
+use super::RingOrder;
 use super::{ChildCounts, PrimalNumbering};
 use crate::mesh::PolyMesh;
-use crate::primal::RingOrder;
 use crate::topology::{CornerLoops, Loops, NONE, Topology, with_loops};
 
 /// The numbering of the quad split of `mesh`.

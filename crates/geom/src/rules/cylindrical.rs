@@ -23,7 +23,7 @@
 //! paper's tests but does not converge to r (it stalls near 0.2 % of r, §2.7).
 
 use super::overlap::{EdgeFit, Overlap, fitting_scales};
-use super::prepare::Prepared;
+use super::prepared::Prepared;
 use super::{CornerRule, RuleError, RuleInput, RuleReport, corner_frame_on_edges};
 use crate::dissolve::dissolve_flat_edges;
 use crate::edge_attrs::{EdgeAttrs, EdgeKey};
@@ -106,7 +106,7 @@ pub(super) fn prepare<'a>(
 ) -> Result<Prepared<'a>, StepError> {
     let tol = options.flat_tolerance;
     let level = |m: &PolyMesh, known| -> Result<_, StepError> {
-        let (topo, raw, normals) = super::prepare::checked_level(m, known)?;
+        let (topo, raw, normals) = super::prepared::checked_level(m, known)?;
         let bends = signed_bend_angles(m, &topo, &normals);
         Ok((topo, raw, normals, bends))
     };

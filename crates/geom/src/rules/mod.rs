@@ -29,6 +29,7 @@ mod cylindrical;
 mod doo_sabin;
 pub mod overlap;
 mod prepare;
+mod prepared;
 pub mod primal;
 mod retreat;
 mod unfold;
@@ -37,7 +38,7 @@ mod untangle;
 pub use combination::CombinationState;
 pub use cylindrical::{cut_width, dissolve_needed};
 pub use overlap::{EdgeFit, Overlap};
-pub use prepare::Prepared;
+pub use prepared::Prepared;
 pub(crate) use retreat::retreat;
 pub(crate) use unfold::fold_guard;
 pub use untangle::Untangled;
@@ -80,12 +81,6 @@ pub struct ParamError {
 }
 
 impl CornerRule {
-    /// Checks the parameter against the scheme catalogue's range (lengths finite and > 0,
-    /// 0 < α < ½: α = ½ collapses a square).
-    pub fn validate(&self) -> Result<(), ParamError> {
-        crate::scheme::Scheme::Biquadratic(*self).validate()
-    }
-
     /// Whether the rule needs per-edge cut widths (and so the flat-edge dissolve first).
     pub fn is_cylindrical_family(&self) -> bool {
         matches!(

@@ -304,6 +304,29 @@ pub fn format_pipeline(steps: &[Scheme]) -> String {
         .join(",")
 }
 
+impl PrimalScheme {
+    /// Its kind in the scheme catalogue.
+    pub fn kind(self) -> SchemeKind {
+        match self {
+            PrimalScheme::CatmullClark => SchemeKind::CatmullClark,
+            PrimalScheme::Loop => SchemeKind::Loop,
+            PrimalScheme::CatmullClarkCircle => SchemeKind::CatmullClarkCircle,
+        }
+    }
+
+    pub fn name(self) -> &'static str {
+        self.kind().name()
+    }
+}
+
+impl CornerRule {
+    /// Checks the parameter against the scheme catalogue's range (lengths finite and > 0,
+    /// 0 < α < ½: α = ½ collapses a square).
+    pub fn validate(&self) -> Result<(), ParamError> {
+        Scheme::Biquadratic(*self).validate()
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -72,7 +72,7 @@ impl CrossingCheck {
         key: LevelKey,
         lv: &Level,
         idle: bool,
-        wake: &super::view_pipe::Waker,
+        wake: &crate::gui::waker::Waker,
     ) -> Crossings {
         if let Some((k, Slot::Computing(rx))) = &mut self.state {
             let k = *k;

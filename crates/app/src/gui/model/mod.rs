@@ -24,11 +24,12 @@ pub use scheme_editor::default_next;
 
 use super::command::{Command, EdgeMark, Edit};
 use super::document::{DocState, Document};
+use crate::gui::waker::Waker;
 use glam::Vec3;
 use prism_geom::{EdgeKey, Pipeline, Scheme};
 use prism_viewport::{Camera, ColorBy, SceneOptions, Shading, View};
 use std::collections::BTreeSet;
-use view_pipe::{Outcome, ViewPipe, Waker};
+use view_pipe::{Outcome, ViewPipe};
 
 /// The tool the primary mouse button uses in the views.
 #[derive(

@@ -6,6 +6,7 @@
 
 use super::crossing_check::{CrossingCheck, Crossings};
 use super::worker::{Finished, Job, over_budget};
+use crate::gui::waker::Waker;
 use prism_geom::ancestry::edge_origins;
 use prism_geom::error::OverBudget;
 use prism_geom::refine::FaceKind;
@@ -16,9 +17,6 @@ use prism_viewport::{ColorBy, Scene, SceneOptions};
 use std::collections::HashMap;
 use std::sync::Arc;
 use std::sync::mpsc::{Receiver, TryRecvError};
-
-/// Asks the window for a repaint (from a worker thread).
-pub type Waker = Arc<dyn Fn() + Send + Sync>;
 
 /// Levels with more corners than this get their scene prepared on a thread; smaller ones
 /// right away (100 000 triangles: about 30 ms flat, 50 ms smooth, scaled from the

@@ -18,6 +18,7 @@ pub mod chart;
 pub mod clip;
 pub mod coons;
 pub mod edges;
+mod facet;
 pub mod folds;
 pub mod fusion;
 pub mod hull;

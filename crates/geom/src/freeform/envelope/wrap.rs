@@ -19,7 +19,7 @@
 //! the wrap does not close (an edge not shared by exactly two facets, a facet with no such
 //! triple: centres within rounding of the tolerance), the caller falls back to the search.
 
-use super::hull::{Facet, on_plane, supports, triple_normal};
+use super::facet::{Facet, on_plane, supports, triple_normal};
 use glam::DVec3;
 use std::collections::HashMap;
 

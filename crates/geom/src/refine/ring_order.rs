@@ -5,7 +5,7 @@
 //! does (`Vtr::QuadRefinement`, `Vtr::TriRefinement`): each split says how
 //! ([`crate::refine::quad::ring_order`], [`crate::refine::tri::ring_order`]).
 
-use super::PrimalScheme;
+use super::PrimalSplit;
 use crate::mesh::PolyMesh;
 use crate::topology::{NONE, Topology};
 
@@ -40,13 +40,8 @@ impl RingOrder {
         }
     }
 
-    /// The order of the child of a mesh with this order.
-    pub(crate) fn child(
-        &self,
-        mesh: &PolyMesh,
-        topo: &Topology,
-        scheme: PrimalScheme,
-    ) -> RingOrder {
-        scheme.split().ring_order(self, mesh, topo)
+    /// The order of the child of a mesh with this order, split by `split`.
+    pub(crate) fn child(&self, mesh: &PolyMesh, topo: &Topology, split: PrimalSplit) -> RingOrder {
+        split.ring_order(self, mesh, topo)
     }
 }
