@@ -3,6 +3,8 @@
 //! every primitive enclosed, G1 exactly along the network and by the mesh's own normals,
 //! independent of the listing, and the shapes the construction promises.
 
+mod common;
+use common::off_surface;
 use prism_geom::analysis::winding_number;
 use prism_geom::freeform::envelope::chart::quality::{Quality, quality};
 use prism_geom::freeform::envelope::folds::crossings;
@@ -91,39 +93,6 @@ fn inward(e: &Envelope, m: &PolyMesh, regions: &[u32]) -> usize {
         .count()
 }
 
-/// Points of every kept primitive's faces on the kept side of the planes through its centre
-/// towards every other kept primitive (a part of what the construction keeps), pulled 10⁻⁶ r
-/// towards the centre.
-fn kept_points(e: &Envelope) -> Vec<DVec3> {
-    let kept: Vec<usize> = (0..e.primitives.len())
-        .filter(|i| !e.removed.contains(i))
-        .collect();
-    let mut out = Vec::new();
-    for &i in &kept {
-        let p = &e.primitives[i];
-        let cuts: Vec<DVec3> = kept
-            .iter()
-            .filter(|&&j| j != i)
-            .map(|&j| (e.primitives[j].centre - p.centre).normalize())
-            .collect();
-        for face in &p.faces {
-            let c = face.iter().map(|&v| p.vertices[v]).sum::<DVec3>() / face.len() as f64;
-            for &v in face {
-                for s in [0.0, 0.5, 0.9, 1.0] {
-                    let x = c.lerp(p.vertices[v], s);
-                    if cuts
-                        .iter()
-                        .all(|d| (x - p.centre).dot(*d) <= -1e-9 * p.radius)
-                    {
-                        out.push(p.centre + (x - p.centre) * (1.0 - 1e-6));
-                    }
-                }
-            }
-        }
-    }
-    out
-}
-
 /// Everything the construction promises of one build, with `what` in the messages.
 fn assert_sound(e: &Envelope, k: usize, what: &str) {
     let jump = e.largest_border_jump();
@@ -137,7 +106,7 @@ fn assert_sound(e: &Envelope, k: usize, what: &str) {
         .unwrap_or_else(|err| panic!("{what}: {err}"));
     assert_eq!(inward(e, &m, &regions), 0, "{what}: inward triangles");
     assert_eq!(crossings(&m).len(), 0, "{what}: crossings");
-    for x in kept_points(e) {
+    for x in common::kept_points(e, &[0.0, 0.5, 0.9, 1.0], 1e-6) {
         let w = winding_number(&m, x);
         assert!(w > 0.5, "{what}: kept point {x} outside (winding {w})");
     }
@@ -159,19 +128,6 @@ fn a_thousand_heaps_are_sound_at_every_t() {
             assert_sound(&e, 3, &what);
         }
     }
-}
-
-/// How far x lies from the surface of `e` along its chart's direction (∞ where no chart holds
-/// it): the surface evaluated where x projects, not a mesh.
-fn off_surface(e: &Envelope, x: DVec3) -> f64 {
-    e.charts
-        .iter()
-        .filter_map(|ch| {
-            let (c, h) = ch.frame.chart(x)?;
-            let inside = ch.sides.iter().all(|s| s.coords(c).1 >= -1e-9 * s.length);
-            inside.then(|| (ch.value(c) - h).abs() * ch.frame.direction(c).length())
-        })
-        .fold(f64::INFINITY, f64::min)
 }
 
 /// The 48 rotations and reflections of a cube about its centre: signed permutations.

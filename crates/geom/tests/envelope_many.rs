@@ -5,6 +5,7 @@
 //! paper's patches closed with their faults named.
 
 mod common;
+use common::off_surface;
 use prism_geom::freeform::envelope::folds::crossings;
 use prism_geom::freeform::envelope::network::RegionKind;
 use prism_geom::freeform::envelope::{
@@ -51,38 +52,6 @@ fn closed(m: &PolyMesh) -> Result<(), String> {
     t.require_closed(m).map_err(|e| e.to_string())
 }
 
-/// Points of every kept primitive's faces on the kept side of the planes through its centre
-/// towards every other kept primitive, pulled 10⁻³ towards the centre.
-fn kept_samples(e: &Envelope) -> Vec<DVec3> {
-    let kept: Vec<usize> = (0..e.primitives.len())
-        .filter(|i| !e.removed.contains(i))
-        .collect();
-    let mut out = Vec::new();
-    for &i in &kept {
-        let p = &e.primitives[i];
-        let cuts: Vec<DVec3> = kept
-            .iter()
-            .filter(|&&j| j != i)
-            .map(|&j| (e.primitives[j].centre - p.centre).normalize())
-            .collect();
-        for face in &p.faces {
-            let c = face.iter().map(|&v| p.vertices[v]).sum::<DVec3>() / face.len() as f64;
-            for &v in face {
-                for s in [0.0, 0.5, 0.9] {
-                    let x = c.lerp(p.vertices[v], s);
-                    if cuts
-                        .iter()
-                        .all(|d| (x - p.centre).dot(*d) <= -1e-9 * p.radius)
-                    {
-                        out.push(p.centre + (x - p.centre) * (1.0 - 1e-3));
-                    }
-                }
-            }
-        }
-    }
-    out
-}
-
 fn hausdorff(a: &[DVec3], b: &[DVec3]) -> f64 {
     let one = |a: &[DVec3], b: &[DVec3]| {
         a.iter()
@@ -94,19 +63,6 @@ fn hausdorff(a: &[DVec3], b: &[DVec3]) -> f64 {
             .fold(0.0, f64::max)
     };
     one(a, b).max(one(b, a))
-}
-
-/// How far x lies from the charts' surface of `e` along its chart's direction (∞ where no chart
-/// holds it): the surface itself, not a mesh of it.
-fn off_surface(e: &Envelope, x: DVec3) -> f64 {
-    e.charts
-        .iter()
-        .filter_map(|ch| {
-            let (c, h) = ch.frame.chart(x)?;
-            let inside = ch.sides.iter().all(|s| s.coords(c).1 >= -1e-9 * s.length);
-            inside.then(|| (ch.value(c) - h).abs() * ch.frame.direction(c).length())
-        })
-        .fold(f64::INFINITY, f64::min)
 }
 
 /// How far the mesh of each of `a` and `b` lies off the other's surface, at most.
@@ -161,7 +117,7 @@ fn assert_sound(e: &Envelope, what: &str) {
     let q = e.quality_of(&m, &regions);
     assert_eq!(q.inward, 0, "{what}: inward triangles");
     assert_eq!(q.open_edges, 0, "{what}: open edges");
-    for x in kept_samples(e) {
+    for x in common::kept_points(e, &[0.0, 0.5, 0.9], 1e-3) {
         let w = winding(&m, x);
         assert!(w > 0.5, "{what}: {x} has winding {w}");
     }

@@ -38,3 +38,56 @@ pub fn cubes_on_a_sphere(
         })
         .collect()
 }
+
+/// How far x lies from the charts' surface of `e` along its chart's direction (∞ where no chart
+/// holds it): the surface itself, not a mesh of it.
+#[allow(dead_code)] // not every test crate that includes this module uses it
+pub fn off_surface(e: &prism_geom::freeform::envelope::Envelope, x: DVec3) -> f64 {
+    e.charts
+        .iter()
+        .filter_map(|ch| {
+            let (c, h) = ch.frame.chart(x)?;
+            let inside = ch.sides.iter().all(|s| s.coords(c).1 >= -1e-9 * s.length);
+            inside.then(|| (ch.value(c) - h).abs() * ch.frame.direction(c).length())
+        })
+        .fold(f64::INFINITY, f64::min)
+}
+
+/// Points of every kept primitive's faces — each face's centre moved the `shares` of the way
+/// to its corners — on the kept side of the planes through the primitive's centre towards
+/// every other kept primitive (a part of what the envelope's construction keeps), pulled the
+/// share `pull` towards the centre.
+#[allow(dead_code)] // not every test crate that includes this module uses it
+pub fn kept_points(
+    e: &prism_geom::freeform::envelope::Envelope,
+    shares: &[f64],
+    pull: f64,
+) -> Vec<DVec3> {
+    let kept: Vec<usize> = (0..e.primitives.len())
+        .filter(|i| !e.removed.contains(i))
+        .collect();
+    let mut out = Vec::new();
+    for &i in &kept {
+        let p = &e.primitives[i];
+        let cuts: Vec<DVec3> = kept
+            .iter()
+            .filter(|&&j| j != i)
+            .map(|&j| (e.primitives[j].centre - p.centre).normalize())
+            .collect();
+        for face in &p.faces {
+            let c = face.iter().map(|&v| p.vertices[v]).sum::<DVec3>() / face.len() as f64;
+            for &v in face {
+                for &s in shares {
+                    let x = c.lerp(p.vertices[v], s);
+                    if cuts
+                        .iter()
+                        .all(|d| (x - p.centre).dot(*d) <= -1e-9 * p.radius)
+                    {
+                        out.push(p.centre + (x - p.centre) * (1.0 - pull));
+                    }
+                }
+            }
+        }
+    }
+    out
+}
