@@ -278,7 +278,7 @@ impl PrismApp {
             .as_ref()
             .ok_or("the wgpu renderer is not available")?;
         viewport::install(rs, SAMPLES as u32);
-        // A screenshot run shows what its arguments say, not what the last session left.
+        // A screenshot run shows what its arguments say, not what the last run left.
         let settings = if launch.screenshot.is_some() {
             None
         } else {
@@ -378,7 +378,7 @@ impl PrismApp {
             Command::RestoreAutosave => self.restore_autosave(),
             Command::DiscardAutosave => {
                 self.autosave.discard();
-                self.say("discarded the unsaved work of the last session");
+                self.say("discarded the unsaved work of the last run");
             }
             Command::OpenDialog => self.open_dialog(),
             Command::CancelOpening => self.cancel_opening(),
@@ -511,7 +511,7 @@ impl PrismApp {
                     ..Default::default()
                 };
                 self.replace_document(state, origin);
-                self.say("restored the unsaved work of the last session (save it to keep it)");
+                self.say("restored the unsaved work of the last run (save it to keep it)");
             }
             Err(e) => {
                 self.autosave.discard();
@@ -531,7 +531,7 @@ impl PrismApp {
             .anchor(egui::Align2::CENTER_CENTER, egui::vec2(0.0, 0.0))
             .show(ctx, |ui| {
                 ui.label(format!(
-                    "The last session left work that was not saved ({ago} min ago)."
+                    "The last run left work that was not saved ({ago} min ago)."
                 ));
                 ui.horizontal(|ui| {
                     if ui.button("Restore it").clicked() {
