@@ -1,7 +1,7 @@
 //! No import circles between the source files of a crate (docs/architecture.md, "Layering"):
 //! read from the files' own `use` lines and inline paths (`crate::`, `super::`, `self::`), each
 //! name resolved to the deepest module file that exists; two files that reach each other along
-//! such imports are a circle. `tools/import_cycles.py` is the same check, printing every circle.
+//! such imports are a circle; the failure names every circle found.
 
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};

@@ -359,11 +359,7 @@ fn assemble(
             .collect();
         let charts = chart::charts(&network, &primitives, &lids)?;
         let (lifts, raises) = match spec.enclosure {
-            Enclosure::Lifted => {
-                let (lifts, held) = chart::lift::lifts(&network, &charts, &primitives);
-                let raises = chart::lift::raises(&network, &charts, &primitives, &held);
-                (lifts, raises)
-            }
+            Enclosure::Lifted => chart::lift::enclosure(&network, &charts, &primitives),
             Enclosure::Paper => (Vec::new(), Vec::new()),
         };
         return Ok(Envelope {
@@ -458,29 +454,29 @@ impl Envelope {
         if self.lifts.is_empty() && self.raises.is_empty() {
             return;
         }
-        // Per vertex: the lift of a strip it lies on, and the raises of the regions it lies in.
+        // Per region: its strip's lift or its raise; per vertex: those of a region it lies in
+        // (a vertex on a border is left where it is by both sides' maps).
+        let mut lift_of: Vec<Option<usize>> = vec![None; self.network.regions.len()];
+        let mut raise_of: Vec<Option<usize>> = vec![None; self.network.regions.len()];
+        for (r, region) in self.network.regions.iter().enumerate() {
+            if let RegionKind::Fusion { from, to } = region.kind {
+                lift_of[r] = self.lifts.iter().position(|l| (l.from, l.to) == (from, to));
+            }
+        }
+        for (k, x) in self.raises.iter().enumerate() {
+            raise_of[x.region] = Some(k);
+        }
         let mut strip: Vec<Option<usize>> = vec![None; mesh.num_vertices()];
-        let mut raised: Vec<Vec<usize>> = vec![Vec::new(); mesh.num_vertices()];
+        let mut raised: Vec<Option<usize>> = vec![None; mesh.num_vertices()];
         for (f, &r) in regions.iter().enumerate() {
-            let Some(kind) = self.network.regions.get(r as usize).map(|x| x.kind) else {
-                continue;
-            };
-            let lift = match kind {
-                RegionKind::Fusion { from, to } => {
-                    self.lifts.iter().position(|l| (l.from, l.to) == (from, to))
-                }
-                _ => None,
-            };
-            let raise = self.raises.iter().position(|x| x.region == r as usize);
+            let (lift, raise) = (lift_of.get(r as usize), raise_of.get(r as usize));
             for c in mesh.face_corners(f) {
                 let v = mesh.corner_verts[c] as usize;
-                if lift.is_some() {
-                    strip[v] = lift;
+                if let Some(&Some(l)) = lift {
+                    strip[v] = Some(l);
                 }
-                if let Some(k) = raise
-                    && !raised[v].contains(&k)
-                {
-                    raised[v].push(k);
+                if let Some(&Some(k)) = raise {
+                    raised[v] = Some(k);
                 }
             }
         }
@@ -488,7 +484,7 @@ impl Envelope {
             if let Some(l) = strip[v] {
                 mesh.positions[v] = self.lifts[l].apply(mesh.positions[v]);
             }
-            for &k in &raised[v] {
+            if let Some(k) = raised[v] {
                 let x = &self.raises[k];
                 mesh.positions[v] = x.apply(&self.charts[x.region], mesh.positions[v]);
             }

@@ -9,12 +9,13 @@
 //! corners outside the strip at small t. The strip is a graph `R(θ, z)` about the axis
 //! `G_A + z·d` (`frame.rs`, Axial), so raising it keeps it a graph: the lifted strip is
 //!
-//! `R′(θ, z) = R(θ, z)·exp(L(θ, z))`, `L = Σ_v λ_v·b_θ(θ − θ_v)·b_z(z; z_v) ≥ 0`,
+//! `R′(θ, z) = R(θ, z)·exp(L(θ, z))`, L the [`smooth_max`] of the terms `λ_v·b_θ(θ − θ_v)·b_z(z; z_v)`,
 //!
-//! one term for every point v of either primitive's removed part (vertices and points along its
-//! edges) that lies between the two silhouette planes, 0 < z_v < D, with
-//! `λ_v = max(0, ln(R_v(1 + μ)/R(θ_v, z_v)))`, μ = [`MARGIN`]. Every term is non-negative and
-//! equals λ_v at its own point, so `R′ ≥ R_v(1 + μ)` at every such point: the removed corners
+//! one term for every sample point v of either primitive's removed part ([`sample_points`])
+//! that lies between the two silhouette planes, 0 < z_v < D, and not more than [`TRIGGER`] under
+//! the strip, with `λ_v = ln(R_v(1 + μ)/R(θ_v, z_v))`, μ = [`MARGIN`]. Every term is
+//! non-negative and L is at least each, which is λ_v at its own point, so `R′ ≥ R_v(1 + μ)` at
+//! every such point: the removed corners
 //! and edges lie inside. `b_z` rises from 0 at z = 0 to 1 at z_v and falls to 0 at z = D, `b_θ`
 //! falls from 1 to 0 at |θ − θ_v| = w_v, both smoothsteps (value and slope 0 at their ends, 1
 //! and 0 at the top). So L and its gradient vanish on both silhouette sections (the strip's
@@ -75,6 +76,13 @@ pub struct Lift {
     bumps: Vec<Bump>,
 }
 
+/// The `SMOOTH_MAX`-norm of non-negative terms.
+fn smooth_max(terms: impl Iterator<Item = f64>) -> f64 {
+    terms
+        .fold(0.0, |acc, x| acc + x.powi(SMOOTH_MAX))
+        .powf(1.0 / f64::from(SMOOTH_MAX))
+}
+
 fn smoothstep(u: f64) -> f64 {
     let u = u.clamp(0.0, 1.0);
     u * u * (3.0 - 2.0 * u)
@@ -100,19 +108,15 @@ impl Lift {
         if !(z > 0.0 && z < self.length) {
             return 0.0;
         }
-        self.bumps
-            .iter()
-            .map(|b| {
-                let bz = if z <= b.z {
-                    smoothstep(z / b.z)
-                } else {
-                    smoothstep((self.length - z) / (self.length - b.z))
-                };
-                let bt = smoothstep(1.0 - angle_between(theta, b.theta).abs() / b.width);
-                b.lambda * bz * bt
-            })
-            .fold(0.0, |acc, x| acc + x.powi(SMOOTH_MAX))
-            .powf(1.0 / f64::from(SMOOTH_MAX))
+        smooth_max(self.bumps.iter().map(|b| {
+            let bz = if z <= b.z {
+                smoothstep(z / b.z)
+            } else {
+                smoothstep((self.length - z) / (self.length - b.z))
+            };
+            let bt = smoothstep(1.0 - angle_between(theta, b.theta).abs() / b.width);
+            b.lambda * bz * bt
+        }))
     }
 
     /// The lifted point of x.
@@ -164,11 +168,25 @@ fn strip_value(charts: &[&Chart], x: DVec3) -> Option<f64> {
     })
 }
 
-/// The lift of every fusion strip of the network that has a removed point outside it, and the
-/// points the lifts hold: those between a strip's silhouette planes, in its quads' angle and
-/// at least a quarter of [`WIDTH`] from its ends at a lid.
-pub fn lifts(net: &Network, charts: &[Chart], prims: &[Primitive]) -> (Vec<Lift>, Vec<DVec3>) {
-    let mut held = Vec::new();
+/// The strips' lifts and the regions' raises that hold the primitives ([`lifts`], [`raises`]),
+/// from each primitive's [`sample_points`], computed once.
+pub fn enclosure(net: &Network, charts: &[Chart], prims: &[Primitive]) -> (Vec<Lift>, Vec<Raise>) {
+    let samples: Vec<Vec<DVec3>> = prims.iter().map(sample_points).collect();
+    let (lifts, held) = lifts(net, charts, prims, &samples);
+    let raises = raises(net, charts, prims, &samples, &held);
+    (lifts, raises)
+}
+
+/// The lift of every fusion strip of the network that has a removed point outside it, and which
+/// of each primitive's `samples` the lifts hold: those between a strip's silhouette planes, in
+/// its quads' angle and at least a quarter of [`WIDTH`] from its ends at a lid.
+fn lifts(
+    net: &Network,
+    charts: &[Chart],
+    prims: &[Primitive],
+    samples: &[Vec<DVec3>],
+) -> (Vec<Lift>, Vec<Vec<bool>>) {
+    let mut held: Vec<Vec<bool>> = samples.iter().map(|s| vec![false; s.len()]).collect();
     let mut strips: Vec<(usize, usize)> = net
         .regions
         .iter()
@@ -219,9 +237,10 @@ pub fn lifts(net: &Network, charts: &[Chart], prims: &[Primitive]) -> (Vec<Lift>
                 lift.cylindrical(x).0
             })
             .collect();
-        for (p, towards) in [(&prims[from], d), (&prims[to], -d)] {
+        for (i, towards) in [(from, d), (to, -d)] {
+            let p = &prims[i];
             // The strip's own two primitives' parts beyond its silhouette planes.
-            for x in sample_points(p) {
+            for (k, &x) in samples[i].iter().enumerate() {
                 if (x - p.centre).dot(towards) <= 0.0 {
                     continue;
                 }
@@ -241,7 +260,7 @@ pub fn lifts(net: &Network, charts: &[Chart], prims: &[Primitive]) -> (Vec<Lift>
                 }
                 // A term this narrow is steep: the regions beside raise it too.
                 if width >= 0.25 * WIDTH {
-                    held.push(x);
+                    held[i][k] = true;
                 }
                 // A point under the strip by more than [`TRIGGER`] is left as it lies.
                 if r * (1.0 + TRIGGER) <= r0 {
@@ -264,7 +283,7 @@ pub fn lifts(net: &Network, charts: &[Chart], prims: &[Primitive]) -> (Vec<Lift>
 
 /// A raise of one primitive's or lid's region over the points that no strip's lift holds: a
 /// corner past the partner's centre plane (primitives overlapping deeply), one beside a lid, a
-/// swallowed primitive's. On the region's chart, `h′(c) = h(c) + Σ_v λ_v·B_v(c)`,
+/// swallowed primitive's. On the region's chart, `h′(c) = h(c) +` the [`smooth_max`] of the `λ_v·B_v(c)`,
 /// `B_v(c) = Π_i smoothstep(min(1, δ_i(c)/δ_i(c_v)))`, δ_i the distance from the domain's side i:
 /// 1 at the point's own chart point c_v and, with its gradient, 0 on every side of the domain —
 /// the region's borders, their tangent planes and every other region stay as they are.
@@ -281,23 +300,16 @@ pub struct Raise {
 pub const RAISE_REACH: f64 = 0.5;
 
 impl Raise {
-    /// Σ λ_v B_v at chart point c of `chart` (the chart of [`Raise::region`]).
+    /// The [`smooth_max`] of the λ_v B_v at chart point c of `chart` (the chart of [`Raise::region`]).
     pub fn at(&self, chart: &Chart, c: DVec2) -> f64 {
-        self.bumps
-            .iter()
-            .map(|&(cv, lambda)| {
-                lambda
-                    * chart
-                        .sides
-                        .iter()
-                        .map(|s| {
-                            let (dv, d) = (s.coords(cv).1, s.coords(c).1);
-                            smoothstep(d / dv)
-                        })
-                        .product::<f64>()
-            })
-            .fold(0.0, |acc, x| acc + x.powi(SMOOTH_MAX))
-            .powf(1.0 / f64::from(SMOOTH_MAX))
+        smooth_max(self.bumps.iter().map(|&(cv, lambda)| {
+            lambda
+                * chart
+                    .sides
+                    .iter()
+                    .map(|s| smoothstep(s.coords(c).1 / s.coords(cv).1))
+                    .product::<f64>()
+        }))
     }
 
     /// The raised point of surface point x of the region.
@@ -314,12 +326,14 @@ impl Raise {
 }
 
 /// The raises of the primitives' and lids' regions over every point of every primitive
-/// ([`sample_points`]) that lies above one of them and that no strip's lift holds (`held`).
-pub fn raises(net: &Network, charts: &[Chart], prims: &[Primitive], held: &[DVec3]) -> Vec<Raise> {
-    let held: std::collections::HashSet<[u64; 3]> = held
-        .iter()
-        .map(|x| x.to_array().map(f64::to_bits))
-        .collect();
+/// (its `samples`) that lies above one of them and that no strip's lift holds (`held`).
+fn raises(
+    net: &Network,
+    charts: &[Chart],
+    prims: &[Primitive],
+    samples: &[Vec<DVec3>],
+    held: &[Vec<bool>],
+) -> Vec<Raise> {
     // A primitive's partners: the other ends of its strips. Its part on this side of every
     // cut towards them lies under its own regions (s ≥ 1): only the rest can stick out.
     let mut partners: Vec<Vec<usize>> = vec![Vec::new(); prims.len()];
@@ -341,21 +355,19 @@ pub fn raises(net: &Network, charts: &[Chart], prims: &[Primitive], held: &[DVec
                     .iter()
                     .all(|&j| (x - p.centre).dot(prims[j].centre - p.centre) <= 0.0)
         };
-        for x in sample_points(p) {
-            if !kept(x) && !held.contains(&x.to_array().map(f64::to_bits)) {
+        for (k, &x) in samples[i].iter().enumerate() {
+            if !kept(x) && !held[i][k] {
                 points.push((i, x));
             }
         }
     }
     // Every region's raise on its own (in parallel, like the meshing).
     let raise = |ch: &Chart| -> Option<Raise> {
-        if matches!(net.regions[ch.region].kind, RegionKind::Fusion { .. }) {
-            return None;
-        }
         // A primitive's own regions hold its faces by construction (s ≥ 1).
         let own = match net.regions[ch.region].kind {
+            RegionKind::Fusion { .. } => return None,
             RegionKind::Primitive { primitive, .. } => Some(primitive),
-            _ => None,
+            RegionKind::Lid { .. } => None,
         };
         // A ball about the region's corners that holds every point a raise can reach.
         let corners: Vec<DVec3> = ch
