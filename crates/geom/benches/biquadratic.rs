@@ -12,7 +12,7 @@
 
 use prism_geom::refine::dual_quad;
 use prism_geom::rules::{CornerRule, RuleInput, corner_points};
-use prism_geom::{EdgeAttrs, StepOptions, Topology, biquadratic_step, primitives};
+use prism_geom::{EdgeAttrs, RoundingOptions, Topology, biquadratic_step, primitives};
 
 #[global_allocator]
 static ALLOC: mimalloc::MiMalloc = mimalloc::MiMalloc;
@@ -35,7 +35,7 @@ fn step_doo_sabin(b: divan::Bencher) {
             &attrs,
             &CornerRule::DooSabin,
             None,
-            &StepOptions::default(),
+            &RoundingOptions::default(),
         )
         .unwrap()
     });
@@ -44,7 +44,7 @@ fn step_doo_sabin(b: divan::Bencher) {
 /// The whole user-visible step of `rule` on `m`, from the start of a run.
 fn bench_step(b: divan::Bencher, m: prism_geom::PolyMesh, rule: CornerRule) {
     let attrs = EdgeAttrs::new();
-    b.bench(|| biquadratic_step(&m, &attrs, &rule, None, &StepOptions::default()).unwrap());
+    b.bench(|| biquadratic_step(&m, &attrs, &rule, None, &RoundingOptions::default()).unwrap());
 }
 
 #[divan::bench(sample_count = 20)]

@@ -21,6 +21,7 @@
 
 pub mod analysis;
 pub mod ancestry;
+pub mod child_check;
 pub mod curve;
 pub mod curve_study;
 pub mod dissolve;
@@ -58,8 +59,9 @@ pub use primal::{
     limit_points_ordered, refine_primal, refine_primal_levels, refine_primal_ordered,
     refine_primal_with,
 };
+pub use rules::RoundingOptions;
 pub use rules::{CornerRule, ReflexMode};
 pub use scheme::{Scheme, parse_pipeline};
-pub use step::{StepError, StepOptions, StepReport, biquadratic_step};
+pub use step::{StepError, StepReport, biquadratic_step};
 pub use tags::{BoundaryInterpolation, CreaseMethod, SubdivTags, TriangleSubdivision};
 pub use topology::Topology;

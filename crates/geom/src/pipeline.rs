@@ -15,9 +15,10 @@ use crate::mesh::PolyMesh;
 use crate::primal::{refine_primal_carrying, repoint};
 use crate::refine::Provenance;
 use crate::rules::Overlap;
+use crate::rules::RoundingOptions;
 use crate::rules::{CombinationState, CornerRule};
 use crate::scheme::Scheme;
-use crate::step::{StepError, StepOptions, StepReport, biquadratic_step_carrying, primal_flipped};
+use crate::step::{StepError, StepReport, biquadratic_step_carrying, primal_flipped};
 use crate::tags::SubdivTags;
 use crate::topology::Topology;
 use glam::DVec3;
@@ -135,7 +136,7 @@ pub enum Keep {
 pub struct Pipeline {
     steps: Vec<Scheme>,
     levels: Vec<Level>,
-    pub options: StepOptions,
+    pub options: RoundingOptions,
     pub keep: Keep,
     /// The topology of level k, kept where step k is primal and every level is kept
     /// ([`Keep::All`], the app): what [`Pipeline::moved`] hands on.
@@ -175,7 +176,7 @@ impl Pipeline {
                 combination: None,
                 report: None,
             }],
-            options: StepOptions::default(),
+            options: RoundingOptions::default(),
             keep: Keep::All,
             topologies: Vec::new(),
             reuse: Vec::new(),
@@ -336,7 +337,8 @@ impl Pipeline {
 
     /// [`memory::step_bytes`] of a step of `scheme` from a level of `counts`, with the search
     /// of the new level for crossings when the options mend them and the step takes the last
-    /// resorts ([`crate::rules::CornerRule::takes_resorts`]).
+    /// whole-level search ([`crate::rules::Mend::EveryCrossing`] in
+    /// [`crate::rules::CornerRule::mends`]).
     fn step_bytes(
         &self,
         counts: &memory::Counts,
@@ -346,8 +348,9 @@ impl Pipeline {
     ) -> u64 {
         let mut b = memory::step_bytes(counts, scheme, topology, carry, self.provenance(scheme));
         if let Scheme::Biquadratic(rule) = scheme
-            && self.options.mend_crossings
-            && rule.takes_resorts(self.options.overlap.clamps())
+            && rule
+                .mends(&self.options)
+                .contains(&crate::rules::Mend::EveryCrossing)
         {
             b += memory::crossing_bytes(&counts.after(scheme));
         }
@@ -438,7 +441,7 @@ impl Pipeline {
                     let continues_run = k > 0
                         && self.steps[k - 1].rounds_edges()
                         && radius(&self.steps[k - 1]) == radius(&self.steps[k]);
-                    let options = StepOptions {
+                    let options = RoundingOptions {
                         overlap: if continues_run {
                             Overlap::Unchecked {
                                 clamped: self.options.overlap.clamps(),

@@ -3,8 +3,8 @@
 
 use prism_geom::rules::{EdgeFit, Overlap, RuleError};
 use prism_geom::{
-    CornerRule, EdgeAttr, EdgeAttrs, EdgeKey, Pipeline, PipelineError, PolyMesh, Scheme, StepError,
-    StepOptions, io, primitives,
+    CornerRule, EdgeAttr, EdgeAttrs, EdgeKey, Pipeline, PipelineError, PolyMesh, RoundingOptions,
+    Scheme, StepError, io, primitives,
 };
 use std::path::Path;
 
@@ -31,9 +31,9 @@ fn combination(n: usize, r: f64) -> Vec<Scheme> {
 
 fn run(m: PolyMesh, attrs: EdgeAttrs, steps: Vec<Scheme>, overlap: Overlap) -> Pipeline {
     let mut p = Pipeline::new(m, attrs, steps);
-    p.options = StepOptions {
+    p.options = RoundingOptions {
         overlap,
-        ..StepOptions::default()
+        ..RoundingOptions::default()
     };
     let _ = p.compute();
     p
@@ -178,7 +178,7 @@ fn an_own_radius_stays_inside_the_cage() {
     for (k, lv) in p.levels().iter().enumerate().skip(1) {
         let r = lv.report.as_ref().unwrap();
         assert!(r.flipped.is_empty(), "level {k}: {:?}", r.flipped);
-        assert_eq!(r.unfolded_faces, 0, "level {k}");
+        assert_eq!(r.mend.unfolded_faces, 0, "level {k}");
         let (lo, hi) = lv.mesh.bbox();
         assert!(
             lo.min_element() >= -1e-9 && hi.max_element() <= 3.0 + 1e-9,
@@ -285,7 +285,7 @@ fn a_tilted_arm_top_beside_an_own_radius_does_not_fold() {
     for (k, lv) in p.levels().iter().enumerate().skip(1) {
         let r = lv.report.as_ref().unwrap();
         assert!(r.flipped.is_empty(), "level {k}: {:?}", r.flipped);
-        unfolded += r.unfolded_faces;
+        unfolded += r.mend.unfolded_faces;
         let (a, b) = lv.mesh.bbox();
         assert!(
             a.cmpge(lo - 1e-9).all() && b.cmple(hi + 1e-9).all(),
@@ -396,7 +396,11 @@ fn doubly_smoothed_inputs_round_without_a_flip() {
             crossing, 0,
             "level {k}: {crossing} pairs through each other"
         );
-        assert_eq!(lv.report.as_ref().unwrap().untangled.points, 0, "level {k}");
+        assert_eq!(
+            lv.report.as_ref().unwrap().mend.untangled.points,
+            0,
+            "level {k}"
+        );
     }
     let mut s = steps("combination:r=0.4,catmull-clark");
     s.extend(combination(3, 0.3));
@@ -406,7 +410,7 @@ fn doubly_smoothed_inputs_round_without_a_flip() {
     let d = p.levels()[2].mesh.bbox_diagonal();
     let untangled: Vec<_> = p.levels()[3..]
         .iter()
-        .map(|l| l.report.as_ref().unwrap().untangled)
+        .map(|l| l.report.as_ref().unwrap().mend.untangled)
         .collect();
     assert!(
         untangled.iter().any(|u| u.points > 0),
@@ -579,8 +583,8 @@ fn the_computer_room_smoothed_twice_rounds_through_level_six() {
     assert_eq!(p.levels().len(), 7);
     assert_sound_inside(&p, 2);
     let r = p.levels()[6].report.as_ref().unwrap();
-    assert!(r.reoffset_faces > 0, "{}", r.reoffset_faces);
-    assert_eq!(r.untangled.points, 0);
+    assert!(r.mend.reoffset_faces > 0, "{}", r.mend.reoffset_faces);
+    assert_eq!(r.mend.untangled.points, 0);
 }
 
 /// Random pipelines on the bundled solids (docs/algorithms/cylindrical.md, "Random mixes"):
@@ -690,7 +694,7 @@ fn random_mixes_of_steps() {
             p.options.memory_budget = 2 << 30;
             // As the app: every rounding also mends crossings anywhere on its level
             // (NOMEND=1: only beside the guard's moves, the library's default).
-            p.options.mend_crossings = std::env::var("NOMEND").is_err();
+            p.options.mend.crossings = std::env::var("NOMEND").is_err();
             let _ = p.compute();
             // Without and with the crossing check (analysis::crossings).
             let mut sound_so_far = [true, true];
@@ -811,7 +815,7 @@ fn the_fold_guard_moves_a_concave_face_with_the_width_offset() {
         "vector-sum:alpha=0.1:reflex=inward,vector-sum:alpha=0.2:reflex=inward,\
          combination:r=0.1,combination:r=0.1",
     );
-    assert!(p.levels()[4].report.as_ref().unwrap().unfolded_faces > 0);
+    assert!(p.levels()[4].report.as_ref().unwrap().mend.unfolded_faces > 0);
 }
 
 /// The tripod through the clamped steps `text`: every level there, sound, and no two faces
@@ -858,7 +862,7 @@ fn blend_faces_beside_a_fold_take_the_width_offset() {
         "combination:r=0.1,vector-sum:alpha=0.2:reflex=inward,\
          combination:r=0.2,combination:r=0.2",
     );
-    assert!(p.levels()[4].report.as_ref().unwrap().reoffset_faces > 0);
+    assert!(p.levels()[4].report.as_ref().unwrap().mend.reoffset_faces > 0);
 }
 
 /// A bow-tie lying in a plane is re-placed too (docs/algorithms/cylindrical.md, "Blend faces
@@ -875,7 +879,7 @@ fn a_bow_tie_in_a_plane_is_re_placed() {
          vector-sum:alpha=0.2:reflex=inward,combination:r=0.1,combination:r=0.1,\
          combination:r=0.1",
     );
-    assert!(p.levels()[5].report.as_ref().unwrap().reoffset_faces > 0);
+    assert!(p.levels()[5].report.as_ref().unwrap().mend.reoffset_faces > 0);
 }
 
 /// A blend needle's points drawn towards its corners (docs/algorithms/cylindrical.md, "Blend
@@ -893,7 +897,7 @@ fn blend_needles_take_points_nearer_their_corners() {
         "vector-sum:alpha=0.1:reflex=inward,doo-sabin,combination:r=0.4,\
          combination:r=0.3,combination:r=0.3,combination:r=0.3",
     );
-    assert!(p.levels()[6].report.as_ref().unwrap().reoffset_faces > 0);
+    assert!(p.levels()[6].report.as_ref().unwrap().mend.reoffset_faces > 0);
 }
 
 /// A bow-tie the minimum type makes takes small chamfers (docs/algorithms/cylindrical.md,
@@ -923,7 +927,7 @@ fn a_bow_tie_of_the_minimum_type_takes_small_chamfers() {
         })
         .count();
     assert_eq!(bow_ties, 0);
-    assert!(p.levels()[3].report.as_ref().unwrap().small_chamfers > 0);
+    assert!(p.levels()[3].report.as_ref().unwrap().mend.small_chamfers > 0);
 }
 
 /// The combination rule's final resort (docs/algorithms/cylindrical.md, "Small chamfers beside
@@ -944,7 +948,7 @@ fn small_chamfers_take_over_where_a_round_still_folds() {
         let p = tripod_sound_and_crossing_nowhere(text);
         let chamfers: Vec<usize> = p.levels()[1..]
             .iter()
-            .map(|lv| lv.report.as_ref().unwrap().small_chamfers)
+            .map(|lv| lv.report.as_ref().unwrap().mend.small_chamfers)
             .collect();
         println!("{text}: {chamfers:?}");
         assert!(chamfers.iter().any(|&n| n > 0), "{text}");
@@ -968,7 +972,7 @@ fn small_chamfers_that_would_cross_go_on_shrinking() {
         2,
     );
     assert_eq!(p.levels()[2].report.as_ref().unwrap().flipped.len(), 4);
-    assert!(p.levels()[5].report.as_ref().unwrap().small_chamfers > 0);
+    assert!(p.levels()[5].report.as_ref().unwrap().mend.small_chamfers > 0);
 }
 
 /// Where shrinking the small chamfers until nothing crosses takes many rounds (docs/algorithms/
@@ -984,7 +988,7 @@ fn small_chamfers_shrink_on_for_as_many_rounds_as_the_crossings_need() {
         "combination:r=0.1,vector-sum:alpha=0.2:reflex=inward,\
          combination:r=0.2,combination:r=0.2,combination:r=0.2",
     );
-    let n = p.levels()[5].report.as_ref().unwrap().small_chamfers;
+    let n = p.levels()[5].report.as_ref().unwrap().mend.small_chamfers;
     assert!(n > 0 && n < 4000, "{n}");
 }
 
@@ -1002,7 +1006,7 @@ fn crossings_beside_the_guards_moves_take_small_chamfers() {
         "cut-width:d=0.05,vector-sum:alpha=0.2:reflex=inward,\
          combination:r=0.2,combination:r=0.2,combination:r=0.2",
     );
-    assert!(p.levels()[5].report.as_ref().unwrap().small_chamfers > 0);
+    assert!(p.levels()[5].report.as_ref().unwrap().mend.small_chamfers > 0);
 }
 
 /// Crossings beside the edges the guard cut narrower (docs/algorithms/cylindrical.md,
@@ -1030,7 +1034,10 @@ fn crossings_beside_the_guards_capped_edges_take_small_chamfers() {
         assert_eq!(p.levels().len(), steps(text).len() + 1, "{text}");
         assert_sound_and_crossing_nowhere_after(&p, from);
         let r = p.levels()[k].report.as_ref().unwrap();
-        assert!(r.capped_edges > 0 && r.small_chamfers > 0, "{text}: {r:?}");
+        assert!(
+            r.capped_edges > 0 && r.mend.small_chamfers > 0,
+            "{text}: {r:?}"
+        );
     }
 }
 
@@ -1059,7 +1066,7 @@ fn crossings_at_concave_vertices_take_small_chamfers() {
         assert_eq!(p.levels().len(), 7, "{name}");
         assert_sound_and_crossing_nowhere_after(&p, 0);
         assert!(
-            p.levels()[6].report.as_ref().unwrap().small_chamfers > 0,
+            p.levels()[6].report.as_ref().unwrap().mend.small_chamfers > 0,
             "{name}"
         );
     }
@@ -1078,7 +1085,7 @@ fn small_chamfers_at_nearly_straight_corners_stay_in_their_faces() {
         "vector-sum:alpha=0.2:reflex=inward,vector-sum:alpha=0.2:reflex=inward,\
          combination:r=0.2,combination:r=0.2,combination:r=0.2",
     );
-    assert!(p.levels()[5].report.as_ref().unwrap().small_chamfers > 0);
+    assert!(p.levels()[5].report.as_ref().unwrap().mend.small_chamfers > 0);
 }
 
 /// Small chamfers to suit a sliver (docs/algorithms/cylindrical.md, "Small chamfers on
@@ -1094,7 +1101,7 @@ fn small_chamfers_on_slivers_suit_their_width() {
         "combination:r=0.1,catmull-clark,cylindrical:r=0.2,\
          combination:r=0.2,combination:r=0.2,combination:r=0.2",
     );
-    assert!(p.levels()[6].report.as_ref().unwrap().small_chamfers > 0);
+    assert!(p.levels()[6].report.as_ref().unwrap().mend.small_chamfers > 0);
 }
 
 /// The absolute chamfers' clamp on a face with a reflex corner (docs/algorithms/chamfers.md,
@@ -1147,9 +1154,9 @@ fn chamfers_and_the_minimum_type_take_the_last_resorts_when_clamped() {
                 vector-sum:alpha=0.2:reflex=inward";
     let printed = document_run("holed-block.prism.json", text, Overlap::Refuse);
     assert_eq!((flipped(&printed, 2), flipped(&printed, 3)), (2, 18));
-    assert!(sound("holed-block.prism.json", text).small_chamfers > 0);
+    assert!(sound("holed-block.prism.json", text).mend.small_chamfers > 0);
     let text = "combination:r=0.4,catmull-clark,minimum:r=0.2";
-    assert!(sound("cube-rim.prism.json", text).untangled.points > 0);
+    assert!(sound("cube-rim.prism.json", text).mend.untangled.points > 0);
 }
 
 /// A smoothing step reports the faces it turns over (docs/algorithms/biquadratic.md, "Faces a
@@ -1187,7 +1194,7 @@ fn smoothing_steps_report_the_faces_they_turn_over() {
 /// crossing"): on the L-block after Catmull–Clark, an angle-bisector chamfer, the simple
 /// cylindrical type and three rounds (r = 0.2), the third round passes 12 pairs of faces
 /// through each other away from any face the guard moved or concave vertex, with none flipped;
-/// with `mend_crossings` the step
+/// with `mend.crossings` the step
 /// searches its whole level and their vertices take small chamfers: every level sound and
 /// crossing nowhere. About 3 s in release (the Computer room's 516k-face level searched).
 #[test]
@@ -1195,7 +1202,7 @@ fn crossings_anywhere_are_mended_when_asked() {
     let mended = |mesh: PolyMesh, text: &str| {
         let mut p = Pipeline::new(mesh, EdgeAttrs::new(), steps(text));
         p.options.overlap = Overlap::Clamp;
-        p.options.mend_crossings = true;
+        p.options.mend.crossings = true;
         let _ = p.compute();
         assert_eq!(p.levels().len(), steps(text).len() + 1);
         p
@@ -1214,7 +1221,7 @@ fn crossings_anywhere_are_mended_when_asked() {
     );
     let p = mended(asset("l-block.obj"), text);
     assert_sound_and_crossing_nowhere_after(&p, 0);
-    assert!(p.levels()[6].report.as_ref().unwrap().small_chamfers > 0);
+    assert!(p.levels()[6].report.as_ref().unwrap().mend.small_chamfers > 0);
     // Crossings left after the small chamfers beside the guard's moves are searched for too:
     // the Computer room after an inward vector sum, a round, Doo–Sabin and three rounds (r =
     // 0.1) kept 84 pairs at level 6 that way.
@@ -1223,5 +1230,5 @@ fn crossings_anywhere_are_mended_when_asked() {
     let p = mended(computer_room(), text);
     assert!(prism_geom::analysis::crossings(&p.levels()[6].mesh).is_empty());
     let r = p.levels()[6].report.as_ref().unwrap();
-    assert!(r.flipped.is_empty() && r.small_chamfers > 0);
+    assert!(r.flipped.is_empty() && r.mend.small_chamfers > 0);
 }

@@ -4,13 +4,13 @@
 
 use prism_geom::rules::Overlap;
 use prism_geom::scheme::parse_pipeline;
-use prism_geom::{CornerRule, EdgeAttrs, Pipeline, PolyMesh, Scheme, StepOptions, primitives};
+use prism_geom::{CornerRule, EdgeAttrs, Pipeline, PolyMesh, RoundingOptions, Scheme, primitives};
 
 fn run(m: &PolyMesh, steps: Vec<Scheme>, overlap: Overlap) -> Pipeline {
     let mut p = Pipeline::new(m.clone(), EdgeAttrs::new(), steps);
-    p.options = StepOptions {
+    p.options = RoundingOptions {
         overlap,
-        ..StepOptions::default()
+        ..RoundingOptions::default()
     };
     p.compute().unwrap();
     p
@@ -143,7 +143,7 @@ fn the_vector_sum_clamp_keeps_reflex_corners_off_the_far_side() {
     let chamfers = |p: &Pipeline| -> Vec<usize> {
         p.levels()[2..]
             .iter()
-            .map(|lv| lv.report.as_ref().unwrap().small_chamfers)
+            .map(|lv| lv.report.as_ref().unwrap().mend.small_chamfers)
             .collect()
     };
     assert!(

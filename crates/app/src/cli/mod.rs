@@ -8,7 +8,7 @@ mod limit;
 mod new;
 mod render;
 mod skin;
-mod subdivide;
+pub(crate) mod subdivide;
 
 use clap::{Parser, Subcommand};
 

@@ -74,11 +74,14 @@ pub struct StepArgs {
 impl StepArgs {
     /// The step options these arguments ask for, under the budget `--memory-budget` gave
     /// ([`super::MemoryArgs::check`]).
-    pub fn options(&self, memory_budget: u64) -> prism_geom::StepOptions {
-        prism_geom::StepOptions {
+    pub fn options(&self, memory_budget: u64) -> prism_geom::RoundingOptions {
+        prism_geom::RoundingOptions {
             overlap: prism_geom::rules::Overlap::clamping(self.clamp),
-            mend_crossings: self.mend_crossings,
             memory_budget,
+            mend: prism_geom::rules::MendOptions {
+                crossings: self.mend_crossings,
+                ..Default::default()
+            },
             ..Default::default()
         }
     }
@@ -230,108 +233,41 @@ impl LevelWarnings {
     }
 }
 
-/// Prints one level's warnings; `before` is the signed volume of the level before.
+/// Prints one level's warnings ([`level_lines`]).
 fn warn_level(k: usize, r: &StepReport, before: f64) {
-    if !r.clamped.is_empty() {
-        eprintln!(
-            "note: level {k}: {} edge radius(es) clamped to fit their faces: {}",
-            r.clamped.len(),
-            prism_geom::rules::overlap::list(&r.clamped)
-        );
+    for line in level_lines(k, r, before) {
+        eprintln!("{line}");
     }
-    if r.clamped_faces > 0 {
-        eprintln!(
-            "note: level {k}: l, d or α lowered on {} face(s) too small for it (clamp)",
-            r.clamped_faces
-        );
-    }
-    if r.offset_faces > 0 {
-        eprintln!(
-            "note: level {k}: Doo–Sabin's width offset on {} concave face(s) whose eq. (1) points would turn a strip over (clamp)",
-            r.offset_faces
-        );
-    }
-    if r.capped_edges > 0 {
-        eprintln!(
-            "note: level {k}: {} edge(s) cut narrower so that the cut faces keep their edges",
-            r.capped_edges
-        );
-    }
-    let first = |faces: &[u32]| {
-        let s: Vec<String> = faces.iter().take(5).map(|f| f.to_string()).collect();
-        s.join(", ")
-    };
-    if !r.flipped.is_empty() {
-        eprintln!(
-            "warning: level {k}: {} face(s) flipped (normal against their parent's), e.g. face(s) {}",
-            r.flipped.len(),
-            first(&r.flipped)
-        );
-    }
-    if !r.degenerate.is_empty() {
-        eprintln!(
-            "warning: level {k}: {} face(s) of (almost) no area, e.g. face(s) {}",
-            r.degenerate.len(),
-            first(&r.degenerate)
-        );
-    }
-    if r.dissolved_edges > 0 {
-        eprintln!(
-            "note: level {k}: {} flat edge(s) dissolved first (coplanar faces merged)",
-            r.dissolved_edges
-        );
-    }
-    if r.collapsed_corners > 0 {
-        eprintln!(
-            "warning: level {k}: {} corner(s) on collapsed edges kept at their vertex",
-            r.collapsed_corners
-        );
-    }
-    if r.unfolded_faces > 0 {
-        eprintln!(
-            "note: level {k}: {} face(s) joined the vertex blend (Doo–Sabin) because their cut points would have folded a new face",
-            r.unfolded_faces
-        );
-    }
-    if r.reoffset_faces > 0 {
-        eprintln!(
-            "note: level {k}: {} blend face(s) took Doo–Sabin's width offset or points nearer their corners because a new face beside them would have folded",
-            r.reoffset_faces
-        );
-    }
-    if r.untangled.points > 0 {
-        eprintln!(
-            "note: level {k}: {} point(s) of folded sliver faces smoothed until none was flipped (largest move {:.3e})",
-            r.untangled.points, r.untangled.largest_move
-        );
-    }
-    if r.small_chamfers > 0 {
-        eprintln!(
-            "note: level {k}: the rule's points gave way to a small chamfer at {} vertex(es) where a new face would still have been flipped, passed through another or crossed itself",
-            r.small_chamfers
-        );
-    }
-    if r.guarded_corners > 0 {
-        eprintln!(
-            "note: level {k}: {} straight corner(s) with unequal cut widths capped",
-            r.guarded_corners
-        );
-    }
+}
+
+/// One level's notes and warnings as the CLI prints them: the step's own
+/// ([`StepReport::notes`], the words the app's status bar shows too), then the volume's;
+/// `before` is the signed volume of the level before.
+pub fn level_lines(k: usize, r: &StepReport, before: f64) -> Vec<String> {
+    let mut out: Vec<String> = r
+        .notes()
+        .into_iter()
+        .map(|n| {
+            let kind = if n.warning { "warning" } else { "note" };
+            format!("{kind}: level {k}: {}", n.text)
+        })
+        .collect();
     if before > 0.0
         && r.volume > 0.0
         && (r.volume / before > VOLUME_JUMP || before / r.volume > VOLUME_JUMP)
     {
-        eprintln!(
+        out.push(format!(
             "warning: level {k}: the volume jumped from {before:.4e} to {:.4e} (the surface folds through itself)",
             r.volume
-        );
+        ));
     }
     if r.volume < 0.0 && before <= 0.0 {
-        eprintln!(
+        out.push(format!(
             "warning: level {k}: the solid is inside out (signed volume {:.4e})",
             r.volume
-        );
+        ));
     }
+    out
 }
 
 /// Says once per distinct step that its parameter is above what can be repeated (vector

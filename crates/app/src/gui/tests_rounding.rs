@@ -163,7 +163,10 @@ fn the_status_bar_says_what_the_clamp_and_the_untangling_did() {
     let n = notes("tripod.obj", "vector-sum:alpha=0.2:reflex=inward", 1);
     assert!(n.contains("α lowered on 3 face(s)"), "{n}");
     let n = notes("tripod.obj", "cylindrical:r=0.2,doo-sabin", 2);
-    assert!(n.contains("Doo–Sabin offset on 3 concave face(s)"), "{n}");
+    assert!(
+        n.contains("Doo–Sabin's width offset on 3 concave face(s)"),
+        "{n}"
+    );
     let n = notes(
         "computer-room.obj",
         "combination:r=0.4,catmull-clark,combination:r=0.3,combination:r=0.3,combination:r=0.3",
@@ -180,9 +183,106 @@ fn the_status_bar_says_what_the_clamp_and_the_untangling_did() {
         5,
     );
     assert!(
-        n.contains("small chamfer instead of the rule's points at 30 vertex(es) beside a fold"),
+        n.contains("a small chamfer at 30 vertex(es) where a new face would still have been"),
         "{n}"
     );
+}
+
+/// The CLI and the app say a step's report in the same words: every note and warning of
+/// `StepReport::notes` is a line of `prism subdivide` and a part of the status bar (but for the
+/// flipped faces and the clamped radii, which the bar shows as its menu button and its orange
+/// list), over pipelines whose reports hold clamped faces, Doo–Sabin's offset, dissolved edges,
+/// the fold guard, the untangling and the small chamfers.
+#[test]
+fn the_cli_and_the_status_bar_say_a_report_in_the_same_words() {
+    use prism_geom::step::Topic;
+    let mut topics = Vec::new();
+    for (file, pipeline) in [
+        ("tripod.obj", "vector-sum:alpha=0.2:reflex=inward"),
+        ("tripod.obj", "cylindrical:r=0.2,doo-sabin"),
+        (
+            "computer-room.obj",
+            "combination:r=0.4,catmull-clark,combination:r=0.3,combination:r=0.3,combination:r=0.3",
+        ),
+        (
+            "tripod.obj",
+            "vector-sum:alpha=0.1:reflex=inward,vector-sum:alpha=0.2:reflex=inward,\
+             combination:r=0.2,combination:r=0.2,combination:r=0.2",
+        ),
+        ("tripod.obj", "combination:r=0.9,combination:r=0.9"),
+        (
+            "cube.obj",
+            "cylindrical:r=0.45,cylindrical:r=0.45,cylindrical:r=0.45,cylindrical:r=0.45",
+        ),
+    ] {
+        let mut a = opened(&asset(file));
+        let steps = parse_pipeline(pipeline).unwrap();
+        a.run(Edit::SetPipeline { view: 0, steps });
+        a.wait_idle();
+        for (k, lv) in a.model.views[0].pipeline.levels().iter().enumerate() {
+            let Some(r) = &lv.report else { continue };
+            let cli = crate::cli::subdivide::level_lines(k, r, 1.0).join("\n");
+            let bar = super::model::panels::step_notes(r);
+            for n in r.notes() {
+                assert!(cli.contains(&n.text), "{file} {pipeline} level {k}: {cli}");
+                let shown = !matches!(n.topic, Topic::Flipped | Topic::ClampedRadii);
+                assert_eq!(
+                    bar.contains(&n.text),
+                    shown,
+                    "{file} {pipeline} level {k}: {bar}"
+                );
+                topics.push(n.topic);
+            }
+        }
+    }
+    for t in [
+        Topic::ClampedRadii,
+        Topic::ClampedFaces,
+        Topic::OffsetFaces,
+        Topic::Flipped,
+        Topic::Mend,
+    ] {
+        assert!(topics.contains(&t), "no pipeline said {t:?}");
+    }
+    // Every topic at once, on a report with every counter set.
+    let r = prism_geom::StepReport {
+        flipped: vec![3, 4],
+        degenerate: vec![5],
+        dissolved_edges: 1,
+        guarded_corners: 2,
+        clamped: vec![prism_geom::rules::EdgeFit {
+            a: 0,
+            b: 1,
+            radius: 0.5,
+            fits: 0.25,
+        }],
+        capped_edges: 3,
+        clamped_faces: 4,
+        offset_faces: 5,
+        collapsed_corners: 6,
+        mend: prism_geom::rules::MendReport {
+            unfolded_faces: 7,
+            reoffset_faces: 8,
+            untangled: prism_geom::rules::Untangled {
+                points: 9,
+                largest_move: 1e-3,
+            },
+            small_chamfers: 10,
+        },
+        ..Default::default()
+    };
+    let (cli, bar) = (
+        crate::cli::subdivide::level_lines(1, &r, 1.0),
+        super::model::panels::step_notes(&r),
+    );
+    let notes = r.notes();
+    assert_eq!(notes.len(), 13);
+    assert_eq!(cli.len(), 13);
+    for (n, line) in notes.iter().zip(&cli) {
+        assert!(line.ends_with(&n.text), "{line}");
+        let shown = !matches!(n.topic, Topic::Flipped | Topic::ClampedRadii);
+        assert_eq!(bar.contains(&n.text), shown, "{bar}");
+    }
 }
 
 /// A surface that passes through itself with every face still outward (the flip test cannot
@@ -266,11 +366,11 @@ fn mending_crossings_is_a_checkbox_away() {
         prism_geom::analysis::crossings(&levels[6].mesh).len()
     };
     assert!(a.model.mend_crossings);
-    assert!(a.model.views[0].pipeline.options.mend_crossings);
+    assert!(a.model.views[0].pipeline.options.mend.crossings);
     assert_eq!(level6(&a), 0);
     a.model.set_mend_crossings(false);
     a.model.sync(&a.doc);
     a.wait_idle();
-    assert!(!a.model.views[0].pipeline.options.mend_crossings);
+    assert!(!a.model.views[0].pipeline.options.mend.crossings);
     assert_eq!(level6(&a), 12);
 }

@@ -22,6 +22,7 @@
 //! at reflex corners the magnitude is capped and the sign kept. It never flips in the
 //! paper's tests but does not converge to r (it stalls near 0.2 % of r, §2.7).
 
+use super::RoundingOptions;
 use super::overlap::{EdgeFit, Overlap, fitting_scales};
 use super::prepared::Prepared;
 use super::{CornerRule, RuleError, RuleInput, RuleReport, corner_frame_on_edges};
@@ -29,7 +30,7 @@ use crate::dissolve::dissolve_flat_edges;
 use crate::edge_attrs::{EdgeAttrs, EdgeKey};
 use crate::geometry::signed_bend_angles;
 use crate::mesh::PolyMesh;
-use crate::step::{StepError, StepOptions};
+use crate::step::StepError;
 use crate::topology::Topology;
 use glam::DVec3;
 use rayon::prelude::*;
@@ -101,7 +102,7 @@ pub(super) fn prepare<'a>(
     mesh: &'a PolyMesh,
     attrs: &'a EdgeAttrs,
     flags: Option<&[bool]>,
-    options: &StepOptions,
+    options: &RoundingOptions,
     known: Option<Topology>,
 ) -> Result<Prepared<'a>, StepError> {
     let tol = options.flat_tolerance;

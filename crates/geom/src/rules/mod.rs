@@ -27,22 +27,19 @@ pub mod combination;
 mod concave;
 mod cylindrical;
 mod doo_sabin;
+pub mod mend;
+mod options;
 pub mod overlap;
 mod prepare;
 mod prepared;
 pub mod primal;
-mod retreat;
-mod unfold;
-mod untangle;
 
 pub use combination::CombinationState;
 pub use cylindrical::{cut_width, dissolve_needed};
+pub use mend::{Mend, MendOptions, MendReport, Untangled};
+pub use options::RoundingOptions;
 pub use overlap::{EdgeFit, Overlap};
 pub use prepared::Prepared;
-pub(crate) use retreat::retreat;
-pub(crate) use unfold::fold_guard;
-pub use untangle::Untangled;
-pub(crate) use untangle::untangle;
 
 use crate::mesh::PolyMesh;
 use crate::topology::Topology;
@@ -91,20 +88,41 @@ impl CornerRule {
         )
     }
 
-    /// Whether a step of the rule takes the last resorts — the untangling and the small
-    /// chamfers, and the whole-level search for crossings when mending is asked for: the
-    /// combination rule always, the minimum type and the chamfers when `clamps` (the simple
-    /// type's folds are the paper's lesson, Doo–Sabin's the scheme as printed).
-    pub fn takes_resorts(&self, clamps: bool) -> bool {
+    /// The mending strategies a step of the rule takes, in the order they run
+    /// ([`mend`]): the combination rule always takes the fold guard, the untangling and the
+    /// small chamfers with the crossings beside the guard's moves; the minimum type and the
+    /// chamfers take the untangling and the small chamfers with the bow-ties when `options`
+    /// clamp (the simple type's folds are the paper's lesson, Doo–Sabin's the scheme as
+    /// printed, so neither is mended); every rule that mends also searches the whole level
+    /// for crossings when [`MendOptions::crossings`] asks.
+    pub fn mends(&self, options: &RoundingOptions) -> Vec<Mend> {
+        let mut plan = match self {
+            CornerRule::Combination { .. } => vec![
+                Mend::FoldGuard,
+                Mend::Untangle,
+                Mend::SmallChamfers,
+                Mend::GuardCrossings,
+                Mend::ConcaveVertexCrossings,
+            ],
+            CornerRule::Minimum { .. }
+            | CornerRule::AngleBisector { .. }
+            | CornerRule::CutWidth { .. }
+            | CornerRule::VectorSum { .. }
+                if options.overlap.clamps() =>
+            {
+                vec![Mend::Untangle, Mend::SmallChamfers, Mend::SelfCrossings]
+            }
+            _ => Vec::new(),
+        };
+        if !plan.is_empty() && options.mend.crossings {
+            plan.push(Mend::EveryCrossing);
+        }
+        plan
+    }
+
+    /// Whether the rule carries a run's state from step to step ([`CombinationState`]).
+    pub fn carries_state(&self) -> bool {
         matches!(self, CornerRule::Combination { .. })
-            || (clamps
-                && matches!(
-                    self,
-                    CornerRule::Minimum { .. }
-                        | CornerRule::AngleBisector { .. }
-                        | CornerRule::CutWidth { .. }
-                        | CornerRule::VectorSum { .. }
-                ))
     }
 
     /// The default radius of the cylindrical family.

@@ -97,6 +97,15 @@ pub fn list(fits: &[EdgeFit]) -> String {
     s.join(", ")
 }
 
+/// The sentence a step's report gives for the radii `fits` lowered ([`crate::step::StepReport::notes`]).
+pub fn note(fits: &[EdgeFit]) -> String {
+    format!(
+        "{} edge radius(es) clamped to fit their faces: {}",
+        fits.len(),
+        list(fits)
+    )
+}
+
 /// Straight-corner threshold on 1 − c, as the simple type's (there the along-edge term is
 /// capped by the rule, and only the mean width counts here).
 const STRAIGHT_CORNER: f64 = 1e-12;

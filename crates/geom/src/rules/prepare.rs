@@ -4,13 +4,14 @@
 //! ([`super::cylindrical::prepare`]); the combination rule continues its run's
 //! [`CombinationState`]. The step ([`crate::step`]) stays generic: prepare, place, split.
 
+use super::RoundingOptions;
 use super::cylindrical;
 use super::prepared::{Prepared, checked_level};
 use super::{CornerRule, combination::CombinationState};
 use crate::edge_attrs::EdgeAttrs;
 use crate::error::MeshError;
 use crate::mesh::PolyMesh;
-use crate::step::{StepError, StepOptions};
+use crate::step::StepError;
 use crate::topology::Topology;
 use std::borrow::Cow;
 
@@ -49,7 +50,7 @@ impl CornerRule {
         mesh: &'a PolyMesh,
         attrs: &'a EdgeAttrs,
         state: Option<&CombinationState>,
-        options: &StepOptions,
+        options: &RoundingOptions,
         known: Option<Topology>,
     ) -> Result<Prepared<'a>, StepError> {
         let state = match self {
@@ -101,7 +102,7 @@ mod tests {
         attrs.insert(EdgeKey::new(a, b), own);
         let rule = CornerRule::Cylindrical { r: 0.2 };
         let p = rule
-            .prepare(&m, &attrs, None, &StepOptions::default(), None)
+            .prepare(&m, &attrs, None, &RoundingOptions::default(), None)
             .unwrap();
         assert_eq!(p.dissolved_edges, 0);
         assert_eq!(p.cut_widths.len(), 12);
@@ -113,7 +114,7 @@ mod tests {
         assert_eq!(rule.edge_radius(None), Some(0.2));
         assert_eq!(CornerRule::DooSabin.edge_radius(Some(&own)), None);
         let q = CornerRule::DooSabin
-            .prepare(&m, &attrs, None, &StepOptions::default(), None)
+            .prepare(&m, &attrs, None, &RoundingOptions::default(), None)
             .unwrap();
         assert!(q.cut_widths.is_empty() && matches!(q.mesh, Cow::Borrowed(_)));
     }
@@ -131,7 +132,7 @@ mod tests {
             let state = CombinationState {
                 flags: vec![flag; m.num_faces()],
             };
-            comb.prepare(&m, &attrs, Some(&state), &StepOptions::default(), None)
+            comb.prepare(&m, &attrs, Some(&state), &RoundingOptions::default(), None)
                 .unwrap()
         };
         // Outside the blend the diagonals are merged away.
@@ -152,7 +153,7 @@ mod tests {
         };
         let cyl = CornerRule::Cylindrical { r: 0.1 };
         assert!(
-            cyl.prepare(&m, &attrs, Some(&state), &StepOptions::default(), None)
+            cyl.prepare(&m, &attrs, Some(&state), &RoundingOptions::default(), None)
                 .unwrap()
                 .combination
                 .is_none()

@@ -260,7 +260,7 @@ impl ModelTab {
             let same_input =
                 input.mesh == d.mesh && input.edge_attrs == d.edge_attrs && input.tags == d.tags;
             let same_options = v.pipeline.options.overlap == v.overlap
-                && v.pipeline.options.mend_crossings == v.mend_crossings;
+                && v.pipeline.options.mend.crossings == v.mend_crossings;
             if same_input && same_options && v.pipeline.steps() == steps.as_slice() && !v.busy() {
                 continue;
             }

@@ -502,11 +502,7 @@ impl ModelTab {
                 .map(|first| &first.clamped[..])
                 .unwrap_or(&r.clamped[..]);
             if !clamped.is_empty() {
-                text += &format!(
-                    " — {} radius(es) clamped (orange): {}",
-                    clamped.len(),
-                    prism_geom::rules::overlap::list(clamped)
-                );
+                text += &format!(" — {} (orange)", prism_geom::rules::overlap::note(clamped));
             }
             text += &step_notes(r);
             if far > 0 {
@@ -541,41 +537,23 @@ impl ModelTab {
     }
 }
 
-/// What a step changed to keep its result sound, and its degenerate faces, for the status
-/// bar: the faces whose chamfer parameter the clamp lowered, the concave faces Doo–Sabin took
-/// the width offset on (by the clamp, or by the fold guard beside a fold), the points the
-/// untangling moved.
+/// The step's report in the status bar: every note and warning of [`StepReport::notes`], in
+/// the CLI's words, but for the flipped faces (the bar's menu button names them) and the
+/// clamped radii (the bar lists the whole rounding run's, in orange).
+///
+/// [`StepReport::notes`]: prism_geom::StepReport::notes
 pub(crate) fn step_notes(r: &prism_geom::StepReport) -> String {
+    use prism_geom::step::Topic;
     let mut text = String::new();
-    if r.clamped_faces > 0 {
-        text += &format!(
-            " — l, d or α lowered on {} face(s) (clamp)",
-            r.clamped_faces
-        );
-    }
-    if r.offset_faces > 0 {
-        text += &format!(" — Doo–Sabin offset on {} concave face(s)", r.offset_faces);
-    }
-    if r.reoffset_faces > 0 {
-        text += &format!(
-            " — {} blend face(s) beside a fold re-placed",
-            r.reoffset_faces
-        );
-    }
-    if r.untangled.points > 0 {
-        text += &format!(
-            " — {} point(s) of folded sliver faces smoothed (largest move {:.1e})",
-            r.untangled.points, r.untangled.largest_move
-        );
-    }
-    if r.small_chamfers > 0 {
-        text += &format!(
-            " — small chamfer instead of the rule's points at {} vertex(es) beside a fold",
-            r.small_chamfers
-        );
-    }
-    if !r.degenerate.is_empty() {
-        text += &format!(" — warning: {} degenerate face(s)", r.degenerate.len());
+    for n in r.notes() {
+        if matches!(n.topic, Topic::Flipped | Topic::ClampedRadii) {
+            continue;
+        }
+        text += " — ";
+        if n.warning {
+            text += "warning: ";
+        }
+        text += &n.text;
     }
     text
 }

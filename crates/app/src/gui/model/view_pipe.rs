@@ -188,7 +188,7 @@ impl ViewPipe {
         next.options.memory_budget = self.budget_override.unwrap_or(budget);
         next.keep = self.keep;
         next.options.overlap = self.overlap;
-        next.options.mend_crossings = self.mend_crossings;
+        next.options.mend.crossings = self.mend_crossings;
         self.edit_started
             .get_or_insert_with(std::time::Instant::now);
         if next.is_complete() && self.job.is_none() {

@@ -33,12 +33,6 @@ use crate::mesh::PolyMesh;
 use crate::topology::Topology;
 use glam::DVec3;
 
-/// Rounds before the resort gives up.
-const ROUNDS: usize = 16;
-
-/// The first l as a share of the shortest edge at the vertex.
-const SHARE: f64 = 0.1;
-
 /// The unit bisector of corner `c` into its face, in the face's plane (`vsum`, the normal sum
 /// at its vertex, for a face of no area). The face's interior lies to the left of its loop's
 /// outgoing edge seen along the normal, holes included, so the bisector of a reflex corner is
@@ -134,12 +128,13 @@ impl Round {
 /// Where the rounds run out, they are tried once more with each vertex's first l also
 /// bounded by a tenth of the faces' widths round it ([`width`]): a sliver with long edges
 /// turns over under a chamfer wider than itself at every halving the rounds allow.
-pub(crate) fn retreat(
+pub(super) fn retreat(
     mesh: &PolyMesh,
     topo: &Topology,
     normals: &[DVec3],
     child: &mut PolyMesh,
     (flipped, degenerate): (&[u32], usize),
+    options: &super::MendOptions,
     mut check: impl FnMut(&PolyMesh) -> (Vec<u32>, usize),
 ) -> usize {
     let vsum = crate::geometry::vertex_normal_sums(mesh, topo, normals);
@@ -151,7 +146,7 @@ pub(crate) fn retreat(
             list: Vec::new(),
         };
         round.join(mesh, child, flipped);
-        for _ in 0..ROUNDS {
+        for _ in 0..options.small_chamfer_rounds {
             for &v in &round.list {
                 let p = mesh.positions[v];
                 let l = topo
@@ -163,7 +158,7 @@ pub(crate) fn retreat(
                         if by_width {
                             room = room.min(width(mesh, topo.corner_face(c as usize) as usize));
                         }
-                        (SHARE * room).min(original[c as usize].distance(p))
+                        (options.small_chamfer_share * room).min(original[c as usize].distance(p))
                     })
                     .fold(f64::INFINITY, f64::min)
                     * 0.5f64.powi(round.halvings[v].min(60));

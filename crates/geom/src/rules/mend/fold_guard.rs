@@ -15,9 +15,9 @@
 //! flipped and has cut points in it joins the vertex neighbourhood: the faces that gave it
 //! cut points take Doo–Sabin points instead, which the blend uses anyway (with the width
 //! offset on a face with a reflex corner where eq. (1) would leave it and the offset's points
-//! stay near it, [`super::concave`]), and the check
+//! stay near it, [`crate::rules::concave`]), and the check
 //! repeats until no such face is left (each face moves at most once, so it ends). The moved
-//! faces stay in the neighbourhood for the rest of the run ([`super::CombinationState`]), as
+//! faces stay in the neighbourhood for the rest of the run ([`crate::rules::CombinationState`]), as
 //! the paper's own marking would keep them. Where nothing folds — every solid the paper
 //! shows — nothing changes.
 //!
@@ -187,16 +187,17 @@ impl<'a> Elements<'a> {
 /// `mesh` (unit face normals `normals`, the run's vertex-neighbourhood `flags`, empty: none):
 /// [`unfold`], then [`reoffset`], both judged by one set of the new faces' checks. Returns the
 /// faces moved into the blend, ascending, and how many blend faces were re-placed.
-pub(crate) fn fold_guard(
+pub(super) fn fold_guard(
     mesh: &PolyMesh,
     topo: &Topology,
     normals: &[DVec3],
     flags: &[bool],
+    rounds: usize,
     pts: &mut [DVec3],
 ) -> (Vec<u32>, usize) {
     let el = Elements::new(mesh, topo, normals);
     let moved = unfold(&el, flags, pts);
-    let replaced = reoffset(&el, flags, &moved, pts);
+    let replaced = reoffset(&el, flags, &moved, rounds, pts);
     (moved, replaced)
 }
 
@@ -204,7 +205,7 @@ pub(crate) fn fold_guard(
 /// their points in `pts` (indexed by corner). `flags` are the run's vertex-neighbourhood
 /// flags (empty: none); `normals` the unit face normals. A moved face with a reflex corner
 /// where eq. (1) would leave it takes the width offset instead
-/// ([`super::chamfer::offset_doo_sabin_points`]); so, afterwards, does a face already in the
+/// ([`crate::rules::chamfer::offset_doo_sabin_points`]); so, afterwards, does a face already in the
 /// blend where that leaves fewer of the new faces around it folded ([`reoffset`]). Returns
 /// the faces moved, ascending.
 fn unfold(el: &Elements, flags: &[bool], pts: &mut [DVec3]) -> Vec<u32> {
@@ -264,7 +265,7 @@ fn unfold(el: &Elements, flags: &[bool], pts: &mut [DVec3]) -> Vec<u32> {
         }
         for f in 0..nf {
             if to_move[f] {
-                super::chamfer::offset_doo_sabin_points(mesh, normals[f], f, pts);
+                crate::rules::chamfer::offset_doo_sabin_points(mesh, normals[f], f, pts);
                 blend[f] = true;
                 moved.push(f as u32);
             }
@@ -273,9 +274,6 @@ fn unfold(el: &Elements, flags: &[bool], pts: &mut [DVec3]) -> Vec<u32> {
     moved.sort_unstable();
     moved
 }
-
-/// Rounds of [`reoffset`].
-const REOFFSET_ROUNDS: usize = 4;
 
 /// The fractions of the way to its Doo–Sabin point at which [`reoffset`] also tries each
 /// corner's point of a blend face.
@@ -289,7 +287,7 @@ const DRAWN: [f64; 2] = [0.5, 0.25];
 /// of the face, and on a needle carries the points of its short side's corners far along it
 /// — either can fold a new face beside it. Each blend face (`flags`) that gives a point to a
 /// folding new face and has not been re-placed yet (nor moved by [`unfold`] this step) is
-/// tried with the width offset ([`super::chamfer::offset_doo_sabin_points`]) and with its
+/// tried with the width offset ([`crate::rules::chamfer::offset_doo_sabin_points`]) and with its
 /// points drawn to [`DRAWN`] of the way from their corners, every face against the same
 /// points (the numbering does not matter), and keeps the placement after which fewest of the
 /// new faces around it fold — its FACE-face, the EDGE-faces of its edges, the VERTEX-faces of
@@ -297,7 +295,13 @@ const DRAWN: [f64; 2] = [0.5, 0.25];
 /// whose changes together fold more new faces than before is undone. `pts` are indexed by
 /// corner (the child's vertices of a dual quad split are the parent's corners). Returns the
 /// faces re-placed.
-fn reoffset(el: &Elements, flags: &[bool], moved: &[u32], pts: &mut [DVec3]) -> usize {
+fn reoffset(
+    el: &Elements,
+    flags: &[bool],
+    moved: &[u32],
+    rounds: usize,
+    pts: &mut [DVec3],
+) -> usize {
     let mesh = el.mesh;
     let nf = mesh.num_faces();
     let mut blend: Vec<bool> = (0..nf)
@@ -312,7 +316,7 @@ fn reoffset(el: &Elements, flags: &[bool], moved: &[u32], pts: &mut [DVec3]) -> 
         done[f as usize] = true;
     }
     let (mut near, mut before) = el.folded(pts);
-    for _ in 0..REOFFSET_ROUNDS {
+    for _ in 0..rounds {
         let candidates: Vec<usize> = (0..nf)
             .filter(|&f| near[f] && blend[f] && !done[f] && mesh.face_loops(f).len() == 1)
             .collect();
@@ -325,7 +329,7 @@ fn reoffset(el: &Elements, flags: &[bool], moved: &[u32], pts: &mut [DVec3]) -> 
             let corners = mesh.face_corners(f);
             let old: Vec<DVec3> = trial[corners.clone()].to_vec();
             let was = el.folds_around(f, &trial);
-            super::chamfer::offset_doo_sabin_points(mesh, el.normals[f], f, &mut trial);
+            crate::rules::chamfer::offset_doo_sabin_points(mesh, el.normals[f], f, &mut trial);
             let offset: Vec<DVec3> = trial[corners.clone()].to_vec();
             let mut tries = vec![offset];
             for k in DRAWN {

@@ -1,6 +1,6 @@
 //! The combination rule's last resort, and the minimum type's and the chamfers' when clamped
 //! (docs/algorithms/cylindrical.md, "Untangling", "Chamfers and the minimum type, clamped"): new
-//! faces that are still flipped after the fold guard ([`super::unfold`]) get their points
+//! faces that are still flipped after the fold guard ([`super::fold_guard`]) get their points
 //! smoothed until they face the right way (a face whose outline crosses itself counts as
 //! flipped here, as in the fold guard).
 //!
@@ -21,18 +21,12 @@
 //! (the largest move is reported); the counts never change, and where nothing is flipped —
 //! every solid of the paper — it does not run.
 
-use super::unfold::newell_at;
+use super::MendOptions;
+use super::fold_guard::newell_at;
 use crate::geometry::points_cross_themselves;
 use crate::mesh::PolyMesh;
 use crate::topology::Topology;
 use glam::DVec3;
-
-/// Rounds of smoothing before the step gives up (the faces still flipped are reported).
-const ROUNDS: usize = 64;
-
-/// No point moves farther than this × the bounding-box diagonal: untangling mends folds at
-/// the scale of noise, it does not reshape.
-const MOST_MOVE: f64 = 1e-2;
 
 /// What [`untangle`] did.
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
@@ -163,12 +157,13 @@ fn neighbours(t: &Topology, c: u32) -> [u32; 4] {
 /// corners of the faces the step's check found flipped. Local steps first ([`Smoothing::Local`]);
 /// where they leave a face flipped or move a point too far, the plain mean
 /// ([`Smoothing::Mean`]), which clears some regions the local steps cannot.
-pub(crate) fn untangle(
+pub(super) fn untangle(
     mesh: &PolyMesh,
     topo: &Topology,
     normals: &[DVec3],
     pts: &mut [DVec3],
     flipped: Vec<u32>,
+    options: &MendOptions,
 ) -> Untangled {
     let faces = NewFaces {
         mesh,
@@ -181,7 +176,7 @@ pub(crate) fn untangle(
     }
     let original = pts.to_vec();
     for how in [Smoothing::Local, Smoothing::Mean] {
-        if let Some(done) = smooth(&faces, pts, &original, flipped.clone(), how) {
+        if let Some(done) = smooth(&faces, pts, &original, flipped.clone(), how, options) {
             return done;
         }
         pts.copy_from_slice(&original);
@@ -200,19 +195,20 @@ enum Smoothing {
 }
 
 /// One smoothing of `pts` from `original`: `Some` with what moved when it cleared every face
-/// and no point moved farther than [`MOST_MOVE`] of the diagonal.
+/// and no point moved farther than [`MendOptions::untangle_most_move`] of the diagonal.
 fn smooth(
     faces: &NewFaces,
     pts: &mut [DVec3],
     original: &[DVec3],
     mut flipped: Vec<u32>,
     how: Smoothing,
+    options: &MendOptions,
 ) -> Option<Untangled> {
     let (mesh, topo) = (faces.mesh, faces.topo);
     let nc = mesh.num_corners();
     let mut moved = vec![false; nc];
     let mut set = vec![false; nc];
-    for round in 0..ROUNDS {
+    for round in 0..options.untangle_rounds {
         if flipped.is_empty() {
             break;
         }
@@ -281,7 +277,7 @@ fn smooth(
         }
         flipped = faces.flipped_near(pts, &members);
     }
-    // Accepted only when it cleared every face and no point moved farther than MOST_MOVE of
+    // Accepted only when it cleared every face and no point moved farther than `untangle_most_move` of
     // the diagonal; otherwise the points stay as the guard left them.
     let mut ok = flipped.is_empty();
     let diagonal = mesh.bbox_diagonal();
@@ -289,7 +285,7 @@ fn smooth(
     for c in 0..nc {
         if moved[c] {
             let d = (pts[c] - original[c]).length();
-            ok &= d <= MOST_MOVE * diagonal;
+            ok &= d <= options.untangle_most_move * diagonal;
             done.points += 1;
             done.largest_move = done.largest_move.max(d);
         }
