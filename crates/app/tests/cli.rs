@@ -106,6 +106,31 @@ fn crossings_are_found_where_the_flip_test_sees_none() {
     assert!(!se.contains("passes through"), "{se}");
 }
 
+/// Every rounding searches its whole level for crossings and mends them by default, as the app
+/// and the library do; `--no-mend-crossings` leaves them (the L-block after Catmull–Clark, an
+/// angle bisector, the simple type and three rounds: 12 pairs at level 6 away from any face the
+/// guard moved), and `--mend-crossings` after it asks again (the last flag wins).
+#[test]
+fn crossings_are_mended_by_default_and_left_when_asked() {
+    let line = "subdivide assets/l-block.obj -o {} --pipeline catmull-clark,angle-bisector:l=0.05,cylindrical:r=0.2,combination:r=0.2,combination:r=0.2,combination:r=0.2 --clamp --check-crossings";
+    let level_6 = |so: &str| {
+        so.lines()
+            .find(|l| l.starts_with("level 6"))
+            .unwrap()
+            .to_string()
+    };
+    let (_, so, se) = succeeds_to("l-block-mended.obj", line);
+    assert!(level_6(&so).contains("crossings=0,"), "{so}");
+    assert!(se.contains("small chamfer"), "{se}");
+    let (_, so, _) = succeeds_to("l-block-left.obj", &format!("{line} --no-mend-crossings"));
+    assert!(level_6(&so).contains("crossings=12,"), "{so}");
+    let (_, so, _) = succeeds_to(
+        "l-block-again.obj",
+        &format!("{line} --no-mend-crossings --mend-crossings"),
+    );
+    assert!(level_6(&so).contains("crossings=0,"), "{so}");
+}
+
 /// The simple type's folding (seed 000 fig. 10) runs and is counted; the step that turns
 /// the solid inside out fails (exit 1), as a failing step does, and nothing is written.
 #[test]
@@ -1486,8 +1511,9 @@ fn the_memory_guard_is_honest_both_ways() {
         ("catmull-clark", ""),
         ("doo-sabin", ""),
         ("cylindrical", " --radius 0.02 --clamp"),
-        // A search of each level for crossings: when mending, inside each rounding step.
-        ("combination", " --radius 0.02 --clamp --mend-crossings"),
+        // A search of each level for crossings: when mending (the default), inside each
+        // rounding step.
+        ("combination", " --radius 0.02 --clamp"),
         ("doo-sabin", " --check-crossings"),
     ] {
         let line = format!(

@@ -71,7 +71,7 @@ fn step_cylindrical_warped(b: divan::Bencher) {
 }
 
 /// A combination step on the warped torus: the cylindrical points plus the fold guard, which
-/// tests every new face's outline (docs/algorithms/cylindrical.md, "Folds at a vertex blend").
+/// tests every new face's outline (docs/algorithms/cylindrical.md, "Fold guard").
 #[divan::bench(sample_count = 20)]
 fn step_combination_warped(b: divan::Bencher) {
     bench_step(b, warped_torus(), CornerRule::Combination { r: 0.01 });

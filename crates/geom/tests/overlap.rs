@@ -300,7 +300,7 @@ fn a_tilted_arm_top_beside_an_own_radius_does_not_fold() {
 /// kept 6–9 flipped faces at levels 3–7 behind spiky vertex faces at the bottom's acute
 /// corners. With the star test of the fold guard no face is flipped or of no area through
 /// level 7, the solid stays inside the first level's box and loses volume only as rounding
-/// does (docs/algorithms/cylindrical.md, "Spiky vertex faces").
+/// does (docs/algorithms/cylindrical.md, "Fold guard").
 #[test]
 fn catmull_clark_then_combination_stays_in_place() {
     let mut steps = prism_geom::scheme::parse_pipeline("catmull-clark").unwrap();
@@ -573,7 +573,7 @@ fn a_clamped_radius_caps_later_steps() {
 /// plain designer pipeline: at level 6 the blend's slivers fold new faces beside them. The
 /// untangling used to clear them (with the plain mean; its local steps alone left 64 faces
 /// flipped); since the guard's second pass also draws a blend face's points towards its
-/// corners (docs/algorithms/cylindrical.md, "Blend needles drawn towards their corners"), 64
+/// corners (docs/algorithms/cylindrical.md, "Fold guard"), 64
 /// blend faces re-placed leave nothing flipped and nothing to untangle.
 #[test]
 fn the_computer_room_smoothed_twice_rounds_through_level_six() {
@@ -619,8 +619,8 @@ fn the_computer_room_smoothed_twice_rounds_through_level_six() {
 /// small chamfers' bisectors in the face's plane and the chamfers' clamp at a reflex corner,
 /// the same here (held out, seeds 37–67: 8 and 13 → 3 and 6); with small chamfers tried again
 /// to suit slivers' widths, 0 and 1 (21; held out: 2 and 6); with every crossing on the level
-/// mended, the app's default since 2026-11-29 (`NOMEND=1` leaves it to the guard's
-/// neighbourhood, the library's default), 0 and 0 (20; held out, 4,800 mixes: 3 and 4).
+/// mended, the default everywhere (`NOMEND=1` leaves it to the guard's neighbourhood),
+/// 0 and 0 (20; held out, 4,800 mixes: 3 and 4).
 /// About two minutes in release;
 /// each mix unsound either way is printed. `SEEDS=37,41,…` draws 300 mixes from each seed
 /// given instead of the four below and only prints (docs/algorithms/cylindrical.md keeps the
@@ -692,8 +692,8 @@ fn random_mixes_of_steps() {
             );
             p.options.overlap = Overlap::Clamp;
             p.options.memory_budget = 2 << 30;
-            // As the app: every rounding also mends crossings anywhere on its level
-            // (NOMEND=1: only beside the guard's moves, the library's default).
+            // The default: every rounding also mends crossings anywhere on its level
+            // (NOMEND=1: only beside the guard's moves).
             p.options.mend.crossings = std::env::var("NOMEND").is_err();
             let _ = p.compute();
             // Without and with the crossing check (analysis::crossings).
@@ -850,7 +850,7 @@ fn assert_sound_and_crossing_nowhere_after(p: &Pipeline, from: usize) {
 }
 
 /// The fold guard's second pass re-places blend faces with a reflex corner (docs/algorithms/
-/// cylindrical.md, "Blend faces re-placed"): after a round of r = 0.1 and an inward vector sum
+/// cylindrical.md, "Fold guard"): after a round of r = 0.1 and an inward vector sum
 /// (α = 0.2) the tripod's chamfered corner near the origin leaves, beside the bottom's convex
 /// corner, a chevron 4 × 10⁻³ wide in the blend whose eq. (1) point lands 0.1 outside it, over
 /// the bottom; at the second combination step (r = 0.2) the VERTEX-face there came out a
@@ -865,8 +865,8 @@ fn blend_faces_beside_a_fold_take_the_width_offset() {
     assert!(p.levels()[4].report.as_ref().unwrap().mend.reoffset_faces > 0);
 }
 
-/// A bow-tie lying in a plane is re-placed too (docs/algorithms/cylindrical.md, "Blend faces
-/// re-placed"): after a round r = 0.4, two inward vector sums (α = 0.2) and rounds r = 0.1, the
+/// A bow-tie lying in a plane is re-placed too (docs/algorithms/cylindrical.md, "Fold
+/// guard"): after a round r = 0.4, two inward vector sums (α = 0.2) and rounds r = 0.1, the
 /// fifth level's bottom holds a needle 0.5 long whose Doo–Sabin points, 0.5 along it, twist
 /// the EDGE-face of its 0.07 short side into a bow-tie in the bottom's plane. Its own normal,
 /// swung 33° out of the plane by 3 × 10⁻⁴ of noise, agrees with its parent's, so the report saw
@@ -901,7 +901,7 @@ fn blend_needles_take_points_nearer_their_corners() {
 }
 
 /// A bow-tie the minimum type makes takes small chamfers (docs/algorithms/cylindrical.md,
-/// "Chamfers and the minimum type, clamped"): on the Computer room after Catmull–Clark and a
+/// "Mending"): on the Computer room after Catmull–Clark and a
 /// round r = 0.4, the minimum type (r = 0.2) swapped the points of the VERTEX-faces at the
 /// desk's 12 warped top corners (its displacements are capped at a quarter of each edge), and
 /// each came out a bow-tie whose Newell normal still agrees with its parent's — not flipped,
@@ -930,8 +930,8 @@ fn a_bow_tie_of_the_minimum_type_takes_small_chamfers() {
     assert!(p.levels()[3].report.as_ref().unwrap().mend.small_chamfers > 0);
 }
 
-/// The combination rule's final resort (docs/algorithms/cylindrical.md, "Small chamfers beside
-/// a fold"): after two inward vector sums (α = 0.1, 0.2) the tripod's third round (r = 0.2)
+/// The combination rule's final resort (docs/algorithms/cylindrical.md, "Small
+/// chamfers"): after two inward vector sums (α = 0.1, 0.2) the tripod's third round (r = 0.2)
 /// left 3 faces flipped that neither the width offset nor the untangling mended; the vertices
 /// round them take small chamfers on their corners' bisectors, nothing is flipped or crosses,
 /// and the step says how many vertices gave way.
@@ -956,7 +956,7 @@ fn small_chamfers_take_over_where_a_round_still_folds() {
 }
 
 /// Small chamfers whose faces, facing outward, pass through the faces beside them are not
-/// kept as they are (docs/algorithms/cylindrical.md, "Small chamfers beside a fold"): on the
+/// kept as they are (docs/algorithms/cylindrical.md, "Small chamfers"): on the
 /// L-block after a cut width (d = 0.05) and Catmull–Clark, the third round (r = 0.2) folds
 /// 14 faces at the notch; the resort's first sound placement had 56 pairs of faces crossing,
 /// which the step's check cannot see, and was kept. Those faces' vertices now join as a
@@ -976,7 +976,7 @@ fn small_chamfers_that_would_cross_go_on_shrinking() {
 }
 
 /// Where shrinking the small chamfers until nothing crosses takes many rounds (docs/algorithms/
-/// cylindrical.md, "Faces that cross, and small faces that are sound"): the Computer room after
+/// cylindrical.md, "Small chamfers"): the Computer room after
 /// a round (r = 0.1), an inward vector sum (α = 0.2) and three rounds (r = 0.2) folded 160
 /// faces at level 5; its small chamfers came out of eight rounds with nothing flipped but 320
 /// pairs of faces crossing, so they were refused. With sixteen the level is sound and crosses
@@ -992,8 +992,8 @@ fn small_chamfers_shrink_on_for_as_many_rounds_as_the_crossings_need() {
     assert!(n > 0 && n < 4000, "{n}");
 }
 
-/// Crossings beside the fold guard's moves (docs/algorithms/cylindrical.md, "Crossings beside
-/// the guard's moves"): on the tripod after a cut width (d = 0.05) and an inward vector sum
+/// Crossings beside the fold guard's moves (docs/algorithms/cylindrical.md, "Crossings that
+/// seed the small chamfers"): on the tripod after a cut width (d = 0.05) and an inward vector sum
 /// (α = 0.2), the third round (r = 0.2) flipped nothing, but the faces round those the guard
 /// moved into the blend passed through their neighbours (24 pairs at level 5), which the
 /// step's check cannot see. They now seed the small chamfers as flipped faces do: sound and
@@ -1010,7 +1010,7 @@ fn crossings_beside_the_guards_moves_take_small_chamfers() {
 }
 
 /// Crossings beside the edges the guard cut narrower (docs/algorithms/cylindrical.md,
-/// "Crossings beside the guard's moves"): the L-block after a cylindrical round and Doo–Sabin
+/// "Crossings that seed the small chamfers"): the L-block after a cylindrical round and Doo–Sabin
 /// crossed itself at 12 pairs of faces at its third round (r = 0.3, level 5), and after
 /// Catmull–Clark and a cylindrical round at 1 pair at its first (level 3), flipping nothing,
 /// every crossing pair at a vertex of an edge whose cut width the guard had capped so that its
@@ -1041,8 +1041,8 @@ fn crossings_beside_the_guards_capped_edges_take_small_chamfers() {
     }
 }
 
-/// Crossings at concave vertices (docs/algorithms/cylindrical.md, "Crossings at concave
-/// vertices"): the VERTEX-face of a parent vertex with a concave edge passed through the
+/// Crossings at concave vertices (docs/algorithms/cylindrical.md, "Crossings that
+/// seed the small chamfers"): the VERTEX-face of a parent vertex with a concave edge passed through the
 /// EDGE- and FACE-faces round it with nothing flipped — the L-block after a round (r = 0.1),
 /// the simple cylindrical type, an inward vector sum and three rounds (r = 0.2): 2 pairs at
 /// level 6; the holed block after the minimum type, an inward vector sum, the simple type and
@@ -1136,7 +1136,7 @@ fn document_run(name: &str, text: &str, overlap: Overlap) -> Pipeline {
 }
 
 /// Clamped, the minimum type and the chamfers take the last resorts too (docs/algorithms/
-/// cylindrical.md, "Chamfers and the minimum type, clamped"): the holed block after three
+/// cylindrical.md, "Mending"): the holed block after three
 /// inward vector sums flipped 2 faces at level 2 and 18 at level 3 as printed; clamped, α is
 /// lowered on its two holed faces and 16 vertices take small chamfers, sound and crossing
 /// nowhere. The cube with a rim after a round r = 0.4, Catmull–Clark and the minimum type
@@ -1190,11 +1190,11 @@ fn smoothing_steps_report_the_faces_they_turn_over() {
     assert!(flipped(load("catmark_val2_foldover.obj"), "catmull-clark")[0] > 0);
 }
 
-/// Mending every crossing, asked for (docs/algorithms/cylindrical.md, "Mending every
-/// crossing"): on the L-block after Catmull–Clark, an angle-bisector chamfer, the simple
+/// Mending every crossing (docs/algorithms/cylindrical.md, "Crossings that seed the small
+/// chamfers"; the default): on the L-block after Catmull–Clark, an angle-bisector chamfer, the simple
 /// cylindrical type and three rounds (r = 0.2), the third round passes 12 pairs of faces
 /// through each other away from any face the guard moved or concave vertex, with none flipped;
-/// with `mend.crossings` the step
+/// with `mend.crossings` (the default) the step
 /// searches its whole level and their vertices take small chamfers: every level sound and
 /// crossing nowhere. About 3 s in release (the Computer room's 516k-face level searched).
 #[test]
@@ -1209,12 +1209,11 @@ fn crossings_anywhere_are_mended_when_asked() {
     };
     let text = "catmull-clark,angle-bisector:l=0.05,cylindrical:r=0.2,\
                 combination:r=0.2,combination:r=0.2,combination:r=0.2";
-    let p = run(
-        asset("l-block.obj"),
-        EdgeAttrs::new(),
-        steps(text),
-        Overlap::Clamp,
-    );
+    // With the whole-level search off, the crossings stay.
+    let mut p = Pipeline::new(asset("l-block.obj"), EdgeAttrs::new(), steps(text));
+    p.options.overlap = Overlap::Clamp;
+    p.options.mend.crossings = false;
+    let _ = p.compute();
     assert_eq!(
         prism_geom::analysis::crossings(&p.levels()[6].mesh).len(),
         12
@@ -1231,4 +1230,33 @@ fn crossings_anywhere_are_mended_when_asked() {
     assert!(prism_geom::analysis::crossings(&p.levels()[6].mesh).is_empty());
     let r = p.levels()[6].report.as_ref().unwrap();
     assert!(r.flipped.is_empty() && r.mend.small_chamfers > 0);
+}
+
+/// Where nothing is wrong the mending stage changes nothing: every bundled solid rounded four
+/// times (combination r = 0.2, clamped, the app's defaults) reports an empty `MendReport` and
+/// no flipped face at every level — the construction alone, as the paper builds it.
+#[test]
+fn the_bundled_solids_round_with_nothing_to_mend() {
+    for name in [
+        "cube.obj",
+        "l-block.obj",
+        "tripod.obj",
+        "computer-room.obj",
+        "holed-block.prism.json",
+        "cube-rim.prism.json",
+    ] {
+        let d = document(name);
+        let p = run(d.mesh, d.edge_attrs, combination(4, 0.2), Overlap::Clamp);
+        assert!(p.options.mend.crossings);
+        assert_eq!(p.levels().len(), 5, "{name}");
+        for (k, lv) in p.levels().iter().enumerate().skip(1) {
+            let r = lv.report.as_ref().unwrap();
+            assert_eq!(
+                r.mend,
+                prism_geom::rules::MendReport::default(),
+                "{name} level {k}"
+            );
+            assert!(r.flipped.is_empty(), "{name} level {k}");
+        }
+    }
 }

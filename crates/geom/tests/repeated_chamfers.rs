@@ -137,8 +137,8 @@ fn the_vector_sum_clamp_keeps_reflex_corners_off_the_far_side() {
         assert!(prism_geom::analysis::crossings(&lv.mesh).is_empty());
     }
     // Without the clamp the first rounding already folds, or gives up the round for small
-    // chamfers where it would (docs/algorithms/cylindrical.md, "Small chamfers beside a
-    // fold"); with it, no vertex needs them.
+    // chamfers where it would (docs/algorithms/cylindrical.md, "Small
+    // chamfers"); with it, no vertex needs them.
     let q = run(&tripod, parse_pipeline(&rounded).unwrap(), Overlap::Refuse);
     let chamfers = |p: &Pipeline| -> Vec<usize> {
         p.levels()[2..]

@@ -58,11 +58,14 @@ pub struct StepArgs {
     #[arg(long)]
     pub clamp: bool,
     /// After each rounding, search the whole level for faces that pass through each other
-    /// and give the rounding up for a small chamfer at their vertices where they do (about
-    /// ten times a step's time; without it only crossings beside the fold guard's moves are
-    /// looked for).
-    #[arg(long)]
+    /// and give the rounding up for a small chamfer at their vertices where they do (the
+    /// default, as in the app).
+    #[arg(long, overrides_with = "no_mend_crossings")]
     pub mend_crossings: bool,
+    /// Do not search the whole level for crossings after a rounding (several times faster on
+    /// big levels; only crossings beside the fold guard's moves are then looked for).
+    #[arg(long, overrides_with = "mend_crossings")]
+    pub no_mend_crossings: bool,
     /// With --scheme angle-bisector or cut-width: divide l or d by K at each step after the
     /// first (seed 000: about 4, so that the new faces are not cut from both sides).
     #[arg(long, value_name = "K")]
@@ -79,7 +82,7 @@ impl StepArgs {
             overlap: prism_geom::rules::Overlap::clamping(self.clamp),
             memory_budget,
             mend: prism_geom::rules::MendOptions {
-                crossings: self.mend_crossings,
+                crossings: !self.no_mend_crossings,
                 ..Default::default()
             },
             ..Default::default()

@@ -144,7 +144,7 @@ fn clamped_edges_are_highlighted_at_every_level() {
 /// after combination (r = 0.4), Catmull–Clark and three combination steps (r = 0.3) has its
 /// folded slivers smoothed at level 5; the tripod after two inward vector sums and three
 /// rounds (r = 0.2) gives up the round for small chamfers at 30 vertices at level 5
-/// (docs/algorithms/cylindrical.md, "Small chamfers beside a fold"). The bar wraps, so such
+/// (docs/algorithms/cylindrical.md, "Small chamfers"). The bar wraps, so such
 /// notes after a long list of clamped radii stay in view.
 #[test]
 fn the_status_bar_says_what_the_clamp_and_the_untangling_did() {

@@ -210,7 +210,7 @@ fn doo_sabin_share(m: &PolyMesh, n: DVec3, f: usize, near_only: bool, fm: &mut F
 /// Doo–Sabin's points of face `f` (unit normal `n`, one loop) written to `pts` (indexed by
 /// corner): the width offset's share where [`doo_sabin_shares`] gives one and its points stay
 /// near the face, else eq. (1). The combination rule's fold guard places a face it moves into the
-/// vertex blend so ([`super::unfold`]; cylindrical.md, "Fold guard").
+/// vertex blend so (the fold guard, `mend/fold_guard.rs`; cylindrical.md, "Fold guard").
 pub(super) fn offset_doo_sabin_points(m: &PolyMesh, n: DVec3, f: usize, pts: &mut [DVec3]) {
     let mut fm = FaceMoves::default();
     let s = doo_sabin_share(m, n, f, true, &mut fm);

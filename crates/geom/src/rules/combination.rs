@@ -20,7 +20,7 @@ impl CombinationState {
     /// `prov`: on the first step of a run (`parent` is `None`) the VERTEX-faces; afterwards
     /// the FACE-face of a flagged face, the EDGE-faces of its edges and the VERTEX-faces of
     /// its vertices. `unfolded` are the faces of `mesh` the fold guard moved into the blend
-    /// ([`super::unfold`]): they count as flagged.
+    /// (the fold guard, `mend/fold_guard.rs`): they count as flagged.
     pub fn next(
         mesh: &PolyMesh,
         topo: &Topology,

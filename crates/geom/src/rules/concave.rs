@@ -18,7 +18,7 @@
 //! stay near the face ([`stays_near`]); the blend's other faces keep eq. (1) — the offset on
 //! all of them was measured to break more mixes of steps than it mended — except where a new
 //! face beside one would still turn over and the offset leaves fewer folded
-//! ([`super::unfold::reoffset`]).
+//! (the fold guard's re-placing, `mend/fold_guard.rs`).
 
 use crate::geometry::segment_distance;
 use crate::mesh::PolyMesh;

@@ -16,7 +16,7 @@
 //! capped at ¼ of the shorter adjacent edge and the corner is counted. In a combination
 //! run, an acute corner beside a vertex blend is set back by the blend edge's width x, not
 //! x/sin φ (equal at 90°), so oblique strip ends turn square instead of shearing until the
-//! surface folds (cylindrical.md, "Strip ends beside a blend").
+//! surface folds (cylindrical.md, "Set-back beside a blend").
 //!
 //! **Minimum type** (eq. 5): `V' = V + u₁·min(x₂/sin φ, ¼|e₁|) + u₂·min(x₁/sin φ, ¼|e₂|)`;
 //! at reflex corners the magnitude is capped and the sign kept. It never flips in the
@@ -307,7 +307,7 @@ pub(super) fn simple(
     if fr.c < 0.0 && fr.sin_phi > 0.0 && !input.vertex_neighbourhood.is_empty() {
         // An acute corner beside a vertex blend: the set-back along the other edge is the
         // blend edge's width itself, not width / sin φ (docs/algorithms/cylindrical.md,
-        // "Strip ends beside a blend"). Equal to eq. 4 at φ = 90°.
+        // "Set-back beside a blend"). Equal to eq. 4 at φ = 90°.
         let t = input.topo;
         let blend = |k: u32| {
             let tw = t.twin[k as usize];

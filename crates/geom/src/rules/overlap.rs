@@ -53,7 +53,7 @@ pub struct EdgeFit {
 
 impl Overlap {
     /// Whether the step is asked for a sound solid: clamping, or continuing a clamped run
-    /// (the minimum type and the chamfers then take the last resorts too).
+    /// (the minimum type and the chamfers then mend too: `CornerRule::mends`).
     pub fn clamps(self) -> bool {
         matches!(self, Overlap::Clamp | Overlap::Unchecked { clamped: true })
     }

@@ -185,7 +185,7 @@ impl ModelTab {
             next,
             budget_mib: budget_mib.max(64),
             clamp: true,
-            mend_crossings: true,
+            mend_crossings: prism_geom::rules::MendOptions::default().crossings,
             shrink: 4.0,
             question: None,
             drag: None,

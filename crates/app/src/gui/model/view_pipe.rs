@@ -145,7 +145,7 @@ impl ViewPipe {
             keep: prism_geom::pipeline::Keep::All,
             budget_override: None,
             overlap: Overlap::Clamp,
-            mend_crossings: true,
+            mend_crossings: prism_geom::rules::MendOptions::default().crossings,
             scene: Arc::new(Scene::default()),
             scene_key: None,
             overlay: Arc::new(Scene::default()),

@@ -1,12 +1,11 @@
 //! Crossings a rounding step looks for beside what it did, without searching its whole level
-//! (docs/algorithms/cylindrical.md, "Crossings beside the guard's moves", "Crossings beside
-//! the edges the guard cut narrower", "Crossings at concave vertices"). The new faces of
+//! (docs/algorithms/cylindrical.md, "Crossings that seed the small chamfers"). The new faces of
 //! some parent faces and vertices are tried against the new faces of the parent faces, edges
 //! and vertices round them (by the split's provenance and numbering, with the renderer's
 //! triangles and Möller's test as in `--check-crossings`, over that neighbourhood only); the
-//! faces of any crossing pair seed the small chamfers ([`crate::rules::retreat`]) as flipped
+//! faces of any crossing pair seed the small chamfers ([`super::small_chamfers`]) as flipped
 //! faces do. After a clamped minimum-type or chamfer step, new faces that cross themselves
-//! seed them too ([`self_crossing_faces`], "Bow-ties": one pass over the new faces, two
+//! seed them too ([`self_crossing_faces`], "Crossings that seed the small chamfers": one pass over the new faces, two
 //! triple products a quad).
 
 use crate::mesh::PolyMesh;

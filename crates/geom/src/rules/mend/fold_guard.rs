@@ -26,7 +26,7 @@
 //! a placement where fewer new faces fold. [`fold_guard`] runs both, on one set of checks.
 //!
 //! A VERTEX-face of five or more corners must also be star-shaped about its vertex centroid
-//! (cylindrical.md, "Spiky vertex faces"): acute corners make it a spiked star that is not
+//! (cylindrical.md, "Fold guard"): acute corners make it a spiked star that is not
 //! flipped but whose Doo–Sabin points, at the next step, fold the edge faces beside it.
 
 use crate::geometry::points_cross_themselves;
@@ -279,7 +279,7 @@ fn unfold(el: &Elements, flags: &[bool], pts: &mut [DVec3]) -> Vec<u32> {
 /// corner's point of a blend face.
 const DRAWN: [f64; 2] = [0.5, 0.25];
 
-/// The fold guard's second pass (cylindrical.md, "Fold guard", "Blend faces re-placed"),
+/// The fold guard's second pass (cylindrical.md, "Fold guard"),
 /// run by every combination step after [`unfold`] ([`fold_guard`]; one pass over the new
 /// faces where the guard's tests find no fold left, as on every bundled solid's default
 /// rounds). The blend's

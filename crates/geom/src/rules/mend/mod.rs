@@ -77,9 +77,11 @@ impl Mend {
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct MendOptions {
     /// Whether the rules that mend ([`crate::rules::CornerRule::mends`]) also search the whole
-    /// level for faces that pass through each other ([`Mend::EveryCrossing`]): up to several
-    /// times a step's time. Off by default in the library and the CLI (`--mend-crossings`),
-    /// on in the app's Model tab (*Mend crossings*).
+    /// level for faces that pass through each other ([`Mend::EveryCrossing`]). On by default
+    /// in the library, the CLI and the app alike: a rounding that leaves faces through each
+    /// other is not a sound solid. It costs several times the step of a rule that mends
+    /// (docs/algorithms/cylindrical.md, "Options"); `--no-mend-crossings` and the Model tab's
+    /// checkbox turn it off.
     pub crossings: bool,
     /// Rounds of the fold guard's re-placing of blend faces (default 4).
     pub reoffset_rounds: usize,
@@ -98,7 +100,7 @@ pub struct MendOptions {
 impl Default for MendOptions {
     fn default() -> Self {
         MendOptions {
-            crossings: false,
+            crossings: true,
             reoffset_rounds: 4,
             untangle_rounds: 64,
             untangle_most_move: 1e-2,

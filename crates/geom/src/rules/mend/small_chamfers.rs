@@ -1,11 +1,8 @@
-//! The combination rule's final resort, and the minimum type's and the chamfers' when clamped
-//! (docs/algorithms/cylindrical.md, "Small chamfers beside a fold", "Chamfers and the minimum
-//! type, clamped"): where new faces are still flipped after the fold guard and its re-placed
-//! blend faces ([`super::fold_guard`]) and the untangling ([`super::untangle()`]) —
-//! or, with none flipped, pass through their neighbours beside the guard's moves (the step's
-//! `guard_crossings`, "Crossings beside the guard's moves") or, after the minimum type or a
-//! chamfer, cross themselves (`self_crossing_faces`, "Bow-ties") — the points around the parent
-//! vertices of those faces give up the rounding there for a small chamfer. Every corner c at
+//! [`super::Mend::SmallChamfers`] (docs/algorithms/cylindrical.md, "Small chamfers"): where new
+//! faces are still flipped after the fold guard ([`super::fold_guard`]) and the untangling
+//! ([`super::untangle`]) — or, with none flipped, a crossing search of the stage found faces
+//! through each other ([`super::crossings`]) — the points around the parent vertices of those
+//! faces give up the rule's points there for a small chamfer. Every corner c at
 //! such a vertex v takes the point
 //!
 //! ```text

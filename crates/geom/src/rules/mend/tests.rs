@@ -263,13 +263,20 @@ fn the_fold_guard_moves_folding_faces_into_the_blend() {
 #[test]
 fn each_rule_declares_its_strategies() {
     use crate::rules::{CornerRule, Overlap, RoundingOptions};
-    let plain = RoundingOptions::default();
-    let clamp = RoundingOptions {
+    let every = RoundingOptions {
         overlap: Overlap::Clamp,
-        ..plain
+        ..RoundingOptions::default()
     };
-    let mut every = clamp;
-    every.mend.crossings = true;
+    assert!(
+        every.mend.crossings,
+        "the whole-level search is the default"
+    );
+    let mut clamp = every;
+    clamp.mend.crossings = false;
+    let plain = RoundingOptions {
+        overlap: Overlap::Refuse,
+        ..clamp
+    };
     let comb = CornerRule::Combination { r: 0.1 };
     assert_eq!(comb.mends(&plain)[0], Mend::FoldGuard);
     assert!(!comb.mends(&plain).contains(&Mend::EveryCrossing));

@@ -1,5 +1,5 @@
 //! The combination rule's last resort, and the minimum type's and the chamfers' when clamped
-//! (docs/algorithms/cylindrical.md, "Untangling", "Chamfers and the minimum type, clamped"): new
+//! (docs/algorithms/cylindrical.md, "Untangling", "Mending"): new
 //! faces that are still flipped after the fold guard ([`super::fold_guard`]) get their points
 //! smoothed until they face the right way (a face whose outline crosses itself counts as
 //! flipped here, as in the fold guard).
