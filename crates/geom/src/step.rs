@@ -13,50 +13,22 @@
 //!    listed, never hidden), and what the preparation and the mending changed, in words
 //!    ([`StepReport::notes`]) that the CLI and the app both print.
 
-use crate::dissolve::DissolveError;
 use crate::edge_attrs::EdgeAttrs;
-use crate::error::{MeshError, OverBudget};
+use crate::error::OverBudget;
 use crate::mesh::PolyMesh;
 use crate::refine::{self, Numbering, Provenance, dual_quad};
-use crate::rules::{self, CombinationState, CornerRule, MendReport, ParamError, RuleError, mend};
+use crate::rules::{self, CombinationState, CornerRule, MendReport, mend};
 use crate::topology::Topology;
 use std::borrow::Cow;
 use std::time::Instant;
-use thiserror::Error;
 
 pub use crate::child_check::{
     ChildCheck, DEGENERATE_NOISE, check_children, is_degenerate, primal_flipped, scale,
 };
-pub use crate::rules::RoundingOptions;
+pub use crate::rules::{RoundingOptions, StepError};
 pub use notes::{StepNote, Topic};
 
 mod notes;
-
-#[derive(Debug, Clone, PartialEq, Error)]
-pub enum StepError {
-    #[error(transparent)]
-    Mesh(#[from] MeshError),
-    #[error(transparent)]
-    Param(#[from] ParamError),
-    #[error(transparent)]
-    Rule(#[from] RuleError),
-    #[error(transparent)]
-    Dissolve(#[from] DissolveError),
-    #[error(transparent)]
-    Primal(#[from] crate::primal::PrimalError),
-    #[error(transparent)]
-    TooLarge(#[from] OverBudget),
-    /// The step turned a solid of positive volume inside out: its faces point inwards
-    /// (the pipeline keeps the level, so that it can be looked at, and stops there).
-    #[error(
-        "the solid has turned inside out (signed volume {before:.4e} before the step, {after:.4e} after): {flipped} face(s) flipped; lower the radius or parameter, or clamp"
-    )]
-    InsideOut {
-        before: f64,
-        after: f64,
-        flipped: usize,
-    },
-}
 
 /// What a step did, for the summary line, the status bar and the tests.
 #[derive(Debug, Clone, Default, PartialEq)]
@@ -213,6 +185,7 @@ pub fn biquadratic_step_carrying(
 mod tests {
     use super::*;
     use crate::primitives;
+    use crate::rules::RuleError;
 
     /// Every biquadratic rule gives the same child, provenance and report (flipped and
     /// degenerate faces, the volume to the last bit, the radii lowered where rounds would

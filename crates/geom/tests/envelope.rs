@@ -74,8 +74,8 @@ fn assert_closed_outward(m: &PolyMesh, what: &str) {
 /// of Prism's interpolated speed: 9.34 %, 16.49 %, 33.41 %; envelope.md).
 #[test]
 fn one_cube_lies_between_the_cube_and_its_sphere() {
-    // The paper's patches as printed: the face centre as far inside the sphere as ALGORITHMS
-    // §11.8's model of one face predicts (9.3 %, 16.5 %, 33 %).
+    // The paper's patches as printed: the face centre as far inside the sphere as
+    // envelope.md's model of one face predicts (9.3 %, 16.5 %, 33 %).
     for (t, centre_in) in [(1.0, 0.09340), (0.5, 0.16489), (0.1, 0.33406)] {
         let e = build(Shape::Cube, t);
         assert_eq!((e.regions, e.patches.len()), (6, 6));
@@ -452,7 +452,7 @@ fn assert_closed_outward_from(m: &PolyMesh, ga: DVec3, gb: DVec3, what: &str) {
     }
 }
 
-/// Two equal cubes of one orientation on an axis (ALGORITHMS §11.8): 14 regions; the fusion
+/// Two equal cubes of one orientation on an axis (envelope.md, "Enclosure"): 14 regions; the fusion
 /// surface is the silhouette loop translated along d for every t, and at t = 1 the circular
 /// cylinder of radius √3 (half-size 1) about the centre line; closed, and its faults named
 /// (at t = 0.1 the paper's cube faces fold beside the silhouette).
@@ -495,7 +495,7 @@ fn two_aligned_cubes_fuse_by_translation() {
 
 /// Two cubes on the body diagonal: 18 regions (each cube's 3 triangles and 3 pentagons, 6 fusion
 /// quads), 54 patches; closed at every t, outward, G1 and both cubes enclosed at t = 1; where
-/// the star condition at the inserted points fails (ALGORITHMS §11.7, t = 0.7 and below) the
+/// the star condition at the inserted points fails (envelope.md, "The paper's patches": t = 0.7 and below) the
 /// folds are named.
 #[test]
 fn two_diagonal_cubes_are_closed_outward_and_g1() {
@@ -630,7 +630,7 @@ fn an_off_axis_pair_keeps_the_edge_where_the_rebuilt_piece_would_hook() {
     }
 }
 
-/// The paper's one-sided basis as an option (ALGORITHMS §8.2 (c)): G1 too, but on one cube at
+/// The paper's one-sided basis as an option (skin.md, "Patches and G1"): G1 too, but on one cube at
 /// t = 1 the basis side's cross direction at the middle of every edge arc points 18.4° into
 /// the sphere (the mean of the corner legs), where the virtual basis keeps the sphere's tangent
 /// plane (0°); and the surface depends on the order the faces are listed in.

@@ -1,5 +1,5 @@
 //! The bicubic Gregory patch (Chiyokura & Kimura 1983; seeds 003 and 004;
-//! docs/algorithms/gregory.md, ALGORITHMS §7).
+//! docs/algorithms/skin.md, "Patches and G1").
 //!
 //! Twenty control points: the 12 boundary points `P_ij` (i or j ∈ {0, 3}) and each of the four
 //! interior points in two copies, `P_ij^(v)` tied to the nearer v-boundary (j = 1: v = 0,
@@ -100,7 +100,7 @@ impl Gregory {
         (p, du, dv)
     }
 
-    /// Position, partials and normal at (u, v) ∈ [0, 1]² (ALGORITHMS §7.3). Where
+    /// Position, partials and normal at (u, v) ∈ [0, 1]². Where
     /// `S_u × S_v` vanishes (a corner with collinear legs) the normal is taken a small step
     /// towards the patch centre.
     pub fn eval(&self, u: f64, v: f64) -> PatchPoint {
@@ -151,7 +151,7 @@ mod tests {
         s
     }
 
-    /// Equal copies: the bicubic Bézier patch (ALGORITHMS §7.1).
+    /// Equal copies: the bicubic Bézier patch.
     #[test]
     fn equal_copies_give_the_bezier_patch() {
         let p = net();

@@ -1,5 +1,5 @@
 //! C2 piecewise cubic curves through a chain of points, as cubic Bézier segments
-//! (docs/algorithms/skin.md; ALGORITHMS §10.6 and §10.7; seed 003 §2).
+//! (docs/algorithms/skin.md, "The network"; seed 003 §2).
 //!
 //! Chord-length intervals `Δ_i = |Q_(i+1) − Q_i|`; the derivatives `T_i` at the points (with
 //! respect to the global chord parameter) solve

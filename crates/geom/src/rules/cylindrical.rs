@@ -23,6 +23,7 @@
 //! paper's tests but does not converge to r (it stalls near 0.2 % of r, §2.7).
 
 use super::RoundingOptions;
+use super::StepError;
 use super::overlap::{EdgeFit, Overlap, fitting_scales};
 use super::prepared::Prepared;
 use super::{CornerRule, RuleError, RuleInput, RuleReport, corner_frame_on_edges};
@@ -30,7 +31,6 @@ use crate::dissolve::dissolve_flat_edges;
 use crate::edge_attrs::{EdgeAttrs, EdgeKey};
 use crate::geometry::signed_bend_angles;
 use crate::mesh::PolyMesh;
-use crate::step::StepError;
 use crate::topology::Topology;
 use glam::DVec3;
 use rayon::prelude::*;

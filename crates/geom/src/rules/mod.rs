@@ -165,6 +165,34 @@ pub enum RuleError {
     Overlap { edges: Vec<EdgeFit> },
 }
 
+/// Why a step failed: the errors of its preparation, its rule and its budget, and a result
+/// turned inside out.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum StepError {
+    #[error(transparent)]
+    Mesh(#[from] crate::error::MeshError),
+    #[error(transparent)]
+    Param(#[from] ParamError),
+    #[error(transparent)]
+    Rule(#[from] RuleError),
+    #[error(transparent)]
+    Dissolve(#[from] crate::dissolve::DissolveError),
+    #[error(transparent)]
+    Primal(#[from] crate::primal::PrimalError),
+    #[error(transparent)]
+    TooLarge(#[from] crate::error::OverBudget),
+    /// The step turned a solid of positive volume inside out: its faces point inwards
+    /// (the pipeline keeps the level, so that it can be looked at, and stops there).
+    #[error(
+        "the solid has turned inside out (signed volume {before:.4e} before the step, {after:.4e} after): {flipped} face(s) flipped; lower the radius or parameter, or clamp"
+    )]
+    InsideOut {
+        before: f64,
+        after: f64,
+        flipped: usize,
+    },
+}
+
 /// What a rule needs besides the mesh.
 pub struct RuleInput<'a> {
     pub mesh: &'a PolyMesh,

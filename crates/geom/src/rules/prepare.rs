@@ -5,13 +5,13 @@
 //! [`CombinationState`]. The step ([`crate::step`]) stays generic: prepare, place, split.
 
 use super::RoundingOptions;
+use super::StepError;
 use super::cylindrical;
 use super::prepared::{Prepared, checked_level};
 use super::{CornerRule, combination::CombinationState};
 use crate::edge_attrs::EdgeAttrs;
 use crate::error::MeshError;
 use crate::mesh::PolyMesh;
-use crate::step::StepError;
 use crate::topology::Topology;
 use std::borrow::Cow;
 

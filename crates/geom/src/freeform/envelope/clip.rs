@@ -1,5 +1,5 @@
 //! A primitive's curved network, trimmed by the silhouette planes towards its hull neighbours
-//! (seed 004 §5.1; ALGORITHMS §11.2–11.3; docs/algorithms/envelope.md).
+//! (seed 004 §5.1; docs/algorithms/envelope.md, "The network for two primitives").
 //!
 //! Every cut k is a plane Π_k through the primitive's centre G with unit normal `d_k` (towards
 //! the partner), and the primitive keeps `(x − G)·d_k ≤ 0` for all k. All of the primitive's

@@ -1,8 +1,8 @@
-//! Coons patches with Gregory's variable twist (seed 004 §6.2; ALGORITHMS §9;
+//! Coons patches with Gregory's variable twist (seed 004 §6.2;
 //! docs/algorithms/envelope.md, "The paper's patches"), fed with four rational boundary
 //! curves and four cross-derivative functions `X(s) = k(s)·g(s) + h(s)·C′(s)`, k and h
 //! linear between their fits at the corners and g the border's virtual basis (the paper's
-//! form, ALGORITHMS §8.2–8.3).
+//! form, docs/algorithms/skin.md, "Patches and G1").
 //!
 //! With the cubic Hermite functions `H₀, H₁, G₀, G₁`,
 //! `S = L_u + L_v − T`, `L_u = H₀(u)d₀(v) + H₁(u)d₁(v) + G₀(u)f₀(v) + G₁(u)f₁(v)`, `L_v` likewise
@@ -16,7 +16,7 @@
 //! paper's patches can fold, and the build names where ([`super::folds`]).
 
 use crate::freeform::bezier::RationalBezier;
-use crate::freeform::g1::fit;
+use crate::freeform::g1::{fit, hermite};
 use glam::DVec3;
 
 /// One border of a patch: its curve and its inward cross derivative
@@ -70,17 +70,6 @@ impl Side {
 #[derive(Debug, Clone, PartialEq)]
 pub struct Coons {
     pub sides: [Side; 4],
-}
-
-/// The cubic Hermite functions `H₀, H₁, G₀, G₁` at t.
-pub(super) fn hermite(t: f64) -> [f64; 4] {
-    let (t2, t3) = (t * t, t * t * t);
-    [
-        2.0 * t3 - 3.0 * t2 + 1.0,
-        -2.0 * t3 + 3.0 * t2,
-        t3 - 2.0 * t2 + t,
-        t3 - t2,
-    ]
 }
 
 /// Gregory's blend of two twists, the average where both weights vanish.

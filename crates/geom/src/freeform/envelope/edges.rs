@@ -1,5 +1,5 @@
-//! Curved edges of a primitive (seed 004 §4.1–4.2, eq. 1 and 2; ALGORITHMS §6.3;
-//! docs/algorithms/envelope.md): the straight edge A–B of a primitive with centre G becomes a
+//! Curved edges of a primitive (seed 004 §4.1–4.2, eq. 1 and 2;
+//! docs/algorithms/envelope.md, "Curved edges"): the straight edge A–B of a primitive with centre G becomes a
 //! rational cubic tangent at both ends to the sphere through them, with end curvature 1/ρ,
 //! ρ = t·|V| (t = the end's curvature parameter, V = the end minus G).
 //!

@@ -1,5 +1,5 @@
 //! Vertex pairs and fusion edges between two primitives' facing sections (seed 004 §5.2;
-//! ALGORITHMS §11.4, §11.5; docs/algorithms/envelope.md).
+//! docs/algorithms/envelope.md, "The network for two primitives").
 //!
 //! Both sections lie in planes normal to d: whole silhouette loops (two primitives, or
 //! centres on a line) or chains between the same two rays (the straight edges where the
@@ -14,7 +14,7 @@
 //! The **fusion edge** from P (on A's loop) to Q (on B's) is the polynomial cubic
 //! `P, P + λ_P(L/3)T_P, Q − λ_Q(L/3)T_Q, Q` with `T_P = unit((Q − P) − ((Q − P)·n_P)n_P)`, n_P
 //! the tangent-plane normal at P (T_Q likewise), L = |Q − P|, λ = min(1, 2t) of the end's t
-//! (ALGORITHMS §11.5 has λ = 1; shorter below t = ½ so that the edge tends to its chord as
+//! (λ = 1 at t ≥ ½; shorter below t = ½ so that the edge tends to its chord as
 //! t → 0, like the primitives' edges: envelope.md, "Fusion edges at small t"): it leaves each
 //! end in that end's tangent plane (§8.1), and for equal polar angles along d. Consecutive
 //! pairs bound a fusion quad: A's loop from angle α_k to α_(k+1), the fusion edge there, B's

@@ -1,5 +1,5 @@
-//! Free-form surfaces that envelope primitives (seed 004, Ogasawara & Kobori; ALGORITHMS §6.3,
-//! §8, §9, §11; docs/algorithms/envelope.md).
+//! Free-form surfaces that envelope primitives (seed 004, Ogasawara & Kobori;
+//! docs/algorithms/envelope.md).
 //!
 //! A primitive's straight edges become rational cubics with end curvature 1/(t·r)
 //! ([`edges`]); the network of curves ([`network`]) is filled with Coons patches with

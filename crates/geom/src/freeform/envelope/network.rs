@@ -1,6 +1,6 @@
-//! The curve network of an envelope (seed 004 §4–§5; ALGORITHMS §11.1–11.5;
+//! The curve network of an envelope (seed 004 §4–§5;
 //! docs/algorithms/envelope.md): network vertices with their tangent planes, rational cubic
-//! curves with their virtual bases (ALGORITHMS §8.2), and regions bounded by curves or parts
+//! curves with their virtual bases (docs/algorithms/skin.md, "Patches and G1"), and regions bounded by curves or parts
 //! of curves.
 //!
 //! Every curve of a primitive touches, at each of its ends, the plane normal to `P − G`

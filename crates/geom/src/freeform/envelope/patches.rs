@@ -1,5 +1,5 @@
-//! The paper's patches over the envelope's network (seed 004 §6; ALGORITHMS §8.2–8.3, §9,
-//! §11.6–11.7; docs/algorithms/envelope.md, "The paper's patches"), built as printed, one
+//! The paper's patches over the envelope's network (seed 004 §6;
+//! docs/algorithms/envelope.md, "The paper's patches"), built as printed, one
 //! build, no repair: the option `--patches paper` beside the charts, for teaching and
 //! comparison. Their folds are found and named, not mended ([`super::folds`]).
 //!
@@ -15,7 +15,7 @@
 //! 2. `P_i` = mean of `P_d(k) + (3/2)b_k`;
 //! 3. on a primitive, moved along G → P_i to the distance `max(ρ̄, d_face)` from its centre
 //!    G, ρ̄ the mean curvature radius at the region's corners (the paper's rule) and d_face
-//!    the face plane's distance along the ray (ALGORITHMS §12 #36: never inside the
+//!    the face plane's distance along the ray (envelope.md, "The paper's patches": never inside the
 //!    primitive);
 //! 4. tangent plane at P_i normal to `P_i − G`, or the face normal where d_face won (§12
 //!    #41); between primitives, the mean of the boundary tangents × b_k;

@@ -5,7 +5,7 @@
 //! The centre G is the circumcentre — the least-squares sphere through the vertices,
 //! `2P·G + c = |P|²` solved for (G, c), `r² = c + |G|²` — which equals the vertex centroid for
 //! the symmetric primitives the paper uses and is the only centre with every vertex at one
-//! distance in general (ALGORITHMS §6.3).
+//! distance in general (docs/algorithms/envelope.md, "Primitives").
 
 use super::EnvelopeError;
 use crate::primitives;

@@ -1,5 +1,5 @@
-//! The envelope's welded tessellation (ALGORITHMS §7.4, §11.7 step 6;
-//! docs/algorithms/envelope.md): K × K quads a patch, conforming where an unsplit region
+//! The envelope's welded tessellation (docs/algorithms/envelope.md,
+//! "The paper's patches"): K × K quads a patch, conforming where an unsplit region
 //! meets split halves.
 //!
 //! The mesh vertices along a network curve are the union of the K + 1 uniform samples of

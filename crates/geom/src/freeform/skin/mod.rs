@@ -1,4 +1,4 @@
-//! Skinning a solid through planar cross-sections (seed 003, DESIGNBASE; ALGORITHMS §10;
+//! Skinning a solid through planar cross-sections (seed 003, DESIGNBASE;
 //! docs/algorithms/skin.md).
 //!
 //! A designer places a few closed planar sections in space; the skin is a G1 surface of

@@ -1,5 +1,5 @@
-//! The curve network of a skin (seed 003 §2 steps 1–4; ALGORITHMS §10.3–§10.6;
-//! docs/algorithms/skin.md): the virtual trajectory between neighbouring section centres (a
+//! The curve network of a skin (seed 003 §2 steps 1–4;
+//! docs/algorithms/skin.md, "The network"): the virtual trajectory between neighbouring section centres (a
 //! rational quadratic, for display), the sweep of each section into the next plane by the
 //! minimal rotation `R(N_k → N_(k+1))`, the correspondence of minimal total twist over all n
 //! shifts, and the C2 chains through corresponding vertices.

@@ -1,5 +1,5 @@
 //! Gregory patches over the skin's curve network, G1 across every inner border (seed 003 §2
-//! step 5; ALGORITHMS §8.2 and §10.8; docs/algorithms/skin.md).
+//! step 5; docs/algorithms/skin.md, "Patches and G1").
 //!
 //! Cell (k, i) is bounded by the piece of section k from chain i to chain i + 1 (v = 0), the
 //! same on section k + 1 (v = 1), and the pieces of chains i (u = 0) and i + 1 (u = 1) between
@@ -51,7 +51,7 @@ pub struct Network<'a> {
     pub basis: Basis,
 }
 
-/// The G1 construction of inner borders (ALGORITHMS §8.2).
+/// The G1 construction of inner borders (docs/algorithms/skin.md, "Patches and G1").
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, serde::Serialize, serde::Deserialize)]
 #[serde(rename_all = "kebab-case")]
 pub enum Basis {
@@ -199,7 +199,7 @@ mod tests {
     }
 
     /// Four straight borders of a bilinear patch with the basis construction on every border
-    /// reproduce the bilinear patch (ALGORITHMS §10.8): its cross derivatives are linear.
+    /// reproduce the bilinear patch (skin.md, "Patches and G1"): its cross derivatives are linear.
     #[test]
     fn straight_borders_reproduce_a_bilinear_patch() {
         let c = [

@@ -1,5 +1,5 @@
 //! Sections with unequal point counts (beyond seed 003, which requires equal counts;
-//! ALGORITHMS §10.9; docs/algorithms/skin.md "Unequal point counts").
+//! docs/algorithms/skin.md, "Unequal point counts").
 //!
 //! Vertices are inserted **by polar angle after the sweep**, as OpenCascade's polar method
 //! does for closed wires: every vertex of section k, swept into section k + 1's plane by the

@@ -1,5 +1,5 @@
-//! Checking and preparing the sections of a skin (ALGORITHMS §10.2 and §10.7;
-//! docs/algorithms/skin.md): each is a closed planar polygon; its centre is the area centroid
+//! Checking and preparing the sections of a skin (docs/algorithms/skin.md,
+//! "Sections"): each is a closed planar polygon; its centre is the area centroid
 //! in its plane, its normal the Newell normal oriented along the skinning direction (the point
 //! list reversed when that flips it, so every section runs counter-clockwise about its normal),
 //! and its curve the closed C2 spline through its points, or open C2 pieces between the

@@ -1,4 +1,4 @@
-//! The skin as one welded mesh (ALGORITHMS §7.4, §10.8): every patch sampled on a
+//! The skin as one welded mesh (docs/algorithms/skin.md, "Tessellation"): every patch sampled on a
 //! (K+1)×(K+1) grid, K×K quads a patch. The grid of the whole skin is one cylinder of
 //! `(m − 1)K + 1` rows and `nK` columns, so every vertex on a border is computed once, from one
 //! patch, and shared by both sides: section vertices are mesh vertices exactly (a patch's

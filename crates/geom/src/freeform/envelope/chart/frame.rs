@@ -1,4 +1,4 @@
-//! The three kinds of flat chart (ALGORITHMS §11.10; docs/algorithms/envelope.md, "Charts"):
+//! The three kinds of flat chart (docs/algorithms/envelope.md, "Charts"):
 //! each maps a point c of a plane domain and a scalar h to the surface point
 //! `X(c, h) = O(c) + h·N(c)`, with O and N fixed by the scene, so a region is the graph of h.
 //!

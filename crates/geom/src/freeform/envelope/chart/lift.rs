@@ -1,6 +1,6 @@
 //! Enclosure by construction: the fusion strips lifted, and primitive and lid regions raised,
 //! over the primitives' points the paper's central cut leaves out (docs/algorithms/envelope.md,
-//! "Enclosure", "Raises"; ALGORITHMS §11.8, §11.10 item 6). Both are positive bumps on a
+//! "Enclosure", "Raises"). Both are positive bumps on a
 //! graph, computed once; the surface stays a graph over the same charts ([`Raise`] below).
 //!
 //! The paper cuts each primitive by the plane through its centre normal to d, the direction

@@ -1,5 +1,5 @@
-//! The envelope as scalar graphs over flat charts (ALGORITHMS §11.10;
-//! docs/algorithms/envelope.md, "Charts"): the construction that cannot fold.
+//! The envelope as scalar graphs over flat charts (docs/algorithms/envelope.md,
+//! "Charts"): the construction that cannot fold.
 //!
 //! Every region of the network has a flat convex domain in which it is a graph ([`frame`]):
 //! a primitive's region is the central projection of its clipped face, a fusion quad a
@@ -40,6 +40,7 @@ pub mod mesh;
 pub mod quality;
 pub mod side;
 
+use crate::freeform::g1::hermite;
 pub use frame::Frame;
 use side::{ChartSide, Normals, Piece, Ribbons};
 
@@ -104,17 +105,6 @@ fn along_z(s: &ChartSide, z: f64) -> side::Data {
     log_data(s.data((z - s.a.y) / (s.b.y - s.a.y)))
 }
 
-/// Cubic Hermite basis: values at 0 and 1, then derivatives at 0 and 1.
-fn hermite(t: f64) -> [f64; 4] {
-    let (t2, t3) = (t * t, t * t * t);
-    [
-        2.0 * t3 - 3.0 * t2 + 1.0,
-        -2.0 * t3 + 3.0 * t2,
-        t3 - 2.0 * t2 + t,
-        t3 - t2,
-    ]
-}
-
 impl Chart {
     /// The scalar at chart point c: the Coons blend on a fusion quad's rectangle, the side
     /// blend elsewhere.
@@ -125,13 +115,18 @@ impl Chart {
         }
     }
 
-    fn rect(&self) -> Rect {
-        let (left, right, bottom, top) = (
-            &self.sides[3],
-            &self.sides[1],
+    /// A fusion quad's sides in its rectangle: bottom (z = z₀), right, top and left.
+    fn rect_sides(&self) -> [&ChartSide; 4] {
+        [
             &self.sides[0],
+            &self.sides[1],
             &self.sides[2],
-        );
+            &self.sides[3],
+        ]
+    }
+
+    fn rect(&self) -> Rect {
+        let [bottom, right, top, left] = self.rect_sides();
         Rect {
             x0: left.a.x,
             z0: bottom.a.y,
@@ -144,12 +139,7 @@ impl Chart {
     /// twists are difference quotients taken from the corner inwards.
     fn coons_corners(&self) -> [Corner; 4] {
         let Rect { x0, z0, w, d } = self.rect();
-        let [bottom, right, top, left] = [
-            &self.sides[0],
-            &self.sides[1],
-            &self.sides[2],
-            &self.sides[3],
-        ];
+        let [bottom, right, top, left] = self.rect_sides();
         let corner = |su: &ChartSide, sv: &ChartSide, at_u: f64, at_v: f64| {
             // su runs along x (bottom or top) through this corner, sv along z (left or right).
             let eps = 1e-6;
@@ -177,18 +167,13 @@ impl Chart {
 
     /// R = exp(F), F the bicubically blended Coons interpolant of ln R — the four sides'
     /// values and cross slopes (∂ ln R = ∂R/R) — with Gregory's variable twist at the corners
-    /// (ALGORITHMS §9 on a scalar): a fusion quad is the rectangle [x₀, x₁] × [0, D] of its
+    /// (Coons with Gregory's twist, on a scalar): a fusion quad is the rectangle [x₀, x₁] × [0, D] of its
     /// chart, sides 0 (z = 0), 1 (x = x₁), 2 (z = D) and 3 (x = x₀). R > 0 whatever the data (a
     /// graph about the axis), and a strip that does not change along the axis is reproduced
     /// exactly — the strip between two equal aligned primitives is their section swept along d.
     fn coons(&self, c: DVec2, [c00, c10, c01, c11]: &[Corner; 4]) -> f64 {
         let Rect { x0, z0, w, d } = self.rect();
-        let [bottom, right, top, left] = [
-            &self.sides[0],
-            &self.sides[1],
-            &self.sides[2],
-            &self.sides[3],
-        ];
+        let [bottom, right, top, left] = self.rect_sides();
         let u = (c.x - x0) / w;
         let v = (c.y - z0) / d;
         // Side data at the point's projections, in (u, v) units: value and the slope across.
