@@ -10,7 +10,7 @@
 pub(crate) mod build;
 
 use super::command::{Command, Edit};
-use super::gestures::Gestures;
+use super::gestures::{self, Gestures};
 use super::model::pick::{Projector, pick_vertex};
 use super::view3d::View3d;
 use super::viewport;
@@ -328,13 +328,13 @@ impl EnvelopeTab {
 
     pub fn ui(&mut self, ui: &mut egui::Ui, spec: Option<&EnvelopeSpec>) -> Vec<Command> {
         self.sync(spec);
-        egui::Panel::left("envelope_panel")
-            .resizable(true)
-            .default_size(300.0)
-            .show(ui, |ui| {
-                egui::ScrollArea::vertical().show(ui, |ui| self.panel(ui, spec));
-            });
-        egui::CentralPanel::default().show(ui, |ui| self.view(ui, spec));
+        gestures::layout(
+            ui,
+            "envelope_panel",
+            self,
+            |t, ui| t.panel(ui, spec),
+            |t, ui| t.view(ui, spec),
+        );
         std::mem::take(&mut self.out)
     }
 
@@ -682,23 +682,7 @@ impl EnvelopeTab {
 
     fn placement(&mut self, ui: &mut egui::Ui, spec: &EnvelopeSpec, k: usize, p: &PrimitiveInput) {
         let centre = centre_of(p);
-        let mut moved = centre;
-        let mut changed = None;
-        ui.horizontal(|ui| {
-            ui.label("centre");
-            for a in 0..3 {
-                let r = ui.add(
-                    egui::DragValue::new(&mut moved[a])
-                        .speed(0.01)
-                        .max_decimals(4),
-                );
-                let g = self.gestures.of(&r);
-                if r.changed() {
-                    changed = Some(g);
-                }
-            }
-        });
-        if let Some(g) = changed {
+        if let Some((moved, g)) = self.gestures.centre_field(ui, centre) {
             let mut s = spec.clone();
             s.primitives[k] = mapped(p, |v| v + moved - centre);
             self.set(Some(s), g);
@@ -723,17 +707,9 @@ impl EnvelopeTab {
                 }
             }
         });
-        ui.horizontal(|ui| {
-            ui.label("scale %");
-            if let Some((b, a, g)) =
-                self.gestures
-                    .delta_field(ui, &mut gst.scale, 100.0, "", Some(1.0..=1000.0))
-                && b > 0.0
-                && a > 0.0
-            {
-                act = Some((DQuat::IDENTITY, a / b, g));
-            }
-        });
+        if let Some((f, g)) = self.gestures.scale_field(ui, &mut gst.scale) {
+            act = Some((DQuat::IDENTITY, f, g));
+        }
         self.gesture = gst;
         if let Some((q, f, g)) = act {
             let mut s = spec.clone();
@@ -831,9 +807,7 @@ impl EnvelopeTab {
             && let Some(p) = spec.primitives.get(k)
             && p.vertices.len() == start.len()
         {
-            let total = ui
-                .input(|i| i.pointer.press_origin().zip(i.pointer.latest_pos()))
-                .map_or(egui::Vec2::ZERO, |(a, b)| b - a);
+            let total = gestures::drag_total(ui);
             let from = PrimitiveInput {
                 vertices: start.clone(),
                 ..p.clone()
@@ -849,7 +823,7 @@ impl EnvelopeTab {
                     mapped(&from, |v| v + by)
                 }
                 Mouse::Scale => {
-                    let f = (-total.y as f64 * 0.005).exp();
+                    let f = gestures::drag_scale(total);
                     mapped(&from, |v| centre + (v - centre) * f)
                 }
                 Mouse::Orbit => return,

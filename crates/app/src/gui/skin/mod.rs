@@ -7,7 +7,7 @@
 mod build;
 
 use super::command::{Command, Edit};
-use super::gestures::Gestures;
+use super::gestures::{self, Gestures};
 use super::view3d::View3d;
 use build::{Built, Overlays};
 use glam::{DQuat, DVec3};
@@ -158,13 +158,13 @@ impl SkinTab {
 
     pub fn ui(&mut self, ui: &mut egui::Ui, spec: Option<&SkinSpec>) -> Vec<Command> {
         self.sync(spec);
-        egui::Panel::left("skin_panel")
-            .resizable(true)
-            .default_size(300.0)
-            .show(ui, |ui| {
-                egui::ScrollArea::vertical().show(ui, |ui| self.panel(ui, spec));
-            });
-        egui::CentralPanel::default().show(ui, |ui| self.view(ui, spec));
+        gestures::layout(
+            ui,
+            "skin_panel",
+            self,
+            |t, ui| t.panel(ui, spec),
+            |t, ui| t.view(ui, spec),
+        );
         std::mem::take(&mut self.out)
     }
 
@@ -382,24 +382,8 @@ impl SkinTab {
         };
         let (centre, normal, x, y) = frame(&sec.points);
         ui.label(format!("Section {k}"));
-        let mut moved = centre;
-        let mut changed = None;
-        ui.horizontal(|ui| {
-            ui.label("centre");
-            for a in 0..3 {
-                let r = ui.add(
-                    egui::DragValue::new(&mut moved[a])
-                        .speed(0.01)
-                        .max_decimals(4),
-                );
-                let g = self.gestures.of(&r);
-                if r.changed() {
-                    changed = Some(g);
-                }
-            }
-        });
         let mut s = spec.clone();
-        if let Some(g) = changed {
+        if let Some((moved, g)) = self.gestures.centre_field(ui, centre) {
             for p in &mut s.sections[k].points {
                 *p += moved - centre;
             }
@@ -439,17 +423,9 @@ impl SkinTab {
                 act = Some((q, f, g));
             }
         });
-        ui.horizontal(|ui| {
-            ui.label("scale %");
-            if let Some((b, a, g)) =
-                self.gestures
-                    .delta_field(ui, &mut gst.scale, 100.0, "", Some(1.0..=1000.0))
-                && b > 0.0
-                && a > 0.0
-            {
-                act = Some((DQuat::IDENTITY, a / b, g));
-            }
-        });
+        if let Some((f, g)) = self.gestures.scale_field(ui, &mut gst.scale) {
+            act = Some((DQuat::IDENTITY, f, g));
+        }
         self.gesture = gst;
         if let Some((q, f, g)) = act {
             let mut s = spec.clone();
@@ -527,9 +503,7 @@ impl SkinTab {
             && let Some(d) = &self.drag
             && d.section < spec.sections.len()
         {
-            let total = ui
-                .input(|i| i.pointer.press_origin().zip(i.pointer.latest_pos()))
-                .map_or(egui::Vec2::ZERO, |(a, b)| b - a);
+            let total = gestures::drag_total(ui);
             let (centre, normal, _, _) = frame(&d.start);
             let points: Vec<DVec3> = match self.mouse {
                 Mouse::Move => {
@@ -546,7 +520,7 @@ impl SkinTab {
                     d.start.iter().map(|p| centre + q * (*p - centre)).collect()
                 }
                 Mouse::Scale => {
-                    let f = (-total.y as f64 * 0.005).exp();
+                    let f = gestures::drag_scale(total);
                     d.start.iter().map(|p| centre + (*p - centre) * f).collect()
                 }
                 Mouse::Orbit => return,
