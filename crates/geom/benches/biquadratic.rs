@@ -41,10 +41,13 @@ fn step_doo_sabin(b: divan::Bencher) {
     });
 }
 
-/// The whole user-visible step of `rule` on `m`, from the start of a run.
+/// The whole user-visible step of `rule` on `m`, from the start of a run, without the
+/// whole-level crossing search of the mending stage (the `crossings` bench times that apart).
 fn bench_step(b: divan::Bencher, m: prism_geom::PolyMesh, rule: CornerRule) {
     let attrs = EdgeAttrs::new();
-    b.bench(|| biquadratic_step(&m, &attrs, &rule, None, &RoundingOptions::default()).unwrap());
+    let mut options = RoundingOptions::default();
+    options.mend.crossings = false;
+    b.bench(|| biquadratic_step(&m, &attrs, &rule, None, &options).unwrap());
 }
 
 #[divan::bench(sample_count = 20)]
@@ -92,6 +95,7 @@ fn points_and_split(m: &prism_geom::PolyMesh, t: &Topology) -> prism_geom::PolyM
         cut_widths: &[],
         face_params: &[],
         vertex_neighbourhood: &[],
+        options: &RoundingOptions::default(),
     };
     let (pts, _) = corner_points(&CornerRule::DooSabin, &input).unwrap();
     dual_quad::split(m, t, pts).0

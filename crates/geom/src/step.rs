@@ -121,7 +121,7 @@ pub fn biquadratic_step_carrying(
         capped_edges: &prep.capped_edges,
     };
     // Mend, before the split: the child's vertex c is the parent's corner c.
-    let (unfolded, reoffset_faces) = mend::before_split(&plan, &parent, &options.mend, &mut points);
+    let (unfolded, reoffset_faces) = mend::before_split(&plan, &parent, options, &mut points);
     let (mut out, prov) = dual_quad::split(cur, topo, points);
     let new_attrs = refine::propagate(
         cur,

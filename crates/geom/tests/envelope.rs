@@ -3,6 +3,7 @@
 //! listing order, closed and outward for every t, enclosing the primitive, G1.
 
 mod common;
+use common::hausdorff;
 
 use prism_geom::freeform::envelope::{
     Envelope, EnvelopeError, EnvelopeSpec, Placement, PrimitiveInput, Shape, envelope,
@@ -110,19 +111,6 @@ fn one_cube_lies_between_the_cube_and_its_sphere() {
             100.0 * inside
         );
     }
-}
-
-fn hausdorff(a: &[DVec3], b: &[DVec3]) -> f64 {
-    let one = |a: &[DVec3], b: &[DVec3]| {
-        a.iter()
-            .map(|p| {
-                b.iter()
-                    .map(|q| p.distance(*q))
-                    .fold(f64::INFINITY, f64::min)
-            })
-            .fold(0.0, f64::max)
-    };
-    one(a, b).max(one(b, a))
 }
 
 /// One cube's envelope has the cube's 48 symmetries (Hausdorff of the tessellation vertices

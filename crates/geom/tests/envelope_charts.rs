@@ -5,24 +5,14 @@
 
 mod common;
 use common::off_surface;
+use common::spec;
 use prism_geom::analysis::winding_number;
 use prism_geom::freeform::envelope::chart::quality::{Quality, quality};
 use prism_geom::freeform::envelope::folds::crossings;
 use prism_geom::freeform::envelope::{
-    Envelope, EnvelopeSpec, Placement, PrimitiveInput, Shape, Surfacing, envelope,
+    Envelope, EnvelopeSpec, Placement, PrimitiveInput, Shape, envelope,
 };
 use prism_geom::{DVec3, PolyMesh, Topology};
-
-fn spec(primitives: Vec<PrimitiveInput>, t: f64) -> EnvelopeSpec {
-    EnvelopeSpec {
-        t,
-        primitives,
-        resolution: 8,
-        basis: Default::default(),
-        patches: Surfacing::Charts,
-        enclosure: Default::default(),
-    }
-}
 
 /// A small generator (SplitMix64), so that every heap is reproducible from its seed.
 struct Rng(u64);

@@ -6,6 +6,7 @@
 
 mod common;
 use common::off_surface;
+use common::{hausdorff, spec};
 use prism_geom::freeform::envelope::folds::crossings;
 use prism_geom::freeform::envelope::network::RegionKind;
 use prism_geom::freeform::envelope::{
@@ -19,17 +20,6 @@ fn cube_at(centre: [f64; 3], rotation: [f64; 3]) -> PrimitiveInput {
         scale: 3f64.sqrt(),
         rotation,
     })
-}
-
-fn spec(primitives: Vec<PrimitiveInput>, t: f64) -> EnvelopeSpec {
-    EnvelopeSpec {
-        t,
-        primitives,
-        resolution: 8,
-        basis: Default::default(),
-        patches: Surfacing::Charts,
-        enclosure: Default::default(),
-    }
 }
 
 fn build(primitives: Vec<PrimitiveInput>, t: f64) -> Envelope {
@@ -50,19 +40,6 @@ use prism_geom::analysis::winding_number as winding;
 fn closed(m: &PolyMesh) -> Result<(), String> {
     let t = Topology::build(m).map_err(|e| e.to_string())?;
     t.require_closed(m).map_err(|e| e.to_string())
-}
-
-fn hausdorff(a: &[DVec3], b: &[DVec3]) -> f64 {
-    let one = |a: &[DVec3], b: &[DVec3]| {
-        a.iter()
-            .map(|p| {
-                b.iter()
-                    .map(|q| p.distance(*q))
-                    .fold(f64::INFINITY, f64::min)
-            })
-            .fold(0.0, f64::max)
-    };
-    one(a, b).max(one(b, a))
 }
 
 /// How far the mesh of each of `a` and `b` lies off the other's surface, at most.

@@ -73,21 +73,32 @@ fn corner_move(
     (sign * (e1 + e2), reflex_corner)
 }
 
-/// The clamp keeps a face's new outline at least this share of the face's own narrowest
-/// width: what a triangle keeps at α = ¼ (it shrinks by 1 − 3α about its centroid).
-const VECTOR_SUM_KEPT_WIDTH: f64 = 0.25;
-
 /// Eq. (2) on one face: each corner's vertex and displacement per unit of α, in the face's
 /// corner order, and whether any corner is reflex. One value serves every face in turn
 /// ([`FaceMoves::load`]), so the clamp allocates nothing per face.
-#[derive(Default)]
 struct FaceMoves {
     from: Vec<DVec3>,
     moves: Vec<DVec3>,
     any_reflex: bool,
+    /// The share of the narrowest width and of each side the clamp keeps
+    /// ([`super::RoundingOptions::kept_share`]: what a triangle keeps at α = ¼, shrinking by
+    /// 1 − 3α about its centroid).
+    kept: f64,
+    /// [`super::RoundingOptions::reflex_sin`].
+    reflex_sin: f64,
 }
 
 impl FaceMoves {
+    fn new(options: &super::RoundingOptions) -> FaceMoves {
+        FaceMoves {
+            from: Vec::new(),
+            moves: Vec::new(),
+            any_reflex: false,
+            kept: options.kept_share,
+            reflex_sin: options.reflex_sin,
+        }
+    }
+
     /// Face `f` of unit normal `normal`, in place of the face held before.
     fn load(&mut self, m: &PolyMesh, normal: DVec3, f: usize, reflex: ReflexMode) {
         self.from.clear();
@@ -105,8 +116,8 @@ impl FaceMoves {
         }
     }
 
-    /// The largest α' ≤ `alpha` at which the face's new outline keeps at least a quarter of
-    /// the face's narrowest width (the least distance from a corner to an edge not its own)
+    /// The largest α' ≤ `alpha` at which the face's new outline keeps at least `kept` (a
+    /// quarter) of the face's narrowest width (the least distance from a corner to an edge not its own)
     /// all the way from α = 0: the outline cannot cross itself without a corner first
     /// reaching an edge.
     fn clamped(&self, m: &PolyMesh, f: usize, alpha: f64) -> f64 {
@@ -119,12 +130,12 @@ impl FaceMoves {
             })
             .collect();
         let width = |s: f64| narrowest_width(&self.from, &self.moves, s, &loops);
-        let keep = VECTOR_SUM_KEPT_WIDTH * width(0.0);
+        let keep = self.kept * width(0.0);
         largest_fitting(alpha, |s| width(s) >= keep)
     }
 
-    /// As [`FaceMoves::clamped`], and every side of the new outline keeps at least a quarter
-    /// of its old side's length along it: a side that turns back flips the strip between it
+    /// As [`FaceMoves::clamped`], and every side of the new outline keeps at least `kept` (a
+    /// quarter) of its old side's length along it: a side that turns back flips the strip between it
     /// and the next face's (Doo–Sabin's reflex corners).
     fn clamped_keeping_sides(&self, m: &PolyMesh, f: usize, most: f64) -> f64 {
         let n = self.from.len();
@@ -133,7 +144,7 @@ impl FaceMoves {
                 let j = (i + 1) % n;
                 let old = self.from[j] - self.from[i];
                 let new = old + s * (self.moves[j] - self.moves[i]);
-                new.dot(old) >= 0.25 * old.length_squared()
+                new.dot(old) >= self.kept * old.length_squared()
             })
         };
         let s = largest_fitting(most, sides);
@@ -151,7 +162,7 @@ impl FaceMoves {
 fn vector_sum_alphas(input: &RuleInput, alpha: f64, reflex: ReflexMode) -> (Vec<f64>, usize) {
     let m = input.mesh;
     let mut lowered = 0;
-    let mut fm = FaceMoves::default();
+    let mut fm = FaceMoves::new(input.options);
     let params = (0..m.num_faces())
         .map(|f| {
             fm.load(m, input.normals[f], f, reflex);
@@ -175,7 +186,7 @@ fn vector_sum_alphas(input: &RuleInput, alpha: f64, reflex: ReflexMode) -> (Vec<
 pub(super) fn doo_sabin_shares(input: &RuleInput) -> (Vec<f64>, usize) {
     let m = input.mesh;
     let mut offset = 0;
-    let mut fm = FaceMoves::default();
+    let mut fm = FaceMoves::new(input.options);
     let params = (0..m.num_faces())
         .map(|f| {
             let s = doo_sabin_share(m, input.normals[f], f, false, &mut fm);
@@ -195,7 +206,9 @@ fn doo_sabin_share(m: &PolyMesh, n: DVec3, f: usize, near_only: bool, fm: &mut F
         return -1.0;
     }
     let v = super::concave::corners(m, f);
-    if !super::concave::has_reflex_corner(&v, n) || super::concave::doo_sabin_holds(m, n, f) {
+    if !super::concave::has_reflex_corner(&v, n, fm.reflex_sin)
+        || super::concave::doo_sabin_holds(m, n, f)
+    {
         return -1.0;
     }
     fm.moves = super::concave::width_offset(&v, n);
@@ -211,8 +224,14 @@ fn doo_sabin_share(m: &PolyMesh, n: DVec3, f: usize, near_only: bool, fm: &mut F
 /// corner): the width offset's share where [`doo_sabin_shares`] gives one and its points stay
 /// near the face, else eq. (1). The combination rule's fold guard places a face it moves into the
 /// vertex blend so (the fold guard, `mend/fold_guard.rs`; cylindrical.md, "Fold guard").
-pub(super) fn offset_doo_sabin_points(m: &PolyMesh, n: DVec3, f: usize, pts: &mut [DVec3]) {
-    let mut fm = FaceMoves::default();
+pub(super) fn offset_doo_sabin_points(
+    m: &PolyMesh,
+    n: DVec3,
+    f: usize,
+    options: &super::RoundingOptions,
+    pts: &mut [DVec3],
+) {
+    let mut fm = FaceMoves::new(options);
     let s = doo_sabin_share(m, n, f, true, &mut fm);
     let l = m.face_loops(f).start;
     if s < 0.0 {
@@ -307,7 +326,7 @@ pub(super) fn face_params(input: &RuleInput, rule: &super::CornerRule) -> (Vec<f
         }
     };
     let mut lowered = 0;
-    let mut fm = FaceMoves::default();
+    let mut fm = FaceMoves::new(input.options);
     let params = (0..m.num_faces())
         .map(|f| {
             let mut x = p;
@@ -325,7 +344,7 @@ pub(super) fn face_params(input: &RuleInput, rule: &super::CornerRule) -> (Vec<f
                     reflex |= fr.sin_phi < 0.0;
                     continue;
                 }
-                let room = 0.25 * fr.e1.length().min(fr.e2.length());
+                let room = input.options.kept_share * fr.e1.length().min(fr.e2.length());
                 let a = along(&fr);
                 if a > 0.0 {
                     x = x.min(room / a);
@@ -373,6 +392,7 @@ mod tests {
             cut_widths: &[],
             face_params: &[],
             vertex_neighbourhood: &[],
+            options: &crate::rules::RoundingOptions::default(),
         };
         corner_points(&rule, &input).unwrap().0
     }

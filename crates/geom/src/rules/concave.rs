@@ -24,10 +24,6 @@ use crate::geometry::segment_distance;
 use crate::mesh::PolyMesh;
 use glam::DVec3;
 
-/// A corner counts as reflex where it turns the wrong way by more than this sine's angle;
-/// nearly straight ones keep eq. (1), which handles them.
-const REFLEX_SIN: f64 = 0.17;
-
 /// Whether the outline `v` moved by `s × moves` keeps every point within the largest distance
 /// of a corner of `v` from its centroid. On a warped sliver (a dart 0.03 in area that a
 /// Catmull–Clark step left on a chamfered tripod) the offset sides meet 2.1 away, outside the
@@ -49,13 +45,14 @@ pub(super) fn corners(m: &PolyMesh, f: usize) -> Vec<DVec3> {
         .collect()
 }
 
-/// Whether the outline `v` (a face of unit normal `n`) has a corner reflex by more than
-/// [`REFLEX_SIN`]'s angle.
-pub(super) fn has_reflex_corner(v: &[DVec3], n: DVec3) -> bool {
+/// Whether the outline `v` (a face of unit normal `n`) has a corner reflex by more than the
+/// angle of sine `reflex_sin` ([`super::RoundingOptions::reflex_sin`]); nearly straight ones
+/// keep eq. (1), which handles them.
+pub(super) fn has_reflex_corner(v: &[DVec3], n: DVec3, reflex_sin: f64) -> bool {
     let k = v.len();
     (0..k).any(|i| {
         let (e1, e2) = (v[(i + 1) % k] - v[i], v[(i + k - 1) % k] - v[i]);
-        n.dot(e1.cross(e2)) < -REFLEX_SIN * e1.length() * e2.length()
+        n.dot(e1.cross(e2)) < -reflex_sin * e1.length() * e2.length()
     })
 }
 
@@ -139,7 +136,7 @@ mod tests {
     fn on_a_parallelogram_the_width_offset_is_doo_sabin() {
         let m = face(&[[0.0, 0.0], [3.0, 0.0], [4.0, 1.5], [1.0, 1.5]]);
         let v = corners(&m, 0);
-        assert!(!has_reflex_corner(&v, DVec3::Z));
+        assert!(!has_reflex_corner(&v, DVec3::Z, 0.17));
         let moves = width_offset(&v, DVec3::Z);
         let mut ds = vec![DVec3::ZERO; 4];
         crate::rules::doo_sabin::loop_points(&m, 0, &mut ds, 0);
@@ -159,7 +156,7 @@ mod tests {
         let m = face(&[[a, a], [c, a], [c, b], [b, b], [b, c], [a, c]]);
         assert!(!doo_sabin_holds(&m, DVec3::Z, 0));
         let v = corners(&m, 0);
-        assert!(has_reflex_corner(&v, DVec3::Z));
+        assert!(has_reflex_corner(&v, DVec3::Z, 0.17));
         let moves = width_offset(&v, DVec3::Z);
         let (q, e) = (0.25 * (b - a), 0.25 * (c - b));
         let want = [

@@ -42,11 +42,6 @@ const STRAIGHT_CORNER: f64 = 1e-12;
 /// Edges a task of rayon's pool takes at least in the per-edge passes.
 const PAR_MIN: usize = 4096;
 
-/// The share of an edge a combination step's two new points on it may take together: each
-/// edge of a cut face keeps at least a tenth of its length, so no face of the child
-/// collapses.
-const STEP_ROOM: f64 = 0.9;
-
 /// Below this cos(ψ/2) an edge is a knife edge (faces folded onto each other): the cut
 /// width would exceed 1e12 r.
 const KNIFE_EDGE_COS: f64 = 1e-12;
@@ -149,6 +144,7 @@ pub(super) fn prepare<'a>(
         cut_widths: &[],
         face_params: &[],
         vertex_neighbourhood: skip,
+        options,
     };
     let mut clamped = Vec::new();
     if !matches!(options.overlap, Overlap::Unchecked { .. }) {
@@ -195,7 +191,7 @@ pub(super) fn prepare<'a>(
         .collect();
     let mut capped_edges = Vec::new();
     if matches!(rule, CornerRule::Combination { .. }) {
-        let scales = fitting_scales(&input, &cut_widths, skip, STEP_ROOM);
+        let scales = fitting_scales(&input, &cut_widths, skip, options.step_room);
         for (e, (x, s)) in cut_widths.iter_mut().zip(scales).enumerate() {
             if s < 1.0 {
                 *x *= s;
@@ -216,6 +212,7 @@ pub(super) fn prepare<'a>(
         dissolved_edges,
         clamped,
         capped_edges,
+        options: *options,
     })
 }
 
@@ -409,6 +406,7 @@ mod tests {
                 cut_widths: &widths,
                 face_params: &[],
                 vertex_neighbourhood: flags,
+                options: &crate::rules::RoundingOptions::default(),
             };
             let corner = m.face_corners(0).start;
             simple(&input, corner, &mut RuleReport::default()).unwrap()
@@ -441,6 +439,7 @@ mod tests {
             cut_widths: &widths,
             face_params: &[],
             vertex_neighbourhood: &[],
+            options: &crate::rules::RoundingOptions::default(),
         };
         corner_points(&rule, &input).unwrap().0
     }

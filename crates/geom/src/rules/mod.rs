@@ -207,6 +207,8 @@ pub struct RuleInput<'a> {
     pub face_params: &'a [f64],
     /// Per-face vertex-neighbourhood flag for the combination rule.
     pub vertex_neighbourhood: &'a [bool],
+    /// The step's tolerances.
+    pub options: &'a RoundingOptions,
 }
 
 /// Counters reported by a rule.
@@ -235,10 +237,6 @@ pub(crate) struct CornerFrame {
     pub sin_phi: f64,
 }
 
-/// `|sin φ|` from which a corner's frame uses its own plane whole; straighter corners blend
-/// towards the face normal made square to the corner's line.
-const CORNER_PLANE_SIN: f64 = 0.1;
-
 /// Below this `|n·u|` on both edges the face is flat at the corner and `n` is used as it is.
 const FLAT_CORNER: f64 = 1e-12;
 
@@ -247,10 +245,11 @@ const FLAT_CORNER: f64 = 1e-12;
 /// the corner's two edges, on `n`'s side. `n` itself on a planar face; on a warped face (any
 /// level after Catmull–Clark, a VERTEX-face of valence four or more) the cut lines then run
 /// along the edges instead of along their shadows on the face's mean plane. At a nearly
-/// straight corner (`|sin φ| < 0.1`) the plane of the two edges is ill-defined, so the
-/// normal blends, by `|sin φ|/0.1`, from `n` made square to the corner's line `u₁ − u₂`; a
-/// corner whose plane stands square to the face's (no side to take) takes that one whole.
-fn corner_normal(n: DVec3, u1: DVec3, u2: DVec3) -> DVec3 {
+/// straight corner (`|sin φ|` below `plane_sin`, [`RoundingOptions::corner_plane_sin`]) the
+/// plane of the two edges is ill-defined, so the normal blends, by `|sin φ|/plane_sin`, from
+/// `n` made square to the corner's line `u₁ − u₂`; a corner whose plane stands square to the
+/// face's (no side to take) takes that one whole.
+fn corner_normal(n: DVec3, u1: DVec3, u2: DVec3, plane_sin: f64) -> DVec3 {
     use crate::geometry::unit_or_zero;
     if n.dot(u1).abs() < FLAT_CORNER && n.dot(u2).abs() < FLAT_CORNER {
         return n;
@@ -262,10 +261,10 @@ fn corner_normal(n: DVec3, u1: DVec3, u2: DVec3) -> DVec3 {
     }
     let sin = cross.length();
     let plane = cross * (side.signum() / sin);
-    if sin >= CORNER_PLANE_SIN {
+    if sin >= plane_sin {
         return plane;
     }
-    let k = sin / CORNER_PLANE_SIN;
+    let k = sin / plane_sin;
     let out = unit_or_zero(square_to_line(n, u1, u2) * (1.0 - k) + plane * k);
     if out == DVec3::ZERO { n } else { out }
 }
@@ -315,7 +314,7 @@ fn frame(input: &RuleInput, corner: usize, own_plane: bool) -> Result<CornerFram
     }
     let (u1, u2) = (e1 / l1, e2 / l2);
     let n = if own_plane {
-        corner_normal(n, u1, u2)
+        corner_normal(n, u1, u2, input.options.corner_plane_sin)
     } else {
         n
     };

@@ -113,9 +113,6 @@ const STRAIGHT_CORNER: f64 = 1e-12;
 /// A constraint is broken when its sum exceeds L by more than this fraction of L.
 const SLACK: f64 = 1e-9;
 
-/// How many times the passes repeat at most (each one only lowers factors).
-const PASSES: usize = 64;
-
 /// Along-edge extents of the new point at a corner as coefficients of the widths:
 /// `[[a₁ per w₁, a₁ per w₂], [a₂ per w₁, a₂ per w₂]]`, or `None` where the corner has no
 /// frame (a zero-length edge or a face without area: the rule reports those).
@@ -183,7 +180,7 @@ pub fn fitting_scales(input: &RuleInput, widths: &[f64], skip: &[bool], room: f6
         .with_min_len(MIN)
         .map(|_| AtomicU64::new(1.0f64.to_bits()))
         .collect();
-    for _ in 0..PASSES {
+    for _ in 0..input.options.overlap_passes {
         lowered
             .par_iter()
             .with_min_len(MIN)
@@ -275,6 +272,7 @@ mod tests {
             cut_widths: &[],
             face_params: &[],
             vertex_neighbourhood: &[],
+            options: &crate::rules::RoundingOptions::default(),
         };
         let s = fitting_scales(&input, &w, &[], 1.0);
         (topo, s)

@@ -20,6 +20,7 @@ fn plain<'a>(
     mesh: &'a PolyMesh,
     edge_attrs: &'a EdgeAttrs,
     known: Option<Topology>,
+    options: &RoundingOptions,
 ) -> Result<Prepared<'a>, MeshError> {
     let (topo, _, normals) = checked_level(mesh, known)?;
     Ok(Prepared {
@@ -35,6 +36,7 @@ fn plain<'a>(
         dissolved_edges: 0,
         clamped: Vec::new(),
         capped_edges: Vec::new(),
+        options: *options,
     })
 }
 
@@ -60,7 +62,7 @@ impl CornerRule {
         if self.is_cylindrical_family() {
             return cylindrical::prepare(self, mesh, attrs, state, options, known);
         }
-        let mut prep = plain(mesh, attrs, known)?;
+        let mut prep = plain(mesh, attrs, known, options)?;
         if options.overlap == super::Overlap::Clamp {
             let (params, lowered) = super::chamfer::face_params(&prep.input(), self);
             prep.face_params = params;

@@ -40,6 +40,8 @@ pub struct Prepared<'a> {
     /// Edges whose cut width this step lowered so that its cut faces keep their edges (the
     /// combination rule's guard), ascending.
     pub capped_edges: Vec<u32>,
+    /// The step's tolerances, which the rule reads through [`RuleInput::options`].
+    pub options: super::RoundingOptions,
 }
 
 impl<'a> Prepared<'a> {
@@ -52,6 +54,7 @@ impl<'a> Prepared<'a> {
             cut_widths: &self.cut_widths,
             face_params: &self.face_params,
             vertex_neighbourhood: self.combination.as_deref().unwrap_or(&[]),
+            options: &self.options,
         }
     }
 }

@@ -91,3 +91,35 @@ pub fn kept_points(
     }
     out
 }
+
+/// The envelope scene of `primitives` at global `t` on the charts, K = 8.
+#[allow(dead_code)] // not every test crate that includes this module uses it
+pub fn spec(
+    primitives: Vec<prism_geom::freeform::envelope::PrimitiveInput>,
+    t: f64,
+) -> prism_geom::freeform::envelope::EnvelopeSpec {
+    prism_geom::freeform::envelope::EnvelopeSpec {
+        t,
+        primitives,
+        resolution: 8,
+        basis: Default::default(),
+        patches: prism_geom::freeform::envelope::Surfacing::Charts,
+        enclosure: Default::default(),
+    }
+}
+
+/// The Hausdorff distance between two point sets (each point's nearest in the other, the
+/// largest of those either way).
+#[allow(dead_code)] // not every test crate that includes this module uses it
+pub fn hausdorff(a: &[DVec3], b: &[DVec3]) -> f64 {
+    let one = |a: &[DVec3], b: &[DVec3]| {
+        a.iter()
+            .map(|p| {
+                b.iter()
+                    .map(|q| p.distance(*q))
+                    .fold(f64::INFINITY, f64::min)
+            })
+            .fold(0.0, f64::max)
+    };
+    one(a, b).max(one(b, a))
+}

@@ -192,12 +192,12 @@ pub(super) fn fold_guard(
     topo: &Topology,
     normals: &[DVec3],
     flags: &[bool],
-    rounds: usize,
+    options: &crate::rules::RoundingOptions,
     pts: &mut [DVec3],
 ) -> (Vec<u32>, usize) {
     let el = Elements::new(mesh, topo, normals);
-    let moved = unfold(&el, flags, pts);
-    let replaced = reoffset(&el, flags, &moved, rounds, pts);
+    let moved = unfold(&el, flags, options, pts);
+    let replaced = reoffset(&el, flags, &moved, options, pts);
     (moved, replaced)
 }
 
@@ -208,7 +208,12 @@ pub(super) fn fold_guard(
 /// ([`crate::rules::chamfer::offset_doo_sabin_points`]); so, afterwards, does a face already in the
 /// blend where that leaves fewer of the new faces around it folded ([`reoffset`]). Returns
 /// the faces moved, ascending.
-fn unfold(el: &Elements, flags: &[bool], pts: &mut [DVec3]) -> Vec<u32> {
+fn unfold(
+    el: &Elements,
+    flags: &[bool],
+    options: &crate::rules::RoundingOptions,
+    pts: &mut [DVec3],
+) -> Vec<u32> {
     let (mesh, topo, normals) = (el.mesh, el.topo, el.normals);
     let nf = mesh.num_faces();
     let mut blend: Vec<bool> = (0..nf)
@@ -265,7 +270,7 @@ fn unfold(el: &Elements, flags: &[bool], pts: &mut [DVec3]) -> Vec<u32> {
         }
         for f in 0..nf {
             if to_move[f] {
-                crate::rules::chamfer::offset_doo_sabin_points(mesh, normals[f], f, pts);
+                crate::rules::chamfer::offset_doo_sabin_points(mesh, normals[f], f, options, pts);
                 blend[f] = true;
                 moved.push(f as u32);
             }
@@ -274,10 +279,6 @@ fn unfold(el: &Elements, flags: &[bool], pts: &mut [DVec3]) -> Vec<u32> {
     moved.sort_unstable();
     moved
 }
-
-/// The fractions of the way to its Doo–Sabin point at which [`reoffset`] also tries each
-/// corner's point of a blend face.
-const DRAWN: [f64; 2] = [0.5, 0.25];
 
 /// The fold guard's second pass (cylindrical.md, "Fold guard"),
 /// run by every combination step after [`unfold`] ([`fold_guard`]; one pass over the new
@@ -288,7 +289,7 @@ const DRAWN: [f64; 2] = [0.5, 0.25];
 /// — either can fold a new face beside it. Each blend face (`flags`) that gives a point to a
 /// folding new face and has not been re-placed yet (nor moved by [`unfold`] this step) is
 /// tried with the width offset ([`crate::rules::chamfer::offset_doo_sabin_points`]) and with its
-/// points drawn to [`DRAWN`] of the way from their corners, every face against the same
+/// points drawn to `MendOptions::drawn` of the way from their corners, every face against the same
 /// points (the numbering does not matter), and keeps the placement after which fewest of the
 /// new faces around it fold — its FACE-face, the EDGE-faces of its edges, the VERTEX-faces of
 /// its corners, the only new faces its points are in — if that is fewer than before. A round
@@ -299,7 +300,7 @@ fn reoffset(
     el: &Elements,
     flags: &[bool],
     moved: &[u32],
-    rounds: usize,
+    options: &crate::rules::RoundingOptions,
     pts: &mut [DVec3],
 ) -> usize {
     let mesh = el.mesh;
@@ -316,7 +317,7 @@ fn reoffset(
         done[f as usize] = true;
     }
     let (mut near, mut before) = el.folded(pts);
-    for _ in 0..rounds {
+    for _ in 0..options.mend.reoffset_rounds {
         let candidates: Vec<usize> = (0..nf)
             .filter(|&f| near[f] && blend[f] && !done[f] && mesh.face_loops(f).len() == 1)
             .collect();
@@ -329,10 +330,16 @@ fn reoffset(
             let corners = mesh.face_corners(f);
             let old: Vec<DVec3> = trial[corners.clone()].to_vec();
             let was = el.folds_around(f, &trial);
-            crate::rules::chamfer::offset_doo_sabin_points(mesh, el.normals[f], f, &mut trial);
+            crate::rules::chamfer::offset_doo_sabin_points(
+                mesh,
+                el.normals[f],
+                f,
+                options,
+                &mut trial,
+            );
             let offset: Vec<DVec3> = trial[corners.clone()].to_vec();
             let mut tries = vec![offset];
-            for k in DRAWN {
+            for k in options.mend.drawn {
                 tries.push(
                     corners
                         .clone()

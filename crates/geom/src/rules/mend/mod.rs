@@ -85,6 +85,9 @@ pub struct MendOptions {
     pub crossings: bool,
     /// Rounds of the fold guard's re-placing of blend faces (default 4).
     pub reoffset_rounds: usize,
+    /// The shares of the way from their corners to eq. (1)'s points at which the re-placing
+    /// also tries a blend face's points (default ½ and ¼).
+    pub drawn: [f64; 2],
     /// Rounds of smoothing before the untangling gives up (default 64).
     pub untangle_rounds: usize,
     /// The untangling keeps its points only when none moved farther than this share of the
@@ -102,6 +105,7 @@ impl Default for MendOptions {
         MendOptions {
             crossings: true,
             reoffset_rounds: 4,
+            drawn: [0.5, 0.25],
             untangle_rounds: 64,
             untangle_most_move: 1e-2,
             small_chamfer_rounds: 16,
@@ -178,7 +182,7 @@ pub struct Parent<'a> {
 pub fn before_split(
     plan: &[Mend],
     parent: &Parent,
-    options: &MendOptions,
+    options: &crate::rules::RoundingOptions,
     points: &mut [DVec3],
 ) -> (Vec<u32>, usize) {
     if !plan.contains(&Mend::FoldGuard) {
@@ -189,7 +193,7 @@ pub fn before_split(
         parent.topo,
         parent.normals,
         parent.vertex_neighbourhood,
-        options.reoffset_rounds,
+        options,
         points,
     )
 }

@@ -226,7 +226,7 @@ fn the_fold_guard_moves_folding_faces_into_the_blend() {
     let level = cube();
     let mut points = level.points(0.1);
     swap_at_vertex_0(&level, &mut points);
-    let options = MendOptions::default();
+    let options = crate::rules::RoundingOptions::default();
     let mut unguarded = points.clone();
     assert_eq!(
         before_split(
