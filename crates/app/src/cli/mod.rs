@@ -4,6 +4,7 @@ mod bench;
 mod curve;
 mod curve_plot;
 mod envelope;
+pub(crate) mod level_lines;
 mod limit;
 mod new;
 mod render;

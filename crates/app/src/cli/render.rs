@@ -247,7 +247,7 @@ pub fn run(a: RenderArgs) -> Result<(), CliError> {
         .memory
         .check(pipeline.estimate_peak_then(scene), "this picture")?;
     pipeline.options = a.steps.options(budget);
-    let mut warnings = super::subdivide::LevelWarnings::new(&pipeline.levels()[0].mesh);
+    let mut warnings = super::level_lines::LevelWarnings::new(&pipeline.levels()[0].mesh);
     let n = pipeline.steps().len();
     let last = pipeline
         .compute_with(n, |k, level| {

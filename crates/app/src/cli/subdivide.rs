@@ -10,7 +10,7 @@ use prism_geom::analysis::measure_fillet;
 use prism_geom::io::{self, Document};
 use prism_geom::pipeline::Keep;
 use prism_geom::scheme::{Scheme, SchemeError, SchemeKind, parse_pipeline};
-use prism_geom::{CornerRule, Pipeline, ReflexMode, StepReport, Topology};
+use prism_geom::{CornerRule, Pipeline, ReflexMode, Topology};
 use std::path::PathBuf;
 
 /// The parameter of a scheme given by name (shared by `subdivide`, `render` and `bench`).
@@ -215,64 +215,6 @@ pub fn scheme_from_flags(name: &str, a: &ParamArgs) -> Result<Scheme, CliError> 
     kind.scheme(param, reflex).map_err(CliError::usage)
 }
 
-/// What `subdivide` and `render` say of every level: its warnings in words (a step that
-/// turns the solid inside out fails in the pipeline itself, `StepError::InsideOut`).
-pub struct LevelWarnings {
-    /// The signed volume of the level before.
-    volume: f64,
-}
-
-impl LevelWarnings {
-    pub fn new(input: &prism_geom::PolyMesh) -> LevelWarnings {
-        LevelWarnings {
-            volume: prism_geom::geometry::signed_volume(input),
-        }
-    }
-
-    /// Prints the warnings of level `k`, whose step reported `r`.
-    pub fn level(&mut self, k: usize, r: &StepReport) {
-        let before = std::mem::replace(&mut self.volume, r.volume);
-        warn_level(k, r, before);
-    }
-}
-
-/// Prints one level's warnings ([`level_lines`]).
-fn warn_level(k: usize, r: &StepReport, before: f64) {
-    for line in level_lines(k, r, before) {
-        eprintln!("{line}");
-    }
-}
-
-/// One level's notes and warnings as the CLI prints them: the step's own
-/// ([`StepReport::notes`], the words the app's status bar shows too), then the volume's;
-/// `before` is the signed volume of the level before.
-pub fn level_lines(k: usize, r: &StepReport, before: f64) -> Vec<String> {
-    let mut out: Vec<String> = r
-        .notes()
-        .into_iter()
-        .map(|n| {
-            let kind = if n.warning { "warning" } else { "note" };
-            format!("{kind}: level {k}: {}", n.text)
-        })
-        .collect();
-    if before > 0.0
-        && r.volume > 0.0
-        && (r.volume / before > VOLUME_JUMP || before / r.volume > VOLUME_JUMP)
-    {
-        out.push(format!(
-            "warning: level {k}: the volume jumped from {before:.4e} to {:.4e} (the surface folds through itself)",
-            r.volume
-        ));
-    }
-    if r.volume < 0.0 && before <= 0.0 {
-        out.push(format!(
-            "warning: level {k}: the solid is inside out (signed volume {:.4e})",
-            r.volume
-        ));
-    }
-    out
-}
-
 /// Says once per distinct step that its parameter is above what can be repeated (vector
 /// sum with ¼ < α < ½): admitted, as the paper admits it, but named.
 fn warn_unrepeatable(steps: &[Scheme]) {
@@ -365,10 +307,6 @@ fn report_fillets(p: &Pipeline, measure: Option<&str>) -> Result<(), CliError> {
     Ok(())
 }
 
-/// A level whose volume differs from the level before's by more than this factor is
-/// named (a subdivision step changes the volume by a few per cent).
-const VOLUME_JUMP: f64 = 10.0;
-
 pub fn run(a: SubdivideArgs) -> Result<(), CliError> {
     let parsed = steps_from(&a.steps, None, true)?;
     super::check_solid_output_kind(&a.output)?;
@@ -401,7 +339,7 @@ pub fn run(a: SubdivideArgs) -> Result<(), CliError> {
         "level 0: {} vertices, {} edges, {} faces (input)",
         c0.vertices, c0.edges, c0.faces
     );
-    let mut warnings = LevelWarnings::new(&doc.mesh);
+    let mut warnings = super::level_lines::LevelWarnings::new(&doc.mesh);
     let mut pipeline = Pipeline::with_tags(doc.mesh, doc.edge_attrs, doc.tags, steps.clone());
     // Only the levels the output and the fillet report need are kept.
     pipeline.keep = Keep::Needed;

@@ -158,7 +158,7 @@ fn the_status_bar_says_what_the_clamp_and_the_untangling_did() {
             .report
             .clone()
             .unwrap();
-        super::model::panels::step_notes(&r)
+        super::model::status::step_notes(&r)
     };
     let n = notes("tripod.obj", "vector-sum:alpha=0.2:reflex=inward", 1);
     assert!(n.contains("α lowered on 3 face(s)"), "{n}");
@@ -221,8 +221,8 @@ fn the_cli_and_the_status_bar_say_a_report_in_the_same_words() {
         a.wait_idle();
         for (k, lv) in a.model.views[0].pipeline.levels().iter().enumerate() {
             let Some(r) = &lv.report else { continue };
-            let cli = crate::cli::subdivide::level_lines(k, r, 1.0).join("\n");
-            let bar = super::model::panels::step_notes(r);
+            let cli = crate::cli::level_lines::level_lines(k, r, 1.0).join("\n");
+            let bar = super::model::status::step_notes(r);
             for n in r.notes() {
                 assert!(cli.contains(&n.text), "{file} {pipeline} level {k}: {cli}");
                 let shown = !matches!(n.topic, Topic::Flipped | Topic::ClampedRadii);
@@ -272,8 +272,8 @@ fn the_cli_and_the_status_bar_say_a_report_in_the_same_words() {
         ..Default::default()
     };
     let (cli, bar) = (
-        crate::cli::subdivide::level_lines(1, &r, 1.0),
-        super::model::panels::step_notes(&r),
+        crate::cli::level_lines::level_lines(1, &r, 1.0),
+        super::model::status::step_notes(&r),
     );
     let notes = r.notes();
     assert_eq!(notes.len(), 13);

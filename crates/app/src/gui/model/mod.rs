@@ -16,6 +16,7 @@ mod overlay;
 pub(crate) mod panels;
 pub mod pick;
 mod scheme_editor;
+pub(crate) mod status;
 pub mod view_pipe;
 pub mod views;
 pub mod worker;
