@@ -6,7 +6,7 @@
 //! - [`command`]: what tabs, keys and menus ask for;
 //! - [`model`], [`curves`]: the tabs, each a folder with a state struct whose `ui` reads the
 //!   document and returns commands;
-//! - this file: [`PrismApp`], the frame loop — draw the menu and the tab, carry out the
+//! - this file: [`PrismApp`], the frame loop — draw the menu (`menu.rs`) and the tab, carry out the
 //!   commands they returned, let the tabs follow the document's generation.
 //!
 //! `prism --screenshot OUT.png [FILE] [--pipeline P] ...` opens the window, waits for the
@@ -22,7 +22,10 @@ mod edits;
 pub(crate) mod envelope;
 mod files;
 mod gestures;
+mod launch;
+mod menu;
 pub mod model;
+mod new_document;
 mod new_solid;
 mod opening;
 pub(crate) mod skin;
@@ -47,117 +50,20 @@ mod tests_skin;
 
 use command::Command;
 use document::{DocState, Document, Origin};
+use launch::SETTINGS_KEY;
+pub use launch::{Launch, SAMPLES_FILES, Settings, Show, Tab};
 use model::ModelTab;
-pub use model::{Coloring, Display, Tool};
-use prism_geom::{EdgeKey, Scheme};
+pub use model::{Coloring, Tool};
+#[cfg(test)]
+use prism_geom::EdgeKey;
 use std::path::PathBuf;
 use std::sync::{Arc, Mutex};
 
 /// Window multisampling (and the renderer's, which must match).
 const SAMPLES: u16 = 4;
 
-/// Display toggles, also given on the command line (`--show smooth,wireframe`).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
-pub enum Show {
-    Smooth,
-    Wireframe,
-    Kinds,
-    Curvature,
-    Schemes,
-    Cage,
-    Corners,
-    Limit,
-    /// The Envelope tab's t sweep (t = 1, 0.5, 0.1 side by side).
-    TSweep,
-}
-
-/// The app's tabs.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, clap::ValueEnum)]
-pub enum Tab {
-    #[default]
-    Model,
-    Curves,
-    Skin,
-    Envelope,
-}
-
-/// How the app was started.
-#[derive(Debug, Default)]
-pub struct Launch {
-    pub file: Option<PathBuf>,
-    pub pipeline: Vec<Scheme>,
-    /// Pipelines of further views: opens the compare split.
-    pub compare: Vec<Vec<Scheme>>,
-    pub show: Vec<Show>,
-    pub tool: Option<Tool>,
-    pub select_edges: Vec<EdgeKey>,
-    pub tab: Option<Tab>,
-    pub screenshot: Option<PathBuf>,
-    /// Where unsaved work is copied (none: no autosave).
-    pub autosave: Option<PathBuf>,
-}
-
 /// Where the screenshot callback leaves the picture for the next frame.
 type ScreenshotSlot = Arc<Mutex<Option<Arc<egui::ColorImage>>>>;
-
-/// The bundled samples: name, file name, contents.
-pub const SAMPLES_FILES: [(&str, &str, &str); 6] = [
-    (
-        "Tripod",
-        "tripod.obj",
-        include_str!("../../../../assets/tripod.obj"),
-    ),
-    (
-        "Cube",
-        "cube.obj",
-        include_str!("../../../../assets/cube.obj"),
-    ),
-    (
-        "L-block",
-        "l-block.obj",
-        include_str!("../../../../assets/l-block.obj"),
-    ),
-    (
-        "Holed block",
-        "holed-block.prism.json",
-        include_str!("../../../../assets/holed-block.prism.json"),
-    ),
-    (
-        "Cube with a creased rim (circle weight)",
-        "cube-rim.prism.json",
-        include_str!("../../../../assets/cube-rim.prism.json"),
-    ),
-    (
-        "Computer room",
-        "computer-room.obj",
-        include_str!("../../../../assets/computer-room.obj"),
-    ),
-];
-
-/// What eframe remembers between runs.
-#[derive(Debug, Clone, serde::Serialize, serde::Deserialize)]
-#[serde(default)]
-pub struct Settings {
-    display: Display,
-    tool: Tool,
-    budget_mib: u64,
-    next: String,
-    last_file: Option<PathBuf>,
-}
-
-impl Default for Settings {
-    fn default() -> Self {
-        Settings {
-            display: Display::default(),
-            tool: Tool::Orbit,
-            budget_mib: 4096,
-            next: model::default_next().to_string(),
-            last_file: None,
-        }
-    }
-}
-
-const SETTINGS_KEY: &str = "prism-settings";
 
 pub struct PrismApp {
     pub doc: Document,
@@ -420,150 +326,6 @@ impl PrismApp {
         }
     }
 
-    /// Makes `solid` the document (undoable), keeping the pipelines and the curve sketch, and
-    /// shows it on the Model tab.
-    pub fn make_solid(&mut self, solid: &prism_geom::solid::Solid) {
-        match solid.build() {
-            Ok(mesh) => {
-                let old = self.doc.state();
-                let state = DocState {
-                    mesh,
-                    edge_attrs: Default::default(),
-                    tags: Default::default(),
-                    ..old.clone()
-                };
-                let name = match solid {
-                    prism_geom::solid::Solid::Box { .. } => "a new box",
-                    prism_geom::solid::Solid::Prism { .. } => "a new prism",
-                    prism_geom::solid::Solid::Pyramid { .. } => "a new pyramid",
-                    prism_geom::solid::Solid::Tripod { .. } => "a new tripod",
-                    prism_geom::solid::Solid::Extrusion { .. } => "the extruded sketch",
-                };
-                let origin = document::Origin {
-                    path: None,
-                    name: name.into(),
-                    ..Default::default()
-                };
-                self.replace_document(state, origin);
-                self.tab = Tab::Model;
-            }
-            Err(e) => self.say(format!("no solid made: {e}")),
-        }
-    }
-
-    /// Opens a file as the document (undoable: the previous document is one Ctrl+Z away); a
-    /// big one on a thread behind a progress bar with Cancel (opening.rs).
-    pub fn open_path(&mut self, path: &std::path::Path) {
-        if let Some(o) = self.opening.take() {
-            o.cancel();
-        }
-        let size = std::fs::metadata(path).map_or(0, |m| m.len());
-        if size >= self.open_in_background_from {
-            self.opening = Some(opening::Opening::start(path, self.model.waker.clone()));
-            return;
-        }
-        self.opened(document::open(path));
-    }
-
-    fn opened(&mut self, loaded: Result<(document::DocState, document::Origin), String>) {
-        match loaded {
-            Ok((state, origin)) => {
-                if let Some(tab) = tab_for(&state) {
-                    self.tab = tab;
-                    self.envelope.reframe();
-                    self.skin.reframe();
-                }
-                self.replace_document(state, origin);
-                self.autosave.opened(self.doc.generation());
-            }
-            Err(e) => self.say(format!("could not open: {e}")),
-        }
-    }
-
-    /// Takes the document the opening thread read, once it is done.
-    fn poll_opening(&mut self) {
-        if let Some(loaded) = self.opening.as_ref().and_then(|o| o.poll()) {
-            self.opening = None;
-            self.opened(loaded);
-        }
-    }
-
-    /// Stops opening a file: the document stays as it is.
-    fn cancel_opening(&mut self) {
-        if let Some(o) = self.opening.take() {
-            o.cancel();
-            self.say(format!("stopped opening {}", o.path.display()));
-        }
-    }
-
-    /// The copy of unsaved work an earlier run left, as the document (undoable); it is then
-    /// the work in progress, unsaved, until saved.
-    fn restore_autosave(&mut self) {
-        let Some(path) = self.autosave.path() else {
-            return;
-        };
-        match document::open(&path) {
-            Ok((state, _)) => {
-                self.autosave.offer = None;
-                let origin = Origin {
-                    path: None,
-                    name: "recovered work".into(),
-                    ..Default::default()
-                };
-                self.replace_document(state, origin);
-                self.say("restored the unsaved work of the last run (save it to keep it)");
-            }
-            Err(e) => {
-                self.autosave.discard();
-                self.say(format!("the unsaved work could not be restored: {e}"));
-            }
-        }
-    }
-
-    /// Offers the copy of unsaved work an earlier run left (none once answered).
-    fn restore_window(&mut self, ctx: &egui::Context) -> Option<Command> {
-        let when = self.autosave.offer?;
-        let ago = when.elapsed().map_or(0, |d| d.as_secs() / 60);
-        let mut out = None;
-        egui::Window::new("Unsaved work")
-            .collapsible(false)
-            .resizable(false)
-            .anchor(egui::Align2::CENTER_CENTER, egui::vec2(0.0, 0.0))
-            .show(ctx, |ui| {
-                ui.label(format!(
-                    "The last run left work that was not saved ({ago} min ago)."
-                ));
-                ui.horizontal(|ui| {
-                    if ui.button("Restore it").clicked() {
-                        out = Some(Command::RestoreAutosave);
-                    }
-                    if ui.button("Discard it").clicked() {
-                        out = Some(Command::DiscardAutosave);
-                    }
-                });
-            });
-        out
-    }
-
-    /// After undo or redo: when that brought back another document (an Open, a sample, a new
-    /// solid undone), the views frame it and drop the other one's selection, as opening it did.
-    fn follow_document_switch(&mut self, before: &Origin) {
-        if self.doc.origin() != before {
-            self.model.reset_for_new_document();
-        }
-    }
-
-    fn replace_document(&mut self, state: DocState, origin: Origin) {
-        self.model.reset_for_new_document();
-        if let Some(p) = &origin.path {
-            self.last_file = Some(p.clone());
-        }
-        let name = origin.name.clone();
-        let state = Box::new(state);
-        self.run(command::Edit::Replace { state, origin });
-        self.say(format!("opened {name}"));
-    }
-
     /// Blocks until every view's levels are computed.
     #[cfg(test)]
     pub fn wait_idle(&mut self) {
@@ -577,122 +339,6 @@ impl PrismApp {
 
     pub fn busy(&self) -> bool {
         self.model.busy() || self.envelope.building()
-    }
-
-    fn keys(&mut self, ctx: &egui::Context) -> Vec<Command> {
-        use egui::{Key, KeyboardShortcut, Modifiers};
-        let undo = KeyboardShortcut::new(Modifiers::COMMAND, Key::Z);
-        let redo = KeyboardShortcut::new(Modifiers::COMMAND | Modifiers::SHIFT, Key::Z);
-        let redo_y = KeyboardShortcut::new(Modifiers::COMMAND, Key::Y);
-        let save = KeyboardShortcut::new(Modifiers::COMMAND, Key::S);
-        let open = KeyboardShortcut::new(Modifiers::COMMAND, Key::O);
-        let mut out = Vec::new();
-        // Longest shortcut first: Ctrl+Shift+Z must not be eaten as Ctrl+Z.
-        if ctx.input_mut(|i| i.consume_shortcut(&redo) || i.consume_shortcut(&redo_y)) {
-            out.push(Command::Redo);
-        } else if ctx.input_mut(|i| i.consume_shortcut(&undo)) {
-            out.push(Command::Undo);
-        }
-        if ctx.input_mut(|i| i.consume_shortcut(&save)) {
-            out.push(Command::SaveDialog { as_new: false });
-        }
-        if ctx.input_mut(|i| i.consume_shortcut(&open)) {
-            out.push(Command::OpenDialog);
-        }
-        if !ctx.egui_wants_keyboard_input() && self.tab == Tab::Model {
-            self.model.keys(ctx);
-        }
-        out
-    }
-
-    fn menu_bar(&mut self, ui: &mut egui::Ui) -> Vec<Command> {
-        let mut out = Vec::new();
-        egui::MenuBar::new().ui(ui, |ui| {
-            ui.menu_button("File", |ui| {
-                if ui.button("New solid…").clicked() {
-                    out.push(Command::ShowNewSolid { extrude: false });
-                }
-                if ui.button("Open… (Ctrl+O)").clicked() {
-                    out.push(Command::OpenDialog);
-                }
-                ui.menu_button("Samples", |ui| {
-                    for (k, (name, _, _)) in SAMPLES_FILES.iter().enumerate() {
-                        if ui.button(*name).clicked() {
-                            out.push(Command::OpenSample(k));
-                        }
-                    }
-                    ui.separator();
-                    ui.label("Skins (the Skin tab)");
-                    for (k, (name, _, _)) in skin::SKIN_SAMPLES.iter().enumerate() {
-                        if ui.button(*name).clicked() {
-                            out.push(Command::OpenSkinSample(k));
-                        }
-                    }
-                    ui.separator();
-                    ui.label("Envelopes (the Envelope tab)");
-                    for (k, (name, _, _)) in envelope::ENVELOPE_SAMPLES.iter().enumerate() {
-                        if ui.button(*name).clicked() {
-                            out.push(Command::OpenEnvelopeSample(k));
-                        }
-                    }
-                });
-                ui.separator();
-                if ui.button("Save (Ctrl+S)").clicked() {
-                    out.push(Command::SaveDialog { as_new: false });
-                }
-                if ui.button("Save as…").clicked() {
-                    out.push(Command::SaveDialog { as_new: true });
-                }
-                ui.menu_button("Export the shown level", |ui| {
-                    for (ext, label) in [
-                        ("obj", "OBJ…"),
-                        ("obj+vn", "OBJ with normals…"),
-                        ("stl", "STL…"),
-                        ("glb", "glTF (.glb)…"),
-                    ] {
-                        if ui
-                            .button(label)
-                            .on_hover_text(
-                                "normals as the view shades the level: smooth, or flat \
-                                 with smooth shading off",
-                            )
-                            .clicked()
-                        {
-                            out.push(Command::ExportDialog(ext));
-                        }
-                    }
-                });
-            });
-            ui.menu_button("Edit", |ui| {
-                let undo = egui::Button::new("Undo (Ctrl+Z)");
-                if ui
-                    .add_enabled(self.doc.can_undo(), undo)
-                    .on_disabled_hover_text("Nothing to undo")
-                    .clicked()
-                {
-                    out.push(Command::Undo);
-                }
-                let redo = egui::Button::new("Redo (Ctrl+Shift+Z)");
-                if ui
-                    .add_enabled(self.doc.can_redo(), redo)
-                    .on_disabled_hover_text("Nothing to redo")
-                    .clicked()
-                {
-                    out.push(Command::Redo);
-                }
-            });
-            ui.separator();
-            ui.selectable_value(&mut self.tab, Tab::Model, "Model");
-            ui.selectable_value(&mut self.tab, Tab::Curves, "Curves");
-            ui.selectable_value(&mut self.tab, Tab::Skin, "Skin");
-            ui.selectable_value(&mut self.tab, Tab::Envelope, "Envelope");
-            if self.tab == Tab::Model {
-                ui.separator();
-                self.model
-                    .views_picker(ui, self.doc.state().pipelines.len());
-            }
-        });
-        out
     }
 }
 

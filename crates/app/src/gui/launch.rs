@@ -1,0 +1,106 @@
+//! How the app starts: the command line's launch options ([`Launch`], [`Show`], [`Tab`]), the
+//! bundled samples, and the settings eframe remembers between runs.
+
+use super::model::{self, Display, Tool};
+use prism_geom::{EdgeKey, Scheme};
+use std::path::PathBuf;
+
+/// Display toggles, also given on the command line (`--show smooth,wireframe`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum Show {
+    Smooth,
+    Wireframe,
+    Kinds,
+    Curvature,
+    Schemes,
+    Cage,
+    Corners,
+    Limit,
+    /// The Envelope tab's t sweep (t = 1, 0.5, 0.1 side by side).
+    TSweep,
+}
+
+/// The app's tabs.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, clap::ValueEnum)]
+pub enum Tab {
+    #[default]
+    Model,
+    Curves,
+    Skin,
+    Envelope,
+}
+
+/// How the app was started.
+#[derive(Debug, Default)]
+pub struct Launch {
+    pub file: Option<PathBuf>,
+    pub pipeline: Vec<Scheme>,
+    /// Pipelines of further views: opens the compare split.
+    pub compare: Vec<Vec<Scheme>>,
+    pub show: Vec<Show>,
+    pub tool: Option<Tool>,
+    pub select_edges: Vec<EdgeKey>,
+    pub tab: Option<Tab>,
+    pub screenshot: Option<PathBuf>,
+    /// Where unsaved work is copied (none: no autosave).
+    pub autosave: Option<PathBuf>,
+}
+
+/// The bundled samples: name, file name, contents.
+pub const SAMPLES_FILES: [(&str, &str, &str); 6] = [
+    (
+        "Tripod",
+        "tripod.obj",
+        include_str!("../../../../assets/tripod.obj"),
+    ),
+    (
+        "Cube",
+        "cube.obj",
+        include_str!("../../../../assets/cube.obj"),
+    ),
+    (
+        "L-block",
+        "l-block.obj",
+        include_str!("../../../../assets/l-block.obj"),
+    ),
+    (
+        "Holed block",
+        "holed-block.prism.json",
+        include_str!("../../../../assets/holed-block.prism.json"),
+    ),
+    (
+        "Cube with a creased rim (circle weight)",
+        "cube-rim.prism.json",
+        include_str!("../../../../assets/cube-rim.prism.json"),
+    ),
+    (
+        "Computer room",
+        "computer-room.obj",
+        include_str!("../../../../assets/computer-room.obj"),
+    ),
+];
+
+/// What eframe remembers between runs.
+#[derive(Debug, Clone, serde::Serialize, serde::Deserialize)]
+#[serde(default)]
+pub struct Settings {
+    pub(super) display: Display,
+    pub(super) tool: Tool,
+    pub(super) budget_mib: u64,
+    pub(super) next: String,
+    pub(super) last_file: Option<PathBuf>,
+}
+
+impl Default for Settings {
+    fn default() -> Self {
+        Settings {
+            display: Display::default(),
+            tool: Tool::Orbit,
+            budget_mib: 4096,
+            next: model::default_next().to_string(),
+            last_file: None,
+        }
+    }
+}
+
+pub(super) const SETTINGS_KEY: &str = "prism-settings";

@@ -1,0 +1,122 @@
+//! The window's menu bar (File, Edit, the tabs) and its keyboard shortcuts: each returns the
+//! commands the frame loop carries out.
+
+use super::*;
+
+impl PrismApp {
+    pub(super) fn keys(&mut self, ctx: &egui::Context) -> Vec<Command> {
+        use egui::{Key, KeyboardShortcut, Modifiers};
+        let undo = KeyboardShortcut::new(Modifiers::COMMAND, Key::Z);
+        let redo = KeyboardShortcut::new(Modifiers::COMMAND | Modifiers::SHIFT, Key::Z);
+        let redo_y = KeyboardShortcut::new(Modifiers::COMMAND, Key::Y);
+        let save = KeyboardShortcut::new(Modifiers::COMMAND, Key::S);
+        let open = KeyboardShortcut::new(Modifiers::COMMAND, Key::O);
+        let mut out = Vec::new();
+        // Longest shortcut first: Ctrl+Shift+Z must not be eaten as Ctrl+Z.
+        if ctx.input_mut(|i| i.consume_shortcut(&redo) || i.consume_shortcut(&redo_y)) {
+            out.push(Command::Redo);
+        } else if ctx.input_mut(|i| i.consume_shortcut(&undo)) {
+            out.push(Command::Undo);
+        }
+        if ctx.input_mut(|i| i.consume_shortcut(&save)) {
+            out.push(Command::SaveDialog { as_new: false });
+        }
+        if ctx.input_mut(|i| i.consume_shortcut(&open)) {
+            out.push(Command::OpenDialog);
+        }
+        if !ctx.egui_wants_keyboard_input() && self.tab == Tab::Model {
+            self.model.keys(ctx);
+        }
+        out
+    }
+
+    pub(super) fn menu_bar(&mut self, ui: &mut egui::Ui) -> Vec<Command> {
+        let mut out = Vec::new();
+        egui::MenuBar::new().ui(ui, |ui| {
+            ui.menu_button("File", |ui| {
+                if ui.button("New solid…").clicked() {
+                    out.push(Command::ShowNewSolid { extrude: false });
+                }
+                if ui.button("Open… (Ctrl+O)").clicked() {
+                    out.push(Command::OpenDialog);
+                }
+                ui.menu_button("Samples", |ui| {
+                    for (k, (name, _, _)) in SAMPLES_FILES.iter().enumerate() {
+                        if ui.button(*name).clicked() {
+                            out.push(Command::OpenSample(k));
+                        }
+                    }
+                    ui.separator();
+                    ui.label("Skins (the Skin tab)");
+                    for (k, (name, _, _)) in skin::SKIN_SAMPLES.iter().enumerate() {
+                        if ui.button(*name).clicked() {
+                            out.push(Command::OpenSkinSample(k));
+                        }
+                    }
+                    ui.separator();
+                    ui.label("Envelopes (the Envelope tab)");
+                    for (k, (name, _, _)) in envelope::ENVELOPE_SAMPLES.iter().enumerate() {
+                        if ui.button(*name).clicked() {
+                            out.push(Command::OpenEnvelopeSample(k));
+                        }
+                    }
+                });
+                ui.separator();
+                if ui.button("Save (Ctrl+S)").clicked() {
+                    out.push(Command::SaveDialog { as_new: false });
+                }
+                if ui.button("Save as…").clicked() {
+                    out.push(Command::SaveDialog { as_new: true });
+                }
+                ui.menu_button("Export the shown level", |ui| {
+                    for (ext, label) in [
+                        ("obj", "OBJ…"),
+                        ("obj+vn", "OBJ with normals…"),
+                        ("stl", "STL…"),
+                        ("glb", "glTF (.glb)…"),
+                    ] {
+                        if ui
+                            .button(label)
+                            .on_hover_text(
+                                "normals as the view shades the level: smooth, or flat \
+                                 with smooth shading off",
+                            )
+                            .clicked()
+                        {
+                            out.push(Command::ExportDialog(ext));
+                        }
+                    }
+                });
+            });
+            ui.menu_button("Edit", |ui| {
+                let undo = egui::Button::new("Undo (Ctrl+Z)");
+                if ui
+                    .add_enabled(self.doc.can_undo(), undo)
+                    .on_disabled_hover_text("Nothing to undo")
+                    .clicked()
+                {
+                    out.push(Command::Undo);
+                }
+                let redo = egui::Button::new("Redo (Ctrl+Shift+Z)");
+                if ui
+                    .add_enabled(self.doc.can_redo(), redo)
+                    .on_disabled_hover_text("Nothing to redo")
+                    .clicked()
+                {
+                    out.push(Command::Redo);
+                }
+            });
+            ui.separator();
+            ui.selectable_value(&mut self.tab, Tab::Model, "Model");
+            ui.selectable_value(&mut self.tab, Tab::Curves, "Curves");
+            ui.selectable_value(&mut self.tab, Tab::Skin, "Skin");
+            ui.selectable_value(&mut self.tab, Tab::Envelope, "Envelope");
+            if self.tab == Tab::Model {
+                ui.separator();
+                self.model
+                    .views_picker(ui, self.doc.state().pipelines.len());
+            }
+        });
+        out
+    }
+}
