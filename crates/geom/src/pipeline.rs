@@ -3,7 +3,7 @@
 //! Level 0 is the input; level k is the result of step k−1. Changing step k drops the
 //! levels after k only, so the next [`Pipeline::compute`] recomputes from level k
 //! (seed 000 fig. 7 is such a pipeline: vector-sum α = 0.2, then Doo–Sabin twice). A level
-//! made by a combination step carries the run's [`CombinationState`] to the next step
+//! made by a combination step carries the run's [`crate::rules::CombinationState`] to the next step
 //! (docs/algorithms/cylindrical.md).
 
 use crate::analysis::{FilletError, FilletSummary, measure_fillets};
@@ -13,123 +13,20 @@ use crate::geometry::signed_volume;
 use crate::memory;
 use crate::mesh::PolyMesh;
 use crate::primal::{refine_primal_carrying, repoint};
-use crate::refine::Provenance;
 use crate::rules::Overlap;
 use crate::rules::RoundingOptions;
-use crate::rules::{CombinationState, CornerRule};
+
 use crate::scheme::Scheme;
 use crate::step::{StepError, StepReport, biquadratic_step_carrying, primal_flipped};
 use crate::tags::SubdivTags;
 use crate::topology::Topology;
 use glam::DVec3;
 use std::sync::Arc;
-use thiserror::Error;
 
-/// One computed level.
-#[derive(Debug, Clone)]
-pub struct Level {
-    pub mesh: PolyMesh,
-    pub edge_attrs: EdgeAttrs,
-    /// Corners, holes and options for the primal schemes. A biquadratic step keeps the
-    /// options and drops corners and holes (its vertices and faces are new).
-    pub tags: SubdivTags,
-    /// Where its vertices, faces and edges came from (none for the input).
-    pub provenance: Option<Provenance>,
-    /// The combination run's state, after a combination step.
-    pub combination: Option<CombinationState>,
-    /// The step's report (none for the input).
-    pub report: Option<StepReport>,
-}
+mod estimate;
+mod level;
 
-impl Level {
-    /// Bytes the level holds now (its arrays' capacities, its edge marks, tags and provenance;
-    /// the memory guard's accounting, [`crate::memory`]).
-    pub fn bytes(&self) -> u64 {
-        let m = &self.mesh;
-        let mesh = 24 * m.positions.capacity()
-            + 4 * (m.corner_verts.capacity() + m.loop_starts.capacity() + m.face_starts.capacity());
-        // A B-tree entry: key, value and about a third again of node overhead.
-        let marks =
-            48 * self.edge_attrs.len() + 24 * (self.tags.corners.len() + self.tags.holes.len());
-        let prov = self.provenance.as_ref().map_or(0, |p| {
-            p.face_kind.capacity() + 4 * p.face_parent.capacity() + 16 * p.edge_parent.capacity()
-        });
-        let comb = self.combination.as_ref().map_or(0, |c| c.flags.capacity());
-        (mesh + marks + prov + comb) as u64
-    }
-}
-
-#[derive(Debug, Clone, PartialEq, Error)]
-#[error("step {step} ({scheme}): {source}")]
-pub struct PipelineError {
-    /// 1-based step number.
-    pub step: usize,
-    pub scheme: String,
-    #[source]
-    pub source: StepError,
-}
-
-impl PipelineError {
-    /// The message, with a mesh error of step 1 (one about the input) naming vertices and
-    /// faces as `input` says its file counts them.
-    pub fn describe(&self, input: &crate::numbering::Numbering) -> String {
-        use crate::primal::PrimalError;
-        match &self.source {
-            StepError::Mesh(m) | StepError::Primal(PrimalError::Mesh(m)) if self.step == 1 => {
-                format!(
-                    "step {} ({}): {}",
-                    self.step,
-                    self.scheme,
-                    input.describe(m)
-                )
-            }
-            _ => self.to_string(),
-        }
-    }
-}
-
-impl Level {
-    /// Frees the level's mesh, marks and provenance, keeping its report ([`Keep::Needed`]).
-    fn release(&mut self) {
-        self.mesh = PolyMesh::new();
-        self.edge_attrs = EdgeAttrs::new();
-        self.tags.corners.clear();
-        self.tags.holes.clear();
-        self.provenance = None;
-    }
-}
-
-/// A run of cylindrical-family steps: the level it started from, its (last) rule and the
-/// radii its first step clamped (edges in that level's numbering).
-#[derive(Debug, Clone, PartialEq)]
-pub struct RoundingRun {
-    pub start: usize,
-    pub rule: CornerRule,
-    pub clamped: std::collections::HashMap<EdgeKey, f64>,
-}
-
-impl RoundingRun {
-    /// The radius edge `e` of the start level was rounded to: clamped, else its own, else
-    /// the rule's.
-    pub fn radius(&self, attrs: &EdgeAttrs, e: EdgeKey) -> Option<f64> {
-        self.clamped
-            .get(&e)
-            .copied()
-            .or_else(|| self.rule.edge_radius(attrs.get(&e)))
-    }
-}
-
-/// Which levels a pipeline keeps once the level after them exists.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-pub enum Keep {
-    /// Every level (the app shows any of them).
-    #[default]
-    All,
-    /// The input, the level each run of cylindrical-family steps starts from (its fillets
-    /// are measured against it) and the newest level; the others are released as soon as
-    /// the next level exists (the command line writes the last level only).
-    Needed,
-}
+pub use level::{Keep, Level, PipelineError, RoundingRun};
 
 /// Steps and the levels computed so far.
 #[derive(Debug, Clone)]
@@ -282,95 +179,10 @@ impl Pipeline {
         k + 1 < self.levels.len() && !self.kept_after_next(k)
     }
 
-    /// Bytes the levels kept now hold ([`Level::bytes`]), with the topologies kept
-    /// for moved points and the levels a moved pipeline reuses.
-    pub fn kept_bytes(&self) -> u64 {
-        self.levels.iter().map(Level::bytes).sum::<u64>()
-            + self
-                .topologies
-                .iter()
-                .flatten()
-                .map(|t| t.heap_bytes())
-                .sum::<u64>()
-            + self
-                .reuse
-                .iter()
-                .flatten()
-                .map(|r| r.topo.heap_bytes() + r.child.bytes())
-                .sum::<u64>()
-    }
-
-    /// The most memory computing the remaining steps will hold at once, in bytes, estimated
-    /// from the counts of the last level before any work ([`crate::memory`]): the levels
-    /// kept plus each step's own, the largest over the steps, plus the process's baseline.
-    pub fn estimate_peak(&self) -> u64 {
-        self.estimate_peak_then(0)
-    }
-
-    /// [`Pipeline::estimate_peak`] when, after the last step, `after` more bytes are held
-    /// beside the levels still kept (an export assembled in memory, the fillet report).
-    pub fn estimate_peak_then(&self, after: u64) -> u64 {
-        let mut kept = self.kept_bytes();
-        let mut peak = kept;
-        let last = self.levels.len() - 1;
-        let mut counts = memory::Counts::of(&self.levels[last].mesh, None);
-        let mut cur_bytes = self.levels[last].bytes();
-        for k in last..self.steps.len() {
-            let s = &self.steps[k];
-            let carried_in = k > last && self.carries(k - 1);
-            let step = self.step_bytes(&counts, s, !carried_in, self.carries(k));
-            peak = peak.max(kept + step);
-            let next = counts.after(s);
-            let next_bytes = next.level_bytes(self.provenance(s));
-            kept += next_bytes;
-            if self.keep == Keep::All && matches!(s, Scheme::Primal(_)) {
-                kept += counts.topology_bytes();
-            }
-            if !self.kept_after_next(k) {
-                kept -= cur_bytes.min(kept);
-            }
-            counts = next;
-            cur_bytes = next_bytes;
-        }
-        peak.max(kept + after) + memory::BASELINE
-    }
-
-    /// [`memory::step_bytes`] of a step of `scheme` from a level of `counts`, with the search
-    /// of the new level for crossings when the options mend them and the step takes the last
-    /// whole-level search ([`crate::rules::Mend::EveryCrossing`] in
-    /// [`crate::rules::CornerRule::mends`]).
-    fn step_bytes(
-        &self,
-        counts: &memory::Counts,
-        scheme: &Scheme,
-        topology: bool,
-        carry: bool,
-    ) -> u64 {
-        let mut b = memory::step_bytes(counts, scheme, topology, carry, self.provenance(scheme));
-        if let Scheme::Biquadratic(rule) = scheme
-            && rule
-                .mends(&self.options)
-                .contains(&crate::rules::Mend::EveryCrossing)
-        {
-            b += memory::crossing_bytes(&counts.after(scheme));
-        }
-        b
-    }
-
     /// Whether some step rounds edges (a run of cylindrical-family steps: its fillets can
     /// be measured).
     pub fn rounds(&self) -> bool {
         self.steps.iter().any(Scheme::rounds_edges)
-    }
-
-    /// The counts the last level will have once every step is computed ([`memory::Counts`]).
-    pub fn predicted_counts(&self) -> memory::Counts {
-        let last = self.levels.len() - 1;
-        self.steps[last..]
-            .iter()
-            .fold(memory::Counts::of(&self.levels[last].mesh, None), |c, s| {
-                c.after(s)
-            })
     }
 
     /// Whether a step of `scheme` records its level's provenance: a biquadratic one always
