@@ -701,6 +701,8 @@ fn every_disabled_control_says_why() {
         ("new_solid.rs", include_str!("new_solid.rs")),
         ("model/panels.rs", include_str!("model/panels.rs")),
         ("model/status.rs", include_str!("model/status.rs")),
+        ("model/mod.rs", include_str!("model/mod.rs")),
+        ("model/run_options.rs", include_str!("model/run_options.rs")),
         ("model/views.rs", include_str!("model/views.rs")),
         ("model/compare.rs", include_str!("model/compare.rs")),
         (

@@ -12,9 +12,11 @@
 
 pub mod compare;
 pub mod crossing_check;
+mod display;
 mod overlay;
 pub(crate) mod panels;
 pub mod pick;
+mod run_options;
 mod scheme_editor;
 pub(crate) mod status;
 pub mod view_pipe;
@@ -26,92 +28,12 @@ pub use scheme_editor::default_next;
 use super::command::{Command, EdgeMark, Edit};
 use super::document::{DocState, Document};
 use crate::gui::waker::Waker;
+pub use display::{Coloring, Display, Tool};
 use glam::Vec3;
 use prism_geom::{EdgeKey, Pipeline, Scheme};
-use prism_viewport::{Camera, ColorBy, SceneOptions, Shading, View};
+use prism_viewport::{Camera, View};
 use std::collections::BTreeSet;
 use view_pipe::{Outcome, ViewPipe};
-
-/// The tool the primary mouse button uses in the views.
-#[derive(
-    Debug,
-    Clone,
-    Copy,
-    PartialEq,
-    Eq,
-    Hash,
-    Default,
-    clap::ValueEnum,
-    serde::Serialize,
-    serde::Deserialize,
-)]
-pub enum Tool {
-    /// Drag turns the model.
-    #[default]
-    Orbit,
-    /// Click, shift-click or box-select control vertices; drag a selected one to move it.
-    Vertices,
-    /// Click, shift-click or box-select edges on any level.
-    Edges,
-}
-
-/// How faces are coloured.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize)]
-pub enum Coloring {
-    Uniform,
-    /// FACE / EDGE / VERTEX faces of the last biquadratic step.
-    Kind,
-    /// Mean curvature colour map.
-    Curvature,
-    /// One colour per scheme (the step that made the level).
-    Scheme,
-}
-
-/// What is drawn besides the faces.
-#[derive(Debug, Clone, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize)]
-pub struct Display {
-    pub smooth: bool,
-    pub wireframe: bool,
-    /// Face colours.
-    pub color: Coloring,
-    pub cage: bool,
-    pub corners: bool,
-    pub limit: bool,
-}
-
-impl Default for Display {
-    fn default() -> Self {
-        Display {
-            smooth: false,
-            wireframe: true,
-            color: Coloring::Uniform,
-            cage: false,
-            corners: false,
-            limit: false,
-        }
-    }
-}
-
-impl Display {
-    pub fn scene_options(&self) -> SceneOptions {
-        SceneOptions {
-            shading: if self.smooth {
-                Shading::Smooth
-            } else {
-                Shading::Flat
-            },
-            color_by: match self.color {
-                Coloring::Uniform => ColorBy::Uniform,
-                Coloring::Kind => ColorBy::Kind,
-                Coloring::Curvature => ColorBy::Curvature,
-                // Resolved per level by `view_pipe::level_scene`.
-                Coloring::Scheme => ColorBy::Solid(prism_viewport::scene::BASE_COLOR),
-            },
-            wireframe: self.wireframe,
-            ..SceneOptions::default()
-        }
-    }
-}
 
 /// A vertex drag in progress: its number (edits of one drag coalesce) and where the
 /// dragged vertices started.
@@ -531,102 +453,6 @@ impl ModelTab {
         self.budget_question(&ctx);
         self.take_commands()
     }
-
-    fn budget_question(&mut self, ctx: &egui::Context) {
-        let Some((view, o)) = self.question.clone() else {
-            return;
-        };
-        egui::Modal::new(egui::Id::unique("prism-budget-question")).show(ctx, |ui| {
-            ui.heading("This step needs a lot of memory");
-            ui.label(format!(
-                "View {}: the next level would have {} faces and need about {} MiB; the budget is {} MiB.",
-                view + 1,
-                o.faces,
-                o.needed_mib,
-                o.budget_mib
-            ));
-            ui.horizontal(|ui| {
-                if ui.button("Compute anyway").clicked() {
-                    self.push(Command::ComputeAnyway);
-                }
-                if ui.button("Remove the step").clicked() {
-                    self.push(Command::RemoveOverBudgetStep);
-                }
-                if ui
-                    .button("Keep only the last level")
-                    .on_hover_text(
-                        "free the levels between the input and the last (the level slider then \
-                         shows those two) and go on within the budget",
-                    )
-                    .clicked()
-                {
-                    self.push(Command::DropKeptLevels);
-                }
-            });
-        });
-    }
-
-    /// What the views do with radii that do not fit ([`ModelTab::clamp`]).
-    pub fn overlap(&self) -> prism_geom::rules::Overlap {
-        prism_geom::rules::Overlap::clamping(self.clamp)
-    }
-
-    /// Turns mending crossings on or off: every view computes its levels again.
-    pub fn set_mend_crossings(&mut self, on: bool) {
-        self.mend_crossings = on;
-        for v in &mut self.views {
-            v.mend_crossings = on;
-        }
-        self.synced = None;
-    }
-
-    /// Turns clamping on or off: every view computes its levels again.
-    pub fn set_clamp(&mut self, on: bool) {
-        self.clamp = on;
-        let overlap = self.overlap();
-        for v in &mut self.views {
-            v.overlap = overlap;
-        }
-        self.synced = None;
-    }
-
-    /// The answer "compute anyway" to the budget question.
-    pub fn compute_anyway(&mut self, doc: &DocState) {
-        if let Some((view, o)) = self.question.take() {
-            let v = &mut self.views[view];
-            v.budget_override = Some((o.needed_mib + o.needed_mib / 4 + 16) << 20);
-            self.compute_on(view, doc);
-        }
-    }
-
-    /// After an answer to the memory question: view `view` computes its missing levels from
-    /// the ones it has.
-    fn compute_on(&mut self, view: usize, doc: &DocState) {
-        let v = &mut self.views[view];
-        let next = v.pipeline.rebased(doc.pipelines[view].clone());
-        v.submit(next, self.budget_mib << 20, false, &self.waker);
-    }
-
-    /// The answer "keep only the last level": the view keeps the input, the level each
-    /// rounding run starts from and the newest ([`Keep::Needed`]), frees the others now, and
-    /// computes on within the budget (asking again if even that is too much).
-    pub fn drop_kept_levels(&mut self, doc: &DocState) {
-        if let Some((view, _)) = self.question.take() {
-            let v = &mut self.views[view];
-            v.keep = prism_geom::pipeline::Keep::Needed;
-            v.pipeline.keep = v.keep;
-            v.pipeline.release_unneeded();
-            self.compute_on(view, doc);
-        }
-    }
-
-    /// The answer "remove the step": the pipeline keeps the levels that were computed.
-    pub fn remove_over_budget_step(&mut self) -> Option<Edit> {
-        let (view, _) = self.question.take()?;
-        let len = self.views[view].pipeline.levels().len() - 1;
-        Some(Edit::TruncateSteps { view, len })
-    }
-
     /// The level shown in the active view.
     pub fn shown_level(&self) -> (usize, &prism_geom::Level) {
         let v = &self.views[self.active];

@@ -1,0 +1,85 @@
+//! How the Model tab's views look and what the mouse does in them: [`Tool`], [`Coloring`],
+//! [`Display`] (remembered between runs).
+
+use prism_viewport::{ColorBy, SceneOptions, Shading};
+
+/// The tool the primary mouse button uses in the views.
+#[derive(
+    Debug,
+    Clone,
+    Copy,
+    PartialEq,
+    Eq,
+    Hash,
+    Default,
+    clap::ValueEnum,
+    serde::Serialize,
+    serde::Deserialize,
+)]
+pub enum Tool {
+    /// Drag turns the model.
+    #[default]
+    Orbit,
+    /// Click, shift-click or box-select control vertices; drag a selected one to move it.
+    Vertices,
+    /// Click, shift-click or box-select edges on any level.
+    Edges,
+}
+
+/// How faces are coloured.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize)]
+pub enum Coloring {
+    Uniform,
+    /// FACE / EDGE / VERTEX faces of the last biquadratic step.
+    Kind,
+    /// Mean curvature colour map.
+    Curvature,
+    /// One colour per scheme (the step that made the level).
+    Scheme,
+}
+
+/// What is drawn besides the faces.
+#[derive(Debug, Clone, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize)]
+pub struct Display {
+    pub smooth: bool,
+    pub wireframe: bool,
+    /// Face colours.
+    pub color: Coloring,
+    pub cage: bool,
+    pub corners: bool,
+    pub limit: bool,
+}
+
+impl Default for Display {
+    fn default() -> Self {
+        Display {
+            smooth: false,
+            wireframe: true,
+            color: Coloring::Uniform,
+            cage: false,
+            corners: false,
+            limit: false,
+        }
+    }
+}
+
+impl Display {
+    pub fn scene_options(&self) -> SceneOptions {
+        SceneOptions {
+            shading: if self.smooth {
+                Shading::Smooth
+            } else {
+                Shading::Flat
+            },
+            color_by: match self.color {
+                Coloring::Uniform => ColorBy::Uniform,
+                Coloring::Kind => ColorBy::Kind,
+                Coloring::Curvature => ColorBy::Curvature,
+                // Resolved per level by `view_pipe::level_scene`.
+                Coloring::Scheme => ColorBy::Solid(prism_viewport::scene::BASE_COLOR),
+            },
+            wireframe: self.wireframe,
+            ..SceneOptions::default()
+        }
+    }
+}
