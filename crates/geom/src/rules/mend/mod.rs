@@ -58,21 +58,6 @@ pub enum Mend {
     EveryCrossing,
 }
 
-impl Mend {
-    /// The strategy's name, as the report and the docs give it.
-    pub fn name(self) -> &'static str {
-        match self {
-            Mend::FoldGuard => "fold guard",
-            Mend::Untangle => "untangling",
-            Mend::SmallChamfers => "small chamfers",
-            Mend::GuardCrossings => "crossings beside the guard",
-            Mend::ConcaveVertexCrossings => "crossings at concave vertices",
-            Mend::SelfCrossings => "bow-ties",
-            Mend::EveryCrossing => "every crossing",
-        }
-    }
-}
-
 /// The mending stage's tolerances, each with its default.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct MendOptions {
