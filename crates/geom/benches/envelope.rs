@@ -77,10 +77,14 @@ fn with(name: &str, surfacing: Surfacing) -> EnvelopeSpec {
     }
 }
 
+/// Times one build of `s`: the network and the patches or charts, no tessellation.
+fn time_build(b: divan::Bencher, s: EnvelopeSpec) {
+    b.bench(|| envelope(&s).unwrap());
+}
+
 #[divan::bench(args = SCENES)]
 fn build_charts(b: divan::Bencher, name: &str) {
-    let s = with(name, Surfacing::Charts);
-    b.bench(|| envelope(&s).unwrap());
+    time_build(b, with(name, Surfacing::Charts));
 }
 
 /// The charts with the paper's central cut: no strip lifted, no region raised (the cost of
@@ -91,13 +95,12 @@ fn build_charts_central_cut(b: divan::Bencher, name: &str) {
         enclosure: prism_geom::freeform::envelope::Enclosure::Paper,
         ..with(name, Surfacing::Charts)
     };
-    b.bench(|| envelope(&s).unwrap());
+    time_build(b, s);
 }
 
 #[divan::bench(args = SCENES)]
 fn build_paper(b: divan::Bencher, name: &str) {
-    let s = with(name, Surfacing::Paper);
-    b.bench(|| envelope(&s).unwrap());
+    time_build(b, with(name, Surfacing::Paper));
 }
 
 #[divan::bench(args = SCENES)]

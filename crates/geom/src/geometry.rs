@@ -285,35 +285,17 @@ mod tests {
             assert!(segments_meet(o, v(2.0, 0.0), v(2.0, 0.0), v(3.0, 5.0), tol));
             assert!(segments_meet(o, v(2.0, 0.0), v(1.0, 0.0), v(5.0, 0.0), tol));
             assert!(segments_meet(v(1.0, 1.0), v(1.0, 1.0), o, v(2.0, 2.0), tol));
-            // Clear misses: parallel, on one line apart, a T short of the other.
-            assert!(!segments_meet(
-                o,
-                v(2.0, 0.0),
-                v(0.0, 1.0),
-                v(2.0, 1.0),
-                tol
-            ));
-            assert!(!segments_meet(
-                o,
-                v(1.0, 0.0),
-                v(2.0, 0.0),
-                v(3.0, 0.0),
-                tol
-            ));
-            assert!(!segments_meet(
-                o,
-                v(2.0, 0.0),
-                v(1.0, 0.5),
-                v(1.0, 3.0),
-                tol
-            ));
-            assert!(!segments_meet(
-                v(1.0, 1.0),
-                v(1.0, 1.0),
-                v(3.0, 3.0),
-                v(4.0, 4.0),
-                tol
-            ));
+            // Clear misses: parallel, on one line apart, a T short of the other, a point
+            // off the other's line.
+            let misses = [
+                [o, v(2.0, 0.0), v(0.0, 1.0), v(2.0, 1.0)],
+                [o, v(1.0, 0.0), v(2.0, 0.0), v(3.0, 0.0)],
+                [o, v(2.0, 0.0), v(1.0, 0.5), v(1.0, 3.0)],
+                [v(1.0, 1.0), v(1.0, 1.0), v(3.0, 3.0), v(4.0, 4.0)],
+            ];
+            for [a, b, c, d] in misses {
+                assert!(!segments_meet(a, b, c, d, tol), "{a} {b} {c} {d}");
+            }
         }
         // A T short of the other by 1e-12: a miss exactly, a touch within the tolerance.
         let (a, b) = (v(1.0, 1e-12), v(1.0, 3.0));

@@ -12,7 +12,7 @@ use crate::error::OverBudget;
 use crate::geometry::signed_volume;
 use crate::memory;
 use crate::mesh::PolyMesh;
-use crate::primal::{refine_primal_carrying, repoint};
+use crate::primal::{With, refine_primal_carrying, repoint};
 use crate::rules::Overlap;
 use crate::rules::RoundingOptions;
 
@@ -309,16 +309,20 @@ impl Pipeline {
                         None => {
                             let prev = &self.levels[k];
                             let provenance = self.provenance(&scheme);
+                            let with = With {
+                                provenance,
+                                known_topology: carried.take(),
+                                child_topology: k + 1 < upto && self.carries(k),
+                                keep_topology,
+                                order: None,
+                            };
                             let (out, child_topo, topo) = refine_primal_carrying(
                                 &prev.mesh,
                                 &prev.edge_attrs,
                                 &prev.tags,
                                 p,
                                 budget,
-                                provenance,
-                                carried.take(),
-                                k + 1 < upto && self.carries(k),
-                                keep_topology,
+                                with,
                             )
                             .map_err(|e| err(e.into()))?;
                             carried = child_topo;

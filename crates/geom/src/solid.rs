@@ -14,6 +14,84 @@ use thiserror::Error;
 /// The most sides of a prism or pyramid (a circle is better made by subdivision).
 pub const MAX_SIDES: u32 = 512;
 
+/// The kinds of solid, as `prism new` and File ▸ New solid… name them.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum SolidKind {
+    Box,
+    Prism,
+    Pyramid,
+    Tripod,
+    Extrusion,
+}
+
+/// The numbers of every kind of solid (each kind reads its own), with the defaults that
+/// `prism new` and File ▸ New solid… start from.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SolidParams {
+    /// Box: width, depth, height.
+    pub size: DVec3,
+    /// Prism, pyramid: sides of the regular base polygon.
+    pub sides: u32,
+    /// Prism, pyramid: circumradius of the base.
+    pub radius: f64,
+    /// Prism, pyramid, extrusion: height.
+    pub height: f64,
+    /// Tripod: arm length.
+    pub arm: f64,
+    /// Tripod: arm width.
+    pub width: f64,
+}
+
+impl Default for SolidParams {
+    fn default() -> Self {
+        SolidParams {
+            size: DVec3::new(3.0, 2.0, 1.0),
+            sides: 6,
+            radius: 1.5,
+            height: 2.0,
+            arm: 3.0,
+            width: 1.0,
+        }
+    }
+}
+
+impl SolidParams {
+    /// The solid of `kind` with these numbers; `extrusion` gives an extrusion's outline and
+    /// hole scale (only that kind calls it), or why there is none.
+    pub fn solid<E>(
+        &self,
+        kind: SolidKind,
+        extrusion: impl FnOnce() -> Result<(Vec<DVec2>, Option<f64>), E>,
+    ) -> Result<Solid, E> {
+        let (sides, radius, height) = (self.sides, self.radius, self.height);
+        Ok(match kind {
+            SolidKind::Box => Solid::Box { size: self.size },
+            SolidKind::Prism => Solid::Prism {
+                sides,
+                radius,
+                height,
+            },
+            SolidKind::Pyramid => Solid::Pyramid {
+                sides,
+                radius,
+                height,
+            },
+            SolidKind::Tripod => Solid::Tripod {
+                arm: self.arm,
+                width: self.width,
+            },
+            SolidKind::Extrusion => {
+                let (outline, hole) = extrusion()?;
+                Solid::Extrusion {
+                    outline,
+                    height,
+                    hole,
+                }
+            }
+        })
+    }
+}
+
 /// A solid to make, with its parameters.
 #[derive(Debug, Clone, PartialEq)]
 pub enum Solid {
@@ -109,20 +187,22 @@ impl Solid {
                 sides: n,
                 radius,
                 height,
-            } => Ok(primitives::ngon_prism(
-                sides(*n)?,
-                positive("radius", *radius)?,
-                positive("height", *height)?,
-            )),
-            Solid::Pyramid {
+            }
+            | Solid::Pyramid {
                 sides: n,
                 radius,
                 height,
-            } => Ok(primitives::pyramid(
-                sides(*n)?,
-                positive("radius", *radius)?,
-                positive("height", *height)?,
-            )),
+            } => {
+                let make = match self {
+                    Solid::Prism { .. } => primitives::ngon_prism,
+                    _ => primitives::pyramid,
+                };
+                Ok(make(
+                    sides(*n)?,
+                    positive("radius", *radius)?,
+                    positive("height", *height)?,
+                ))
+            }
             Solid::Tripod { arm, width } => {
                 let (arm, width) = (positive("arm", *arm)?, positive("width", *width)?);
                 if arm <= width {

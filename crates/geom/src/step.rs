@@ -114,14 +114,11 @@ pub fn biquadratic_step_carrying(
     let (mut points, rule_report) = rules::corner_points(rule, &prep.input())?;
     let plan = rule.mends(options);
     let parent = mend::Parent {
-        mesh: cur,
-        topo,
-        normals: &prep.normals,
-        vertex_neighbourhood: prep.input().vertex_neighbourhood,
+        input: prep.input(),
         capped_edges: &prep.capped_edges,
     };
     // Mend, before the split: the child's vertex c is the parent's corner c.
-    let (unfolded, reoffset_faces) = mend::before_split(&plan, &parent, options, &mut points);
+    let (unfolded, reoffset_faces) = mend::before_split(&plan, &parent, &mut points);
     let (mut out, prov) = dual_quad::split(cur, topo, points);
     let new_attrs = refine::propagate(
         cur,
@@ -139,7 +136,6 @@ pub fn biquadratic_step_carrying(
     let mut mended = mend::after_split(
         &plan,
         &parent,
-        &options.mend,
         &prov,
         &unfolded,
         &mut out,

@@ -38,6 +38,13 @@ const SHAPES: [Shape; 6] = [
     Shape::HexagonalPrism { height: 1.0 },
 ];
 
+/// A simplex, a prism and the cube: the faces of three, four and six sides.
+const THREE: [Shape; 3] = [
+    Shape::Tetrahedron,
+    Shape::HexagonalPrism { height: 1.0 },
+    Shape::Cube,
+];
+
 use prism_geom::analysis::winding_number as winding;
 
 fn face_normal(m: &PolyMesh, f: usize) -> (DVec3, DVec3) {
@@ -120,26 +127,10 @@ fn one_cube_is_symmetric() {
     for t in [1.0, 0.3] {
         let m = build(Shape::Cube, t).tessellate(4).unwrap();
         let pts = &m.positions;
-        for perm in [
-            [0, 1, 2],
-            [0, 2, 1],
-            [1, 0, 2],
-            [1, 2, 0],
-            [2, 0, 1],
-            [2, 1, 0],
-        ] {
-            for signs in 0..8 {
-                let img: Vec<DVec3> = pts
-                    .iter()
-                    .map(|p| {
-                        let a = p.to_array();
-                        let s = |b: usize| if signs >> b & 1 == 1 { -1.0 } else { 1.0 };
-                        DVec3::new(s(0) * a[perm[0]], s(1) * a[perm[1]], s(2) * a[perm[2]])
-                    })
-                    .collect();
-                let h = hausdorff(pts, &img);
-                assert!(h < 1e-9, "t = {t}, {perm:?} {signs}: {h}");
-            }
+        for (k, s) in common::cube_symmetries().into_iter().enumerate() {
+            let img: Vec<DVec3> = pts.iter().map(|p| s * *p).collect();
+            let h = hausdorff(pts, &img);
+            assert!(h < 1e-9, "t = {t}, symmetry {k}: {h}");
         }
     }
 }
@@ -148,11 +139,7 @@ fn one_cube_is_symmetric() {
 /// gives the same surface.
 #[test]
 fn the_listing_order_does_not_matter() {
-    for shape in [
-        Shape::Tetrahedron,
-        Shape::HexagonalPrism { height: 1.0 },
-        Shape::Cube,
-    ] {
+    for shape in THREE {
         for t in [1.0, 0.4] {
             let p = shape.placed(&Placement::default());
             let n = p.vertices.len();
@@ -277,11 +264,7 @@ fn assert_closed_faults_named(e: &Envelope, m: &PolyMesh, ga: DVec3, gb: DVec3, 
 
 #[test]
 fn the_primitive_is_enclosed() {
-    for shape in [
-        Shape::Tetrahedron,
-        Shape::HexagonalPrism { height: 1.0 },
-        Shape::Cube,
-    ] {
+    for shape in THREE {
         for t in [1.0, 0.5, 0.1] {
             let e = build(shape, t);
             let m = e.tessellate(8).unwrap();

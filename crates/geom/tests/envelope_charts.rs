@@ -120,29 +120,6 @@ fn a_thousand_heaps_are_sound_at_every_t() {
     }
 }
 
-/// The 48 rotations and reflections of a cube about its centre: signed permutations.
-fn cube_symmetries() -> Vec<[[f64; 3]; 3]> {
-    let perms = [
-        [0, 1, 2],
-        [0, 2, 1],
-        [1, 0, 2],
-        [1, 2, 0],
-        [2, 0, 1],
-        [2, 1, 0],
-    ];
-    let mut out = Vec::new();
-    for p in perms {
-        for signs in 0..8 {
-            let mut m = [[0.0; 3]; 3];
-            for (row, &col) in p.iter().enumerate() {
-                m[row][col] = if signs >> row & 1 == 1 { -1.0 } else { 1.0 };
-            }
-            out.push(m);
-        }
-    }
-    out
-}
-
 /// One cube's envelope has the cube's 48 symmetries at every t: every mesh vertex, mapped by
 /// each, lies on the surface (to 10⁻⁹), though the mesh itself is not symmetric.
 #[test]
@@ -150,13 +127,9 @@ fn one_cube_has_its_48_symmetries() {
     for t in [2.0, 1.0, 0.3] {
         let e = envelope(&spec(vec![Shape::Cube.placed(&Placement::default())], t)).unwrap();
         let (m, _) = e.chart_mesh(6).unwrap();
-        for s in cube_symmetries() {
+        for s in common::cube_symmetries() {
             for x in &m.positions {
-                let y = DVec3::new(
-                    s[0][0] * x.x + s[0][1] * x.y + s[0][2] * x.z,
-                    s[1][0] * x.x + s[1][1] * x.y + s[1][2] * x.z,
-                    s[2][0] * x.x + s[2][1] * x.y + s[2][2] * x.z,
-                );
+                let y = s * *x;
                 let d = off_surface(&e, y);
                 assert!(d < 1e-9, "t = {t}: {y} is {d} off");
             }

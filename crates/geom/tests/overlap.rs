@@ -1,6 +1,7 @@
 //! Rounds that do not fit their faces: refused by default naming the edges and the radius
 //! that fits, clamped on request to a sound solid (docs/algorithms/cylindrical.md, "Overlap").
 
+use glam::DVec3;
 use prism_geom::rules::{EdgeFit, Overlap, RuleError};
 use prism_geom::{
     CornerRule, EdgeAttr, EdgeAttrs, EdgeKey, Pipeline, PipelineError, PolyMesh, RoundingOptions,
@@ -27,6 +28,22 @@ fn computer_room() -> PolyMesh {
 
 fn combination(n: usize, r: f64) -> Vec<Scheme> {
     vec![Scheme::Biquadratic(CornerRule::Combination { r }); n]
+}
+
+/// The Computer room after the smoothing steps `smooth` and four clamped combination steps of
+/// r: every level, sound, and inside the box of the last smoothed level.
+fn room_rounded(smooth: &str, r: f64) -> Pipeline {
+    let first = steps(smooth).len();
+    let all = [steps(smooth), combination(4, r)].concat();
+    let p = plain(computer_room(), all, Overlap::Clamp);
+    assert_eq!(p.levels().len(), first + 5);
+    assert_sound_inside(&p, first);
+    p
+}
+
+/// `m` after `steps`, with no own radius.
+fn plain(m: PolyMesh, steps: Vec<Scheme>, overlap: Overlap) -> Pipeline {
+    run(m, EdgeAttrs::new(), steps, overlap)
 }
 
 fn run(m: PolyMesh, attrs: EdgeAttrs, steps: Vec<Scheme>, overlap: Overlap) -> Pipeline {
@@ -77,12 +94,7 @@ fn refused(p: &Pipeline) -> Vec<EdgeFit> {
 /// meet) and the step is refused, naming them; clamped, five levels have no flipped face.
 #[test]
 fn the_computer_room_is_refused_then_clamped_to_a_sound_solid() {
-    let p = run(
-        computer_room(),
-        EdgeAttrs::new(),
-        combination(1, 0.2),
-        Overlap::Refuse,
-    );
+    let p = plain(computer_room(), combination(1, 0.2), Overlap::Refuse);
     assert_eq!(p.levels().len(), 1);
     let edges = refused(&p);
     assert_eq!(edges.len(), 16);
@@ -90,12 +102,7 @@ fn the_computer_room_is_refused_then_clamped_to_a_sound_solid() {
         assert_eq!(e.radius, 0.2);
         assert!((e.fits - 0.15).abs() < 1e-12, "{e}");
     }
-    let p = run(
-        computer_room(),
-        EdgeAttrs::new(),
-        combination(4, 0.2),
-        Overlap::Clamp,
-    );
+    let p = plain(computer_room(), combination(4, 0.2), Overlap::Clamp);
     assert_eq!(p.levels().len(), 5);
     let first = p.levels()[1].report.as_ref().unwrap();
     assert_eq!(first.clamped, edges);
@@ -120,12 +127,7 @@ fn the_computer_room_is_refused_then_clamped_to_a_sound_solid() {
 #[test]
 fn radii_too_large_for_the_tripod_are_named() {
     for r in [0.8, 1.2, 5.0] {
-        let p = run(
-            primitives::tripod(),
-            EdgeAttrs::new(),
-            combination(1, r),
-            Overlap::Refuse,
-        );
+        let p = plain(primitives::tripod(), combination(1, r), Overlap::Refuse);
         let edges = refused(&p);
         assert!(!edges.is_empty());
         assert!(edges.iter().all(|e| e.fits < r), "r = {r}");
@@ -145,12 +147,7 @@ fn radii_too_large_for_the_tripod_are_named() {
 fn cylindrical_then_combination_stays_sound() {
     let mut steps = vec![Scheme::Biquadratic(CornerRule::Cylindrical { r: 0.2 })];
     steps.extend(combination(4, 0.2));
-    let p = run(
-        primitives::tripod(),
-        EdgeAttrs::new(),
-        steps,
-        Overlap::Refuse,
-    );
+    let p = plain(primitives::tripod(), steps, Overlap::Refuse);
     assert_eq!(p.levels().len(), 6);
     for lv in &p.levels()[1..] {
         let r = lv.report.as_ref().unwrap();
@@ -195,12 +192,7 @@ fn an_own_radius_stays_inside_the_cage() {
 fn the_radius_that_fits_does_not_depend_on_the_numbering() {
     let hex = primitives::ngon_prism(6, 1.5, 2.0);
     let fits_of = |m: &PolyMesh| -> Vec<(i64, i64, i64, f64)> {
-        let p = run(
-            m.clone(),
-            EdgeAttrs::new(),
-            combination(1, 2.0),
-            Overlap::Refuse,
-        );
+        let p = plain(m.clone(), combination(1, 2.0), Overlap::Refuse);
         let mut v: Vec<_> = refused(&p)
             .iter()
             .map(|e| {
@@ -240,19 +232,29 @@ fn the_radius_that_fits_does_not_depend_on_the_numbering() {
     }
 }
 
-/// The cage edit: the own radius 0.45 on edge 0-9 and the arm's two top vertices 9
-/// and 10 dragged up to z = 3.85. It sent a vertex to y = −9,666 at level 5; now six levels
-/// stay inside the cage's box with no flipped face.
-#[test]
-fn an_own_radius_after_a_cage_edit_stays_inside_the_cage() {
+/// The tripod with its arm-top vertices `raised` dragged up to z = 3.85 and the own radius 0.45
+/// on edge 0-9, rounded by `levels` clamped combination steps of r = 0.2; the cage's box.
+fn raised_arm_top(raised: [usize; 2], levels: usize) -> (Pipeline, DVec3, DVec3) {
     let mut m = primitives::tripod();
-    for v in [9, 10] {
+    for v in raised {
         m.positions[v].z = 3.85;
     }
     let mut attrs = EdgeAttrs::new();
     attrs.insert(EdgeKey::new(0, 9), EdgeAttr::rounded(0.45));
     let (lo, hi) = m.bbox();
-    let p = run(m, attrs, combination(6, 0.2), Overlap::Clamp);
+    (
+        run(m, attrs, combination(levels, 0.2), Overlap::Clamp),
+        lo,
+        hi,
+    )
+}
+
+/// The cage edit: the own radius 0.45 on edge 0-9 and the arm's two top vertices 9
+/// and 10 dragged up to z = 3.85. It sent a vertex to y = −9,666 at level 5; now six levels
+/// stay inside the cage's box with no flipped face.
+#[test]
+fn an_own_radius_after_a_cage_edit_stays_inside_the_cage() {
+    let (p, lo, hi) = raised_arm_top([9, 10], 6);
     assert_eq!(p.levels().len(), 7);
     for (k, lv) in p.levels().iter().enumerate().skip(1) {
         let r = lv.report.as_ref().unwrap();
@@ -272,14 +274,7 @@ fn an_own_radius_after_a_cage_edit_stays_inside_the_cage() {
 /// (reported), and seven levels have none.
 #[test]
 fn a_tilted_arm_top_beside_an_own_radius_does_not_fold() {
-    let mut m = primitives::tripod();
-    for v in [10, 12] {
-        m.positions[v].z = 3.85;
-    }
-    let mut attrs = EdgeAttrs::new();
-    attrs.insert(EdgeKey::new(0, 9), EdgeAttr::rounded(0.45));
-    let (lo, hi) = m.bbox();
-    let p = run(m, attrs, combination(7, 0.2), Overlap::Clamp);
+    let (p, lo, hi) = raised_arm_top([10, 12], 7);
     assert_eq!(p.levels().len(), 8);
     let mut unfolded = 0;
     for (k, lv) in p.levels().iter().enumerate().skip(1) {
@@ -305,12 +300,7 @@ fn a_tilted_arm_top_beside_an_own_radius_does_not_fold() {
 fn catmull_clark_then_combination_stays_in_place() {
     let mut steps = prism_geom::scheme::parse_pipeline("catmull-clark").unwrap();
     steps.extend(combination(6, 0.2));
-    let p = run(
-        primitives::tripod(),
-        EdgeAttrs::new(),
-        steps,
-        Overlap::Clamp,
-    );
+    let p = plain(primitives::tripod(), steps, Overlap::Clamp);
     assert_eq!(p.levels().len(), 8);
     let (lo, hi) = p.levels()[1].mesh.bbox();
     let v1 = p.levels()[1].report.as_ref().unwrap().volume;
@@ -433,11 +423,7 @@ fn doubly_smoothed_inputs_round_without_a_flip() {
 /// the fold guard looked for them (cylindrical.md, "Fold guard").
 #[test]
 fn the_computer_room_after_catmull_clark_rounds_without_crossing_itself() {
-    let mut s = steps("catmull-clark");
-    s.extend(combination(4, 0.2));
-    let p = run(computer_room(), EdgeAttrs::new(), s, Overlap::Clamp);
-    assert_eq!(p.levels().len(), 6);
-    assert_sound_inside(&p, 1);
+    let p = room_rounded("catmull-clark", 0.2);
     for (k, lv) in p.levels().iter().enumerate().skip(2) {
         let m = &lv.mesh;
         let crossing = prism_geom::analysis::crossings(m).len();
@@ -503,12 +489,7 @@ fn merging_flat_faces_leaves_no_two_cornered_vertex() {
 #[test]
 fn a_radius_changed_within_a_run_is_checked_again() {
     let s = steps("combination:r=0.1,combination:r=0.5,combination:r=0.5");
-    let p = run(
-        primitives::tripod(),
-        EdgeAttrs::new(),
-        s.clone(),
-        Overlap::Refuse,
-    );
+    let p = plain(primitives::tripod(), s.clone(), Overlap::Refuse);
     let mut q = Pipeline::clone(&p);
     match q.compute() {
         Err(PipelineError {
@@ -531,9 +512,8 @@ fn a_radius_changed_within_a_run_is_checked_again() {
 /// r = 0.4 with 0.15. An own radius above the cap is capped too.
 #[test]
 fn a_clamped_radius_caps_later_steps() {
-    let p = run(
+    let p = plain(
         computer_room(),
-        EdgeAttrs::new(),
         steps("combination:r=0.2,doo-sabin"),
         Overlap::Clamp,
     );
@@ -577,11 +557,7 @@ fn a_clamped_radius_caps_later_steps() {
 /// blend faces re-placed leave nothing flipped and nothing to untangle.
 #[test]
 fn the_computer_room_smoothed_twice_rounds_through_level_six() {
-    let mut s = steps("catmull-clark,catmull-clark");
-    s.extend(combination(4, 0.3));
-    let p = run(computer_room(), EdgeAttrs::new(), s, Overlap::Clamp);
-    assert_eq!(p.levels().len(), 7);
-    assert_sound_inside(&p, 2);
+    let p = room_rounded("catmull-clark,catmull-clark", 0.3);
     let r = p.levels()[6].report.as_ref().unwrap();
     assert!(r.mend.reoffset_faces > 0, "{}", r.mend.reoffset_faces);
     assert_eq!(r.mend.untangled.points, 0);
@@ -596,12 +572,7 @@ fn the_computer_room_smoothed_twice_rounds_through_level_six() {
 #[test]
 fn doo_sabin_on_a_concave_face_takes_the_width_offset_when_clamped() {
     let s = steps("cylindrical:r=0.2,doo-sabin,doo-sabin,doo-sabin");
-    let printed = run(
-        primitives::tripod(),
-        EdgeAttrs::new(),
-        s[..2].to_vec(),
-        Overlap::Refuse,
-    );
+    let printed = plain(primitives::tripod(), s[..2].to_vec(), Overlap::Refuse);
     assert_eq!(
         printed.levels()[2].report.as_ref().unwrap().flipped.len(),
         9
@@ -618,12 +589,7 @@ fn doo_sabin_on_a_concave_face_takes_the_width_offset_when_clamped() {
         assert!(prism_geom::analysis::crossings(&lv.mesh).is_empty());
     }
     let ds = vec![Scheme::Biquadratic(CornerRule::DooSabin); 2];
-    let a = run(
-        primitives::cube3(),
-        EdgeAttrs::new(),
-        ds.clone(),
-        Overlap::Clamp,
-    );
+    let a = plain(primitives::cube3(), ds.clone(), Overlap::Clamp);
     let b = run(primitives::cube3(), EdgeAttrs::new(), ds, Overlap::Refuse);
     assert_eq!(a.levels()[2].report.as_ref().unwrap().offset_faces, 0);
     assert!(a.levels()[2].mesh == b.levels()[2].mesh);

@@ -156,44 +156,26 @@ pub fn refine_primal_with(
     memory_budget: u64,
     provenance: bool,
 ) -> Result<PrimalOutput, PrimalError> {
-    refine_primal_carrying(
-        mesh,
-        attrs,
-        tags,
-        scheme,
-        memory_budget,
+    let with = With {
         provenance,
-        None,
-        false,
-        false,
-    )
-    .map(|(o, _, _)| o)
+        ..With::default()
+    };
+    refine_primal_carrying(mesh, attrs, tags, scheme, memory_budget, with).map(|(o, _, _)| o)
 }
 
-/// [`refine_primal_with`] from the parent's topology when the split before wrote it down
-/// (`known`), writing the child's down too when `child_topology` (the pipeline passes it on
-/// from one primal step to the next, as [`refine_primal_levels`] does). Returns the child,
-/// the child's topology (when asked for) and the parent's (when `keep_topology`: the app
-/// keeps it to move points without looking for the topology again, [`repoint`]).
-#[allow(clippy::too_many_arguments)]
+/// [`refine_primal_with`] with what [`With`] asks besides the child: from the parent's
+/// topology when the split before wrote it down, writing the child's down too (the pipeline
+/// passes it on from one primal step to the next, as [`refine_primal_levels`] does). Returns
+/// the child, the child's topology (when asked for) and the parent's (when `keep_topology`:
+/// the app keeps it to move points without looking for the topology again, [`repoint`]).
 pub(crate) fn refine_primal_carrying(
     mesh: &PolyMesh,
     attrs: &EdgeAttrs,
     tags: &SubdivTags,
     scheme: PrimalScheme,
     memory_budget: u64,
-    provenance: bool,
-    known: Option<Topology>,
-    child_topology: bool,
-    keep_topology: bool,
+    with: With<'static>,
 ) -> Result<(PrimalOutput, Option<Topology>, Option<Topology>), PrimalError> {
-    let with = With {
-        provenance,
-        known_topology: known,
-        child_topology,
-        keep_topology,
-        ..With::default()
-    };
     refine(mesh, attrs, tags, scheme, memory_budget, with).map(|r| (r.0, r.2, r.3))
 }
 
@@ -282,17 +264,17 @@ pub fn refine_primal_ordered(
 
 /// What a caller of [`refine`] wants besides the child.
 #[derive(Default)]
-struct With<'a> {
+pub(crate) struct With<'a> {
     /// Pass on OpenSubdiv's ring order (`Some(None)`: the parent is an input).
-    order: Option<Option<&'a RingOrder>>,
+    pub order: Option<Option<&'a RingOrder>>,
     /// The parent's topology when the split already wrote it down.
-    known_topology: Option<Topology>,
+    pub known_topology: Option<Topology>,
     /// Write down the child's topology too.
-    child_topology: bool,
+    pub child_topology: bool,
     /// Record the child's [`Provenance`].
-    provenance: bool,
+    pub provenance: bool,
     /// Return the parent's topology.
-    keep_topology: bool,
+    pub keep_topology: bool,
 }
 
 fn refine(

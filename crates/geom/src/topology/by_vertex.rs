@@ -9,7 +9,7 @@
 //! half-edges and no origin twice among its incoming ones (else two faces run an edge the
 //! same way or an edge is used three times). When every vertex passes, the pairs are mutual
 //! (`twin[a → x]` is written by x, from the one `x → a`) and unique: the twins of the serial
-//! pass in `super::serial_twins`, which runs instead, naming the first bad edge, when one
+//! pass in `super::build::serial_twins`, which runs instead, naming the first bad edge, when one
 //! does not.
 //!
 //! The same lookups give the ring start (the first outgoing half-edge that no incoming one

@@ -8,7 +8,7 @@
 //! The runs write into one array at interleaved places (disjoint slots, through a raw
 //! pointer), each slot once, with no zeroed buffer first.
 
-use super::{Loops, needs_full_check};
+use super::Loops;
 use rayon::prelude::*;
 
 /// Vertices a task of the offset pass takes.
@@ -190,3 +190,23 @@ impl<'a> Outgoing<'a> {
 struct Slots(*mut u32);
 // SAFETY: the runs write disjoint slots and nothing reads them until every run has finished.
 unsafe impl Sync for Slots {}
+
+/// Whether the corners `vs` of a one-loop face are anything but a plain triangle or quad of
+/// distinct vertices below `nv`: such a face gets `build.rs`'s `check_face`, which names what is wrong.
+/// No branch per compare: vector code over many faces.
+#[inline(always)]
+pub(super) fn needs_full_check(vs: &[u32], nv: usize) -> bool {
+    match *vs {
+        [a, b, c] => (a.max(b).max(c) as usize >= nv) | (a == b) | (a == c) | (b == c),
+        [a, b, c, d] => {
+            (a.max(b).max(c).max(d) as usize >= nv)
+                | (a == b)
+                | (a == c)
+                | (a == d)
+                | (b == c)
+                | (b == d)
+                | (c == d)
+        }
+        _ => true,
+    }
+}

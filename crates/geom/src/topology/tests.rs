@@ -1,5 +1,7 @@
 //! Tests of the topology builder and its checks.
 
+use super::build::{ring_starts, serial_twins, uniform_layout};
+use super::outgoing::Outgoing;
 use super::*;
 use glam::DVec3;
 

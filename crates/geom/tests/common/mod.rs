@@ -123,3 +123,24 @@ pub fn hausdorff(a: &[DVec3], b: &[DVec3]) -> f64 {
     };
     one(a, b).max(one(b, a))
 }
+
+/// The 48 rotations and reflections of a cube about its centre: the signed permutation
+/// matrices.
+#[allow(dead_code)] // not every test crate that includes this module uses it
+pub fn cube_symmetries() -> Vec<glam::DMat3> {
+    let perms = (0..27)
+        .map(|i| [i / 9, i / 3 % 3, i % 3])
+        .filter(|[a, b, c]| a != b && b != c && a != c);
+    let mut out = Vec::new();
+    for p in perms {
+        for signs in 0..8 {
+            let mut rows = [[0.0; 3]; 3];
+            for (row, &col) in p.iter().enumerate() {
+                rows[row][col] = if signs >> row & 1 == 1 { -1.0 } else { 1.0 };
+            }
+            out.push(glam::DMat3::from_cols_array_2d(&rows).transpose());
+        }
+    }
+    assert_eq!(out.len(), 48);
+    out
+}

@@ -49,6 +49,12 @@ use crate::freeform::bezier::RationalBezier;
 use glam::DVec3;
 use std::collections::HashMap;
 
+mod curves;
+mod face;
+
+use curves::{angle, at_direction, hooks, third_cubic};
+use face::{Along, At, Corner, clip_face};
+
 /// Relative tolerance (of r) for "on a cut plane".
 const ON_PLANE: f64 = 1e-9;
 
@@ -75,183 +81,11 @@ const NEAR_HOOK: f64 = 0.15;
 /// edges beside them (envelope.md, "Nearly hooked pieces").
 const NEAR_HOOK_EDGE: f64 = 0.05;
 
-/// Where a corner of a clipped face lies on the primitive.
-#[derive(Debug, Clone, Copy, PartialEq)]
-enum At {
-    Vertex(usize),
-    /// On edge (a, b), a < b, where cut `cut` crosses it.
-    Edge {
-        a: usize,
-        b: usize,
-        cut: usize,
-    },
-    /// Inside face `face`, where two cuts cross.
-    Inside {
-        face: usize,
-        cuts: [usize; 2],
-    },
-}
-
-/// What the side from a corner to the next runs along.
-#[derive(Debug, Clone, Copy, PartialEq)]
-enum Along {
-    /// The primitive's edge between these vertices.
-    Edge(usize, usize),
-    Cut(usize),
-}
-
-#[derive(Debug, Clone, Copy)]
-struct Corner {
-    flat: DVec3,
-    at: At,
-    along: Along,
-}
-
 /// A point located on the curved primitive.
 #[derive(Debug, Clone, Copy)]
 struct Located {
     position: DVec3,
     t: f64,
-}
-
-/// The root of `(C(τ) − G)·w` on a curve through direction u from G (w normal to u in the
-/// curve's plane): the curve point in direction u.
-fn at_direction(c: &RationalBezier, g: DVec3, u: DVec3) -> f64 {
-    let n = (c.eval(0.0) - g).cross(c.eval(1.0) - g);
-    let w = n.cross(u);
-    let f = |tau: f64| (c.eval(tau) - g).dot(w);
-    let (mut lo, mut hi) = (0.0, 1.0);
-    let flo = f(lo) > 0.0;
-    for _ in 0..60 {
-        let mid = 0.5 * (lo + hi);
-        if (f(mid) > 0.0) == flo {
-            lo = mid
-        } else {
-            hi = mid
-        }
-    }
-    0.5 * (lo + hi)
-}
-
-/// Whether `c` (from the first to the last point of `chord`) hooks — leaves its start or
-/// reaches its end backwards — or, for `near` > 0, nearly does: a leg shorter than `near` of
-/// the chord.
-fn hooks(c: &RationalBezier, chord: DVec3, near: f64) -> bool {
-    let p = &c.points;
-    let least = near * chord.length();
-    c.derivatives(0.0).d1.dot(chord) <= 0.0
-        || c.derivatives(1.0).d1.dot(chord) <= 0.0
-        || p[0].distance(p[1]) < least
-        || p[3].distance(p[2]) < least
-}
-
-/// The polynomial cubic from `px` to `py` in the plane through `g` normal to `plane`, leaving
-/// and reaching each end normal to its radius (towards the other end), legs `scale` × a third
-/// of the chord: where a §6.3 piece hooks or nearly does. With `monotone` (the charts) each leg
-/// is at most `|p − g|·tan(γ/3)`
-/// (γ the angle the piece spans at g), so that its inner control points lie within the first
-/// and last third of that angle: the control polygon, and so the curve (variation
-/// diminishing), turns one way about g and meets every ray between its ends once — the radial
-/// chart's side (`chart`) is a graph. Equal radii never meet the bound (a third of the chord is
-/// at most r·tan(γ/3)).
-fn third_cubic(
-    g: DVec3,
-    plane: DVec3,
-    px: DVec3,
-    py: DVec3,
-    scale: f64,
-    monotone: bool,
-) -> RationalBezier {
-    let chord = py - px;
-    let along = |p: DVec3| {
-        let t = plane.cross(p - g).normalize();
-        if t.dot(chord) < 0.0 { -t } else { t }
-    };
-    let l = scale * chord.length() / 3.0;
-    let third = if monotone {
-        ((px - g).angle_between(py - g) / 3.0).tan()
-    } else {
-        f64::INFINITY
-    };
-    let (lx, ly) = (
-        l.min((px - g).length() * third),
-        l.min((py - g).length() * third),
-    );
-    RationalBezier::polynomial(vec![px, px + lx * along(px), py - ly * along(py), py])
-        .expect("finite points")
-}
-
-fn angle(x: DVec3, y: DVec3) -> f64 {
-    x.cross(y).length().atan2(x.dot(y))
-}
-
-/// The face clipped by every cut, as a convex polygon of corners (empty when nothing is kept).
-fn clip_face(p: &Primitive, f: usize, cuts: &[DVec3], tol: f64) -> Vec<Corner> {
-    let face = &p.faces[f];
-    let m = face.len();
-    let mut poly: Vec<Corner> = (0..m)
-        .map(|i| Corner {
-            flat: p.vertices[face[i]],
-            at: At::Vertex(face[i]),
-            along: Along::Edge(face[i], face[(i + 1) % m]),
-        })
-        .collect();
-    for (k, &d) in cuts.iter().enumerate() {
-        let s: Vec<f64> = poly
-            .iter()
-            .map(|c| {
-                let x = (c.flat - p.centre).dot(d);
-                if x.abs() <= tol { 0.0 } else { x }
-            })
-            .collect();
-        if s.iter().all(|&x| x <= 0.0) {
-            continue;
-        }
-        let crossing = |cur: Corner, nxt: Corner, sc: f64, sn: f64| Corner {
-            flat: cur.flat + (nxt.flat - cur.flat) * (sc / (sc - sn)),
-            at: match cur.along {
-                Along::Edge(a, b) => At::Edge {
-                    a: a.min(b),
-                    b: a.max(b),
-                    cut: k,
-                },
-                Along::Cut(l) => At::Inside {
-                    face: f,
-                    cuts: [l, k],
-                },
-            },
-            along: cur.along,
-        };
-        let n = poly.len();
-        let mut out = Vec::with_capacity(n + 1);
-        for i in 0..n {
-            let (cur, nxt) = (poly[i], poly[(i + 1) % n]);
-            let (sc, sn) = (s[i], s[(i + 1) % n]);
-            if sc <= 0.0 {
-                if sn <= 0.0 {
-                    out.push(cur);
-                } else if sc < 0.0 {
-                    out.push(cur);
-                    out.push(Corner {
-                        along: Along::Cut(k),
-                        ..crossing(cur, nxt, sc, sn)
-                    });
-                } else {
-                    out.push(Corner {
-                        along: Along::Cut(k),
-                        ..cur
-                    });
-                }
-            } else if sn < 0.0 {
-                out.push(crossing(cur, nxt, sc, sn));
-            }
-        }
-        poly = out;
-        if poly.len() < 3 {
-            return Vec::new();
-        }
-    }
-    poly
 }
 
 struct Clipper<'a> {

@@ -2,10 +2,15 @@
 //! docs/algorithms/envelope.md).
 //!
 //! A primitive's straight edges become rational cubics with end curvature 1/(t·r)
-//! ([`edges`]); the network of curves ([`network`]) is filled with Coons patches with
-//! variable twist ([`coons`]), G1 across every border through the numbering-independent
-//! virtual basis, n-sided regions split into quads around an inserted point ([`patches`]);
-//! [`tessellate`] welds them into a closed outward mesh.
+//! ([`edges`]). By default ([`Surfacing::Charts`]) every region of the network ([`network`])
+//! is a scalar graph over a flat chart ([`chart`]): a primitive's region a radial graph about
+//! its centre over its clipped flat face, a fusion strip a graph about the axis of its two
+//! centres, a lid a graph over its hull facet; G1 along every curve by one tangent plane
+//! shared by both sides; the fusion strips lifted over the corners the silhouette planes cut
+//! off ([`Enclosure::Lifted`]). The paper's own construction stays as
+//! [`Surfacing::Paper`]: vector Coons patches with variable twist ([`coons`]), n-sided regions
+//! split about an inserted point ([`patches`]), their folds counted ([`folds`]).
+//! [`tessellate`] welds either into a closed outward mesh.
 //!
 //! Any number of primitives: the hull of their centres ([`hull`]) says which primitive is cut
 //! towards which (its hull neighbours) and which are swallowed ([`nested`] leaves out, too, a
@@ -29,121 +34,18 @@ pub mod primitive;
 pub mod tessellate;
 mod wrap;
 
+mod report;
+mod spec;
+
 pub use network::{CurveKind, Network};
 pub use patches::EnvelopePatch;
 pub use primitive::{Placement, Primitive, PrimitiveInput, Shape};
+pub use spec::{Enclosure, EnvelopeError, EnvelopeSpec, Surfacing};
 
-use crate::freeform::skin::Basis;
 use crate::mesh::PolyMesh;
 use glam::DVec3;
 use network::{PatchSide, Region, RegionKind};
-use serde::{Deserialize, Serialize};
 use std::collections::HashMap;
-use thiserror::Error;
-
-#[derive(Debug, Clone, PartialEq, Error)]
-pub enum EnvelopeError {
-    #[error("the scene has no primitive")]
-    Empty,
-    #[error("primitive {index}: {why}")]
-    Primitive { index: usize, why: String },
-    #[error("t of {what} is {t}: t must be finite and > 0 (ρ = t·r)")]
-    BadT { what: String, t: f64 },
-    #[error("fusing primitives {a} and {b}: {why}")]
-    Fusion { a: usize, b: usize, why: String },
-    #[error("primitives {a} and {b} have the same centre: there is no view vector between them")]
-    SameCentre { a: usize, b: usize },
-    #[error("resolution {0} is out of range: 1 to 256")]
-    Resolution(usize),
-    #[error("patch {patch} has a point that is not finite (a bug: please report the scene)")]
-    NonFinite { patch: usize },
-    #[error("region {region} has no chart: {why} (a bug: please report the scene)")]
-    Chart { region: usize, why: String },
-}
-
-/// How the regions of the network are filled (docs/algorithms/envelope.md).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
-#[serde(rename_all = "kebab-case")]
-pub enum Surfacing {
-    /// Scalar graphs over flat charts ([`chart`]): cannot fold, G1 by one tangent plane per
-    /// curve, the faces enclosed.
-    #[default]
-    Charts,
-    /// The paper's vector Coons patches with Gregory's twist (seed 004 §6), for comparison.
-    Paper,
-}
-
-impl Surfacing {
-    pub fn name(self) -> &'static str {
-        match self {
-            Surfacing::Charts => "charts",
-            Surfacing::Paper => "paper",
-        }
-    }
-}
-
-fn is_charts(s: &Surfacing) -> bool {
-    *s == Surfacing::Charts
-}
-
-/// A scene: the default t, the primitives and the tessellation's resolution.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-pub struct EnvelopeSpec {
-    #[serde(default = "one")]
-    pub t: f64,
-    pub primitives: Vec<PrimitiveInput>,
-    /// Quads along each side of a patch.
-    #[serde(default = "eight")]
-    pub resolution: usize,
-    /// The G1 construction of the borders: `virtual` (default: independent of the listing) or
-    /// the paper's `one-sided` (the region listed first leads each border).
-    #[serde(default, skip_serializing_if = "is_virtual")]
-    pub basis: Basis,
-    /// How the regions are filled: `charts` (default) or the paper's `paper` patches.
-    #[serde(default, skip_serializing_if = "is_charts")]
-    pub patches: Surfacing,
-    /// Whether the charts' fusion strips are lifted over the primitives' removed corners
-    /// (`lifted`, default) or keep the paper's central cut (`paper`).
-    #[serde(default, skip_serializing_if = "is_lifted")]
-    pub enclosure: Enclosure,
-}
-
-fn is_lifted(e: &Enclosure) -> bool {
-    *e == Enclosure::Lifted
-}
-
-/// What holds the primitives' corners that the silhouette plane through each centre cuts off
-/// (docs/algorithms/envelope.md, "Enclosure").
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
-#[serde(rename_all = "kebab-case")]
-pub enum Enclosure {
-    /// The fusion strips lifted over every removed corner and edge ([`chart::lift`]).
-    #[default]
-    Lifted,
-    /// The paper's central cut as it lies: removed corners may poke out at small t.
-    Paper,
-}
-
-impl Enclosure {
-    pub fn name(self) -> &'static str {
-        match self {
-            Enclosure::Lifted => "lifted",
-            Enclosure::Paper => "paper",
-        }
-    }
-}
-
-fn is_virtual(b: &Basis) -> bool {
-    *b == Basis::Virtual
-}
-
-fn one() -> f64 {
-    1.0
-}
-
-fn eight() -> usize {
-    8
-}
 
 /// The envelope: checked primitives, the curve network (with the insertion curves of the
 /// n-sided split) and the patches.
@@ -504,47 +406,6 @@ impl Envelope {
         Ok((mesh, regions))
     }
 
-    /// The quality report ([`chart::quality`]) of [`Envelope::mesh`]'s mesh and regions; a
-    /// paper build's polygons are measured as fans, a triangle counted inward when it faces
-    /// its primitive's centre or the segment between a fusion strip's two centres.
-    pub fn quality_of(&self, mesh: &PolyMesh, regions: &[u32]) -> chart::quality::Quality {
-        if self.surfacing == Surfacing::Charts {
-            return chart::quality::quality(mesh, regions, &self.charts, &self.primitives);
-        }
-        let mut fans = PolyMesh::new();
-        fans.positions = mesh.positions.clone();
-        let mut fan_regions = Vec::new();
-        for (f, &region) in regions.iter().enumerate().take(mesh.num_faces()) {
-            let c: Vec<u32> = mesh.face_corners(f).map(|i| mesh.corner_verts[i]).collect();
-            for j in 1..c.len().saturating_sub(1) {
-                fans.push_face(&[&[c[0], c[j], c[j + 1]]]);
-                fan_regions.push(region);
-            }
-        }
-        chart::quality::quality_with(&fans, &fan_regions, &self.primitives, |r, x| {
-            match self.network.regions.get(r as usize)?.kind {
-                RegionKind::Primitive { primitive, .. } => {
-                    Some(x - self.primitives[primitive].centre)
-                }
-                // Away from the segment between the two centres.
-                RegionKind::Fusion { from, to } => {
-                    let (a, b) = (self.primitives[from].centre, self.primitives[to].centre);
-                    let d = b - a;
-                    let s = ((x - a).dot(d) / d.length_squared()).clamp(0.0, 1.0);
-                    Some(x - (a + s * d))
-                }
-                RegionKind::Lid { .. } => None,
-            }
-        })
-    }
-
-    /// The tessellation at resolution `k` and its quality report.
-    pub fn quality(&self, k: usize) -> Result<(PolyMesh, chart::quality::Quality), EnvelopeError> {
-        let (mesh, regions) = self.mesh(k)?;
-        let q = self.quality_of(&mesh, &regions);
-        Ok((mesh, q))
-    }
-
     /// The mesh counts of the tessellation at resolution `k`, estimated before it is built (for
     /// the memory guard): the paper's K × K quads a patch, or the charts' mesh at resolution
     /// min(K, 8) (a few milliseconds) scaled by (K/8)², with a quarter to spare.
@@ -567,88 +428,5 @@ impl Envelope {
             faces: triangles,
             edges: 3 * triangles / 2,
         }
-    }
-
-    /// The number of surface pieces: patches, or one chart a region.
-    pub fn patch_count(&self) -> usize {
-        match self.surfacing {
-            Surfacing::Charts => self.charts.len(),
-            Surfacing::Paper => self.patches.len(),
-        }
-    }
-
-    /// The folded cells of its patches ([`folds::folds`], [`folds::FOLD_CELLS`] a side).
-    pub fn folds(&self) -> Vec<folds::Fold> {
-        self.folded.clone()
-    }
-
-    /// The note naming the swallowed primitives (none when none is).
-    pub fn removed_note(&self) -> Option<String> {
-        if self.removed.is_empty() {
-            return None;
-        }
-        let list: Vec<String> = self.removed.iter().map(|i| i.to_string()).collect();
-        Some(format!(
-            "swallowed by the others (centre inside, or within r/10 of, the hull of the others' centres, or inside a larger primitive's sphere and the others' envelope; seed 004 §5.1.3): primitive(s) {}",
-            list.join(", ")
-        ))
-    }
-
-    /// The warning for `folds` (none when empty): how many cells of how many patches, and
-    /// where the first lies.
-    pub fn fold_warning(&self, folds: &[folds::Fold]) -> Option<String> {
-        let first = folds.first()?;
-        let mut patches: Vec<usize> = folds.iter().map(|f| f.patch).collect();
-        patches.dedup();
-        Some(format!(
-            "{} of {} sampled cells fold ({} of {} patches: the surface turns more than 90° from the tangent planes at the patch's corners and along its nearest side), the first on {} (patch {}, u = {:.2}, v = {:.2}); a larger t or primitives further apart usually clear it",
-            folds.len(),
-            self.patches.len() * folds::FOLD_CELLS * folds::FOLD_CELLS,
-            patches.len(),
-            self.patches.len(),
-            self.describe_region(first.region),
-            first.patch,
-            first.u,
-            first.v
-        ))
-    }
-
-    /// The warning for [`folds::crossings`] of its tessellation at `k` quads a patch side
-    /// (none when there are none): how many pairs and where the first lies.
-    pub fn crossing_warning(&self, points: &[DVec3], k: usize) -> Option<String> {
-        let p = points.first()?;
-        Some(format!(
-            "the surface passes through itself at {} pair(s) of faces of its tessellation at {k}×{k} quads a patch, the first near ({:.4}, {:.4}, {:.4}); a t nearer 1, per-vertex t closer together or primitives further apart usually clear it",
-            points.len(),
-            p.x,
-            p.y,
-            p.z,
-        ))
-    }
-
-    /// What region `r` lies on, in words: "primitive P face F", or "region R (between
-    /// primitives)" for a fusion strip's quad or a lid.
-    pub fn describe_region(&self, r: usize) -> String {
-        match self.network.regions.get(r).map(|x| x.kind) {
-            Some(network::RegionKind::Primitive { primitive, face }) => {
-                format!("primitive {primitive} face {face}")
-            }
-            Some(network::RegionKind::Fusion { from, to }) => {
-                format!("region {r} (between primitives {from} and {to})")
-            }
-            Some(network::RegionKind::Lid { .. }) => {
-                format!("region {r} (a lid between three or more primitives)")
-            }
-            None => format!("region {r}"),
-        }
-    }
-
-    /// The largest angle in degrees between the two sides' normals along the patch borders
-    /// (analytic, 16 samples a side).
-    pub fn largest_border_jump(&self) -> f64 {
-        if self.surfacing == Surfacing::Charts {
-            return chart::largest_border_jump(&self.network, &self.charts, 16);
-        }
-        patches::largest_border_jump(&self.network, &self.patches, 16)
     }
 }

@@ -29,7 +29,7 @@ pub use untangle::Untangled;
 use crate::child_check::ChildCheck;
 use crate::mesh::PolyMesh;
 use crate::refine::Provenance;
-use crate::topology::Topology;
+use crate::rules::RuleInput;
 use glam::DVec3;
 
 /// One mending strategy: the fault it treats is in its doc and in the table of the module.
@@ -149,36 +149,27 @@ impl MendReport {
     }
 }
 
-/// The level a step split, as the mending stage reads it.
+/// The level a step split, as the mending stage reads it: what the rule read, and the edges
+/// whose cut width the preparation lowered (the combination rule's guard).
 pub struct Parent<'a> {
-    pub mesh: &'a PolyMesh,
-    pub topo: &'a Topology,
-    /// Unit face normals of `mesh`.
-    pub normals: &'a [DVec3],
-    /// The run's vertex-neighbourhood flags (combination rule; empty: none).
-    pub vertex_neighbourhood: &'a [bool],
-    /// Edges whose cut width the preparation lowered (the combination rule's guard).
+    pub input: RuleInput<'a>,
     pub capped_edges: &'a [u32],
 }
 
 /// [`Mend::FoldGuard`] on the corner points `points` before the split, when `plan` has it:
 /// the faces moved into the blend, ascending (the combination run keeps them there), and how
 /// many blend faces were re-placed.
-pub fn before_split(
-    plan: &[Mend],
-    parent: &Parent,
-    options: &crate::rules::RoundingOptions,
-    points: &mut [DVec3],
-) -> (Vec<u32>, usize) {
+pub fn before_split(plan: &[Mend], parent: &Parent, points: &mut [DVec3]) -> (Vec<u32>, usize) {
     if !plan.contains(&Mend::FoldGuard) {
         return (Vec::new(), 0);
     }
+    let i = &parent.input;
     fold_guard::fold_guard(
-        parent.mesh,
-        parent.topo,
-        parent.normals,
-        parent.vertex_neighbourhood,
-        options,
+        i.mesh,
+        i.topo,
+        i.normals,
+        i.vertex_neighbourhood,
+        i.options,
         points,
     )
 }
@@ -191,7 +182,6 @@ pub fn before_split(
 pub fn after_split(
     plan: &[Mend],
     parent: &Parent,
-    options: &MendOptions,
     prov: &Provenance,
     unfolded: &[u32],
     out: &mut PolyMesh,
@@ -199,7 +189,8 @@ pub fn after_split(
     recheck: impl Fn(&PolyMesh) -> ChildCheck,
 ) -> MendReport {
     let has = |m: Mend| plan.contains(&m);
-    let (cur, topo, normals) = (parent.mesh, parent.topo, parent.normals);
+    let i = &parent.input;
+    let (cur, topo, normals, options) = (i.mesh, i.topo, i.normals, &i.options.mend);
     let mut report = MendReport::default();
     if has(Mend::Untangle) && !checked.flipped.is_empty() {
         let corners: Vec<u32> = checked

@@ -6,12 +6,14 @@ use crate::child_check::check_children;
 use crate::geometry::{face_normals_raw, unit_or_zero};
 use crate::primitives;
 use crate::refine::dual_quad;
+use crate::topology::Topology;
 
 /// A parent level with everything the stage reads.
 struct Level {
     mesh: PolyMesh,
     topo: Topology,
     normals: Vec<DVec3>,
+    options: crate::rules::RoundingOptions,
 }
 
 impl Level {
@@ -25,15 +27,21 @@ impl Level {
             mesh,
             topo,
             normals,
+            options: crate::rules::RoundingOptions::default(),
         }
     }
 
     fn parent<'a>(&'a self, capped: &'a [u32]) -> Parent<'a> {
         Parent {
-            mesh: &self.mesh,
-            topo: &self.topo,
-            normals: &self.normals,
-            vertex_neighbourhood: &[],
+            input: RuleInput {
+                mesh: &self.mesh,
+                topo: &self.topo,
+                normals: &self.normals,
+                cut_widths: &[],
+                face_params: &[],
+                vertex_neighbourhood: &[],
+                options: &self.options,
+            },
             capped_edges: capped,
         }
     }
@@ -77,7 +85,6 @@ impl Level {
         let report = after_split(
             plan,
             &self.parent(&[]),
-            &MendOptions::default(),
             prov,
             unfolded,
             child,
@@ -226,24 +233,13 @@ fn the_fold_guard_moves_folding_faces_into_the_blend() {
     let level = cube();
     let mut points = level.points(0.1);
     swap_at_vertex_0(&level, &mut points);
-    let options = crate::rules::RoundingOptions::default();
     let mut unguarded = points.clone();
     assert_eq!(
-        before_split(
-            &[Mend::Untangle],
-            &level.parent(&[]),
-            &options,
-            &mut unguarded
-        ),
+        before_split(&[Mend::Untangle], &level.parent(&[]), &mut unguarded),
         (Vec::new(), 0)
     );
     assert_eq!(unguarded, points);
-    let (moved, _) = before_split(
-        &[Mend::FoldGuard],
-        &level.parent(&[]),
-        &options,
-        &mut points,
-    );
+    let (moved, _) = before_split(&[Mend::FoldGuard], &level.parent(&[]), &mut points);
     let at_0: Vec<u32> = level
         .topo
         .corners_around(0)

@@ -25,15 +25,8 @@ pub enum Frame {
         e1: DVec3,
         e2: DVec3,
     },
-    /// `X = a + c₂ d + h (cos θ ex + sin θ ey)`, θ = θ₀ + c₁/R̄; (ex, ey, d) right-handed.
-    Axial {
-        a: DVec3,
-        d: DVec3,
-        ex: DVec3,
-        ey: DVec3,
-        rbar: f64,
-        theta0: f64,
-    },
+    /// `X = a + c₂ d + h (cos θ ex + sin θ ey)`, θ = θ₀ + c₁/R̄.
+    Axial(Axial),
     /// `X = o + c₁e₁ + c₂e₂ + h n`, n = e₁ × e₂.
     Height { o: DVec3, e1: DVec3, e2: DVec3 },
 }
@@ -50,21 +43,49 @@ pub fn plane_axes(n: DVec3) -> (DVec3, DVec3) {
     (e1, n.cross(e1))
 }
 
+/// The axial chart of a fusion quad: `X = a + c₂ d + h (cos θ ex + sin θ ey)`, θ = θ₀ + c₁/R̄;
+/// (ex, ey, d) right-handed, d along the axis from one centre to the other.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Axial {
+    pub a: DVec3,
+    pub d: DVec3,
+    pub ex: DVec3,
+    pub ey: DVec3,
+    /// The mean radius that turns polar angle into chart length.
+    pub rbar: f64,
+    /// The polar angle at c₁ = 0.
+    pub theta0: f64,
+}
+
+impl Axial {
+    /// The unit direction from the axis at chart abscissa c₁.
+    fn around(&self, c1: f64) -> DVec3 {
+        let th = self.theta0 + c1 / self.rbar;
+        th.cos() * self.ex + th.sin() * self.ey
+    }
+
+    /// The chart point and radius of x (`None` on the axis).
+    fn chart(&self, x: DVec3) -> Option<(DVec2, f64)> {
+        let v = x - self.a;
+        let z = v.dot(self.d);
+        let r = v - z * self.d;
+        let len = r.length();
+        if len <= 0.0 {
+            return None;
+        }
+        let th = r.dot(self.ey).atan2(r.dot(self.ex));
+        let rel = (th - self.theta0 + std::f64::consts::PI).rem_euclid(std::f64::consts::TAU)
+            - std::f64::consts::PI;
+        Some((DVec2::new(self.rbar * rel, z), len))
+    }
+}
+
 impl Frame {
     /// The direction N along which h moves the point, at chart point c.
     pub fn direction(&self, c: DVec2) -> DVec3 {
         match *self {
             Frame::Radial { g, o, e1, e2 } => o + c.x * e1 + c.y * e2 - g,
-            Frame::Axial {
-                ex,
-                ey,
-                rbar,
-                theta0,
-                ..
-            } => {
-                let th = theta0 + c.x / rbar;
-                th.cos() * ex + th.sin() * ey
-            }
+            Frame::Axial(ax) => ax.around(c.x),
             Frame::Height { e1, e2, .. } => e1.cross(e2),
         }
     }
@@ -73,7 +94,7 @@ impl Frame {
     pub fn point(&self, c: DVec2, h: f64) -> DVec3 {
         match *self {
             Frame::Radial { g, .. } => g + h * self.direction(c),
-            Frame::Axial { a, d, .. } => a + c.y * d + h * self.direction(c),
+            Frame::Axial(ax) => ax.a + c.y * ax.d + h * self.direction(c),
             Frame::Height { o, e1, e2 } => o + c.x * e1 + c.y * e2 + h * e1.cross(e2),
         }
     }
@@ -93,26 +114,7 @@ impl Frame {
                 let p = g + (x - g) / s;
                 Some((DVec2::new((p - o).dot(e1), (p - o).dot(e2)), s))
             }
-            Frame::Axial {
-                a,
-                d,
-                ex,
-                ey,
-                rbar,
-                theta0,
-            } => {
-                let v = x - a;
-                let z = v.dot(d);
-                let r = v - z * d;
-                let len = r.length();
-                if len <= 0.0 {
-                    return None;
-                }
-                let th = r.dot(ey).atan2(r.dot(ex));
-                let rel = (th - theta0 + std::f64::consts::PI).rem_euclid(std::f64::consts::TAU)
-                    - std::f64::consts::PI;
-                Some((DVec2::new(rbar * rel, z), len))
-            }
+            Frame::Axial(ax) => ax.chart(x),
             Frame::Height { o, e1, e2 } => {
                 let v = x - o;
                 Some((DVec2::new(v.dot(e1), v.dot(e2)), v.dot(e1.cross(e2))))
@@ -132,7 +134,7 @@ impl Frame {
             // ∂ₐO = 0, ∂ₐN = eₐ.
             Frame::Radial { e1, e2, .. } => -h * DVec2::new(n.dot(e1), n.dot(e2)) / nn,
             // ∂₁O = 0, ∂₁N = e′(θ)/R̄; ∂₂O = d, ∂₂N = 0.
-            Frame::Axial { d, rbar, .. } => {
+            Frame::Axial(Axial { d, rbar, .. }) => {
                 let e_prime = d.cross(dir);
                 DVec2::new(-h * n.dot(e_prime) / (rbar * nn), -n.dot(d) / nn)
             }
@@ -146,7 +148,9 @@ impl Frame {
         let n = self.direction(c);
         match *self {
             Frame::Radial { e1, e2, .. } => (grad.x * n + h * e1, grad.y * n + h * e2),
-            Frame::Axial { d, rbar, .. } => (grad.x * n + h * d.cross(n) / rbar, grad.y * n + d),
+            Frame::Axial(Axial { d, rbar, .. }) => {
+                (grad.x * n + h * d.cross(n) / rbar, grad.y * n + d)
+            }
             Frame::Height { e1, e2, .. } => (e1 + grad.x * n, e2 + grad.y * n),
         }
     }
@@ -156,7 +160,7 @@ impl Frame {
     pub fn scale(&self, h: f64) -> f64 {
         match *self {
             Frame::Radial { .. } => h,
-            Frame::Axial { rbar, .. } => (h / rbar).max(1e-3),
+            Frame::Axial(ax) => (h / ax.rbar).max(1e-3),
             Frame::Height { .. } => 1.0,
         }
     }
@@ -176,14 +180,14 @@ mod tests {
                 e1,
                 e2,
             },
-            Frame::Axial {
+            Frame::Axial(Axial {
                 a: DVec3::new(1.0, 0.0, 2.0),
                 d: ex.cross(ey),
                 ex,
                 ey,
                 rbar: 1.3,
                 theta0: 0.4,
-            },
+            }),
             Frame::Height {
                 o: DVec3::new(-1.0, 0.5, 0.0),
                 e1,

@@ -25,7 +25,7 @@
 //! at a lid (three or more primitives), w_v shrinks so that the term vanishes before that
 //! fusion edge: the lid's border is untouched.
 
-use super::{Chart, Frame};
+use super::{Axial, Chart, Frame};
 use crate::freeform::envelope::network::{CurveKind, Network, RegionKind};
 use crate::freeform::envelope::primitive::Primitive;
 use glam::{DVec2, DVec3};
@@ -206,7 +206,7 @@ fn lifts(
                     RegionKind::Fusion { from: f, to: t } if (f, t) == (from, to))
             })
             .collect();
-        let Some(Frame::Axial { a, d, ex, ey, .. }) = quads.first().map(|c| c.frame) else {
+        let Some(Frame::Axial(Axial { a, d, ex, ey, .. })) = quads.first().map(|c| c.frame) else {
             continue;
         };
         let length = (prims[to].centre - a).dot(d);

@@ -41,7 +41,7 @@ pub mod quality;
 pub mod side;
 mod strip;
 
-pub use frame::Frame;
+pub use frame::{Axial, Frame};
 use side::{ChartSide, Normals, Piece, Ribbons};
 use strip::Corner;
 
@@ -226,14 +226,14 @@ fn frame_of(
             if rbar.is_nan() || rbar <= 0.0 || mid.length() <= 1e-12 {
                 return Err(chart_error(r, "it surrounds the axis of its centres"));
             }
-            Frame::Axial {
+            Frame::Axial(Axial {
                 a,
                 d,
                 ex,
                 ey,
                 rbar,
                 theta0: mid.dot(ey).atan2(mid.dot(ex)),
-            }
+            })
         }
         RegionKind::Lid { facet } => {
             let l = lids

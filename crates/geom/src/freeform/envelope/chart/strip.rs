@@ -145,7 +145,7 @@ impl Chart {
 
     /// Whether the chart is a fusion quad's rectangle: four sides along +x, +z, −x, −z.
     pub(super) fn is_rectangle(&self) -> bool {
-        let Frame::Axial { .. } = self.frame else {
+        let Frame::Axial(_) = self.frame else {
             return false;
         };
         let dirs = [

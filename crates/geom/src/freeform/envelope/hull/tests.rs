@@ -17,13 +17,14 @@ fn collinear_centres_keep_the_ends() {
 fn coplanar_centres_give_a_polygon_and_two_lids() {
     // A square with a centre in the middle and one on a side.
     let c = [
-        v(0., 0., 0.),
-        v(3., 0., 0.),
-        v(3., 3., 0.),
-        v(0., 3., 0.),
-        v(1.5, 1.5, 0.),
-        v(1.5, 0., 0.),
-    ];
+        [0., 0.],
+        [3., 0.],
+        [3., 3.],
+        [0., 3.],
+        [1.5, 1.5],
+        [1.5, 0.],
+    ]
+    .map(|[x, y]| v(x, y, 0.));
     let l = layout(&c, 1e-9);
     assert_eq!(l.kept, vec![0, 1, 2, 3]);
     assert_eq!(l.removed, vec![4, 5]);
@@ -38,12 +39,13 @@ fn coplanar_centres_give_a_polygon_and_two_lids() {
 
 #[test]
 fn a_tetrahedron_of_centres_with_one_inside() {
+    // The corners of a right tetrahedron, and a point inside it.
     let c = [
-        v(0., 0., 0.),
-        v(4., 0., 0.),
-        v(0., 4., 0.),
-        v(0., 0., 4.),
-        v(0.8, 0.8, 0.8),
+        DVec3::ZERO,
+        4.0 * DVec3::X,
+        4.0 * DVec3::Y,
+        4.0 * DVec3::Z,
+        DVec3::splat(0.8),
     ];
     let l = layout(&c, 1e-9);
     assert_eq!(l.kept, vec![0, 1, 2, 3]);
