@@ -1,14 +1,7 @@
 // Polygon edges and cages as lines, pulled slightly towards the eye so that they win the
 // depth test against the faces they lie on.
 
-struct Globals {
-    view_proj: mat4x4<f32>,
-    eye_dir: vec4<f32>,
-    // x: depth pull towards the eye (clip units); yzw: key light (unused here).
-    params: vec4<f32>,
-};
-
-@group(0) @binding(0) var<uniform> globals: Globals;
+// `Globals` and `globals`: globals.wgsl.
 
 struct VsIn {
     @location(0) position: vec3<f32>,

@@ -1,15 +1,7 @@
 // Faces of a polygon mesh: per-corner normal and colour, a key light above-left of the eye
 // plus a headlight, lit from both sides (a face seen from behind is darker).
 
-struct Globals {
-    view_proj: mat4x4<f32>,
-    // xyz: direction from the model towards the eye; w unused.
-    eye_dir: vec4<f32>,
-    // x: depth pull of lines towards the eye (clip units); yzw: key light direction.
-    params: vec4<f32>,
-};
-
-@group(0) @binding(0) var<uniform> globals: Globals;
+// `Globals` and `globals`: globals.wgsl.
 
 struct VsIn {
     @location(0) position: vec3<f32>,

@@ -6,9 +6,16 @@ use crate::camera::Camera;
 use crate::scene::{LineVertex, Scene, Vertex};
 use wgpu::util::DeviceExt;
 
-/// The WGSL sources, validated by naga in a test.
-pub const MESH_WGSL: &str = include_str!("../../../shaders/mesh.wgsl");
-pub const LINES_WGSL: &str = include_str!("../../../shaders/lines.wgsl");
+/// The WGSL sources, each with the uniforms of `globals.wgsl` before it; validated by naga in
+/// a test.
+pub const MESH_WGSL: &str = concat!(
+    include_str!("../../../shaders/globals.wgsl"),
+    include_str!("../../../shaders/mesh.wgsl")
+);
+pub const LINES_WGSL: &str = concat!(
+    include_str!("../../../shaders/globals.wgsl"),
+    include_str!("../../../shaders/lines.wgsl")
+);
 
 pub const DEPTH_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Depth32Float;
 /// Multisampling for pictures (`prism render`, golden images).

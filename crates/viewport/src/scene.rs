@@ -149,6 +149,20 @@ impl Scene {
         )
     }
 
+    /// The scene of a pipeline level: its faces, holes left out, with their kinds when a
+    /// biquadratic step made it (for [`ColorBy::Kind`]).
+    pub fn of_level(lv: &prism_geom::Level, opts: &SceneOptions) -> Scene {
+        let kinds: Option<&[FaceKind]> = lv.provenance.as_ref().and_then(|p| p.face_kinds());
+        let holes = &lv.tags.holes;
+        Scene::build(
+            &lv.mesh,
+            &lv.edge_attrs,
+            kinds,
+            &|f| holes.contains(&(f as u32)),
+            opts,
+        )
+    }
+
     pub fn build(
         mesh: &PolyMesh,
         attrs: &EdgeAttrs,
