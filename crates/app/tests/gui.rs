@@ -152,21 +152,42 @@ fn document_by(command: &str, input: &str, name: &str) -> std::path::PathBuf {
     doc
 }
 
+/// The window opened on the document `prism COMMAND INPUT` writes, on `tab`: its picture,
+/// checked to show a shaded surface (more than 20 shades) in the view's middle `(x, y)`.
+fn tab_picture(
+    (command, input, name): (&str, &str, &str),
+    tab: &str,
+    (x, y): (std::ops::Range<u32>, std::ops::Range<u32>),
+) -> image::RgbaImage {
+    let doc = document_by(command, input, name);
+    let img = screenshot(command, &[doc.to_str().unwrap(), "--tab", tab]);
+    let n = shades(&img, x, y);
+    assert!(n > 20, "only {n} shades in the view");
+    img
+}
+
+/// The pixels of `img` in `x` × `y` whose colour `is`.
+fn count(
+    img: &image::RgbaImage,
+    (x, y): (std::ops::Range<u32>, std::ops::Range<u32>),
+    is: impl Fn([u8; 4]) -> bool,
+) -> usize {
+    x.flat_map(|x| y.clone().map(move |y| (x, y)))
+        .filter(|&(x, y)| is(img.get_pixel(x, y).0))
+        .count()
+}
+
+fn yellow(p: [u8; 4]) -> bool {
+    p[0] > 200 && p[1] > 170 && p[2] < 100
+}
+
 /// The Skin tab on a document with a skin block (the spout, written by `prism skin`): the
 /// shaded skin fills the view and the yellow section curves are drawn over it.
 #[test]
 fn the_skin_tab_draws_the_skin_and_its_sections() {
-    let doc = document_by("skin", "assets/spout.skin.json", "spout");
-    let img = screenshot("skin", &[doc.to_str().unwrap(), "--tab", "skin"]);
-    let n = shades(&img, 450..1200, 150..700);
-    assert!(n > 20, "only {n} shades in the view");
-    let yellow = (450..1200)
-        .flat_map(|x| (100..750).map(move |y| (x, y)))
-        .filter(|&(x, y)| {
-            let p = img.get_pixel(x, y).0;
-            p[0] > 200 && p[1] > 170 && p[2] < 100
-        })
-        .count();
+    let input = ("skin", "assets/spout.skin.json", "spout");
+    let img = tab_picture(input, "skin", (450..1200, 150..700));
+    let yellow = count(&img, (450..1200, 100..750), yellow);
     assert!(
         yellow > 300,
         "only {yellow} yellow pixels: no section curves"
@@ -178,18 +199,11 @@ fn the_skin_tab_draws_the_skin_and_its_sections() {
 /// over it, and no blue insertion curve (the charts split no region).
 #[test]
 fn the_envelope_tab_draws_the_envelope_and_its_curves() {
-    let doc = document_by("envelope", "assets/hexagonal-prism.envelope.json", "hex");
-    let img = screenshot("envelope", &[doc.to_str().unwrap(), "--tab", "envelope"]);
-    let n = shades(&img, 500..1100, 250..600);
-    assert!(n > 20, "only {n} shades in the view");
-    let count = |f: &dyn Fn([u8; 4]) -> bool| {
-        (310..1270)
-            .flat_map(|x| (40..780).map(move |y| (x, y)))
-            .filter(|&(x, y)| f(img.get_pixel(x, y).0))
-            .count()
-    };
-    let yellow = count(&|p| p[0] > 200 && p[1] > 170 && p[2] < 100);
-    let blue = count(&|p| p[0] < 120 && p[1] > 150 && p[2] > 200);
+    let input = ("envelope", "assets/hexagonal-prism.envelope.json", "hex");
+    let img = tab_picture(input, "envelope", (500..1100, 250..600));
+    let view = (310..1270, 40..780);
+    let yellow = count(&img, view.clone(), yellow);
+    let blue = count(&img, view, |p| p[0] < 120 && p[1] > 150 && p[2] > 200);
     assert!(yellow > 300, "only {yellow} yellow pixels: no curved edges");
     assert!(blue < 20, "{blue} blue pixels: insertion curves drawn");
 }

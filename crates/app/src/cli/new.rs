@@ -9,7 +9,7 @@ use super::CliError;
 use clap::{Args, ValueEnum};
 use glam::DVec3;
 use prism_geom::io::{self, Document};
-use prism_geom::solid::Solid;
+use prism_geom::solid::{SolidKind as Kind, SolidParams};
 use std::path::PathBuf;
 
 #[derive(Debug, Clone, Copy, ValueEnum)]
@@ -55,49 +55,39 @@ pub struct NewArgs {
 
 pub fn run(a: NewArgs) -> Result<(), CliError> {
     super::check_output(&a.output, None)?;
-    let solid = match a.kind {
-        SolidKind::Box => {
-            let v = super::comma_numbers("--size", &a.size, "W,D,H")?;
-            let [w, d, h] = v[..] else {
-                return Err(CliError::usage(format!("--size '{}' is not W,D,H", a.size)));
-            };
-            Solid::Box {
-                size: DVec3::new(w, d, h),
-            }
-        }
-        SolidKind::Prism => Solid::Prism {
-            sides: a.sides,
-            radius: a.radius,
-            height: a.height,
-        },
-        SolidKind::Pyramid => Solid::Pyramid {
-            sides: a.sides,
-            radius: a.radius,
-            height: a.height,
-        },
-        SolidKind::Tripod => Solid::Tripod {
-            arm: a.arm,
-            width: a.width,
-        },
-        SolidKind::Extrude => {
-            let path = a
-                .outline
-                .as_ref()
-                .ok_or_else(|| CliError::usage("extrude needs --outline FILE.json"))?;
-            let poly = super::curve::read_polyline(path)?;
-            if !poly.closed {
-                return Err(CliError::input(format!(
-                    "{}: the outline is open (\"closed\": false); a solid needs a closed one",
-                    path.display()
-                )));
-            }
-            Solid::Extrusion {
-                outline: poly.points,
-                height: a.height,
-                hole: a.hole,
-            }
-        }
+    let size = super::comma_numbers("--size", &a.size, "W,D,H")?;
+    let [w, d, h] = size[..] else {
+        return Err(CliError::usage(format!("--size '{}' is not W,D,H", a.size)));
     };
+    let params = SolidParams {
+        size: DVec3::new(w, d, h),
+        sides: a.sides,
+        radius: a.radius,
+        height: a.height,
+        arm: a.arm,
+        width: a.width,
+    };
+    let kind = match a.kind {
+        SolidKind::Box => Kind::Box,
+        SolidKind::Prism => Kind::Prism,
+        SolidKind::Pyramid => Kind::Pyramid,
+        SolidKind::Tripod => Kind::Tripod,
+        SolidKind::Extrude => Kind::Extrusion,
+    };
+    let solid = params.solid(kind, || {
+        let path = a
+            .outline
+            .as_ref()
+            .ok_or_else(|| CliError::usage("extrude needs --outline FILE.json"))?;
+        let poly = super::curve::read_polyline(path)?;
+        if !poly.closed {
+            return Err(CliError::input(format!(
+                "{}: the outline is open (\"closed\": false); a solid needs a closed one",
+                path.display()
+            )));
+        }
+        Ok((poly.points, a.hole))
+    })?;
     let mesh = solid.build().map_err(CliError::input)?;
     let doc = Document {
         mesh,

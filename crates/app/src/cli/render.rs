@@ -16,7 +16,6 @@ use crate::cli::subdivide::steps_from;
 use clap::{Args, ValueEnum};
 use glam::DVec3;
 use prism_geom::geometry::{face_normal_raw, unit_or_zero};
-use prism_geom::refine::FaceKind;
 use prism_geom::{Pipeline, PolyMesh, Topology};
 use prism_viewport::scene::FLIPPED_COLOR;
 use prism_viewport::{Camera, ColorBy, Offscreen, Scene, SceneOptions, Shading, View};
@@ -274,18 +273,15 @@ pub fn run(a: RenderArgs) -> Result<(), CliError> {
         wireframe: a.wireframe,
         ..SceneOptions::default()
     };
-    let kinds: Option<&[FaceKind]> = last.provenance.as_ref().and_then(|p| p.face_kinds());
-    if matches!(a.color_by, ColorArg::Kind) && kinds.is_none() {
+    let has_kinds = last
+        .provenance
+        .as_ref()
+        .and_then(|p| p.face_kinds())
+        .is_some();
+    if matches!(a.color_by, ColorArg::Kind) && !has_kinds {
         eprintln!("note: --color-by kind needs a biquadratic last step; drawing one colour");
     }
-    let holes = &last.tags.holes;
-    let mut scene = Scene::build(
-        &last.mesh,
-        &last.edge_attrs,
-        kinds,
-        &|f| holes.contains(&(f as u32)),
-        &opts,
-    );
+    let mut scene = Scene::of_level(&last, &opts);
     if matches!(a.color_by, ColorArg::Flipped) {
         let flipped = last.report.as_ref().map_or(&[][..], |r| &r.flipped[..]);
         scene.paint_faces(&last.mesh, flipped, FLIPPED_COLOR);

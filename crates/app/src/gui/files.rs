@@ -3,6 +3,7 @@
 //! levels are computed).
 
 use super::document::{DocState, Origin};
+use super::gestures::Tab3d;
 use super::{PrismApp, SAMPLES_FILES};
 use prism_geom::io;
 use std::path::Path;
@@ -68,29 +69,12 @@ impl PrismApp {
         };
         let vn = obj_normals.then_some(shading);
         if matches!(self.tab, super::Tab::Skin | super::Tab::Envelope) {
-            let (what, mesh) = if self.tab == super::Tab::Skin {
-                (
-                    "skin",
-                    self.skin
-                        .built()
-                        .and_then(|b| b.result.as_ref().ok())
-                        .map(|r| &r.1),
-                )
+            let (what, surface) = if self.tab == super::Tab::Skin {
+                ("skin", self.skin.surface())
             } else {
-                (
-                    "envelope",
-                    self.envelope
-                        .built()
-                        .and_then(|b| b.result.as_ref().ok())
-                        .map(|r| &r.1),
-                )
+                ("envelope", self.envelope.surface())
             };
-            let Some(mesh) = mesh else {
-                return Err(format!(
-                    "there is no {what} to export (see the {} tab's message)",
-                    if what == "skin" { "Skin" } else { "Envelope" }
-                ));
-            };
+            let mesh = surface.map_err(|why| format!("there is no {what} to export: {why}"))?;
             if io::ExportFormat::of(path).is_some() {
                 io::export(path, mesh, &|_| false, shading).map_err(|e| e.to_string())?;
             } else {

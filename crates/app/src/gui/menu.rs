@@ -89,21 +89,28 @@ impl PrismApp {
                 });
             });
             ui.menu_button("Edit", |ui| {
-                let undo = egui::Button::new("Undo (Ctrl+Z)");
-                if ui
-                    .add_enabled(self.doc.can_undo(), undo)
-                    .on_disabled_hover_text("Nothing to undo")
-                    .clicked()
-                {
-                    out.push(Command::Undo);
-                }
-                let redo = egui::Button::new("Redo (Ctrl+Shift+Z)");
-                if ui
-                    .add_enabled(self.doc.can_redo(), redo)
-                    .on_disabled_hover_text("Nothing to redo")
-                    .clicked()
-                {
-                    out.push(Command::Redo);
+                let entries = [
+                    (
+                        "Undo (Ctrl+Z)",
+                        self.doc.can_undo(),
+                        Command::Undo,
+                        "Nothing to undo",
+                    ),
+                    (
+                        "Redo (Ctrl+Shift+Z)",
+                        self.doc.can_redo(),
+                        Command::Redo,
+                        "Nothing to redo",
+                    ),
+                ];
+                for (label, can, command, why_not) in entries {
+                    if ui
+                        .add_enabled(can, egui::Button::new(label))
+                        .on_disabled_hover_text(why_not)
+                        .clicked()
+                    {
+                        out.push(command);
+                    }
                 }
             });
             ui.separator();

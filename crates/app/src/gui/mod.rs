@@ -33,6 +33,28 @@ mod view3d;
 mod viewport;
 pub mod waker;
 
+impl PrismApp {
+    /// Opens bundled sample `k` of a 3D tab and shows that tab (named `what` in the status).
+    fn open_tab_sample<T: Tab3d>(
+        &mut self,
+        (tab, what): (Tab, &str),
+        k: usize,
+        of: impl Fn(&mut Self) -> &mut T,
+    ) {
+        let t = of(self);
+        let opened = t.open_sample(k);
+        let commands = std::mem::take(t.out());
+        self.tab = tab;
+        for c in commands {
+            self.run(c);
+        }
+        match opened {
+            Ok(name) => self.say(format!("{what} sample: {name}")),
+            Err(e) => self.say(e),
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests;
 #[cfg(test)]
@@ -50,6 +72,7 @@ mod tests_skin;
 
 use command::Command;
 use document::{DocState, Document, Origin};
+use gestures::Tab3d;
 use launch::SETTINGS_KEY;
 pub use launch::{Launch, SAMPLES_FILES, Settings, Show, Tab};
 use model::ModelTab;
@@ -193,8 +216,8 @@ impl PrismApp {
         };
         let mut app = PrismApp::headless(launch, settings)?;
         app.model.has_gpu = true;
-        app.skin.view.has_gpu = true;
-        app.envelope.view.has_gpu = true;
+        app.skin.base.view.has_gpu = true;
+        app.envelope.base.view.has_gpu = true;
         let ctx = cc.egui_ctx.clone();
         app.model.waker = Arc::new(move || ctx.request_repaint());
         Ok(app)
@@ -254,33 +277,12 @@ impl PrismApp {
                 Ok((state, origin)) => self.replace_document(state, origin),
                 Err(e) => self.say(e),
             },
-            Command::OpenSkinSample(k) => match skin::sample(k) {
-                Ok(spec) => {
-                    self.tab = Tab::Skin;
-                    self.skin.reframe();
-                    self.run(Command::Edit(command::Edit::SetSkin {
-                        spec: Some(spec),
-                        gesture: None,
-                    }));
-                    self.say(format!("skin sample: {}", skin::SKIN_SAMPLES[k].0));
-                }
-                Err(e) => self.say(e),
-            },
-            Command::OpenEnvelopeSample(k) => match envelope::sample(k) {
-                Ok(spec) => {
-                    self.tab = Tab::Envelope;
-                    self.envelope.reframe();
-                    self.run(Command::Edit(command::Edit::SetEnvelope {
-                        spec: Some(spec),
-                        gesture: None,
-                    }));
-                    self.say(format!(
-                        "envelope sample: {}",
-                        envelope::ENVELOPE_SAMPLES[k].0
-                    ));
-                }
-                Err(e) => self.say(e),
-            },
+            Command::OpenSkinSample(k) => {
+                self.open_tab_sample((Tab::Skin, "skin"), k, |a| &mut a.skin)
+            }
+            Command::OpenEnvelopeSample(k) => {
+                self.open_tab_sample((Tab::Envelope, "envelope"), k, |a| &mut a.envelope)
+            }
             Command::RestoreAutosave => self.restore_autosave(),
             Command::DiscardAutosave => {
                 self.autosave.discard();
@@ -326,14 +328,18 @@ impl PrismApp {
         }
     }
 
-    /// Blocks until every view's levels are computed.
+    /// Blocks until every view's levels and the 3D tabs' surfaces are computed.
     #[cfg(test)]
     pub fn wait_idle(&mut self) {
         self.flush();
         self.model.wait_idle();
-        let spec = self.doc.state().envelope.clone();
+        // The 3D tabs brought up to the document, the envelope's build (off this thread)
+        // waited for.
+        let state = self.doc.state().clone();
+        self.skin.sync(state.skin.as_ref());
+        self.envelope.sync(state.envelope.as_ref());
         while self.envelope.building() {
-            self.envelope.sync(spec.as_ref());
+            self.envelope.sync(state.envelope.as_ref());
         }
     }
 
@@ -398,14 +404,8 @@ impl PrismApp {
                 let note = self.note.clone();
                 commands.extend(self.model.ui(ui, &self.doc, note.as_deref()));
             }
-            Tab::Skin => {
-                let spec = self.doc.state().skin.as_ref();
-                commands.extend(self.skin.ui(ui, spec));
-            }
-            Tab::Envelope => {
-                let spec = self.doc.state().envelope.as_ref();
-                commands.extend(self.envelope.ui(ui, spec));
-            }
+            Tab::Skin => commands.extend(self.skin.ui(ui, self.doc.state())),
+            Tab::Envelope => commands.extend(self.envelope.ui(ui, self.doc.state())),
             Tab::Curves => {
                 let sketch = &self.doc.state().curve;
                 let out = egui::CentralPanel::default()

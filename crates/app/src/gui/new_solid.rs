@@ -4,30 +4,18 @@
 //! the parameters; [`prism_geom::solid::Solid::build`] checks them and names what is wrong.
 
 use super::command::Command;
-use glam::{DVec2, DVec3};
+use glam::DVec2;
 use prism_geom::curve::CurveSketch;
-use prism_geom::solid::{MAX_SIDES, Solid};
+use prism_geom::solid::{MAX_SIDES, Solid, SolidParams};
 
 /// Which solid the window makes.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Kind {
-    Box,
-    Prism,
-    Pyramid,
-    Tripod,
-    Extrusion,
-}
+pub use prism_geom::solid::SolidKind as Kind;
 
 /// The window's state: open or not, and the parameters of every kind (kept between uses).
 pub struct NewSolid {
     pub open: bool,
     pub kind: Kind,
-    pub size: [f64; 3],
-    pub sides: u32,
-    pub radius: f64,
-    pub height: f64,
-    pub arm: f64,
-    pub width: f64,
+    pub params: SolidParams,
     /// Extrude the refined curve (else the control polygon).
     pub refined: bool,
     pub hole: bool,
@@ -41,12 +29,7 @@ impl Default for NewSolid {
         NewSolid {
             open: false,
             kind: Kind::Box,
-            size: [3.0, 2.0, 1.0],
-            sides: 6,
-            radius: 1.5,
-            height: 2.0,
-            arm: 3.0,
-            width: 1.0,
+            params: SolidParams::default(),
             refined: false,
             hole: false,
             hole_scale: 0.5,
@@ -58,46 +41,23 @@ impl Default for NewSolid {
 impl NewSolid {
     /// The solid the parameters describe (the sketch gives the extrusion's outline).
     pub fn solid(&self, sketch: &CurveSketch) -> Result<Solid, String> {
-        Ok(match self.kind {
-            Kind::Box => Solid::Box {
-                size: DVec3::from_array(self.size),
-            },
-            Kind::Prism => Solid::Prism {
-                sides: self.sides,
-                radius: self.radius,
-                height: self.height,
-            },
-            Kind::Pyramid => Solid::Pyramid {
-                sides: self.sides,
-                radius: self.radius,
-                height: self.height,
-            },
-            Kind::Tripod => Solid::Tripod {
-                arm: self.arm,
-                width: self.width,
-            },
-            Kind::Extrusion => {
-                if !sketch.control.closed {
-                    return Err(
-                        "the sketch is open: close it on the Curves tab (\"closed\") to extrude it"
-                            .into(),
-                    );
-                }
-                let outline: Vec<DVec2> = if self.refined {
-                    sketch
-                        .control
-                        .refine_levels(sketch.scheme, sketch.levels)
-                        .map_err(|e| e.to_string())?
-                        .points
-                } else {
-                    sketch.control.points.clone()
-                };
-                Solid::Extrusion {
-                    outline,
-                    height: self.height,
-                    hole: self.hole.then_some(self.hole_scale),
-                }
+        self.params.solid(self.kind, || {
+            if !sketch.control.closed {
+                return Err(
+                    "the sketch is open: close it on the Curves tab (\"closed\") to extrude it"
+                        .to_string(),
+                );
             }
+            let outline: Vec<DVec2> = if self.refined {
+                sketch
+                    .control
+                    .refine_levels(sketch.scheme, sketch.levels)
+                    .map_err(|e| e.to_string())?
+                    .points
+            } else {
+                sketch.control.points.clone()
+            };
+            Ok((outline, self.hole.then_some(self.hole_scale)))
         })
     }
 
@@ -130,21 +90,23 @@ impl NewSolid {
                 };
                 match self.kind {
                     Kind::Box => {
-                        for (x, name) in self.size.iter_mut().zip(["width", "depth", "height"]) {
-                            len(ui, x, name);
+                        for (i, name) in ["width", "depth", "height"].into_iter().enumerate() {
+                            len(ui, &mut self.params.size[i], name);
                         }
                     }
                     Kind::Prism | Kind::Pyramid => {
                         ui.horizontal(|ui| {
                             ui.label("sides");
-                            ui.add(egui::DragValue::new(&mut self.sides).range(3..=MAX_SIDES));
+                            ui.add(
+                                egui::DragValue::new(&mut self.params.sides).range(3..=MAX_SIDES),
+                            );
                         });
-                        len(ui, &mut self.radius, "circumradius");
-                        len(ui, &mut self.height, "height");
+                        len(ui, &mut self.params.radius, "circumradius");
+                        len(ui, &mut self.params.height, "height");
                     }
                     Kind::Tripod => {
-                        len(ui, &mut self.arm, "arm length");
-                        len(ui, &mut self.width, "arm width");
+                        len(ui, &mut self.params.arm, "arm length");
+                        len(ui, &mut self.params.width, "arm width");
                     }
                     Kind::Extrusion => {
                         ui.label(format!(
@@ -160,7 +122,7 @@ impl NewSolid {
                             &mut self.refined,
                             "the refined curve (else the control polygon)",
                         );
-                        len(ui, &mut self.height, "height");
+                        len(ui, &mut self.params.height, "height");
                         ui.horizontal(|ui| {
                             ui.checkbox(&mut self.hole, "hole: the outline scaled by");
                             ui.add_enabled(

@@ -225,9 +225,7 @@ fn idle_frames_rebuild_neither_scene_nor_overlay() {
 #[test]
 fn moving_a_control_vertex_recomputes_every_level_and_undoes_in_one_step() {
     let mut a = app();
-    let steps = parse_pipeline("combination:r=0.2,doo-sabin").unwrap();
-    a.run(Edit::SetPipeline { view: 0, steps });
-    a.wait_idle();
+    run_pipeline(&mut a, "combination:r=0.2,doo-sabin");
     let old = a.model.views[0].pipeline.levels()[2].mesh.clone();
     let p0 = a.doc.state().mesh.positions[0];
     a.model.sel_verts.insert(0);
@@ -321,15 +319,20 @@ fn sharper_than_selects_the_tripods_feature_edges() {
     assert!(a.note.as_ref().unwrap().contains("positive"));
 }
 
+/// The app after nine Doo–Sabin steps on view 0 that go over a budget of `mib`: it stops and
+/// asks.
+fn over_budget(mib: u64) -> PrismApp {
+    let mut a = app();
+    a.model.budget_mib = mib;
+    run_pipeline(&mut a, &["doo-sabin"; 9].join(","));
+    assert_eq!(a.model.question.as_ref().map(|q| q.0), Some(0), "asked");
+    a
+}
+
 #[test]
 fn a_step_over_the_memory_budget_asks_first() {
-    let mut a = app();
-    a.model.budget_mib = 64;
-    let steps = parse_pipeline(&["doo-sabin"; 9].join(",")).unwrap();
-    a.run(Edit::SetPipeline { view: 0, steps });
-    a.wait_idle();
-    let (view, o) = a.model.question.clone().expect("the budget question");
-    assert_eq!(view, 0);
+    let mut a = over_budget(64);
+    let (_, o) = a.model.question.clone().unwrap();
     assert!(o.needed_mib > 64);
     let computed = a.model.views[0].pipeline.levels().len();
     assert!(computed < 10);
@@ -346,12 +349,8 @@ fn a_step_over_the_memory_budget_asks_first() {
 /// on within the budget; a freed level is never shown (the last is).
 #[test]
 fn a_step_over_the_budget_can_drop_the_kept_levels() {
-    let mut a = app();
-    a.model.budget_mib = 80;
-    let steps = parse_pipeline(&["doo-sabin"; 9].join(",")).unwrap();
-    a.run(Edit::SetPipeline { view: 0, steps });
-    a.wait_idle();
-    let (_, asked) = a.model.question.clone().expect("the budget question");
+    let mut a = over_budget(80);
+    let (_, asked) = a.model.question.clone().unwrap();
     let before = a.model.views[0].pipeline.levels().len();
     a.run(Command::DropKeptLevels);
     a.wait_idle();
@@ -636,6 +635,76 @@ pub(super) fn harness(a: PrismApp) -> Harness<'static, PrismApp> {
         .build_ui_state(|ui, app: &mut PrismApp| app.frame_ui(ui), a)
 }
 
+/// `pipeline` (as `--pipeline` reads it) set on view 0 of `a`, and computed.
+pub(super) fn run_pipeline(a: &mut PrismApp, pipeline: &str) {
+    let steps = parse_pipeline(pipeline).unwrap();
+    a.run(Edit::SetPipeline { view: 0, steps });
+    a.wait_idle();
+}
+
+/// A fresh app in its window with the tab `label` clicked.
+pub(super) fn in_tab(label: &str) -> Harness<'static, PrismApp> {
+    use egui_kittest::kittest::Queryable;
+    let mut h = harness(app());
+    settle(&mut h);
+    h.get_by_label(label).click();
+    settle(&mut h);
+    h
+}
+
+/// `bad`, set in the document, is refused by the build of its tab (`tab`), which names
+/// `says`, and the document keeps it; with `zero_resolution` applied, the edit itself is
+/// refused and named in the status bar.
+pub(super) fn refused_and_kept<T: gestures::Tab3d>(
+    tab: fn(&mut PrismApp) -> &mut T,
+    (mut bad, says): (T::Spec, &str),
+    zero_resolution: fn(&mut T::Spec),
+) where
+    T::Spec: PartialEq + std::fmt::Debug,
+{
+    let mut a = app();
+    a.run(Command::Edit(T::edit(Some(bad.clone()), None)));
+    assert_eq!(T::part(a.doc.state()), Some(&bad));
+    a.wait_idle();
+    let e = tab(&mut a).surface().expect_err("refused");
+    assert!(e.contains(says), "{e}");
+    zero_resolution(&mut bad);
+    a.run(Command::Edit(T::edit(Some(bad), None)));
+    assert!(
+        a.note.as_ref().unwrap().contains("resolution 0"),
+        "{:?}",
+        a.note
+    );
+}
+
+/// The document of the app in `h` saved as `NAME.prism.json` and opened again, and the size
+/// of the STL its tab exports as `NAME.stl`.
+pub(super) fn saved_and_exported(h: &mut Harness<'_, PrismApp>, name: &str) -> (DocState, u64) {
+    let scratch = tempfile::tempdir().unwrap();
+    let doc = scratch.path().join(format!("{name}.prism.json"));
+    h.state_mut().save_to(&doc).unwrap();
+    let stl = scratch.path().join(format!("{name}.stl"));
+    h.state_mut().export_to(&stl, false).unwrap();
+    let (state, _) = document::open(&doc).unwrap();
+    (state, std::fs::metadata(&stl).unwrap().len())
+}
+
+/// Bad input in the 3D tabs: a scene with a non-convex primitive and a section off its plane
+/// are refused by the build, named, and kept; a resolution outside 1..=256 is refused by the
+/// edit.
+#[test]
+fn bad_input_in_the_3d_tabs_shows_its_message_and_is_kept() {
+    use gestures::Tab3d;
+    let mut scene = envelope::EnvelopeTab::sample(0).unwrap();
+    scene.primitives[0].vertices[7][2] = 1.3;
+    let says = "primitive 0: vertex";
+    refused_and_kept(|a| &mut a.envelope, (scene, says), |s| s.resolution = 0);
+    let mut sections = skin::SkinTab::sample(1).unwrap();
+    sections.sections[2].points[3].z += 0.5;
+    let says = "section 2 is not planar";
+    refused_and_kept(|a| &mut a.skin, (sections, says), |s| s.resolution = 0);
+}
+
 pub(super) fn settle(h: &mut Harness<'_, PrismApp>) {
     for _ in 0..3 {
         h.step();
@@ -670,10 +739,7 @@ pub(super) fn drag_right(h: &mut Harness<'_, PrismApp>, at: egui::Pos2, steps: &
 #[test]
 fn the_curve_scheme_menu_uses_the_cli_names_and_keeps_its_place() {
     use egui_kittest::kittest::Queryable;
-    let mut h = harness(app());
-    settle(&mut h);
-    h.get_by_label("Curves").click();
-    settle(&mut h);
+    let mut h = in_tab("Curves");
     let mut places = Vec::new();
     for s in prism_geom::curve::CurveScheme::ALL {
         h.state_mut().run(CurveEdit::SetScheme(s));
@@ -694,31 +760,26 @@ fn the_curve_scheme_menu_uses_the_cli_names_and_keeps_its_place() {
 /// arrows' greyed-out buttons said nothing).
 #[test]
 fn every_disabled_control_says_why() {
-    let sources = [
-        ("mod.rs", include_str!("mod.rs")),
-        ("menu.rs", include_str!("menu.rs")),
-        ("new_document.rs", include_str!("new_document.rs")),
-        ("new_solid.rs", include_str!("new_solid.rs")),
-        ("model/panels.rs", include_str!("model/panels.rs")),
-        ("model/status.rs", include_str!("model/status.rs")),
-        ("model/mod.rs", include_str!("model/mod.rs")),
-        ("model/run_options.rs", include_str!("model/run_options.rs")),
-        ("model/views.rs", include_str!("model/views.rs")),
-        ("model/compare.rs", include_str!("model/compare.rs")),
-        (
-            "model/scheme_editor.rs",
-            include_str!("model/scheme_editor.rs"),
-        ),
-        ("curves/mod.rs", include_str!("curves/mod.rs")),
-        ("skin/mod.rs", include_str!("skin/mod.rs")),
-        ("skin/section.rs", include_str!("skin/section.rs")),
-        ("envelope/mod.rs", include_str!("envelope/mod.rs")),
-        ("envelope/panel.rs", include_str!("envelope/panel.rs")),
-        ("envelope/sweep.rs", include_str!("envelope/sweep.rs")),
-        ("gestures.rs", include_str!("gestures.rs")),
-    ];
+    // Every source file of the window but its tests, read from the source tree.
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("src/gui");
+    let mut sources = Vec::new();
+    let mut dirs = vec![root.clone()];
+    while let Some(dir) = dirs.pop() {
+        for entry in std::fs::read_dir(&dir).unwrap() {
+            let path = entry.unwrap().path();
+            let name = path.strip_prefix(&root).unwrap().display().to_string();
+            if path.is_dir() {
+                dirs.push(path);
+            } else if name.ends_with(".rs") && !name.contains("tests") {
+                sources.push((name, std::fs::read_to_string(&path).unwrap()));
+            }
+        }
+    }
+    assert!(sources.len() > 20, "{} files", sources.len());
     let mut found = 0;
-    for (name, text) in sources {
+    for (name, text) in &sources {
+        // The text without its `#[cfg(test)]` part.
+        let text = text.split("#[cfg(test)]").next().unwrap();
         for (at, _) in text.match_indices("add_enabled") {
             found += 1;
             // The statement: up to the next `;` or `{` that opens the branch it guards, but

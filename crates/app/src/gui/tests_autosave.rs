@@ -21,6 +21,16 @@ fn scratch(name: &str) -> std::path::PathBuf {
     d
 }
 
+/// A fresh autosave folder named `name`, left by a run whose curve had `levels` levels and was
+/// copied when its window closed; the curve it left.
+fn left_behind(name: &str, levels: usize) -> (std::path::PathBuf, prism_geom::curve::CurveSketch) {
+    let dir = scratch(name);
+    let mut a = app_in(&dir);
+    a.run(CurveEdit::SetLevels(levels));
+    assert!(a.autosave.tick(&a.doc, true).unwrap());
+    (dir, a.doc.state().curve.clone())
+}
+
 #[test]
 fn unsaved_work_is_copied_and_restored_at_the_next_start() {
     let dir = scratch("restore");
@@ -60,11 +70,7 @@ fn unsaved_work_is_copied_and_restored_at_the_next_start() {
 
 #[test]
 fn a_discarded_copy_is_gone() {
-    let dir = scratch("discard");
-    let mut a = app_in(&dir);
-    a.run(CurveEdit::SetLevels(1));
-    assert!(a.autosave.tick(&a.doc, true).unwrap());
-    drop(a);
+    let (dir, _) = left_behind("discard", 1);
     let mut b = app_in(&dir);
     assert!(b.autosave.offer.is_some());
     b.run(Command::DiscardAutosave);
@@ -79,12 +85,7 @@ fn a_discarded_copy_is_gone() {
 #[test]
 fn the_offer_window_restores_on_click() {
     use egui_kittest::kittest::Queryable;
-    let dir = scratch("window");
-    let mut a = app_in(&dir);
-    a.run(CurveEdit::SetLevels(2));
-    a.autosave.tick(&a.doc, true).unwrap();
-    let work = a.doc.state().curve.clone();
-    drop(a);
+    let (dir, work) = left_behind("window", 2);
     let mut h = super::tests::harness(app_in(&dir));
     super::tests::settle(&mut h);
     h.get_by_label("Restore it").click();

@@ -4,7 +4,9 @@
 //! scene saved with the document and reopened, exported, and undone across tabs.
 
 use super::command::Edit;
-use super::tests::{app, drag_right, harness, settle};
+use super::envelope::EnvelopeTab;
+use super::gestures::Tab3d;
+use super::tests::{app, drag_right, in_tab, saved_and_exported, settle};
 use super::*;
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
@@ -15,10 +17,7 @@ fn scene(h: &Harness<'_, PrismApp>) -> Option<prism_geom::freeform::envelope::En
 
 #[test]
 fn the_envelope_tab_places_edits_undoes_saves_and_exports_an_envelope() {
-    let mut h = harness(app());
-    settle(&mut h);
-    h.get_by_label("Envelope").click();
-    settle(&mut h);
+    let mut h = in_tab("Envelope");
     assert_eq!(h.state().tab, Tab::Envelope);
     h.get_by_label("Tetrahedron").click();
     settle(&mut h);
@@ -111,12 +110,7 @@ fn the_envelope_tab_places_edits_undoes_saves_and_exports_an_envelope() {
     h.state_mut().envelope.mouse = envelope::Mouse::Orbit;
 
     // Saved with the document and reopened; exported as STL from the tab.
-    let scratch = tempfile::tempdir().unwrap();
-    let dir = scratch.path();
-    let doc = dir.join("tet.prism.json");
-    h.state_mut().save_to(&doc).unwrap();
-    let stl = dir.join("tet.stl");
-    h.state_mut().export_to(&stl, false).unwrap();
+    let (state, stl) = saved_and_exported(&mut h, "tet");
     let triangles = h
         .state()
         .envelope
@@ -127,8 +121,7 @@ fn the_envelope_tab_places_edits_undoes_saves_and_exports_an_envelope() {
         .unwrap()
         .1
         .num_faces() as u64;
-    assert_eq!(std::fs::metadata(&stl).unwrap().len(), 84 + 50 * triangles);
-    let (state, _) = document::open(&doc).unwrap();
+    assert_eq!(stl, 84 + 50 * triangles);
     assert_eq!(state.envelope.as_ref(), Some(&start));
 
     // Undo across tabs: back to no scene at all.
@@ -138,45 +131,19 @@ fn the_envelope_tab_places_edits_undoes_saves_and_exports_an_envelope() {
     assert!(h.state().envelope.built().is_none());
 }
 
-#[test]
-fn a_bad_scene_shows_its_message_and_keeps_the_scene() {
-    let mut a = app();
-    let mut spec = envelope::sample(0).unwrap();
-    spec.primitives[0].vertices[7][2] = 1.3;
-    a.run(Command::Edit(Edit::SetEnvelope {
-        spec: Some(spec.clone()),
-        gesture: None,
-    }));
-    a.envelope.sync(a.doc.state().envelope.as_ref());
-    let b = a.envelope.built().unwrap();
-    let e = b.result.as_ref().map(|_| ()).expect_err("refused");
-    assert!(e.contains("primitive 0: vertex"), "{e}");
-    assert_eq!(a.doc.state().envelope.as_ref(), Some(&spec));
-    spec.resolution = 0;
-    a.run(Command::Edit(Edit::SetEnvelope {
-        spec: Some(spec),
-        gesture: None,
-    }));
-    assert!(
-        a.note.as_ref().unwrap().contains("resolution 0"),
-        "{:?}",
-        a.note
-    );
-}
-
 /// The t sweep builds the scene at t = 1, 0.5, 0.1 with the own values of vertices dropped,
 /// and follows the scene when it changes.
 #[test]
 fn the_t_sweep_shows_the_three_t() {
     let mut a = app();
-    let mut spec = envelope::sample(2).unwrap();
+    let mut spec = EnvelopeTab::sample(2).unwrap();
     spec.primitives[0].vertex_t = Some(vec![0.3; 8]);
     a.run(Command::Edit(Edit::SetEnvelope {
         spec: Some(spec.clone()),
         gesture: None,
     }));
     a.envelope.sweep = true;
-    a.envelope.sync(a.doc.state().envelope.as_ref());
+    a.wait_idle();
     assert_eq!(
         a.envelope.sweep_summary(),
         vec![(1.0, Some(14)), (0.5, Some(14)), (0.1, Some(14))]
@@ -188,7 +155,7 @@ fn the_t_sweep_shows_the_three_t() {
         spec: Some(spec),
         gesture: None,
     }));
-    a.envelope.sync(a.doc.state().envelope.as_ref());
+    a.wait_idle();
     assert_eq!(
         a.envelope.sweep_summary(),
         vec![(1.0, Some(6)), (0.5, Some(6)), (0.1, Some(6))]
@@ -210,7 +177,7 @@ fn the_summary_counts_folds() {
     )
     .unwrap();
     heap.patches = prism_geom::freeform::envelope::Surfacing::Paper;
-    let seven = envelope::sample(k).unwrap();
+    let seven = EnvelopeTab::sample(k).unwrap();
     for (spec, folded) in [
         (seven.clone(), false),
         (envelope::with_uniform_t(&seven, 0.5), false),
@@ -222,10 +189,7 @@ fn the_summary_counts_folds() {
             spec: Some(spec),
             gesture: None,
         }));
-        a.envelope.sync(a.doc.state().envelope.as_ref());
-        while a.envelope.building() {
-            a.envelope.sync(a.doc.state().envelope.as_ref());
-        }
+        a.wait_idle();
         let b = a.envelope.built().expect("built");
         match &b.folds {
             Some((n, text)) => {
@@ -252,7 +216,7 @@ fn the_summary_counts_crossings() {
         .iter()
         .position(|s| s.1 == "table2-seven.envelope.json")
         .unwrap();
-    for (spec, crossing) in [(heap, true), (envelope::sample(k).unwrap(), false)] {
+    for (spec, crossing) in [(heap, true), (EnvelopeTab::sample(k).unwrap(), false)] {
         let mut a = app();
         a.run(Command::Edit(Edit::SetEnvelope {
             spec: Some(spec),
@@ -304,10 +268,7 @@ fn a_bare_scene_file_opens_on_its_tab() {
 /// quads as it opened). The Skin tab's resolution likewise.
 #[test]
 fn values_outside_the_sliders_are_kept() {
-    let mut h = harness(app());
-    settle(&mut h);
-    h.get_by_label("Envelope").click();
-    settle(&mut h);
+    let mut h = in_tab("Envelope");
     let mut spec: prism_geom::freeform::envelope::EnvelopeSpec = serde_json::from_str(
         include_str!("../../../geom/tests/data/envelope/still-folding-heap.envelope.json"),
     )

@@ -57,7 +57,7 @@ fn the_sketch_extrudes_concave_with_a_hole_and_a_crossing_one_is_named() {
     a.run(CurveEdit::SetControl(Polyline::new(l, true)));
     a.run(Command::ShowNewSolid { extrude: true });
     assert_eq!(a.new_solid.kind, Kind::Extrusion);
-    a.new_solid.height = 0.5;
+    a.new_solid.params.height = 0.5;
     a.new_solid.hole = true;
     a.new_solid.hole_scale = 0.3;
     let s = a.new_solid.solid(&a.doc.state().curve).unwrap();

@@ -3,7 +3,7 @@
 //! its level kept to be looked at.
 
 use super::command::Edit;
-use super::tests::{opened, rebuild};
+use super::tests::{opened, rebuild, run_pipeline};
 use prism_geom::scheme::parse_pipeline;
 use prism_viewport::scene::FLIPPED_COLOR;
 
@@ -16,9 +16,7 @@ fn asset(name: &str) -> std::path::PathBuf {
 #[test]
 fn flipped_faces_are_red_and_framed_and_inside_out_stops_the_pipeline() {
     let mut a = opened(&asset("cube.obj"));
-    let steps = parse_pipeline(&["cylindrical:r=0.45"; 6].join(",")).unwrap();
-    a.run(Edit::SetPipeline { view: 0, steps });
-    a.wait_idle();
+    run_pipeline(&mut a, &["cylindrical:r=0.45"; 6].join(","));
     let v = &a.model.views[0];
     // Step 5 turned the cube inside out (seed 000 fig. 10): kept, and nothing after it.
     assert_eq!(v.pipeline.levels().len(), 6);
@@ -66,9 +64,7 @@ fn the_selected_edge_reads_out_its_fillet() {
     a.model.sel_edges.insert(e);
     a.model.mark(super::command::EdgeMark::Radius(Some(0.3)));
     a.flush();
-    let steps = parse_pipeline(&["combination:r=0.2"; 4].join(",")).unwrap();
-    a.run(Edit::SetPipeline { view: 0, steps });
-    a.wait_idle();
+    run_pipeline(&mut a, &["combination:r=0.2"; 4].join(","));
     let doc = a.doc.state().clone();
     let t4 = a.model.fillet_text(0, &doc);
     assert!(
@@ -112,9 +108,7 @@ fn step_continues_a_shrinking_chamfer_schedule() {
 #[test]
 fn clamped_edges_are_highlighted_at_every_level() {
     let mut a = opened(&asset("computer-room.obj"));
-    let steps = parse_pipeline(&["combination:r=0.2"; 3].join(",")).unwrap();
-    a.run(Edit::SetPipeline { view: 0, steps });
-    a.wait_idle();
+    run_pipeline(&mut a, &["combination:r=0.2"; 3].join(","));
     for k in 1..=3 {
         a.model.views[0].level = k;
         rebuild(&mut a);
@@ -151,9 +145,7 @@ fn the_status_bar_says_what_the_clamp_and_the_untangling_did() {
     // The status bar's notes for level `k` of `pipeline` on the bundled `file`.
     let notes = |file: &str, pipeline: &str, k: usize| {
         let mut a = opened(&asset(file));
-        let steps = parse_pipeline(pipeline).unwrap();
-        a.run(Edit::SetPipeline { view: 0, steps });
-        a.wait_idle();
+        run_pipeline(&mut a, pipeline);
         let r = a.model.views[0].pipeline.levels()[k]
             .report
             .clone()
@@ -216,9 +208,7 @@ fn the_cli_and_the_status_bar_say_a_report_in_the_same_words() {
         ),
     ] {
         let mut a = opened(&asset(file));
-        let steps = parse_pipeline(pipeline).unwrap();
-        a.run(Edit::SetPipeline { view: 0, steps });
-        a.wait_idle();
+        run_pipeline(&mut a, pipeline);
         for (k, lv) in a.model.views[0].pipeline.levels().iter().enumerate() {
             let Some(r) = &lv.report else { continue };
             let cli = crate::cli::level_lines::level_lines(k, r, 1.0).join("\n");
@@ -299,9 +289,10 @@ fn the_cli_and_the_status_bar_say_a_report_in_the_same_words() {
 fn faces_that_pass_through_each_other_are_found_and_painted() {
     use super::model::crossing_check::Crossings;
     let mut a = opened(&asset("tripod.obj"));
-    let steps = parse_pipeline("cylindrical:r=0.2,cylindrical:r=0.2,cylindrical:r=0.2").unwrap();
-    a.run(Edit::SetPipeline { view: 0, steps });
-    a.wait_idle();
+    run_pipeline(
+        &mut a,
+        "cylindrical:r=0.2,cylindrical:r=0.2,cylindrical:r=0.2",
+    );
     let answer = |a: &mut super::PrismApp| loop {
         rebuild(a);
         match a.model.views[0].crossings() {

@@ -4,7 +4,7 @@
 //! with the document and reopened, and exported.
 
 use super::command::Edit;
-use super::tests::{app, drag_right, harness, settle};
+use super::tests::{drag_right, in_tab, saved_and_exported, settle};
 use super::*;
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
@@ -20,10 +20,7 @@ fn sections(h: &Harness<'_, PrismApp>) -> usize {
 
 /// The app at 1280 × 800 on the Skin tab, with the spout placed from the tab's button.
 fn spout_in_the_skin_tab() -> Harness<'static, PrismApp> {
-    let mut h = harness(app());
-    settle(&mut h);
-    h.get_by_label("Skin").click();
-    settle(&mut h);
+    let mut h = in_tab("Skin");
     assert_eq!(h.state().tab, Tab::Skin);
     h.get_by_label("Spout (6 sections)").click();
     settle(&mut h);
@@ -104,14 +101,8 @@ fn the_skin_tab_places_edits_undoes_saves_and_exports_a_skin() {
     h.state_mut().skin.mouse = skin::Mouse::Orbit;
 
     // Saved with the document and reopened; exported as STL from the tab.
-    let scratch = tempfile::tempdir().unwrap();
-    let dir = scratch.path();
-    let doc = dir.join("spout.prism.json");
-    h.state_mut().save_to(&doc).unwrap();
-    let stl = dir.join("spout.stl");
-    h.state_mut().export_to(&stl, false).unwrap();
-    assert!(std::fs::metadata(&stl).unwrap().len() > 84 + 50 * 7000);
-    let (state, _) = document::open(&doc).unwrap();
+    let (state, stl) = saved_and_exported(&mut h, "spout");
+    assert!(stl > 84 + 50 * 7000, "{stl} bytes");
     assert_eq!(state.skin.as_ref(), Some(&before));
 
     // Undo across tabs: back to no skin at all.
@@ -121,33 +112,6 @@ fn the_skin_tab_places_edits_undoes_saves_and_exports_a_skin() {
     }
     assert_eq!(sections(&h), 0);
     assert!(h.state().skin.built().is_none());
-}
-
-#[test]
-fn bad_sections_show_their_message_and_keep_the_sections() {
-    let mut a = app();
-    let mut spec = skin::sample(1).unwrap();
-    spec.sections[2].points[3].z += 0.5;
-    a.run(Command::Edit(Edit::SetSkin {
-        spec: Some(spec.clone()),
-        gesture: None,
-    }));
-    a.skin.sync(a.doc.state().skin.as_ref());
-    let b = a.skin.built().unwrap();
-    let e = b.result.as_ref().map(|_| ()).expect_err("refused");
-    assert!(e.contains("section 2 is not planar"), "{e}");
-    assert_eq!(a.doc.state().skin.as_ref(), Some(&spec));
-    // A resolution outside 1..=256 is refused and changes nothing.
-    spec.resolution = 0;
-    a.run(Command::Edit(Edit::SetSkin {
-        spec: Some(spec),
-        gesture: None,
-    }));
-    assert!(
-        a.note.as_ref().unwrap().contains("resolution 0"),
-        "{:?}",
-        a.note
-    );
 }
 
 /// Dragging a number of the selected section (the tilt about x) over several frames is one

@@ -3,8 +3,90 @@
 //! paint callback and the hint line at its foot.
 
 use super::viewport;
-use prism_viewport::{Camera, Scene, View};
+use glam::DVec3;
+use prism_geom::PolyMesh;
+use prism_viewport::{Camera, ColorBy, Scene, SceneOptions, Shading, View};
 use std::sync::Arc;
+
+/// How a 3D tab draws its surface.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Look {
+    /// Iso-parameter lines.
+    pub wireframe: bool,
+    /// Mean-curvature colours.
+    pub curvature: bool,
+    pub smooth: bool,
+}
+
+impl Default for Look {
+    fn default() -> Self {
+        Look {
+            wireframe: false,
+            curvature: false,
+            smooth: true,
+        }
+    }
+}
+
+impl Look {
+    /// Its three checkboxes.
+    pub fn ui(&mut self, ui: &mut egui::Ui) {
+        ui.checkbox(&mut self.wireframe, "Iso-parameter lines");
+        ui.checkbox(&mut self.curvature, "Mean-curvature colours");
+        ui.checkbox(&mut self.smooth, "Smooth shading");
+    }
+
+    /// The scene options that draw it.
+    pub fn options(&self) -> SceneOptions {
+        SceneOptions {
+            shading: if self.smooth {
+                Shading::Smooth
+            } else {
+                Shading::Flat
+            },
+            wireframe: self.wireframe,
+            color_by: if self.curvature {
+                ColorBy::Curvature
+            } else {
+                ColorBy::Uniform
+            },
+            ..SceneOptions::default()
+        }
+    }
+}
+
+/// A scene that draws nothing, framed on the finite `points`: a tab whose surface cannot be
+/// built still frames what it was given.
+pub fn framing(points: impl IntoIterator<Item = DVec3>) -> Scene {
+    let mut m = PolyMesh::new();
+    m.positions = points.into_iter().filter(|p| p.is_finite()).collect();
+    let mut s = Scene::plain(&PolyMesh::new());
+    if !m.positions.is_empty() {
+        let (lo, hi) = m.bbox();
+        s.origin = 0.5 * (lo + hi);
+        s.bbox = (lo, hi);
+    }
+    s
+}
+
+/// An empty overlay in the frame of `scene`, and the length of its box's diagonal (what
+/// marker sizes are measured in).
+pub fn overlay_for(scene: &Scene) -> (Scene, f64) {
+    let overlay = Scene {
+        origin: scene.origin,
+        bbox: scene.bbox,
+        ..Scene::default()
+    };
+    let size = (overlay.bbox.1 - overlay.bbox.0).length().max(1e-9);
+    (overlay, size)
+}
+
+/// `n` segments along the curve `eval` on [0, 1].
+pub fn sampled(eval: impl Fn(f64) -> DVec3, n: usize) -> Vec<(DVec3, DVec3)> {
+    (0..n)
+        .map(|j| (eval(j as f64 / n as f64), eval((j + 1) as f64 / n as f64)))
+        .collect()
+}
 
 pub struct View3d {
     pub camera: Camera,
@@ -119,12 +201,7 @@ impl View3d {
 
     /// The line of help at the view's foot.
     pub fn hint(ui: &egui::Ui, rect: egui::Rect, text: &str) {
-        ui.painter().text(
-            rect.left_bottom() + egui::vec2(8.0, -8.0),
-            egui::Align2::LEFT_BOTTOM,
-            text,
-            egui::FontId::proportional(12.0),
-            egui::Color32::from_gray(170),
-        );
+        let at = rect.left_bottom() + egui::vec2(8.0, -8.0);
+        viewport::caption(ui, (at, egui::Align2::LEFT_BOTTOM), text, 12.0, 170);
     }
 }

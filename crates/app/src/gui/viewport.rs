@@ -122,6 +122,23 @@ pub fn camera_input(
 }
 
 /// The renderer's background colour under a view (what shows without a GPU too).
+/// Light text over a view: `text` placed at `at` by `align`, `size` points, grey `gray`.
+pub fn caption(
+    ui: &egui::Ui,
+    (at, align): (egui::Pos2, egui::Align2),
+    text: impl ToString,
+    size: f32,
+    gray: u8,
+) {
+    ui.painter().text(
+        at,
+        align,
+        text,
+        egui::FontId::proportional(size),
+        egui::Color32::from_gray(gray),
+    );
+}
+
 pub fn paint_background(ui: &egui::Ui, rect: egui::Rect) {
     let bg = prism_viewport::renderer::BACKGROUND;
     let srgb = |x: f64| (255.0 * x.powf(1.0 / 2.2)) as u8;

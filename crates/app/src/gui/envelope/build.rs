@@ -4,11 +4,12 @@
 //! (primitive edges, silhouette edges, fusion edges, insertion curves and the sections'
 //! straight edges in their own colours), the picked vertex.
 
+use crate::gui::view3d::{Look, framing, overlay_for, sampled};
 use glam::DVec3;
 use prism_geom::freeform::envelope::chart::quality::Quality;
 use prism_geom::freeform::envelope::{CurveKind, Envelope, EnvelopeSpec, envelope};
 use prism_geom::{EdgeAttrs, PolyMesh};
-use prism_viewport::{ColorBy, Scene, SceneOptions, Shading};
+use prism_viewport::Scene;
 use std::sync::Arc;
 use std::sync::mpsc::{Receiver, TryRecvError};
 use std::time::Instant;
@@ -24,10 +25,7 @@ pub struct Overlays {
     /// The sections' straight edges (inside the solid).
     pub straight: bool,
     pub surface: bool,
-    pub wireframe: bool,
-    pub smooth: bool,
-    /// Mean-curvature colours.
-    pub curvature: bool,
+    pub look: Look,
 }
 
 impl Default for Overlays {
@@ -40,9 +38,7 @@ impl Default for Overlays {
             insertions: true,
             straight: true,
             surface: true,
-            wireframe: false,
-            smooth: true,
-            curvature: false,
+            look: Look::default(),
         }
     }
 }
@@ -197,20 +193,6 @@ pub fn scenes(
     picked: Option<(usize, usize)>,
     o: &Overlays,
 ) -> (Arc<Scene>, Arc<Scene>) {
-    let opts = SceneOptions {
-        shading: if o.smooth {
-            Shading::Smooth
-        } else {
-            Shading::Flat
-        },
-        wireframe: o.wireframe,
-        color_by: if o.curvature {
-            ColorBy::Curvature
-        } else {
-            ColorBy::Uniform
-        },
-        ..SceneOptions::default()
-    };
     let all: Vec<DVec3> = built
         .spec
         .primitives
@@ -220,29 +202,12 @@ pub fn scenes(
         .collect();
     let scene = match &built.result {
         Ok((_, mesh)) if o.surface => {
-            Scene::build(mesh, &EdgeAttrs::new(), None, &|_| false, &opts)
+            Scene::build(mesh, &EdgeAttrs::new(), None, &|_| false, &o.look.options())
         }
-        result => {
-            let mut m = PolyMesh::new();
-            m.positions = match result {
-                Ok((_, mesh)) => mesh.positions.clone(),
-                Err(_) => all.clone(),
-            };
-            let mut s = Scene::plain(&PolyMesh::new());
-            if !m.positions.is_empty() {
-                let (lo, hi) = m.bbox();
-                s.origin = 0.5 * (lo + hi);
-                s.bbox = (lo, hi);
-            }
-            s
-        }
+        Ok((_, mesh)) => framing(mesh.positions.iter().copied()),
+        Err(_) => framing(all.iter().copied()),
     };
-    let mut overlay = Scene {
-        origin: scene.origin,
-        bbox: scene.bbox,
-        ..Scene::default()
-    };
-    let size = (overlay.bbox.1 - overlay.bbox.0).length().max(1e-9);
+    let (mut overlay, size) = overlay_for(&scene);
     if o.primitives {
         overlay.add_segments(&primitive_edges(&built.spec), PRIMITIVE);
         overlay.add_points(&all, 0.006 * size, PRIMITIVE);
@@ -268,14 +233,7 @@ pub fn scenes(
                 .curves
                 .iter()
                 .filter(|c| c.kind == kind)
-                .flat_map(|c| {
-                    (0..24).map(|j| {
-                        (
-                            c.bezier.eval(j as f64 / 24.0),
-                            c.bezier.eval((j + 1) as f64 / 24.0),
-                        )
-                    })
-                })
+                .flat_map(|c| sampled(|u| c.bezier.eval(u), 24))
                 .collect();
             overlay.add_segments(&segs, color);
         }

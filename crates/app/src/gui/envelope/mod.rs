@@ -11,14 +11,15 @@ pub(crate) mod build;
 mod panel;
 mod sweep;
 
-use super::command::{Command, Edit};
-use super::gestures::{self, Gestures};
+use super::command::Edit;
+use super::doc_state::DocState;
+pub use super::gestures::Mouse;
+use super::gestures::{self, Base, Tab3d, dragged_points};
 use super::model::pick::{Projector, pick_vertex};
 use super::view3d::View3d;
 use super::viewport;
 use build::{Built, Overlays};
-use glam::{DQuat, DVec3};
-use prism_geom::freeform::Basis;
+use glam::DVec3;
 use prism_geom::freeform::envelope::{
     Enclosure, EnvelopeSpec, Placement, PrimitiveInput, Shape, Surfacing,
 };
@@ -81,12 +82,6 @@ pub const LIBRARY: [(&str, Shape); 6] = [
     ("Hexagonal prism", Shape::HexagonalPrism { height: 1.0 }),
 ];
 
-/// The scene of bundled sample `k`.
-pub fn sample(k: usize) -> Result<EnvelopeSpec, String> {
-    let (name, _, text) = ENVELOPE_SAMPLES.get(k).ok_or("no such sample")?;
-    serde_json::from_str(text).map_err(|e| format!("{name}: {e}"))
-}
-
 /// A scene of one library shape of radius 1 at the origin.
 pub fn of_shape(shape: Shape) -> EnvelopeSpec {
     EnvelopeSpec {
@@ -125,22 +120,10 @@ pub fn with_uniform_t(spec: &EnvelopeSpec, t: f64) -> EnvelopeSpec {
     s
 }
 
-/// What a primary drag in the view does.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-pub enum Mouse {
-    #[default]
-    Orbit,
-    /// Moves the primitive in the view plane.
-    Move,
-    /// Scales the primitive about its centre.
-    Scale,
-}
-
-/// Transient values of the number fields that act by difference (rotation, scale).
+/// Transient values of the number fields that act by difference (rotation; the scale's is in `Gestures`).
 #[derive(Debug, Default, Clone, Copy)]
 struct Gesture {
     rotate: [f64; 3],
-    scale: f64,
 }
 
 pub struct EnvelopeTab {
@@ -149,19 +132,19 @@ pub struct EnvelopeTab {
     /// The vertex (primitive, vertex) whose t the panel edits: clicked in the view.
     pub picked: Option<(usize, usize)>,
     pub mouse: Mouse,
-    drag: Option<(u64, Vec<[f64; 3]>)>,
+    /// The drag under way: its gesture and the primitive's vertices when it began.
+    drag: Option<(u64, Vec<DVec3>)>,
     pub overlays: Overlays,
     /// Shows t = 1, 0.5, 0.1 side by side instead of the one view (Table 1).
     pub sweep: bool,
     sweep_views: Vec<SweepView>,
-    pub view: View3d,
+    /// The view, the gesture counter and this frame's commands.
+    pub base: Base,
     built: Option<Built>,
     /// The build under way on the worker thread: its scene and where it will answer.
     pending: Option<(EnvelopeSpec, Receiver<Built>)>,
     shown: Option<(Option<(usize, usize)>, Overlays)>,
-    gestures: Gestures,
     gesture: Gesture,
-    out: Vec<Command>,
 }
 
 impl Default for EnvelopeTab {
@@ -174,16 +157,11 @@ impl Default for EnvelopeTab {
             overlays: Overlays::default(),
             sweep: false,
             sweep_views: Vec::new(),
-            view: View3d::new(VIEW_SLOT),
+            base: Base::new(VIEW_SLOT),
             built: None,
             pending: None,
             shown: None,
-            gestures: Gestures::default(),
-            gesture: Gesture {
-                scale: 100.0,
-                ..Gesture::default()
-            },
-            out: Vec::new(),
+            gesture: Gesture::default(),
         }
     }
 }
@@ -210,7 +188,8 @@ fn mapped(p: &PrimitiveInput, f: impl Fn(DVec3) -> DVec3) -> PrimitiveInput {
 }
 
 impl EnvelopeTab {
-    /// The last build (for the tests and the export).
+    /// The last build (for the tests).
+    #[cfg(test)]
     pub fn built(&self) -> Option<&Built> {
         self.built.as_ref()
     }
@@ -253,12 +232,71 @@ impl EnvelopeTab {
         }
     }
 
+    /// The screen mapping of the view in `rect` (clicks pick vertices with it).
+    pub fn projector(&self, rect: egui::Rect) -> Projector {
+        Projector {
+            view_proj: self
+                .base
+                .view
+                .camera
+                .view_proj(rect.width() / rect.height().max(1.0)),
+            rect,
+            origin: self.base.view.scene.origin,
+        }
+    }
+
+    /// A primary drag that moves or scales the primitive (one undo step).
+    fn primitive_drag(
+        &mut self,
+        ui: &egui::Ui,
+        resp: &egui::Response,
+        rect: egui::Rect,
+        spec: &EnvelopeSpec,
+    ) {
+        let k = self.selected;
+        let begin = || {
+            let p = spec.primitives.get(k)?;
+            Some(p.vertices.iter().map(|v| DVec3::from_array(*v)).collect())
+        };
+        let Some((g, start, total)) =
+            gestures::view_drag(&mut self.drag, &mut self.base.gestures, ui, resp, begin)
+        else {
+            return;
+        };
+        // The envelope offers no turn: a turn by a drag would need an axis.
+        let Some(how) = self
+            .mouse
+            .points_drag(DVec3::Z)
+            .filter(|_| self.mouse != Mouse::Turn)
+        else {
+            return;
+        };
+        if spec
+            .primitives
+            .get(k)
+            .is_none_or(|p| p.vertices.len() != start.len())
+        {
+            return;
+        }
+        let camera = &self.base.view.camera;
+        let moved = dragged_points(how, camera, (total, rect.height()), &start);
+        let mut s = spec.clone();
+        s.primitives[k].vertices = moved.iter().map(|v| v.to_array()).collect();
+        self.set(Some(s), Some(g));
+    }
+}
+
+impl Tab3d for EnvelopeTab {
+    type Spec = EnvelopeSpec;
+    const SAMPLES: &'static [(&'static str, &'static str, &'static str)] = &ENVELOPE_SAMPLES;
+    const PANEL: &'static str = "envelope_panel";
+
     /// Rebuilds the envelope and the scenes when the scene or the overlays changed.
-    pub fn sync(&mut self, spec: Option<&EnvelopeSpec>) {
+    fn sync(&mut self, spec: Option<&EnvelopeSpec>) {
         let Some(spec) = spec else {
             self.built = None;
             self.pending = None;
-            self.view.clear();
+            self.base.view.clear();
             self.shown = None;
             self.picked = None;
             return;
@@ -273,7 +311,8 @@ impl EnvelopeTab {
             && !fresh
             && self.shown == Some((self.picked, self.overlays))
         {
-            self.view
+            self.base
+                .view
                 .show(build::scenes(b, self.picked, &self.overlays));
         }
         if let Some((p, v)) = self.picked
@@ -284,7 +323,8 @@ impl EnvelopeTab {
         self.selected = self.selected.min(spec.primitives.len().saturating_sub(1));
         if fresh || self.shown != Some((self.picked, self.overlays)) {
             let b = self.built.as_ref().expect("built above");
-            self.view
+            self.base
+                .view
                 .show(build::scenes(b, self.picked, &self.overlays));
             self.shown = Some((self.picked, self.overlays));
             self.sweep_views.clear();
@@ -306,88 +346,12 @@ impl EnvelopeTab {
         }
     }
 
-    /// The screen mapping of the view in `rect` (clicks pick vertices with it).
-    pub fn projector(&self, rect: egui::Rect) -> Projector {
-        Projector {
-            view_proj: self
-                .view
-                .camera
-                .view_proj(rect.width() / rect.height().max(1.0)),
-            rect,
-            origin: self.view.scene.origin,
-        }
+    fn base(&mut self) -> &mut Base {
+        &mut self.base
     }
 
-    /// Frames the envelope again on the next frame (a new sample).
-    pub fn reframe(&mut self) {
-        self.view.reframe();
-    }
-
-    fn set(&mut self, spec: Option<EnvelopeSpec>, gesture: Option<u64>) {
-        self.out
-            .push(Command::Edit(Edit::SetEnvelope { spec, gesture }));
-    }
-
-    pub fn ui(&mut self, ui: &mut egui::Ui, spec: Option<&EnvelopeSpec>) -> Vec<Command> {
-        self.sync(spec);
-        gestures::layout(
-            ui,
-            "envelope_panel",
-            self,
-            |t, ui| t.panel(ui, spec),
-            |t, ui| t.view(ui, spec),
-        );
-        std::mem::take(&mut self.out)
-    }
-
-    /// A primary drag that moves or scales the primitive (one undo step).
-    fn primitive_drag(
-        &mut self,
-        ui: &egui::Ui,
-        resp: &egui::Response,
-        rect: egui::Rect,
-        spec: &EnvelopeSpec,
-    ) {
-        let k = self.selected;
-        if resp.drag_started_by(egui::PointerButton::Primary)
-            && let Some(p) = spec.primitives.get(k)
-        {
-            self.drag = Some((self.gestures.start(), p.vertices.clone()));
-        }
-        if resp.dragged_by(egui::PointerButton::Primary)
-            && let Some((g, start)) = &self.drag
-            && let Some(p) = spec.primitives.get(k)
-            && p.vertices.len() == start.len()
-        {
-            let total = gestures::drag_total(ui);
-            let from = PrimitiveInput {
-                vertices: start.clone(),
-                ..p.clone()
-            };
-            let centre = centre_of(&from);
-            let q = match self.mouse {
-                Mouse::Move => {
-                    let by = self
-                        .view
-                        .camera
-                        .drag_in_view_plane(total.x, total.y, rect.height())
-                        .as_dvec3();
-                    mapped(&from, |v| v + by)
-                }
-                Mouse::Scale => {
-                    let f = gestures::drag_scale(total);
-                    mapped(&from, |v| centre + (v - centre) * f)
-                }
-                Mouse::Orbit => return,
-            };
-            let mut s = spec.clone();
-            s.primitives[k] = q;
-            let g = *g;
-            self.set(Some(s), Some(g));
-        }
-        if resp.drag_stopped() {
-            self.drag = None;
-        }
+    fn panel(&mut self, ui: &mut egui::Ui, spec: Option<&EnvelopeSpec>) {
+        self.side_panel(ui, spec);
     }
 
     fn view(&mut self, ui: &mut egui::Ui, spec: Option<&EnvelopeSpec>) {
@@ -399,6 +363,7 @@ impl EnvelopeTab {
             return;
         };
         let resp = self
+            .base
             .view
             .interact(ui, rect, "envelope_view", self.mouse == Mouse::Orbit);
         if self.mouse != Mouse::Orbit {
@@ -428,20 +393,22 @@ impl EnvelopeTab {
             viewport::paint_background(ui, rect);
             self.paint_sweep(ui, rect);
         } else {
-            self.view.paint(ui, rect);
+            self.base.view.paint(ui, rect);
         }
-        View3d::hint(
-            ui,
-            rect,
-            match self.mouse {
-                Mouse::Orbit => {
-                    "drag: orbit · right drag: pan · wheel: zoom · click: pick a vertex"
-                }
-                Mouse::Move => {
-                    "drag: move the selected primitive in the view plane · right drag: orbit"
-                }
-                Mouse::Scale => "drag up or down: scale the selected primitive · right drag: orbit",
-            },
-        );
+        let orbit = "drag: orbit · right drag: pan · wheel: zoom · click: pick a vertex";
+        View3d::hint(ui, rect, &self.mouse.hint("primitive", orbit));
+    }
+
+    fn part(doc: &DocState) -> Option<&Self::Spec> {
+        doc.envelope.as_ref()
+    }
+
+    fn surface(&self) -> Result<&prism_geom::PolyMesh, &str> {
+        let built = self.built.as_ref().ok_or("no scene")?;
+        built.result.as_ref().map(|r| &r.1).map_err(String::as_str)
+    }
+
+    fn edit(spec: Option<EnvelopeSpec>, gesture: Option<u64>) -> Edit {
+        Edit::SetEnvelope { spec, gesture }
     }
 }

@@ -8,30 +8,20 @@ impl EnvelopeTab {
     /// The tab's side panel: the library or a bundled scene when there is none; else the
     /// summary, the primitives, the selected one's placement, t, the surface and display
     /// options.
-    pub(super) fn panel(&mut self, ui: &mut egui::Ui, spec: Option<&EnvelopeSpec>) {
+    pub(super) fn side_panel(&mut self, ui: &mut egui::Ui, spec: Option<&EnvelopeSpec>) {
         ui.heading("Envelope of primitives");
         let Some(spec) = spec else {
             ui.label("No primitive yet. Start from one of the library:");
             ui.horizontal_wrapped(|ui| {
                 for (name, shape) in LIBRARY {
                     if ui.button(name).clicked() {
-                        self.view.reframe();
+                        self.base.view.reframe();
                         self.set(Some(of_shape(shape)), None);
                     }
                 }
             });
             ui.label("or a bundled scene (also in File > Samples):");
-            for (k, (name, _, _)) in ENVELOPE_SAMPLES.iter().enumerate() {
-                if ui.button(*name).clicked() {
-                    match sample(k) {
-                        Ok(s) => {
-                            self.view.reframe();
-                            self.set(Some(s), None);
-                        }
-                        Err(e) => self.out.push(Command::Say(e)),
-                    }
-                }
-            }
+            self.sample_buttons(ui);
             return;
         };
         self.summary(ui);
@@ -106,78 +96,59 @@ impl EnvelopeTab {
         ui.separator();
         ui.label("Surface");
         let mut surfacing = spec.patches;
-        ui.horizontal(|ui| {
-            ui.radio_value(&mut surfacing, Surfacing::Charts, "charts")
-                .on_hover_text("Each region a graph over its flat chart: it cannot fold, the faces are enclosed, G1 along every curve by one shared tangent plane (the default)");
-            ui.radio_value(&mut surfacing, Surfacing::Paper, "paper")
-                .on_hover_text("Seed 004 §6 as printed: vector Coons patches with Gregory's twist, n-sided regions split about an inserted point; may fold (counted below)");
-        });
-        if surfacing != spec.patches {
-            let mut s = spec.clone();
-            s.patches = surfacing;
-            self.set(Some(s), None);
-        }
+        gestures::radio_row(
+            ui,
+            "",
+            &mut surfacing,
+            &[
+                (
+                    Surfacing::Charts,
+                    "charts",
+                    "Each region a graph over its flat chart: it cannot fold, the faces are enclosed, G1 along every curve by one shared tangent plane (the default)",
+                ),
+                (
+                    Surfacing::Paper,
+                    "paper",
+                    "Seed 004 §6 as printed: vector Coons patches with Gregory's twist, n-sided regions split about an inserted point; may fold (counted below)",
+                ),
+            ],
+        );
         let mut enclosure = spec.enclosure;
         ui.add_enabled_ui(spec.patches == Surfacing::Charts, |ui| {
-            ui.horizontal(|ui| {
-                ui.label("Cut corners");
-                ui.radio_value(&mut enclosure, Enclosure::Lifted, "held")
-                    .on_hover_text("The fusion strips are raised over the corners the silhouette plane through each centre cuts off: every primitive lies inside (the default)");
-                ui.radio_value(&mut enclosure, Enclosure::Paper, "paper's cut")
-                    .on_hover_text("The paper's central cut as it lies: at small t a cut-off corner can poke out (named in the Enclosure row)");
-            });
+            gestures::radio_row(ui, "Cut corners", &mut enclosure, &[
+                (Enclosure::Lifted, "held", "The fusion strips are raised over the corners the silhouette plane through each centre cuts off: every primitive lies inside (the default)"),
+                (Enclosure::Paper, "paper's cut", "The paper's central cut as it lies: at small t a cut-off corner can poke out (named in the Enclosure row)"),
+            ]);
         })
         .response
         .on_disabled_hover_text("The charts only: the paper's patches keep the paper's cut");
-        if enclosure != spec.enclosure {
-            let mut s = spec.clone();
-            s.enclosure = enclosure;
-            self.set(Some(s), None);
-        }
+        let chosen = (surfacing, enclosure);
+        let changed = chosen != (spec.patches, spec.enclosure);
+        self.set_changed(spec, changed, |s| (s.patches, s.enclosure) = chosen, None);
         let mut res = spec.resolution;
-        // A scene's own resolution (the CLI takes up to 256) is kept until the slider moves.
-        let r = ui
-            .add(
-                egui::Slider::new(&mut res, 1..=32)
-                    .clamping(egui::SliderClamping::Edits)
-                    .text(match spec.patches {
-                        Surfacing::Charts => "mesh density",
-                        Surfacing::Paper => "quads a patch side",
-                    }),
-            )
-            .on_hover_text(match spec.patches {
-                Surfacing::Charts => "About this many mesh edges along a primitive's edge",
-                Surfacing::Paper => "Quads along each side of a patch",
-            });
-        let g = self.gestures.of(&r);
-        if res != spec.resolution {
-            let mut s = spec.clone();
-            s.resolution = res;
-            self.set(Some(s), g);
-        }
+        let text = match spec.patches {
+            Surfacing::Charts => "mesh density",
+            Surfacing::Paper => "quads a patch side",
+        };
+        let r = gestures::resolution_slider(ui, &mut res, text).on_hover_text(match spec.patches {
+            Surfacing::Charts => "About this many mesh edges along a primitive's edge",
+            Surfacing::Paper => "Quads along each side of a patch",
+        });
+        let g = self.base.gestures.of(&r);
+        self.set_changed(spec, res != spec.resolution, |s| s.resolution = res, g);
         let mut basis = spec.basis;
-        ui.add_enabled_ui(spec.patches == Surfacing::Paper, |ui| ui.horizontal(|ui| {
-            ui.label("G1 basis");
-            ui.radio_value(&mut basis, Basis::Virtual, "virtual")
-                .on_hover_text("Both sides of a border from the crossing curves: the surface does not depend on how faces and primitives are listed (the default)");
-            ui.radio_value(&mut basis, Basis::OneSided, "one-sided (paper)")
-                .on_hover_text("The region listed first leads each border and the other follows: G1 too, but a cube's tangent planes tilt 18° into the sphere at mid-edge and the shape depends on the listing");
-        }))
+        ui.add_enabled_ui(spec.patches == Surfacing::Paper, |ui| gestures::basis_row(ui, &mut basis, [
+            "Both sides of a border from the crossing curves: the surface does not depend on how faces and primitives are listed (the default)",
+            "The region listed first leads each border and the other follows: G1 too, but a cube's tangent planes tilt 18° into the sphere at mid-edge and the shape depends on the listing",
+        ]))
         .response
         .on_disabled_hover_text("The paper's patches only: the charts share one tangent plane per curve");
-        if basis != spec.basis {
-            let mut s = spec.clone();
-            s.basis = basis;
-            self.set(Some(s), None);
-        }
-        ui.horizontal_wrapped(|ui| {
-            ui.label("Drag in the view:");
-            ui.radio_value(&mut self.mouse, Mouse::Orbit, "orbit");
-            ui.radio_value(&mut self.mouse, Mouse::Move, "move");
-            ui.radio_value(&mut self.mouse, Mouse::Scale, "scale");
-        })
-        .response
-        .on_hover_text("Move and scale act on the primitive; right drag orbits then. A click picks a vertex for its own t");
+        self.set_changed(spec, basis != spec.basis, |s| s.basis = basis, None);
+        self.mouse.row(
+            ui,
+            &[Mouse::Orbit, Mouse::Move, Mouse::Scale],
+            "Move and scale act on the primitive; right drag orbits then. A click picks a vertex for its own t",
+        );
         ui.separator();
         ui.label("Show");
         let o = &mut self.overlays;
@@ -191,14 +162,12 @@ impl EnvelopeTab {
             "Straight edges of the sections, inside (violet)",
         );
         ui.checkbox(&mut o.surface, "Surface");
-        ui.checkbox(&mut o.wireframe, "Iso-parameter lines");
-        ui.checkbox(&mut o.curvature, "Mean-curvature colours");
-        ui.checkbox(&mut o.smooth, "Smooth shading");
+        o.look.ui(ui);
         ui.checkbox(&mut self.sweep, "t sweep: t = 1, 0.5, 0.1 side by side")
             .on_hover_text("The paper's Table 1: the same scene with one t everywhere, three views sharing the camera");
         ui.horizontal(|ui| {
             if ui.button("Frame the envelope").clicked() {
-                self.view.frame();
+                self.base.view.frame();
             }
             if ui.button("Clear").clicked() {
                 self.set(None, None);
@@ -350,40 +319,24 @@ impl EnvelopeTab {
         }
     }
 
+    /// The selected primitive's centre, turn about the axes and scale; a field's drag one
+    /// undo step.
     fn placement(&mut self, ui: &mut egui::Ui, spec: &EnvelopeSpec, k: usize, p: &PrimitiveInput) {
-        let centre = centre_of(p);
-        if let Some((moved, g)) = self.gestures.centre_field(ui, centre) {
-            let mut s = spec.clone();
-            s.primitives[k] = mapped(p, |v| v + moved - centre);
-            self.set(Some(s), g);
-        }
         let mut gst = self.gesture;
-        let mut act: Option<(DQuat, f64, Option<u64>)> = None;
-        ui.horizontal(|ui| {
-            ui.label("turn °");
-            for (a, (axis, name)) in [(DVec3::X, "x: "), (DVec3::Y, "y: "), (DVec3::Z, "z: ")]
-                .into_iter()
-                .enumerate()
-            {
-                if let Some((b, after, g)) =
-                    self.gestures
-                        .delta_field(ui, &mut gst.rotate[a], 0.0, name, None)
-                {
-                    act = Some((
-                        DQuat::from_axis_angle(axis, (after - b).to_radians()),
-                        1.0,
-                        g,
-                    ));
-                }
-            }
-        });
-        if let Some((f, g)) = self.gestures.scale_field(ui, &mut gst.scale) {
-            act = Some((DQuat::IDENTITY, f, g));
-        }
+        let [rx, ry, rz] = &mut gst.rotate;
+        let turns = vec![(
+            "turn °",
+            vec![
+                (rx, "x: ", DVec3::X),
+                (ry, "y: ", DVec3::Y),
+                (rz, "z: ", DVec3::Z),
+            ],
+        )];
+        let placed = self.base.gestures.placement(ui, centre_of(p), turns);
         self.gesture = gst;
-        if let Some((q, f, g)) = act {
+        if let Some((map, g)) = placed {
             let mut s = spec.clone();
-            s.primitives[k] = mapped(p, |v| centre + q * ((v - centre) * f));
+            s.primitives[k] = mapped(p, |v| map.transform_point3(v));
             self.set(Some(s), g);
         }
     }
@@ -401,7 +354,7 @@ impl EnvelopeTab {
                     .text("t"),
             )
             .on_hover_text("1: edges are arcs on the primitive's sphere; towards 0 the surface tends to the flat faces; above 1 the edges bulge outside the sphere (polynomial cubics at 3/(1 + 2cos θ), 1.14 on a cube)");
-        let g = self.gestures.of(&r);
+        let g = self.base.gestures.of(&r);
         if t != spec.t {
             let mut s = spec.clone();
             s.t = t;
@@ -434,7 +387,7 @@ impl EnvelopeTab {
                     .min_decimals(2)
                     .max_decimals(3),
             );
-            let g = self.gestures.of(&r);
+            let g = self.base.gestures.of(&r);
             if r.changed() {
                 let mut s = spec.clone();
                 let q = &mut s.primitives[pi];

@@ -23,7 +23,7 @@ impl EnvelopeTab {
         let w = rect.width() / self.sweep_views.len() as f32;
         // A cell is narrower than the view the camera was framed for: move back so that the
         // same width shows (the model's width fills a cell as its height filled the view).
-        let mut camera = self.view.camera;
+        let mut camera = self.base.view.camera;
         let cell_aspect = w / rect.height().max(1.0);
         let aspect = rect.width() / rect.height().max(1.0);
         camera.zoom((0.8 * aspect.min(1.0) / cell_aspect).max(1.0));
@@ -33,7 +33,8 @@ impl EnvelopeTab {
                 rect.left_top() + egui::vec2(i as f32 * w, 0.0),
                 egui::vec2(w, rect.height()),
             );
-            self.view
+            self.base
+                .view
                 .paint_scene(ui, cell, 1 + i, (&v.scene, &v.overlay), camera);
             if i > 0 {
                 ui.painter().vline(
@@ -50,13 +51,8 @@ impl EnvelopeTab {
                 (None, Err(e)) => format!("t = {}: {e}", v.t),
                 (None, Ok(_)) => format!("t = {}", v.t),
             };
-            ui.painter().text(
-                cell.left_top() + egui::vec2(8.0, 8.0),
-                egui::Align2::LEFT_TOP,
-                text,
-                egui::FontId::proportional(14.0),
-                egui::Color32::from_gray(220),
-            );
+            let at = cell.left_top() + egui::vec2(8.0, 8.0);
+            viewport::caption(ui, (at, egui::Align2::LEFT_TOP), text, 14.0, 220);
         }
     }
 }

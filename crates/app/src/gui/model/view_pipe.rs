@@ -9,7 +9,6 @@ use super::worker::{Finished, Job, over_budget};
 use crate::gui::waker::Waker;
 use prism_geom::ancestry::edge_origins;
 use prism_geom::error::OverBudget;
-use prism_geom::refine::FaceKind;
 use prism_geom::rules::Overlap;
 use prism_geom::{EdgeKey, Level, LimitPoints, Pipeline, Scheme};
 use prism_viewport::scene::{FLIPPED_COLOR, scheme_color};
@@ -31,19 +30,11 @@ fn made_by(p: &Pipeline, k: usize) -> Option<Scheme> {
 /// The scene of a level: its faces (holes left out), coloured by kind, curvature or, for a
 /// solid colour, by the scheme of the step that made it (`made_by`); flipped faces red.
 pub fn level_scene(lv: &Level, made_by: Option<Scheme>, opts: &SceneOptions) -> Scene {
-    let kinds: Option<&[FaceKind]> = lv.provenance.as_ref().and_then(|p| p.face_kinds());
-    let holes = &lv.tags.holes;
     let mut opts = opts.clone();
     if let ColorBy::Solid(_) = opts.color_by {
         opts.color_by = ColorBy::Solid(scheme_color(made_by.as_ref()));
     }
-    let mut scene = Scene::build(
-        &lv.mesh,
-        &lv.edge_attrs,
-        kinds,
-        &|f| holes.contains(&(f as u32)),
-        &opts,
-    );
+    let mut scene = Scene::of_level(lv, &opts);
     // Faces a step turned against their parent are always shown, in red over any colouring.
     if let Some(r) = &lv.report {
         scene.paint_faces(&lv.mesh, &r.flipped, FLIPPED_COLOR);

@@ -89,13 +89,8 @@ impl ModelTab {
                     i + 1,
                     super::compare::short_pipeline(&doc.pipelines[i])
                 );
-                ui.painter().text(
-                    header.left_center() + egui::vec2(6.0, 0.0),
-                    egui::Align2::LEFT_CENTER,
-                    text,
-                    egui::FontId::proportional(13.0),
-                    egui::Color32::from_gray(220),
-                );
+                let at = header.left_center() + egui::vec2(6.0, 0.0);
+                viewport::caption(ui, (at, egui::Align2::LEFT_CENTER), text, 13.0, 220);
             }
             self.view_input(ui, i, rect, doc);
             viewport::paint_background(ui, rect);
@@ -126,13 +121,9 @@ impl ModelTab {
             }
             if let Some(job) = &v.job {
                 let (k, n) = job.computing();
-                ui.painter().text(
-                    rect.right_top() + egui::vec2(-8.0, 8.0),
-                    egui::Align2::RIGHT_TOP,
-                    format!("computing level {k} of {n} …"),
-                    egui::FontId::proportional(13.0),
-                    egui::Color32::from_gray(230),
-                );
+                let at = rect.right_top() + egui::vec2(-8.0, 8.0);
+                let text = format!("computing level {k} of {n} …");
+                viewport::caption(ui, (at, egui::Align2::RIGHT_TOP), text, 13.0, 230);
             }
         }
         ui.allocate_rect(area, egui::Sense::hover());

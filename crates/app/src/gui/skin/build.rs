@@ -3,12 +3,12 @@
 //! and the teaching overlays (section curves, chains, trajectories, swept sections) drawn from
 //! it.
 
+use crate::gui::view3d::{Look, framing, overlay_for, sampled};
 use glam::DVec3;
 use prism_geom::freeform::spline;
 use prism_geom::freeform::{Skin, SkinSpec, skin_with};
 use prism_geom::{EdgeAttrs, PolyMesh};
 use prism_viewport::Scene;
-use prism_viewport::{ColorBy, SceneOptions, Shading};
 use std::sync::Arc;
 use std::time::Instant;
 
@@ -19,12 +19,9 @@ pub struct Overlays {
     pub chains: bool,
     pub trajectories: bool,
     pub swept: bool,
-    pub wireframe: bool,
-    pub smooth: bool,
-    /// Mean-curvature colours.
-    pub curvature: bool,
     /// Contour lines: sections of the surface by 24 planes z = const (fig. 4b).
     pub contours: bool,
+    pub look: Look,
 }
 
 impl Default for Overlays {
@@ -34,10 +31,8 @@ impl Default for Overlays {
             chains: true,
             trajectories: false,
             swept: false,
-            wireframe: false,
-            smooth: true,
-            curvature: false,
             contours: false,
+            look: Look::default(),
         }
     }
 }
@@ -139,47 +134,18 @@ fn polygon(points: &[DVec3]) -> Vec<(DVec3, DVec3)> {
 /// colour; sections are drawn even when the skin cannot be built (so the user sees what is
 /// wrong).
 pub fn scenes(built: &Built, selected: usize, o: &Overlays) -> (Arc<Scene>, Arc<Scene>) {
-    let opts = SceneOptions {
-        shading: if o.smooth {
-            Shading::Smooth
-        } else {
-            Shading::Flat
-        },
-        wireframe: o.wireframe,
-        color_by: if o.curvature {
-            ColorBy::Curvature
-        } else {
-            ColorBy::Uniform
-        },
-        ..SceneOptions::default()
-    };
     let scene = match &built.result {
-        Ok((_, mesh)) => Scene::build(mesh, &EdgeAttrs::new(), None, &|_| false, &opts),
-        Err(_) => {
-            // No surface: frame the sections' points.
-            let pts: Vec<DVec3> = built
+        Ok((_, mesh)) => Scene::build(mesh, &EdgeAttrs::new(), None, &|_| false, &o.look.options()),
+        // No surface: frame the sections' points.
+        Err(_) => framing(
+            built
                 .spec
                 .sections
                 .iter()
-                .flat_map(|s| s.points.iter().copied())
-                .filter(|p| p.is_finite())
-                .collect();
-            let mut m = PolyMesh::new();
-            m.positions = pts;
-            let mut s = Scene::plain(&PolyMesh::new());
-            let (lo, hi) = m.bbox();
-            if !m.positions.is_empty() {
-                s.origin = 0.5 * (lo + hi);
-                s.bbox = (lo, hi);
-            }
-            s
-        }
+                .flat_map(|s| s.points.iter().copied()),
+        ),
     };
-    let mut overlay = Scene {
-        origin: scene.origin,
-        bbox: scene.bbox,
-        ..Scene::default()
-    };
+    let (mut overlay, size) = overlay_for(&scene);
     match &built.result {
         Ok((s, _)) => {
             if o.sections {
@@ -188,7 +154,7 @@ pub fn scenes(built: &Built, selected: usize, o: &Overlays) -> (Arc<Scene>, Arc<
                     overlay.add_segments(&curve_segments(&sec.curve, 12), color);
                 }
                 let pts: Vec<DVec3> = s.sections.iter().flat_map(|x| x.points.clone()).collect();
-                overlay.add_points(&pts, 0.006 * overlay_size(&overlay), SECTION);
+                overlay.add_points(&pts, 0.006 * size, SECTION);
             }
             if o.chains {
                 for (i, chain) in s.chains.iter().enumerate() {
@@ -198,13 +164,10 @@ pub fn scenes(built: &Built, selected: usize, o: &Overlays) -> (Arc<Scene>, Arc<
             }
             if o.trajectories {
                 for t in &s.trajectories {
-                    let segs: Vec<(DVec3, DVec3)> = (0..24)
-                        .map(|j| (t.eval(j as f64 / 24.0), t.eval((j + 1) as f64 / 24.0)))
-                        .collect();
-                    overlay.add_segments(&segs, TRAJECTORY);
+                    overlay.add_segments(&sampled(|u| t.eval(u), 24), TRAJECTORY);
                 }
                 let centres: Vec<DVec3> = s.sections.iter().map(|x| x.centre).collect();
-                overlay.add_points(&centres, 0.01 * overlay_size(&overlay), TRAJECTORY);
+                overlay.add_points(&centres, 0.01 * size, TRAJECTORY);
             }
             if o.contours
                 && let Ok((_, mesh)) = &built.result
@@ -231,8 +194,4 @@ pub fn scenes(built: &Built, selected: usize, o: &Overlays) -> (Arc<Scene>, Arc<
         }
     }
     (Arc::new(scene), Arc::new(overlay))
-}
-
-fn overlay_size(s: &Scene) -> f64 {
-    (s.bbox.1 - s.bbox.0).length().max(1e-9)
 }

@@ -7,12 +7,14 @@
 mod build;
 mod section;
 
-use super::command::{Command, Edit};
-use super::gestures::{self, Gestures};
+use super::command::Edit;
+use super::doc_state::DocState;
+pub use super::gestures::Mouse;
+use super::gestures::{self, Base, Tab3d, dragged_points};
 use super::view3d::View3d;
 use build::{Built, Overlays};
-use glam::{DQuat, DVec3};
-use prism_geom::freeform::{Basis, SectionInput, SkinSpec};
+use glam::DVec3;
+use prism_geom::freeform::{SectionInput, SkinSpec};
 
 /// The bundled section sets: name, file name, contents.
 pub const SKIN_SAMPLES: [(&str, &str, &str); 3] = [
@@ -33,56 +35,28 @@ pub const SKIN_SAMPLES: [(&str, &str, &str); 3] = [
     ),
 ];
 
-/// The sections of bundled sample `k`.
-pub fn sample(k: usize) -> Result<SkinSpec, String> {
-    let (name, _, text) = SKIN_SAMPLES.get(k).ok_or("no such sample")?;
-    serde_json::from_str(text).map_err(|e| format!("{name}: {e}"))
-}
-
 /// The view slot of the Skin tab's 3D view (the Model tab's views use 0–3).
 const VIEW_SLOT: usize = 16;
 
-/// What a primary drag in the view does.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-pub enum Mouse {
-    #[default]
-    Orbit,
-    /// Moves the selected section in the view plane.
-    Move,
-    /// Turns the selected section about its normal.
-    Turn,
-    /// Scales the selected section about its centre.
-    Scale,
-}
-
-/// A drag of the selected section in the view: its gesture and the points it started from.
-#[derive(Debug, Clone)]
-struct SectionDrag {
-    gesture: u64,
-    section: usize,
-    start: Vec<DVec3>,
-}
-
-/// Transient values of the number fields that act by difference (turn, tilt, scale).
+/// Transient values of the number fields that act by difference (turn, tilt; the scale's is in `Gestures`).
 #[derive(Debug, Default, Clone, Copy)]
 struct Gesture {
     turn: f64,
     tilt_x: f64,
     tilt_y: f64,
-    scale: f64,
 }
 
 pub struct SkinTab {
     pub selected: usize,
     pub mouse: Mouse,
-    drag: Option<SectionDrag>,
+    /// The drag under way: its gesture, the section and its points when it began.
+    drag: Option<(u64, (usize, Vec<DVec3>))>,
     pub overlays: Overlays,
-    pub view: View3d,
+    /// The view, the gesture counter and this frame's commands.
+    pub base: Base,
     built: Option<Built>,
     shown: Option<(usize, Overlays)>,
-    gestures: Gestures,
     gesture: Gesture,
-    out: Vec<Command>,
 }
 
 impl Default for SkinTab {
@@ -92,15 +66,10 @@ impl Default for SkinTab {
             mouse: Mouse::Orbit,
             drag: None,
             overlays: Overlays::default(),
-            view: View3d::new(VIEW_SLOT),
+            base: Base::new(VIEW_SLOT),
             built: None,
             shown: None,
-            gestures: Gestures::default(),
-            gesture: Gesture {
-                scale: 100.0,
-                ..Gesture::default()
-            },
-            out: Vec::new(),
+            gesture: Gesture::default(),
         }
     }
 }
@@ -121,16 +90,80 @@ fn frame(points: &[DVec3]) -> (DVec3, DVec3, DVec3, DVec3) {
 }
 
 impl SkinTab {
-    /// The last build (for the tests and the export).
+    /// The last build (for the tests).
+    #[cfg(test)]
     pub fn built(&self) -> Option<&Built> {
         self.built.as_ref()
     }
 
+    fn summary(&self, ui: &mut egui::Ui) {
+        let Some(b) = &self.built else { return };
+        match &b.result {
+            Ok((s, m)) => {
+                let shifts: Vec<String> = s.shifts.iter().map(|x| x.to_string()).collect();
+                ui.label(format!(
+                    "{} sections × {} points, {} patches, {} quads; shifts {}; {} inserted, {} crease chain(s)",
+                    s.sections.len(),
+                    s.points_per_section(),
+                    s.patches.len(),
+                    m.num_faces(),
+                    shifts.join(", "),
+                    s.inserted.iter().sum::<usize>(),
+                    s.creases()
+                ));
+                ui.label(format!(
+                    "G1: largest normal jump across patch borders {:.1e}°; built in {:.1} ms",
+                    b.jump, b.millis
+                ));
+            }
+            Err(e) => {
+                ui.colored_label(
+                    egui::Color32::from_rgb(255, 120, 100),
+                    format!("No skin: {e}"),
+                );
+            }
+        }
+    }
+
+    /// A primary drag that moves, turns or scales the selected section (one undo step).
+    fn section_drag(
+        &mut self,
+        ui: &egui::Ui,
+        resp: &egui::Response,
+        rect: egui::Rect,
+        spec: &SkinSpec,
+    ) {
+        let k = self.selected;
+        let begin = || Some((k, spec.sections.get(k)?.points.clone()));
+        let Some((g, (section, start), total)) =
+            gestures::view_drag(&mut self.drag, &mut self.base.gestures, ui, resp, begin)
+        else {
+            return;
+        };
+        if section >= spec.sections.len() {
+            return;
+        }
+        let (_, normal, _, _) = frame(&start);
+        let Some(how) = self.mouse.points_drag(normal) else {
+            return;
+        };
+        let mut s = spec.clone();
+        let camera = &self.base.view.camera;
+        s.sections[section].points = dragged_points(how, camera, (total, rect.height()), &start);
+        self.set(Some(s), Some(g));
+    }
+}
+
+impl Tab3d for SkinTab {
+    type Spec = SkinSpec;
+    const SAMPLES: &'static [(&'static str, &'static str, &'static str)] = &SKIN_SAMPLES;
+    const PANEL: &'static str = "skin_panel";
+
     /// Rebuilds the skin and the scenes when the sections or the overlays changed.
-    pub fn sync(&mut self, spec: Option<&SkinSpec>) {
+    fn sync(&mut self, spec: Option<&SkinSpec>) {
         let Some(spec) = spec else {
             self.built = None;
-            self.view.clear();
+            self.base.view.clear();
             self.shown = None;
             return;
         };
@@ -141,49 +174,22 @@ impl SkinTab {
         self.selected = self.selected.min(spec.sections.len().saturating_sub(1));
         if fresh || self.shown != Some((self.selected, self.overlays)) {
             let b = self.built.as_ref().expect("built above");
-            self.view
+            self.base
+                .view
                 .show(build::scenes(b, self.selected, &self.overlays));
             self.shown = Some((self.selected, self.overlays));
         }
     }
 
-    /// Frames the skin again on the next frame (a new sample).
-    pub fn reframe(&mut self) {
-        self.view.reframe();
-    }
-
-    fn set(&mut self, spec: Option<SkinSpec>, gesture: Option<u64>) {
-        self.out
-            .push(Command::Edit(Edit::SetSkin { spec, gesture }));
-    }
-
-    pub fn ui(&mut self, ui: &mut egui::Ui, spec: Option<&SkinSpec>) -> Vec<Command> {
-        self.sync(spec);
-        gestures::layout(
-            ui,
-            "skin_panel",
-            self,
-            |t, ui| t.panel(ui, spec),
-            |t, ui| t.view(ui, spec),
-        );
-        std::mem::take(&mut self.out)
+    fn base(&mut self) -> &mut Base {
+        &mut self.base
     }
 
     fn panel(&mut self, ui: &mut egui::Ui, spec: Option<&SkinSpec>) {
         ui.heading("Skin through sections");
         let Some(spec) = spec else {
             ui.label("No sections yet. Start from a sample (also in File > Samples):");
-            for (k, (name, _, _)) in SKIN_SAMPLES.iter().enumerate() {
-                if ui.button(*name).clicked() {
-                    match sample(k) {
-                        Ok(s) => {
-                            self.view.reframe();
-                            self.set(Some(s), None);
-                        }
-                        Err(e) => self.out.push(Command::Say(e)),
-                    }
-                }
-            }
+            self.sample_buttons(ui);
             if ui.button("Two circles").clicked() {
                 let circle = |z: f64, r: f64| SectionInput {
                     points: (0..8)
@@ -194,7 +200,7 @@ impl SkinTab {
                         .collect(),
                     ..SectionInput::default()
                 };
-                self.view.reframe();
+                self.base.view.reframe();
                 self.set(
                     Some(SkinSpec::new(vec![circle(0.0, 1.0), circle(2.0, 0.6)])),
                     None,
@@ -282,43 +288,27 @@ impl SkinTab {
         ui.separator();
         self.section_editor(ui, spec);
         ui.separator();
-        ui.horizontal_wrapped(|ui| {
-            ui.label("Drag in the view:");
-            ui.radio_value(&mut self.mouse, Mouse::Orbit, "orbit");
-            ui.radio_value(&mut self.mouse, Mouse::Move, "move");
-            ui.radio_value(&mut self.mouse, Mouse::Turn, "turn");
-            ui.radio_value(&mut self.mouse, Mouse::Scale, "scale");
-        })
-        .response
-        .on_hover_text("Move, turn and scale act on the selected section; right drag orbits then");
+        self.mouse.row(
+            ui,
+            &[Mouse::Orbit, Mouse::Move, Mouse::Turn, Mouse::Scale],
+            "Move, turn and scale act on the selected section; right drag orbits then",
+        );
         ui.separator();
         ui.label("Surface");
         let mut res = spec.resolution;
-        // A scene's own resolution (the CLI takes up to 256) is kept until the slider moves.
-        let r = ui.add(
-            egui::Slider::new(&mut res, 1..=32)
-                .clamping(egui::SliderClamping::Edits)
-                .text("quads a patch side"),
-        );
-        let g = self.gestures.of(&r);
-        if res != spec.resolution {
-            let mut s = spec.clone();
-            s.resolution = res;
-            self.set(Some(s), g);
-        }
+        let r = gestures::resolution_slider(ui, &mut res, "quads a patch side");
+        let g = self.base.gestures.of(&r);
+        self.set_changed(spec, res != spec.resolution, |s| s.resolution = res, g);
         let mut basis = spec.basis;
-        ui.horizontal(|ui| {
-            ui.label("G1 basis");
-            ui.radio_value(&mut basis, Basis::Virtual, "virtual")
-                .on_hover_text("Both sides of a border from the crossing curves' tangents: the surface does not depend on how sections are listed (the default)");
-            ui.radio_value(&mut basis, Basis::OneSided, "one-sided (paper)")
-                .on_hover_text("The cell listed first is the basis and the other follows it: G1 too, but the shape depends on the numbering");
-        });
-        if basis != spec.basis {
-            let mut s = spec.clone();
-            s.basis = basis;
-            self.set(Some(s), None);
-        }
+        gestures::basis_row(
+            ui,
+            &mut basis,
+            [
+                "Both sides of a border from the crossing curves' tangents: the surface does not depend on how sections are listed (the default)",
+                "The cell listed first is the basis and the other follows it: G1 too, but the shape depends on the numbering",
+            ],
+        );
+        self.set_changed(spec, basis != spec.basis, |s| s.basis = basis, None);
         let mut caps = spec.caps;
         if ui.checkbox(&mut caps, "Planar caps at the ends").changed() {
             let mut s = spec.clone();
@@ -338,93 +328,10 @@ impl SkinTab {
         );
         ui.checkbox(&mut o.trajectories, "Trajectories between centres (fig. 1)");
         ui.checkbox(&mut o.swept, "Swept sections (fig. 2)");
-        ui.checkbox(&mut o.wireframe, "Iso-parameter lines");
         ui.checkbox(&mut o.contours, "Contour lines (z = const, fig. 4b)");
-        ui.checkbox(&mut o.curvature, "Mean-curvature colours");
-        ui.checkbox(&mut o.smooth, "Smooth shading");
+        o.look.ui(ui);
         if ui.button("Frame the skin").clicked() {
-            self.view.frame();
-        }
-    }
-
-    fn summary(&self, ui: &mut egui::Ui) {
-        let Some(b) = &self.built else { return };
-        match &b.result {
-            Ok((s, m)) => {
-                let shifts: Vec<String> = s.shifts.iter().map(|x| x.to_string()).collect();
-                ui.label(format!(
-                    "{} sections × {} points, {} patches, {} quads; shifts {}; {} inserted, {} crease chain(s)",
-                    s.sections.len(),
-                    s.points_per_section(),
-                    s.patches.len(),
-                    m.num_faces(),
-                    shifts.join(", "),
-                    s.inserted.iter().sum::<usize>(),
-                    s.creases()
-                ));
-                ui.label(format!(
-                    "G1: largest normal jump across patch borders {:.1e}°; built in {:.1} ms",
-                    b.jump, b.millis
-                ));
-            }
-            Err(e) => {
-                ui.colored_label(
-                    egui::Color32::from_rgb(255, 120, 100),
-                    format!("No skin: {e}"),
-                );
-            }
-        }
-    }
-
-    /// A primary drag that moves, turns or scales the selected section (one undo step).
-    fn section_drag(
-        &mut self,
-        ui: &egui::Ui,
-        resp: &egui::Response,
-        rect: egui::Rect,
-        spec: &SkinSpec,
-    ) {
-        let k = self.selected;
-        if resp.drag_started_by(egui::PointerButton::Primary) && k < spec.sections.len() {
-            self.drag = Some(SectionDrag {
-                gesture: self.gestures.start(),
-                section: k,
-                start: spec.sections[k].points.clone(),
-            });
-        }
-        if resp.dragged_by(egui::PointerButton::Primary)
-            && let Some(d) = &self.drag
-            && d.section < spec.sections.len()
-        {
-            let total = gestures::drag_total(ui);
-            let (centre, normal, _, _) = frame(&d.start);
-            let points: Vec<DVec3> = match self.mouse {
-                Mouse::Move => {
-                    let by = self
-                        .view
-                        .camera
-                        .drag_in_view_plane(total.x, total.y, rect.height())
-                        .as_dvec3();
-                    d.start.iter().map(|p| *p + by).collect()
-                }
-                Mouse::Turn => {
-                    let q =
-                        DQuat::from_axis_angle(normal, (total.x as f64 * 0.01).clamp(-10.0, 10.0));
-                    d.start.iter().map(|p| centre + q * (*p - centre)).collect()
-                }
-                Mouse::Scale => {
-                    let f = gestures::drag_scale(total);
-                    d.start.iter().map(|p| centre + (*p - centre) * f).collect()
-                }
-                Mouse::Orbit => return,
-            };
-            let mut s = spec.clone();
-            s.sections[d.section].points = points;
-            let g = d.gesture;
-            self.set(Some(s), Some(g));
-        }
-        if resp.drag_stopped() {
-            self.drag = None;
+            self.base.view.frame();
         }
     }
 
@@ -437,6 +344,7 @@ impl SkinTab {
             return;
         }
         let resp = self
+            .base
             .view
             .interact(ui, rect, "skin_view", self.mouse == Mouse::Orbit);
         if self.mouse != Mouse::Orbit
@@ -444,20 +352,21 @@ impl SkinTab {
         {
             self.section_drag(ui, &resp, rect, spec);
         }
-        self.view.paint(ui, rect);
-        View3d::hint(
-            ui,
-            rect,
-            match self.mouse {
-                Mouse::Orbit => "drag: orbit · right drag: pan · wheel: zoom",
-                Mouse::Move => {
-                    "drag: move the selected section in the view plane · right drag: orbit"
-                }
-                Mouse::Turn => {
-                    "drag sideways: turn the selected section in its plane · right drag: orbit"
-                }
-                Mouse::Scale => "drag up or down: scale the selected section · right drag: orbit",
-            },
-        );
+        self.base.view.paint(ui, rect);
+        let orbit = "drag: orbit · right drag: pan · wheel: zoom";
+        View3d::hint(ui, rect, &self.mouse.hint("section", orbit));
+    }
+
+    fn part(doc: &DocState) -> Option<&Self::Spec> {
+        doc.skin.as_ref()
+    }
+
+    fn surface(&self) -> Result<&prism_geom::PolyMesh, &str> {
+        let built = self.built.as_ref().ok_or("no sections")?;
+        built.result.as_ref().map(|r| &r.1).map_err(String::as_str)
+    }
+
+    fn edit(spec: Option<SkinSpec>, gesture: Option<u64>) -> Edit {
+        Edit::SetSkin { spec, gesture }
     }
 }

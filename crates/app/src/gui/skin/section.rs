@@ -1,7 +1,8 @@
 //! The Skin tab's editor of the selected section ([`SkinTab::section_editor`]).
 
 use super::{SkinTab, frame};
-use glam::{DQuat, DVec3};
+use crate::gui::gestures::Tab3d;
+use glam::DVec3;
 use prism_geom::freeform::SkinSpec;
 
 impl SkinTab {
@@ -14,55 +15,25 @@ impl SkinTab {
         };
         let (centre, normal, x, y) = frame(&sec.points);
         ui.label(format!("Section {k}"));
-        let mut s = spec.clone();
-        if let Some((moved, g)) = self.gestures.centre_field(ui, centre) {
-            for p in &mut s.sections[k].points {
-                *p += moved - centre;
-            }
-            self.set(Some(s.clone()), g);
-        }
         // Turn, tilt and scale act by difference: each frame's change of the field is applied
         // to the section as it is, and the field falls back to its rest value when let go.
         let mut gst = self.gesture;
-        let mut act: Option<(DQuat, f64, Option<u64>)> = None;
-        let turn = |axis: DVec3, before: f64, after: f64| {
+        let turns = vec![
+            ("turn in plane °", vec![(&mut gst.turn, "", normal)]),
             (
-                DQuat::from_axis_angle(axis, (after - before).to_radians()),
-                1.0,
-            )
-        };
-        ui.horizontal(|ui| {
-            ui.label("turn in plane °");
-            if let Some((b, a, g)) = self.gestures.delta_field(ui, &mut gst.turn, 0.0, "", None) {
-                let (q, f) = turn(normal, b, a);
-                act = Some((q, f, g));
-            }
-        });
-        ui.horizontal(|ui| {
-            ui.label("tilt °");
-            if let Some((b, a, g)) =
-                self.gestures
-                    .delta_field(ui, &mut gst.tilt_x, 0.0, "about x: ", None)
-            {
-                let (q, f) = turn(x, b, a);
-                act = Some((q, f, g));
-            }
-            if let Some((b, a, g)) =
-                self.gestures
-                    .delta_field(ui, &mut gst.tilt_y, 0.0, "about y: ", None)
-            {
-                let (q, f) = turn(y, b, a);
-                act = Some((q, f, g));
-            }
-        });
-        if let Some((f, g)) = self.gestures.scale_field(ui, &mut gst.scale) {
-            act = Some((DQuat::IDENTITY, f, g));
-        }
+                "tilt °",
+                vec![
+                    (&mut gst.tilt_x, "about x: ", x),
+                    (&mut gst.tilt_y, "about y: ", y),
+                ],
+            ),
+        ];
+        let placed = self.base.gestures.placement(ui, centre, turns);
         self.gesture = gst;
-        if let Some((q, f, g)) = act {
+        if let Some((map, g)) = placed {
             let mut s = spec.clone();
             for p in &mut s.sections[k].points {
-                *p = centre + q * ((*p - centre) * f);
+                *p = map.transform_point3(*p);
             }
             self.set(Some(s), g);
         }
@@ -89,9 +60,9 @@ impl SkinTab {
                     ui.horizontal(|ui| {
                         ui.label(format!("{i}"));
                         let r1 = ui.add(egui::DragValue::new(&mut u).speed(0.005).max_decimals(4));
-                        let g1 = self.gestures.of(&r1);
+                        let g1 = self.base.gestures.of(&r1);
                         let r2 = ui.add(egui::DragValue::new(&mut v).speed(0.005).max_decimals(4));
-                        let g2 = self.gestures.of(&r2);
+                        let g2 = self.base.gestures.of(&r2);
                         let c = ui.checkbox(&mut corner, "corner");
                         if r1.changed() || r2.changed() || c.changed() {
                             let g = if r1.changed() { g1 } else { g2 };
