@@ -178,7 +178,6 @@ pub fn before_split(plan: &[Mend], parent: &Parent, points: &mut [DVec3]) -> (Ve
 /// is the parent's corner c) whose last check is `checked`; `recheck` checks a child again.
 /// `unfolded` are the faces [`before_split`] moved. Returns what was changed; `checked` is the
 /// check of `out` as it is left.
-#[allow(clippy::too_many_arguments)]
 pub fn after_split(
     plan: &[Mend],
     parent: &Parent,
