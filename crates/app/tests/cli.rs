@@ -953,6 +953,100 @@ fn skin_builds_the_bundled_sections_and_names_bad_ones() {
     assert_eq!(o.status.code(), Some(1));
 }
 
+/// The sections of a skin as JSON: `sections[k]` its points.
+fn sections_json(sections: &[Vec<[f64; 3]>]) -> String {
+    let v: Vec<serde_json::Value> = sections
+        .iter()
+        .map(|p| serde_json::json!({ "points": p }))
+        .collect();
+    serde_json::json!({ "sections": v }).to_string()
+}
+
+/// A 2 × 1 rectangle of 8 points turned 25° a section is paired by shape (shift 0, each pair's
+/// twist in the summary), by the paper's least twist with `--pairing paper` (shift 7, corners
+/// on sides); a tube round a ring through 440° makes a skin through itself, refused
+/// (exit 1, naming the sections and the way out) and written with `--allow-crossing` and a
+/// warning.
+#[test]
+fn skins_are_paired_by_shape_and_refused_through_themselves() {
+    let rect: Vec<(f64, f64)> = vec![
+        (1.0, -0.5),
+        (1.0, 0.0),
+        (1.0, 0.5),
+        (0.0, 0.5),
+        (-1.0, 0.5),
+        (-1.0, 0.0),
+        (-1.0, -0.5),
+        (0.0, -0.5),
+    ];
+    let turned: Vec<Vec<[f64; 3]>> = (0..5)
+        .map(|k| {
+            let a = (25.0 * k as f64).to_radians();
+            rect.iter()
+                .map(|&(x, y)| {
+                    [
+                        x * a.cos() - y * a.sin(),
+                        x * a.sin() + y * a.cos(),
+                        k as f64,
+                    ]
+                })
+                .collect()
+        })
+        .collect();
+    let input = tmp("turning.json");
+    std::fs::write(&input, sections_json(&turned)).unwrap();
+    let out = tmp("turning.obj");
+    let (so, _) = succeeds(run_with("skin {} -o {}", &[&input, &out]));
+    assert!(
+        so.contains("paired by shape: shifts 0→1: 0 (twist 200.0°)"),
+        "{so}"
+    );
+    let (so, _) = succeeds(run_with("skin {} -o {} --pairing paper", &[&input, &out]));
+    assert!(
+        so.contains("paired by least twist (paper): shifts 0→1: 7 (twist 160.0°)"),
+        "{so}"
+    );
+    // A tube of 12 circles around a ring through 440°: its last part runs through its first.
+    let ring: Vec<Vec<[f64; 3]>> = (0..12)
+        .map(|k| {
+            let a = (40.0 * k as f64).to_radians();
+            let (c, t) = (
+                [2.0 * a.cos(), 2.0 * a.sin(), 0.1 * k as f64],
+                [-a.sin(), a.cos()],
+            );
+            (0..12)
+                .map(|i| {
+                    let u = i as f64 / 12.0 * std::f64::consts::TAU;
+                    // In the plane normal to the ring: along the radius and along z.
+                    let (r, z) = (0.6 * u.cos(), 0.6 * u.sin());
+                    [c[0] + r * t[1], c[1] - r * t[0], c[2] + z]
+                })
+                .collect()
+        })
+        .collect();
+    let crossing = tmp("crossing.json");
+    std::fs::write(&crossing, sections_json(&ring)).unwrap();
+    let out = tmp("crossing.obj");
+    let _ = std::fs::remove_file(&out);
+    let o = run_with("skin {} -o {}", &[&crossing, &out]);
+    let (_, se) = text(&o);
+    assert_eq!(o.status.code(), Some(1), "{se}");
+    assert!(
+        se.contains("the skin passes through itself") && se.contains("near sections 0, 1,"),
+        "{se}"
+    );
+    assert!(se.contains("--allow-crossing") && !out.exists(), "{se}");
+    let (_, se) = succeeds(run_with(
+        "skin {} -o {} --allow-crossing",
+        &[&crossing, &out],
+    ));
+    assert!(
+        se.contains("warning: the skin passes through itself"),
+        "{se}"
+    );
+    assert!(out.exists());
+}
+
 /// `prism envelope` on the bundled scenes: the summary's counts, a closed mesh, the curve
 /// network as polylines, the scene kept in a .prism.json and read back; bad scenes exit 1
 /// naming the primitive, a bad resolution exits 2.

@@ -34,3 +34,11 @@ fn skin_6x16(b: divan::Bencher, k: usize) {
     let s = sections();
     b.bench(|| skin(&s).unwrap().tessellate(k, true).unwrap());
 }
+
+/// The crossing check the Skin tab runs on every rebuild (the mesh of `skin_6x16`, caps on).
+#[divan::bench(args = [8, 16, 32])]
+fn crossings_6x16(b: divan::Bencher, k: usize) {
+    let s = skin(&sections()).unwrap();
+    let m = s.tessellate(k, true).unwrap();
+    b.bench(|| s.crossings(&m, k));
+}

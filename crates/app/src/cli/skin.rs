@@ -1,12 +1,14 @@
 //! `prism skin SECTIONS.json -o OUT.obj|.prism.json|.stl|.glb [--resolution K] [--no-caps]
-//! [--basis virtual|one-sided] [--patches PATCHES.json]`: a smooth solid through planar cross-sections (seed 003;
-//! docs/algorithms/skin.md). SECTIONS is `{"sections": [{"points": [[x, y, z], ...],
+//! [--basis virtual|one-sided] [--pairing shape|paper] [--allow-crossing] [--patches
+//! PATCHES.json]`: a smooth solid through planar cross-sections (seed 003;
+//! docs/algorithms/skin.md). A skin that passes through itself is refused (exit 1, naming the
+//! sections) unless `--allow-crossing`. SECTIONS is `{"sections": [{"points": [[x, y, z], ...],
 //! "corners": [i, ...], "polygon": false}, ...]}`, or a `.prism.json` with a `"skin"` block
 //! of that form. Sections and points are numbered from 0 as listed.
 
 use super::CliError;
 use clap::Args;
-use prism_geom::freeform::{Basis, SectionInput, Skin, SkinSpec, skin_with};
+use prism_geom::freeform::{Basis, Pairing, SectionInput, Skin, SkinSpec};
 use prism_geom::io::{self, Document};
 use std::path::{Path, PathBuf};
 
@@ -30,6 +32,16 @@ pub struct SkinArgs {
     /// is the basis).
     #[arg(long, default_value = "virtual", value_parser = ["virtual", "one-sided"])]
     pub basis: String,
+    /// How the vertices of neighbouring sections are paired: `shape` (the best least-squares
+    /// match after a turn about the normal; near-ties by the least twist) or `paper` (the
+    /// paper's least total twist, which pairs corners with sides once a section turns past
+    /// 180°/n from the last).
+    #[arg(long, default_value = "shape", value_parser = ["shape", "paper"])]
+    pub pairing: String,
+    /// Write a skin that passes through itself (with a warning naming the sections) instead
+    /// of refusing it.
+    #[arg(long)]
+    pub allow_crossing: bool,
     /// Replace a read-only output file (it keeps its permission bits).
     #[arg(long)]
     pub force: bool,
@@ -100,7 +112,20 @@ pub fn run(a: SkinArgs) -> Result<(), CliError> {
     } else {
         Basis::Virtual
     };
-    let s = skin_with(&sections, basis)
+    let pairing = if a.pairing == "paper" {
+        Pairing::Paper
+    } else {
+        Pairing::Shape
+    };
+    let spec = SkinSpec {
+        sections: sections.clone(),
+        resolution: a.resolution,
+        caps: !a.no_caps,
+        basis,
+        pairing,
+    };
+    let s = spec
+        .build()
         .map_err(|e| CliError::input(format!("{}: {e}", a.input.display())))?;
     check_tessellation(
         &a.memory,
@@ -112,7 +137,6 @@ pub fn run(a: SkinArgs) -> Result<(), CliError> {
     let mesh = s
         .tessellate(a.resolution, !a.no_caps)
         .map_err(CliError::input)?;
-    let counts = prism_geom::analysis::counts(&mesh);
     let n = s.points_per_section();
     let shifts: Vec<String> = s
         .shifts
@@ -121,8 +145,13 @@ pub fn run(a: SkinArgs) -> Result<(), CliError> {
         .enumerate()
         .map(|(k, (sh, t))| format!("{k}→{}: {sh} (twist {:.1}°)", k + 1, t.to_degrees()))
         .collect();
+    let paired = match (s.pairing, s.inserted.iter().any(|&i| i > 0)) {
+        (_, true) => "by polar angle",
+        (Pairing::Shape, false) => "by shape",
+        (Pairing::Paper, false) => "by least twist (paper)",
+    };
     println!(
-        "{} sections of {n} points, {} patches, shifts {}, {} point(s) inserted by polar angle, {} crease chain(s), largest normal jump across patch borders {:.2e}°",
+        "{} sections of {n} points, {} patches, paired {paired}: shifts {}, {} point(s) inserted by polar angle, {} crease chain(s), largest normal jump across patch borders {:.2e}°",
         s.sections.len(),
         s.patches.len(),
         shifts.join(", "),
@@ -130,6 +159,19 @@ pub fn run(a: SkinArgs) -> Result<(), CliError> {
         s.creases(),
         s.border_normal_jump(8)
     );
+    for note in s.notes() {
+        eprintln!("note: {note}");
+    }
+    if let Some(w) = s.crossings(&mesh, a.resolution).warning() {
+        if !a.allow_crossing {
+            return Err(CliError::input(format!(
+                "{}: {w} (move those sections apart, or write it anyway with --allow-crossing)",
+                a.input.display()
+            )));
+        }
+        eprintln!("warning: {w}");
+    }
+    let counts = prism_geom::analysis::counts(&mesh);
     if let Some(pp) = &a.patches {
         let text = serde_json::to_string_pretty(&patches_json(&s)).expect("JSON of numbers");
         io::write_atomically(pp, text.as_bytes()).map_err(CliError::input)?;
@@ -137,12 +179,7 @@ pub fn run(a: SkinArgs) -> Result<(), CliError> {
     }
     let doc = Document {
         mesh,
-        skin: Some(SkinSpec {
-            sections: sections.clone(),
-            resolution: a.resolution,
-            caps: !a.no_caps,
-            basis,
-        }),
+        skin: Some(spec),
         ..Document::default()
     };
     super::write_surface(&a.output, a.force, &doc)?;

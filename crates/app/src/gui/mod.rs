@@ -337,6 +337,10 @@ impl PrismApp {
         // waited for.
         let state = self.doc.state().clone();
         self.skin.sync(state.skin.as_ref());
+        while self.skin.checking() {
+            std::thread::sleep(std::time::Duration::from_millis(1));
+            self.skin.sync(state.skin.as_ref());
+        }
         self.envelope.sync(state.envelope.as_ref());
         while self.envelope.building() {
             self.envelope.sync(state.envelope.as_ref());
@@ -344,7 +348,7 @@ impl PrismApp {
     }
 
     pub fn busy(&self) -> bool {
-        self.model.busy() || self.envelope.building()
+        self.model.busy() || self.envelope.building() || self.skin.checking()
     }
 }
 

@@ -132,3 +132,60 @@ fn dragging_a_section_number_is_one_undo_step() {
     settle(&mut h);
     assert_eq!(h.state().doc.state().skin.as_ref().unwrap(), &before);
 }
+
+/// The pairing in the tab: the spout is paired by shape, its summary names each pair's shift
+/// and twist; the paper's least twist is one click away (undoable); a skin through itself is
+/// marked (its crossing midpoints in the overlay) and named in the summary by section.
+#[test]
+fn the_tab_pairs_by_shape_or_least_twist_and_names_a_skin_through_itself() {
+    let mut h = spout_in_the_skin_tab();
+    assert!(
+        h.query_by_label_contains("Paired by shape: 0–1: shift")
+            .is_some()
+    );
+    assert!(h.query_by_label("Crossings: none").is_some());
+    h.get_by_label("least twist (paper)").click();
+    settle(&mut h);
+    let spec = h.state().doc.state().skin.clone().unwrap();
+    assert_eq!(spec.pairing, prism_geom::freeform::Pairing::Paper);
+    assert!(
+        h.query_by_label_contains("Paired by least twist (paper)")
+            .is_some()
+    );
+    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::Z);
+    settle(&mut h);
+    let spec = h.state().doc.state().skin.clone().unwrap();
+    assert_eq!(spec.pairing, prism_geom::freeform::Pairing::Shape);
+
+    // A tube of 12 circles around a ring through 440°: its last part runs through its first.
+    let ring: Vec<prism_geom::freeform::SectionInput> = (0..12)
+        .map(|k| {
+            let a = (40.0 * k as f64).to_radians();
+            let c = glam::DVec3::new(2.0 * a.cos(), 2.0 * a.sin(), 0.1 * k as f64);
+            let radial = glam::DVec3::new(a.cos(), a.sin(), 0.0);
+            prism_geom::freeform::SectionInput {
+                points: (0..12)
+                    .map(|i| {
+                        let u = i as f64 / 12.0 * std::f64::consts::TAU;
+                        c + 0.6 * (u.cos() * radial + u.sin() * glam::DVec3::Z)
+                    })
+                    .collect(),
+                ..Default::default()
+            }
+        })
+        .collect();
+    let crossing = prism_geom::freeform::SkinSpec::new(ring);
+    h.state_mut()
+        .run(super::command::Command::Edit(Edit::SetSkin {
+            spec: Some(crossing),
+            gesture: None,
+        }));
+    settle(&mut h);
+    let b = h.state().skin.built().unwrap();
+    let c = b.crossings().expect("checked");
+    assert!(c.faces > 0 && c.points.len() == c.faces);
+    assert!(
+        h.query_by_label_contains("Crossings (red crosses): the skin passes through itself")
+            .is_some()
+    );
+}

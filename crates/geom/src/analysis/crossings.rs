@@ -128,6 +128,22 @@ pub fn crossed_by(mesh: &PolyMesh, f: u32, others: &[u32]) -> Vec<u32> {
         .collect()
 }
 
+/// The midpoint of each pair of `pairs` (the mean of the two faces' centroids): where a view
+/// marks them.
+pub fn crossing_points(mesh: &PolyMesh, pairs: &[(u32, u32)]) -> Vec<DVec3> {
+    let centroid = |f: u32| {
+        let c = mesh.face_corners(f as usize);
+        let n = c.len().max(1) as f64;
+        c.map(|c| mesh.positions[mesh.corner_verts[c] as usize])
+            .sum::<DVec3>()
+            / n
+    };
+    pairs
+        .iter()
+        .map(|&(f, g)| 0.5 * (centroid(f) + centroid(g)))
+        .collect()
+}
+
 /// The faces of crossing `pairs`, each once, ascending (what is drawn red).
 pub fn crossing_faces(pairs: &[(u32, u32)]) -> Vec<u32> {
     let mut faces: Vec<u32> = pairs.iter().flat_map(|&(f, g)| [f, g]).collect();

@@ -11,7 +11,9 @@ mod fillet;
 mod winding;
 
 pub use counts::{MeshCounts, counts};
-pub use crossings::{crossed_by, crossing_faces, crossings, crossings_of, triangles_cross};
+pub use crossings::{
+    crossed_by, crossing_faces, crossing_points, crossings, crossings_of, triangles_cross,
+};
 pub use curvature::mean_curvature;
 pub use fillet::{FilletError, FilletMeasure, FilletSummary, measure_fillet, measure_fillets};
 pub use winding::{Inside, winding_number};

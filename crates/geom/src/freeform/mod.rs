@@ -13,4 +13,7 @@ pub mod spline;
 
 pub use bezier::RationalBezier;
 pub use gregory::Gregory;
-pub use skin::{Basis, SectionInput, Skin, SkinError, SkinSpec, skin, skin_with};
+pub use skin::{
+    Basis, Pairing, SectionInput, Skin, SkinError, SkinOptions, SkinSpec, skin, skin_options,
+    skin_with,
+};

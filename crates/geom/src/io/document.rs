@@ -274,6 +274,7 @@ mod tests {
                 resolution: 5,
                 caps: false,
                 basis: crate::freeform::Basis::OneSided,
+                pairing: crate::freeform::Pairing::Paper,
             }),
             envelope: Some(EnvelopeSpec {
                 t: 0.5,

@@ -14,7 +14,7 @@ use super::gestures::{self, Base, Tab3d, dragged_points};
 use super::view3d::View3d;
 use build::{Built, Overlays};
 use glam::DVec3;
-use prism_geom::freeform::{SectionInput, SkinSpec};
+use prism_geom::freeform::{Pairing, SectionInput, SkinSpec};
 
 /// The bundled section sets: name, file name, contents.
 pub const SKIN_SAMPLES: [(&str, &str, &str); 3] = [
@@ -90,6 +90,11 @@ fn frame(points: &[DVec3]) -> (DVec3, DVec3, DVec3, DVec3) {
 }
 
 impl SkinTab {
+    /// Whether the crossing check of the last build is under way.
+    pub fn checking(&self) -> bool {
+        self.built.as_ref().is_some_and(|b| b.crossings().is_none())
+    }
+
     /// The last build (for the tests).
     #[cfg(test)]
     pub fn built(&self) -> Option<&Built> {
@@ -100,21 +105,51 @@ impl SkinTab {
         let Some(b) = &self.built else { return };
         match &b.result {
             Ok((s, m)) => {
-                let shifts: Vec<String> = s.shifts.iter().map(|x| x.to_string()).collect();
                 ui.label(format!(
-                    "{} sections × {} points, {} patches, {} quads; shifts {}; {} inserted, {} crease chain(s)",
+                    "{} sections × {} points, {} patches, {} quads; {} inserted, {} crease chain(s)",
                     s.sections.len(),
                     s.points_per_section(),
                     s.patches.len(),
                     m.num_faces(),
-                    shifts.join(", "),
                     s.inserted.iter().sum::<usize>(),
                     s.creases()
                 ));
+                let paired = match (s.pairing, s.inserted.iter().any(|&i| i > 0)) {
+                    (_, true) => "by polar angle",
+                    (Pairing::Shape, false) => "by shape",
+                    (Pairing::Paper, false) => "by least twist (paper)",
+                };
+                let pairs: Vec<String> = s
+                    .shifts
+                    .iter()
+                    .zip(&s.twists)
+                    .enumerate()
+                    .map(|(k, (sh, t))| {
+                        format!("{k}–{}: shift {sh}, twist {:.1}°", k + 1, t.to_degrees())
+                    })
+                    .collect();
+                ui.label(format!("Paired {paired}: {}", pairs.join("; ")));
                 ui.label(format!(
                     "G1: largest normal jump across patch borders {:.1e}°; built in {:.1} ms",
                     b.jump, b.millis
                 ));
+                let warn = egui::Color32::from_rgb(255, 170, 90);
+                match b.crossings().map(|c| c.warning()) {
+                    Some(Some(w)) => {
+                        ui.colored_label(warn, format!("Crossings (red crosses): {w}"));
+                    }
+                    Some(None) => {
+                        ui.label("Crossings: none");
+                    }
+                    None => {
+                        ui.label(egui::RichText::new("Crossings: checking…").weak());
+                        ui.ctx()
+                            .request_repaint_after(std::time::Duration::from_millis(30));
+                    }
+                }
+                for note in s.notes() {
+                    ui.colored_label(warn, note);
+                }
             }
             Err(e) => {
                 ui.colored_label(
@@ -171,8 +206,10 @@ impl Tab3d for SkinTab {
         if fresh {
             self.built = Some(Built::new(spec));
         }
+        // The crossings' marks join the overlay when the check's answer comes.
+        let checked = self.built.as_mut().is_some_and(|b| b.poll_crossings());
         self.selected = self.selected.min(spec.sections.len().saturating_sub(1));
-        if fresh || self.shown != Some((self.selected, self.overlays)) {
+        if fresh || checked || self.shown != Some((self.selected, self.overlays)) {
             let b = self.built.as_ref().expect("built above");
             self.base
                 .view
@@ -309,6 +346,25 @@ impl Tab3d for SkinTab {
             ],
         );
         self.set_changed(spec, basis != spec.basis, |s| s.basis = basis, None);
+        let mut pairing = spec.pairing;
+        gestures::radio_row(
+            ui,
+            "Pairing",
+            &mut pairing,
+            &[
+                (
+                    Pairing::Shape,
+                    "by shape",
+                    "Each section paired with the next where its shape, turned about the normal by up to a quarter turn, matches best (least squares); near-ties by the least twist (the default: a steadily turning section never crumples)",
+                ),
+                (
+                    Pairing::Paper,
+                    "least twist (paper)",
+                    "Seed 003's criterion: the pairing of least total twist; it pairs corners with sides once a section turns more than 180°/n from the last",
+                ),
+            ],
+        );
+        self.set_changed(spec, pairing != spec.pairing, |s| s.pairing = pairing, None);
         let mut caps = spec.caps;
         if ui.checkbox(&mut caps, "Planar caps at the ends").changed() {
             let mut s = spec.clone();
@@ -318,17 +374,26 @@ impl Tab3d for SkinTab {
         ui.separator();
         ui.label("Show");
         let o = &mut self.overlays;
-        ui.checkbox(
-            &mut o.sections,
-            "Section curves: patch borders across (yellow; selected red)",
-        );
-        ui.checkbox(
-            &mut o.chains,
-            "Chains: patch borders along (blue; creases violet)",
-        );
-        ui.checkbox(&mut o.trajectories, "Trajectories between centres (fig. 1)");
-        ui.checkbox(&mut o.swept, "Swept sections (fig. 2)");
-        ui.checkbox(&mut o.contours, "Contour lines (z = const, fig. 4b)");
+        let shows = [
+            (
+                &mut o.sections,
+                "Section curves: patch borders across (yellow; selected red)",
+            ),
+            (
+                &mut o.chains,
+                "Chains: patch borders along (blue; creases violet)",
+            ),
+            (&mut o.trajectories, "Trajectories between centres (fig. 1)"),
+            (&mut o.swept, "Swept sections (fig. 2)"),
+            (
+                &mut o.twists,
+                "Twist of each pair (fig. 2): rays to the swept vertices (orange) and their partners (green)",
+            ),
+            (&mut o.contours, "Contour lines (z = const, fig. 4b)"),
+        ];
+        for (on, label) in shows {
+            ui.checkbox(on, label);
+        }
         o.look.ui(ui);
         if ui.button("Frame the skin").clicked() {
             self.base.view.frame();

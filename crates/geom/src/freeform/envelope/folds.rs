@@ -135,15 +135,5 @@ fn follows_its_border(p: &EnvelopePatch, c: &GridCell) -> bool {
 /// what the fold check cannot: a patch folded over within its corners' tangent planes and
 /// parts of the surface through each other (docs/algorithms/envelope.md, "Quality report").
 pub fn crossings(mesh: &PolyMesh) -> Vec<DVec3> {
-    let centroid = |f: u32| {
-        let c = mesh.face_corners(f as usize);
-        let n = c.len().max(1) as f64;
-        c.map(|c| mesh.positions[mesh.corner_verts[c] as usize])
-            .sum::<DVec3>()
-            / n
-    };
-    crate::analysis::crossings(mesh)
-        .into_iter()
-        .map(|(f, g)| 0.5 * (centroid(f) + centroid(g)))
-        .collect()
+    crate::analysis::crossing_points(mesh, &crate::analysis::crossings(mesh))
 }

@@ -7,14 +7,16 @@
 //! 1. each section is checked and prepared ([`sections`]: centre, normal along the skinning
 //!    direction, the closed C2 spline through its points or C2 pieces between corners);
 //! 2. the previous section is swept into the next plane by the minimal rotation between their
-//!    normals, and the correspondence of least total twist is chosen over all n shifts
-//!    ([`network`]);
+//!    normals, and the correspondence is chosen over all n shifts ([`network`]): by shape (the
+//!    least-squares match after the best turn about the normal, the default) or by the paper's
+//!    least total twist;
 //!    (sections with unequal counts first get vertices inserted by polar angle, [`polar`]);
 //! 3. C2 cubic chains join corresponding vertices;
 //! 4. every cell gets a Gregory patch, G1 across every inner border through the
 //!    numbering-independent virtual basis ([`patches`]); chains through corners are creases;
 //! 5. [`Skin::tessellate`] samples K×K quads a patch into one welded mesh, with planar caps.
 
+pub mod crossings;
 pub mod network;
 pub mod patches;
 mod polar;
@@ -24,7 +26,9 @@ mod tessellate;
 use crate::freeform::RationalBezier;
 use crate::freeform::gregory::Gregory;
 use crate::freeform::spline::Cubic;
+pub use crossings::{Cell, SkinCrossings};
 use glam::DVec3;
+pub use network::Pairing;
 pub use patches::Basis;
 pub use sections::Section;
 use thiserror::Error;
@@ -55,10 +59,24 @@ pub struct SkinSpec {
     /// paper's one-sided basis).
     #[serde(default, skip_serializing_if = "is_virtual")]
     pub basis: Basis,
+    /// How neighbouring sections' vertices are paired (by shape, or the paper's least twist).
+    #[serde(default, skip_serializing_if = "is_shape")]
+    pub pairing: Pairing,
 }
 
 fn is_virtual(b: &Basis) -> bool {
     *b == Basis::Virtual
+}
+
+fn is_shape(p: &Pairing) -> bool {
+    *p == Pairing::Shape
+}
+
+/// How a skin is built besides its sections.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct SkinOptions {
+    pub basis: Basis,
+    pub pairing: Pairing,
 }
 
 impl SkinSpec {
@@ -76,7 +94,19 @@ impl SkinSpec {
             resolution: 8,
             caps: true,
             basis: Basis::Virtual,
+            pairing: Pairing::Shape,
         }
+    }
+
+    /// The skin through the sections with the spec's options.
+    pub fn build(&self) -> Result<Skin, SkinError> {
+        skin_options(
+            &self.sections,
+            SkinOptions {
+                basis: self.basis,
+                pairing: self.pairing,
+            },
+        )
     }
 }
 
@@ -115,16 +145,24 @@ pub enum SkinError {
     )]
     Coincident { a: usize, b: usize },
     #[error(
-        "section {section} is not star-shaped about its centre (a ray from the centre meets its curve more than once): sections with unequal point counts are matched by polar angle and need it; give every section the same number of points instead"
+        "section {section} is not star-shaped about its centre (a ray from the centre meets its curve more than once, near point {point}): neighbouring sections are paired by their turn about their centres, and points are inserted by polar angle, which needs every ray from the centre to meet the curve once"
     )]
-    NotStarShaped { section: usize },
+    NotStarShaped { section: usize, point: usize },
     #[error(
         "sections {a} and {b} cannot be matched by polar angle: vertices of one lie on the same ray from the centre of the other (within 1e-9 rad); give every section the same number of points instead"
     )]
     NotMatched { a: usize, b: usize },
+    #[error(
+        "the skin turns back at section {section}: chain {chain} meets it along or against the skinning direction (its neighbouring sections lie on one side of it, or it is tilted past them); move or reorder the sections"
+    )]
+    TurnsBack { section: usize, chain: usize },
     #[error("resolution {0} is out of range: 1 to 256 quads a patch side")]
     Resolution(usize),
 }
+
+/// A polygon turn (degrees) above which an unmarked section point is named by
+/// [`Skin::notes`]: a regular triangle turns by 120°, a sharp trailing edge by 160° and more.
+pub const SHARP_TURN: f64 = 150.0;
 
 /// A skin: the prepared sections, the curve network and one Gregory patch per cell.
 #[derive(Debug, Clone)]
@@ -134,6 +172,9 @@ pub struct Skin {
     pub shifts: Vec<usize>,
     /// Total twist of each chosen shift, radians.
     pub twists: Vec<f64>,
+    /// How the shifts were chosen: the requested pairing, or the polar pairing (twist 0) when
+    /// points were inserted.
+    pub pairing: Pairing,
     /// Per section, its vertex on chain 0.
     pub offset: Vec<usize>,
     /// Per chain, its cubic pieces between consecutive sections.
@@ -158,6 +199,18 @@ pub fn skin(input: &[SectionInput]) -> Result<Skin, SkinError> {
 
 /// [`skin`] with the G1 construction of the inner borders chosen.
 pub fn skin_with(input: &[SectionInput], basis: Basis) -> Result<Skin, SkinError> {
+    skin_options(
+        input,
+        SkinOptions {
+            basis,
+            ..SkinOptions::default()
+        },
+    )
+}
+
+/// [`skin`] with every option chosen.
+pub fn skin_options(input: &[SectionInput], options: SkinOptions) -> Result<Skin, SkinError> {
+    let basis = options.basis;
     if input.len() < 2 {
         return Err(SkinError::TooFewSections(input.len()));
     }
@@ -177,11 +230,16 @@ pub fn skin_with(input: &[SectionInput], basis: Basis) -> Result<Skin, SkinError
         }
     }
     let mut sections = sections::prepare(input, checked);
+    for (k, s) in sections.iter().enumerate() {
+        sections::check_star(k, s)?;
+    }
     let n0 = sections[0].points.len();
-    let inserted = if sections.iter().all(|s| s.points.len() == n0) {
-        vec![0; sections.len()]
+    let (inserted, pairing) = if sections.iter().all(|s| s.points.len() == n0) {
+        (vec![0; sections.len()], options.pairing)
     } else {
-        polar::equalise(&mut sections)?
+        // The polar insertion leaves a vertex on every transported ray: the least twist (0)
+        // pairs them, whatever the shapes.
+        (polar::equalise(&mut sections)?, Pairing::Paper)
     };
     let n = sections[0].points.len();
     let m = sections.len();
@@ -191,13 +249,14 @@ pub fn skin_with(input: &[SectionInput], basis: Basis) -> Result<Skin, SkinError
     let mut trajectories = Vec::with_capacity(m - 1);
     for k in 0..m - 1 {
         let s = network::sweep(&sections[k], &sections[k + 1]);
-        let (sigma, twist) = network::least_twist(&s, &sections[k + 1]);
+        let (sigma, twist) = network::pair(&s, &sections[k + 1], pairing);
         shifts.push(sigma);
         twists.push(twist);
         swept.push(s);
         trajectories.push(network::trajectory(&sections[k], &sections[k + 1]));
     }
     let (chains, offset) = network::chains(&sections, &shifts);
+    network::check_forward(&sections, &chains)?;
     let crease: Vec<bool> = (0..n)
         .map(|i| {
             sections
@@ -221,6 +280,7 @@ pub fn skin_with(input: &[SectionInput], basis: Basis) -> Result<Skin, SkinError
         sections,
         shifts,
         twists,
+        pairing,
         offset,
         chains,
         crease,
@@ -269,6 +329,38 @@ impl Skin {
             }
         }
         worst
+    }
+
+    /// What the user should know about the sections: each point, not marked a corner, where
+    /// its section's polygon turns by more than [`SHARP_TURN`] — the smooth curve must turn
+    /// there within a small fraction of the point spacing, so the surface is a near-crease that
+    /// only a fine mesh resolves.
+    pub fn notes(&self) -> Vec<String> {
+        let mut out = Vec::new();
+        for (k, s) in self.sections.iter().enumerate() {
+            let n = s.points.len();
+            for i in 0..n {
+                if s.corner[i] || s.original[i] == usize::MAX {
+                    continue;
+                }
+                // The neighbouring given points (inserted ones lie on the curve).
+                let given = |step: isize| {
+                    (1..n)
+                        .map(|d| (i as isize + step * d as isize).rem_euclid(n as isize) as usize)
+                        .find(|&j| s.original[j] != usize::MAX)
+                        .map_or(s.points[i], |j| s.points[j])
+                };
+                let (a, b) = (s.points[i] - given(-1), given(1) - s.points[i]);
+                let turn = a.angle_between(b).to_degrees();
+                if turn > SHARP_TURN {
+                    out.push(format!(
+                        "section {k}: point {} turns by {turn:.0}° and is not a corner: the smooth curve rounds it within a fraction of the point spacing (mark it a corner, \"corners\": [{}], for a sharp edge)",
+                        s.original[i], s.original[i]
+                    ));
+                }
+            }
+        }
+        out
     }
 
     /// Number of chains that are creases.

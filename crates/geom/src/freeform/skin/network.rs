@@ -1,13 +1,15 @@
 //! The curve network of a skin (seed 003 §2 steps 1–4;
-//! docs/algorithms/skin.md, "The network"): the virtual trajectory between neighbouring section centres (a
-//! rational quadratic, for display), the sweep of each section into the next plane by the
-//! minimal rotation `R(N_k → N_(k+1))`, the correspondence of minimal total twist over all n
-//! shifts, and the C2 chains through corresponding vertices.
+//! docs/algorithms/skin.md, "The network"): the virtual trajectory between neighbouring section
+//! centres (a rational quadratic, for display), the sweep of each section into the next plane
+//! by the minimal rotation `R(N_k → N_(k+1))`, the correspondence over all n shifts — by shape
+//! (the default, [`Pairing::Shape`]) or by the paper's least total twist ([`Pairing::Paper`]) —
+//! and the C2 chains through corresponding vertices.
 
+use super::SkinError;
 use super::sections::Section;
 use crate::freeform::RationalBezier;
 use crate::freeform::spline::{self, Cubic};
-use glam::{DQuat, DVec3};
+use glam::{DQuat, DVec2, DVec3};
 
 /// The minimal rotation taking unit `a` to unit `b` (a U-turn turns about a perpendicular).
 pub fn rotation(a: DVec3, b: DVec3, d: DVec3) -> DQuat {
@@ -36,20 +38,114 @@ pub fn sweep(a: &Section, b: &Section) -> Vec<DVec3> {
         .collect()
 }
 
+/// How the vertices of neighbouring sections are paired (docs/algorithms/skin.md,
+/// "Correspondence").
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, serde::Serialize, serde::Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Pairing {
+    /// By shape: the shift whose swept section, turned about the normal by its best angle
+    /// (within a quarter turn), lies closest to the next in the least-squares sense (a
+    /// Procrustes match); near-ties by the least total twist. A steadily turning section keeps
+    /// its natural pairing at any turn a section up to a quarter turn.
+    #[default]
+    Shape,
+    /// The paper's criterion: the least total twist `Σ ∠(V′_i − C, V_(i+σ) − C)`. Past a
+    /// steady turn of 180°/n a section it pairs corners with sides (the skin crumples).
+    Paper,
+}
+
+impl Pairing {
+    pub fn name(self) -> &'static str {
+        match self {
+            Pairing::Shape => "shape",
+            Pairing::Paper => "paper",
+        }
+    }
+}
+
+/// The shift σ pairing swept vertex i with vertex (i + σ) mod n of the next section by
+/// `pairing`, and its total twist (radians).
+pub fn pair(swept: &[DVec3], next: &Section, pairing: Pairing) -> (usize, f64) {
+    match pairing {
+        Pairing::Paper => least_twist(swept, next),
+        Pairing::Shape => best_match(swept, next),
+    }
+}
+
+/// The total twist `Σ ∠(V′_i − C, V_(i+σ) − C)` of shift σ and its sum of squared distances.
+fn twist_of(swept: &[DVec3], next: &Section, s: usize) -> (f64, f64) {
+    let n = swept.len();
+    let c = next.centre;
+    let (mut twist, mut dist) = (0.0, 0.0);
+    for (i, &v) in swept.iter().enumerate() {
+        let (a, b) = (v - c, next.points[(i + s) % n] - c);
+        twist += a.cross(b).length().atan2(a.dot(b));
+        dist += (v - next.points[(i + s) % n]).length_squared();
+    }
+    (twist, dist)
+}
+
+/// The shift of least Procrustes residual: with the points as complex numbers about the
+/// centre in the next section's plane (z the swept section's, w the next's),
+/// `residual(σ) = Σ|z_i|² + Σ|w_j|² − 2|Σ conj(z_i) w_(i+σ)|`, the squared distance left after
+/// the best rotation `arg Σ conj(z_i) w_(i+σ)` about the normal. Only shifts whose best
+/// rotation is within a quarter turn compete (a section turned further from its neighbour
+/// cannot be told from its own symmetric images: an ellipse matches itself turned by a half
+/// turn); residuals within [`NEAR_TIE`] of the sections' scale are ties, broken by the least
+/// total twist, then the sum of squared distances, then the smaller σ.
+fn best_match(swept: &[DVec3], next: &Section) -> (usize, f64) {
+    let n = swept.len();
+    let c = next.centre;
+    let x = next.normal.any_orthonormal_vector();
+    let y = next.normal.cross(x);
+    let flat = |p: DVec3| DVec2::new((p - c).dot(x), (p - c).dot(y));
+    let z: Vec<DVec2> = swept.iter().map(|&p| flat(p)).collect();
+    let w: Vec<DVec2> = next.points.iter().map(|&p| flat(p)).collect();
+    let scale: f64 = z.iter().chain(&w).map(|p| p.length_squared()).sum();
+    let candidates: Vec<(usize, f64)> = (0..n)
+        .map(|s| {
+            // Σ conj(z_i) w_(i+s) as (re, im).
+            let mut sum = DVec2::ZERO;
+            for (i, a) in z.iter().enumerate() {
+                let b = w[(i + s) % n];
+                sum += DVec2::new(a.dot(b), a.perp_dot(b));
+            }
+            (s, sum)
+        })
+        .filter(|(_, sum)| sum.x >= 0.0)
+        .map(|(s, sum)| (s, scale - 2.0 * sum.length()))
+        .collect();
+    let least = candidates.iter().map(|c| c.1).fold(f64::INFINITY, f64::min);
+    if !least.is_finite() {
+        return least_twist(swept, next);
+    }
+    let mut best = (0usize, f64::INFINITY, f64::INFINITY);
+    for &(s, residual) in &candidates {
+        if residual > least + NEAR_TIE * scale {
+            continue;
+        }
+        let (twist, dist) = twist_of(swept, next, s);
+        let tol = 1e-12 * (1.0 + twist);
+        if twist < best.1 - tol || ((twist - best.1).abs() <= tol && dist < best.2) {
+            best = (s, twist, dist);
+        }
+    }
+    (best.0, best.1)
+}
+
+/// Procrustes residuals closer than this share of the sections' scale (`Σ|z|² + Σ|w|²`) are
+/// ties. A shape match is decided only when it is clear; sections that match about equally
+/// under several shifts (a regular polygon, an ellipse against a slightly different one) are
+/// paired by the least twist among them.
+pub const NEAR_TIE: f64 = 1e-3;
+
 /// The shift σ pairing swept vertex i with vertex (i + σ) mod n of the next section: the
 /// least total twist `Σ ∠(V'_i − C, V_(i+σ) − C)` over all n shifts; ties by the smaller sum of
 /// squared distances, then the smaller σ.
 pub fn least_twist(swept: &[DVec3], next: &Section) -> (usize, f64) {
-    let n = swept.len();
-    let c = next.centre;
     let mut best = (0usize, f64::INFINITY, f64::INFINITY);
-    for s in 0..n {
-        let (mut twist, mut dist) = (0.0, 0.0);
-        for (i, &v) in swept.iter().enumerate() {
-            let (a, b) = (v - c, next.points[(i + s) % n] - c);
-            twist += a.cross(b).length().atan2(a.dot(b));
-            dist += (v - next.points[(i + s) % n]).length_squared();
-        }
+    for s in 0..swept.len() {
+        let (twist, dist) = twist_of(swept, next, s);
         let tol = 1e-12 * (1.0 + twist);
         if twist < best.1 - tol || ((twist - best.1).abs() <= tol && dist < best.2) {
             best = (s, twist, dist);
@@ -109,4 +205,33 @@ pub fn chains(sections: &[Section], shifts: &[usize]) -> (Vec<Vec<Cubic>>, Vec<u
         })
         .collect();
     (chains, offset)
+}
+
+/// Checks that every chain leaves and reaches every section forwards: its tangent there (the
+/// leg of its cubic) has a positive component along the section's normal, which points along
+/// the skinning direction. A skin through sections A, B, A turns back at B (the chains stop
+/// there: their tangent is zero), and a section tilted past its neighbours meets its chains
+/// against the direction; either would fold the patches on both sides (and, at a zero
+/// tangent, leave them with no normal).
+pub fn check_forward(sections: &[Section], chains: &[Vec<Cubic>]) -> Result<(), SkinError> {
+    let m = sections.len();
+    for (i, chain) in chains.iter().enumerate() {
+        for (k, s) in sections.iter().enumerate() {
+            let leg = if k + 1 < m {
+                chain[k][1] - chain[k][0]
+            } else {
+                chain[k - 1][3] - chain[k - 1][2]
+            };
+            let size = (s.points[0] - s.centre).length();
+            // NaN (no leg) fails as a zero leg does.
+            let forward = leg.dot(s.normal);
+            if forward.is_nan() || forward <= 1e-9 * size {
+                return Err(SkinError::TurnsBack {
+                    section: k,
+                    chain: i,
+                });
+            }
+        }
+    }
+    Ok(())
 }

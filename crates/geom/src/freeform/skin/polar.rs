@@ -8,7 +8,7 @@
 //! piece split by de Casteljau, so the curve does not change). A forward pass and a backward
 //! pass leave one vertex on every transported ray in every section: equal counts, and the
 //! least-twist pairing of the matched rays has total twist 0. Each section must be star-shaped
-//! about its centre (every ray meets its curve once), else it is refused by name.
+//! about its centre (every ray meets its curve once; `sections::check_star`).
 
 use super::SkinError;
 use super::network::rotation;
@@ -18,8 +18,6 @@ use glam::DVec3;
 use std::f64::consts::TAU;
 
 const SAME_RAY: f64 = 1e-9;
-/// Samples a piece to check that the polar angle runs monotonically along it.
-const STAR_SAMPLES: usize = 16;
 
 /// The polar angle of `p` about the section's centre in its plane, in [0, 2π).
 fn angle(s: &Section, x: DVec3, p: DVec3) -> f64 {
@@ -40,28 +38,6 @@ fn split(c: &Cubic, t: f64) -> (Cubic, Cubic) {
 /// The frame axis of each section's polar angles.
 fn axis(s: &Section) -> DVec3 {
     s.normal.any_orthonormal_vector()
-}
-
-/// Checks that section k's curve turns monotonically about its centre.
-fn check_star(k: usize, s: &Section) -> Result<(), SkinError> {
-    let x = axis(s);
-    let mut total = 0.0;
-    let mut prev = angle(s, x, s.curve[0][0]);
-    for piece in &s.curve {
-        for j in 1..=STAR_SAMPLES {
-            let a = angle(s, x, spline::eval(piece, j as f64 / STAR_SAMPLES as f64));
-            let step = (a - prev + TAU / 2.0).rem_euclid(TAU) - TAU / 2.0;
-            if step <= 0.0 {
-                return Err(SkinError::NotStarShaped { section: k });
-            }
-            total += step;
-            prev = a;
-        }
-    }
-    if (total - TAU).abs() > 1e-6 {
-        return Err(SkinError::NotStarShaped { section: k });
-    }
-    Ok(())
 }
 
 /// Inserts into `s` a vertex on the ray at polar angle `alpha`, unless one lies on it.
@@ -113,9 +89,6 @@ fn insert_on_ray(s: &mut Section, x: DVec3, alpha: f64) -> bool {
 /// Makes every section's count equal by polar insertion; returns the number of inserted
 /// vertices per section.
 pub(super) fn equalise(sections: &mut [Section]) -> Result<Vec<usize>, SkinError> {
-    for (k, s) in sections.iter().enumerate() {
-        check_star(k, s)?;
-    }
     let m = sections.len();
     let mut inserted = vec![0usize; m];
     let mut carry = |from: usize, to: usize, sections: &mut [Section]| {

@@ -8,6 +8,7 @@
 use super::{SectionInput, SkinError};
 use crate::freeform::spline::{self, Cubic};
 use glam::{DVec2, DVec3};
+use std::f64::consts::TAU;
 
 /// Largest distance of a point from its section's plane, as a fraction of the section's
 /// size (bounding-box diagonal).
@@ -198,4 +199,41 @@ pub(super) fn prepare(
             }
         })
         .collect()
+}
+
+/// Samples a piece to check that the polar angle runs monotonically along it.
+const STAR_SAMPLES: usize = 16;
+
+/// Checks that section k's curve turns monotonically about its centre (star-shaped: every ray
+/// from the centre meets it once, so it cannot cross itself either), sampled
+/// [`STAR_SAMPLES`] times a piece.
+pub(super) fn check_star(k: usize, s: &Section) -> Result<(), SkinError> {
+    let x = s.normal.any_orthonormal_vector();
+    let angle = |p: DVec3| {
+        let d = p - s.centre;
+        d.dot(s.normal.cross(x)).atan2(d.dot(x))
+    };
+    let mut total = 0.0;
+    let mut prev = angle(s.curve[0][0]);
+    for (i, piece) in s.curve.iter().enumerate() {
+        for j in 1..=STAR_SAMPLES {
+            let a = angle(spline::eval(piece, j as f64 / STAR_SAMPLES as f64));
+            let step = (a - prev + TAU / 2.0).rem_euclid(TAU) - TAU / 2.0;
+            if step <= 0.0 {
+                return Err(SkinError::NotStarShaped {
+                    section: k,
+                    point: s.original[i],
+                });
+            }
+            total += step;
+            prev = a;
+        }
+    }
+    if (total - TAU).abs() > 1e-6 {
+        return Err(SkinError::NotStarShaped {
+            section: k,
+            point: s.original[0],
+        });
+    }
+    Ok(())
 }
