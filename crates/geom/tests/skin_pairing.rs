@@ -327,3 +327,18 @@ fn a_skin_that_turns_back_is_refused_naming_the_section() {
     let e = skin(&[a, tilted]).unwrap_err();
     assert!(matches!(e, SkinError::TurnsBack { .. }), "{e}");
 }
+
+/// The bundled spout, wing and pitched wing pair alike by shape and by the paper's least twist
+/// (sections of different shapes are the paper's own case): the same shifts and twists.
+#[test]
+fn the_bundled_skins_pair_alike_under_both_criteria() {
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../assets");
+    for name in ["spout", "wing", "wing-pitched"] {
+        let text = std::fs::read_to_string(dir.join(format!("{name}.skin.json"))).unwrap();
+        let v: serde_json::Value = serde_json::from_str(&text).unwrap();
+        let input: Vec<SectionInput> = serde_json::from_value(v["sections"].clone()).unwrap();
+        let (shape, paper) = (built(&input, Pairing::Shape), built(&input, Pairing::Paper));
+        assert_eq!(shape.shifts, paper.shifts, "{name}");
+        assert_eq!(shape.twists, paper.twists, "{name}");
+    }
+}
