@@ -1047,6 +1047,41 @@ fn skins_are_paired_by_shape_and_refused_through_themselves() {
     assert!(out.exists());
 }
 
+/// A free-form command whose output is its own input document: a document holding only that
+/// block is rewritten whole; one holding more (here a skin beside the envelope) is refused
+/// before the work, naming what would be lost, and left as it was.
+#[test]
+fn writing_over_the_input_document_never_drops_part_of_it() {
+    let env = tmp("over-input.prism.json");
+    succeeds(run_with(
+        "envelope assets/cube.envelope.json -o {}",
+        &[&env],
+    ));
+    succeeds(run_with("envelope {} -o {} --t 0.5", &[&env, &env]));
+    let (doc, _) = prism_geom::io::load(&env).unwrap();
+    assert_eq!(doc.envelope.as_ref().unwrap().t, 0.5);
+    let skin = tmp("over-input-skin.prism.json");
+    succeeds(run_with("skin assets/spout.skin.json -o {}", &[&skin]));
+    let mut both: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&env).unwrap()).unwrap();
+    let s: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&skin).unwrap()).unwrap();
+    both["skin"] = s["skin"].clone();
+    let written = serde_json::to_string(&both).unwrap();
+    std::fs::write(&env, &written).unwrap();
+    let o = run_with("envelope {} -o {}", &[&env, &env]);
+    let (_, se) = text(&o);
+    assert_eq!(o.status.code(), Some(1), "{se}");
+    assert!(
+        se.contains("the output is also the input") && se.contains("its skin"),
+        "{se}"
+    );
+    assert_eq!(std::fs::read_to_string(&env).unwrap(), written);
+    let o = run_with("skin {} -o {}", &[&env, &env]);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(text(&o).1.contains("its envelope scene"));
+}
+
 /// `prism envelope` on the bundled scenes: the summary's counts, a closed mesh, the curve
 /// network as polylines, the scene kept in a .prism.json and read back; bad scenes exit 1
 /// naming the primitive, a bad resolution exits 2.

@@ -99,6 +99,7 @@ fn curves_obj(e: &Envelope, segments: usize) -> String {
 pub fn run(a: EnvelopeArgs) -> Result<(), CliError> {
     super::check_solid_output_kind(&a.output)?;
     super::check_output(&a.output, Some(a.force))?;
+    super::check_not_lossy(&a.output, &a.input, "envelope")?;
     let mut spec = read_scene(&a.input)?;
     if let Some(t) = a.t {
         spec.t = t;

@@ -237,6 +237,61 @@ pub fn saving<T>(
     .map_err(CliError::input)
 }
 
+/// Refuses, before the work, to write a free-form result (`block`: "skin" or "envelope") over
+/// its own input document when that document holds more than the result would: writing the
+/// result's document there would drop the rest (its control mesh, pipeline, curve sketch, the
+/// other block, creases, tags). A document that holds only that block and its mesh is rewritten
+/// whole.
+pub fn check_not_lossy(
+    output: &std::path::Path,
+    input: &std::path::Path,
+    block: &str,
+) -> Result<(), CliError> {
+    use prism_geom::io;
+    let same = matches!(
+        (std::fs::canonicalize(output), std::fs::canonicalize(input)),
+        (Ok(a), Ok(b)) if a == b
+    );
+    if !same || io::FileKind::of(input).ok() != Some(io::FileKind::Document) {
+        return Ok(());
+    }
+    let (doc, _) = io::load(input).map_err(CliError::input)?;
+    let has_block = match block {
+        "skin" => doc.skin.is_some(),
+        _ => doc.envelope.is_some(),
+    };
+    let mut lost = Vec::new();
+    if !has_block && doc.mesh.num_faces() > 0 {
+        lost.push("its control mesh");
+    }
+    if doc.pipeline.is_some() {
+        lost.push("its pipeline");
+    }
+    if doc.curve.is_some() {
+        lost.push("its curve sketch");
+    }
+    if block != "skin" && doc.skin.is_some() {
+        lost.push("its skin");
+    }
+    if block != "envelope" && doc.envelope.is_some() {
+        lost.push("its envelope scene");
+    }
+    if !doc.edge_attrs.is_empty() {
+        lost.push("its creases and radii");
+    }
+    if !doc.tags.is_default() {
+        lost.push("its corner, hole and subdivision tags");
+    }
+    if lost.is_empty() {
+        return Ok(());
+    }
+    Err(CliError::input(format!(
+        "{}: the output is also the input, and writing the {block} there would drop {}; write to another file",
+        output.display(),
+        lost.join(", ")
+    )))
+}
+
 /// Writes a free-form result (a skin, an envelope): its triangles as STL or glTF, or the whole
 /// document — its mesh with the block that made it — as OBJ or `.prism.json`.
 pub fn write_surface(

@@ -106,6 +106,7 @@ pub fn run(a: SkinArgs) -> Result<(), CliError> {
         )));
     }
     super::check_output(&a.output, Some(a.force))?;
+    super::check_not_lossy(&a.output, &a.input, "skin")?;
     let sections = read_sections(&a.input)?;
     let basis = if a.basis == "one-sided" {
         Basis::OneSided

@@ -1,11 +1,15 @@
 //! Writing a file through a temporary file renamed into place, keeping what the user set up
 //! around the target (docs/reliability.md "Saves").
 //!
-//! - The bytes go to `.NAME.prism-tmp` beside the target (the final target, when the path is
-//!   a symbolic link: the link stays a link and its target gets the new contents), flushed
-//!   and synced, then renamed over the target, and the directory is synced after the rename.
-//!   A save killed half-way leaves the old file whole and, at worst, that temporary file,
-//!   which the next save to the same target overwrites; every error path removes it.
+//! - The bytes go to a temporary file of its own beside the target,
+//!   `.NAME.PID-N.prism-tmp` (the process id and a number unique within the process, created
+//!   only if it does not exist), flushed and synced, then renamed over the target, and the
+//!   directory is synced after the rename. Two saves to one target never share a temporary:
+//!   the target ends as one of the two whole outputs. The target is the final one when the
+//!   path is a symbolic link: the link stays a link and its target gets the new contents.
+//!   A save killed half-way leaves the old file whole and, at worst, its temporary file, which
+//!   a later save to the same target removes once it is an hour old (a temporary being written
+//!   is younger); every error path removes its own.
 //! - The new file gets the old one's permission bits (a 0600 file stays 0600).
 //! - A read-only target is refused; [`forced`] runs a save that may replace one (the
 //!   commands' `--force`), giving the file its bits back after.
@@ -39,12 +43,65 @@ fn parent_dir(path: &Path) -> PathBuf {
     }
 }
 
-fn temp_path(target: &Path) -> PathBuf {
+/// The name of a temporary of `target` starts with this, and ends with [`TEMP_SUFFIX`].
+fn temp_prefix(target: &Path) -> String {
     let name = target
         .file_name()
         .map(|n| n.to_string_lossy().into_owned())
         .unwrap_or_default();
-    parent_dir(target).join(format!(".{name}.prism-tmp"))
+    format!(".{name}.")
+}
+
+const TEMP_SUFFIX: &str = ".prism-tmp";
+
+/// A temporary file of its own for a save to `target`, created empty beside it: the process
+/// id and a number unique within the process, tried until the name is free.
+fn new_temp(target: &Path) -> std::io::Result<(PathBuf, std::fs::File)> {
+    use std::sync::atomic::{AtomicU64, Ordering};
+    static NEXT: AtomicU64 = AtomicU64::new(0);
+    let dir = parent_dir(target);
+    let prefix = temp_prefix(target);
+    loop {
+        let n = NEXT.fetch_add(1, Ordering::Relaxed);
+        let path = dir.join(format!("{prefix}{}-{n}{TEMP_SUFFIX}", std::process::id()));
+        match std::fs::OpenOptions::new()
+            .write(true)
+            .create_new(true)
+            .open(&path)
+        {
+            Ok(f) => return Ok((path, f)),
+            Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists => continue,
+            Err(e) => return Err(e),
+        }
+    }
+}
+
+/// How old an unrenamed temporary must be before a save to the same target removes it: a save
+/// streams its temporary from start to end, so one being written is far younger.
+const STALE: std::time::Duration = std::time::Duration::from_secs(3600);
+
+/// Removes the temporaries of saves to `target` that were killed half-way (older than
+/// [`STALE`]); a temporary another save is writing is left alone.
+fn remove_stale_temps(target: &Path) {
+    let prefix = temp_prefix(target);
+    let Ok(entries) = std::fs::read_dir(parent_dir(target)) else {
+        return;
+    };
+    for e in entries.flatten() {
+        let name = e.file_name().to_string_lossy().into_owned();
+        if !(name.starts_with(&prefix) && name.ends_with(TEMP_SUFFIX)) {
+            continue;
+        }
+        let old = e
+            .metadata()
+            .and_then(|m| m.modified())
+            .ok()
+            .and_then(|t| t.elapsed().ok())
+            .is_some_and(|age| age > STALE);
+        if old {
+            let _ = std::fs::remove_file(e.path());
+        }
+    }
 }
 
 fn write_error(path: &Path, source: std::io::Error) -> IoError {
@@ -82,8 +139,8 @@ pub fn check_writable(path: &Path, force: bool) -> Result<(), IoError> {
             std::io::Error::other(format!("the directory {} does not exist", dir.display())),
         ));
     }
-    let tmp = temp_path(&target);
-    std::fs::File::create(&tmp).map_err(|e| write_error(path, e))?;
+    // A temporary of its own, so that another save's is never touched.
+    let (tmp, _) = new_temp(&target).map_err(|e| write_error(path, e))?;
     let _ = std::fs::remove_file(&tmp);
     Ok(())
 }
@@ -121,9 +178,8 @@ pub fn write_atomically_with(
     write: impl FnOnce(&mut dyn Write) -> std::io::Result<()>,
 ) -> Result<(), IoError> {
     let (target, old) = target_of(path, false)?;
-    let tmp = temp_path(&target);
+    let (tmp, file) = new_temp(&target).map_err(|e| write_error(path, e))?;
     let result = (|| {
-        let file = std::fs::File::create(&tmp)?;
         let mut w = std::io::BufWriter::with_capacity(1 << 20, file);
         write(&mut w)?;
         let f = w.into_inner().map_err(|e| e.into_error())?;
@@ -139,6 +195,7 @@ pub fn write_atomically_with(
         if let Ok(d) = std::fs::File::open(parent_dir(&target)) {
             let _ = d.sync_all();
         }
+        remove_stale_temps(&target);
         Ok(())
     })();
     if let Err(e) = result {
@@ -191,17 +248,79 @@ mod tests {
         forced(&ro, || write_atomically(&ro, b"forced")).unwrap();
         assert_eq!(std::fs::read_to_string(&ro).unwrap(), "forced");
         assert!(std::fs::metadata(&ro).unwrap().permissions().readonly());
-        // A stale temporary file of a killed save is overwritten by the next save, and no
-        // temporary file is left.
+        // A stale temporary file of a killed save (an hour old) is removed by the next save to
+        // the same target; a fresh one (another save under way) is left; no temporary of its
+        // own is left.
         let t = d.join("t.obj");
-        std::fs::write(d.join(".t.obj.prism-tmp"), "half a file").unwrap();
+        let stale = d.join(".t.obj.1-0.prism-tmp");
+        let busy = d.join(".t.obj.2-0.prism-tmp");
+        std::fs::write(&stale, "half a file").unwrap();
+        std::fs::File::options()
+            .write(true)
+            .open(&stale)
+            .unwrap()
+            .set_modified(std::time::SystemTime::now() - 2 * STALE)
+            .unwrap();
+        std::fs::write(&busy, "being written").unwrap();
         write_atomically(&t, b"whole").unwrap();
-        assert!(!d.join(".t.obj.prism-tmp").exists());
+        assert!(!stale.exists() && busy.exists());
         assert_eq!(std::fs::read_to_string(&t).unwrap(), "whole");
+        let temps = |d: &Path| {
+            std::fs::read_dir(d)
+                .unwrap()
+                .flatten()
+                .filter(|e| e.file_name().to_string_lossy().ends_with(TEMP_SUFFIX))
+                .count()
+        };
+        assert_eq!(temps(d), 1);
+        // The pre-flight check of another save leaves the busy one alone.
+        check_writable(&t, false).unwrap();
+        assert!(busy.exists());
         // A missing directory is named before any work.
         let e = check_writable(&d.join("no/such/dir/x.obj"), false)
             .unwrap_err()
             .to_string();
         assert!(e.contains("does not exist"), "{e}");
+    }
+}
+
+/// Two saves to one target at once: each writes its own temporary, so the target ends as one
+/// of the two whole outputs, never a mix, and a third command's pre-flight check on the same
+/// target leaves their temporaries alone.
+#[cfg(test)]
+#[test]
+fn two_saves_to_one_target_never_mix() {
+    let scratch = tempfile::tempdir().unwrap();
+    let target = scratch.path().join("same.obj");
+    let outputs: Vec<Vec<u8>> = (0..2u8)
+        .map(|k| {
+            (0..4_000_000u32)
+                .map(|i| b'a' + k + (i % 7 == 0) as u8 * 2)
+                .collect()
+        })
+        .collect();
+    for _ in 0..5 {
+        std::thread::scope(|s| {
+            for out in &outputs {
+                let target = &target;
+                s.spawn(move || {
+                    write_atomically_with(target, |w| {
+                        for chunk in out.chunks(1 << 16) {
+                            w.write_all(chunk)?;
+                            std::thread::yield_now();
+                        }
+                        Ok(())
+                    })
+                    .unwrap()
+                });
+            }
+            s.spawn(|| {
+                for _ in 0..20 {
+                    check_writable(&target, false).unwrap();
+                }
+            });
+        });
+        let written = std::fs::read(&target).unwrap();
+        assert!(outputs.contains(&written), "a mix of the two outputs");
     }
 }

@@ -217,6 +217,7 @@ fn document_to_string(doc: &Document) -> String {
 
 /// Writes a `.prism.json` document atomically.
 pub fn write_document(path: &Path, doc: &Document) -> Result<(), IoError> {
+    super::check_finite_points(path, &doc.mesh)?;
     let f = file_of(doc);
     write_atomically_with(path, |w| {
         serde_json::to_writer(w, &f).map_err(std::io::Error::other)

@@ -324,6 +324,7 @@ pub fn export(
 ) -> Result<(), IoError> {
     let format =
         ExportFormat::of(path).ok_or_else(|| IoError::UnknownExtension { path: path.into() })?;
+    super::check_finite_points(path, mesh)?;
     write_atomically_with(path, |w| match format {
         ExportFormat::Stl => write_stl_to(w, mesh, skip),
         ExportFormat::Glb => write_glb_to(w, mesh, skip, normals),

@@ -184,9 +184,55 @@ fn checked(path: &Path, loaded: (Document, Numbering)) -> Result<(Document, Numb
 
 /// Saves a document as OBJ or `.prism.json` by the file name; returns warnings (e.g. holed
 /// faces triangulated for OBJ).
+/// Every writer's first check (OBJ, `.prism.json`, STL, glTF): no point of `mesh` is NaN or
+/// infinite — a file holding one is refused by every reader, Prism's own included, so nothing
+/// is written and the first bad vertex is named.
+pub(crate) fn check_finite_points(
+    path: &Path,
+    mesh: &crate::mesh::PolyMesh,
+) -> Result<(), IoError> {
+    match mesh.positions.iter().position(|p| !p.is_finite()) {
+        None => Ok(()),
+        Some(v) => Err(IoError::Invalid {
+            path: path.into(),
+            message: format!(
+                "vertex {v} is not a finite point ({}): nothing was written",
+                mesh.positions[v]
+            ),
+        }),
+    }
+}
+
 pub fn save(path: &Path, doc: &Document) -> Result<Vec<String>, IoError> {
     match FileKind::of(path)? {
         FileKind::Obj => write_obj(path, &doc.mesh, &doc.edge_attrs, &doc.tags),
         FileKind::Document => write_document(path, doc).map(|_| Vec::new()),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// No writer writes a point that is not finite: OBJ, `.prism.json`, STL and glTF each
+    /// refuse the mesh, name the vertex and leave no file.
+    #[test]
+    fn no_writer_writes_a_nan() {
+        let scratch = tempfile::tempdir().unwrap();
+        let mut doc = Document {
+            mesh: crate::primitives::cube3(),
+            ..Document::default()
+        };
+        doc.mesh.positions[5].y = f64::NAN;
+        for name in ["m.obj", "m.prism.json", "m.stl", "m.glb"] {
+            let path = scratch.path().join(name);
+            let e = match ExportFormat::of(&path) {
+                Some(_) => export(&path, &doc.mesh, &|_| false, Normals::Smooth).unwrap_err(),
+                None => save(&path, &doc).unwrap_err(),
+            };
+            assert!(e.to_string().contains("vertex 5 is not a finite point"), "{name}: {e}");
+            assert!(!path.exists(), "{name}");
+        }
+        assert_eq!(std::fs::read_dir(scratch.path()).unwrap().count(), 0);
     }
 }

@@ -166,6 +166,7 @@ pub fn write_obj_with_normals(
     tags: &SubdivTags,
     normals: Option<Normals>,
 ) -> Result<Vec<String>, IoError> {
+    super::super::check_finite_points(path, m)?;
     let mut warnings = Vec::new();
     write_atomically_with(path, |w| {
         warnings = write_obj_to(w, m, attrs, tags, normals)?;
