@@ -10,7 +10,7 @@ use prism_geom::analysis::winding_number;
 use prism_geom::freeform::envelope::chart::quality::{Quality, quality};
 use prism_geom::freeform::envelope::folds::crossings;
 use prism_geom::freeform::envelope::{
-    Envelope, EnvelopeSpec, Placement, PrimitiveInput, Shape, envelope,
+    Envelope, EnvelopeSpec, Placement, Primitive, PrimitiveInput, Shape, envelope,
 };
 use prism_geom::{DVec3, PolyMesh, Topology};
 
@@ -331,4 +331,56 @@ fn every_primitive_of_a_pair_is_enclosed_at_every_t() {
         }
     }
     assert!(poked > 10, "{poked}");
+}
+
+/// Where a primitive sits and how large it is do not decide whether it is valid: every
+/// primitive of the seven-primitive scene, moved by 1e6 or 1e8 or scaled by 1e-100 or 1e100, is
+/// accepted with its centre and radius moved and scaled (its checks run about its centre in
+/// units of its radius). And the scene scaled by 1e-100 builds the surface of the scene as
+/// given, scaled (every mesh vertex, mapped back, within 1e-6 of the scene's size of it).
+#[test]
+fn where_a_primitive_sits_and_its_size_do_not_decide_its_validity() {
+    let text = std::fs::read_to_string(
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("../../assets/table2-seven.envelope.json"),
+    )
+    .unwrap();
+    let base: prism_geom::freeform::envelope::EnvelopeSpec = serde_json::from_str(&text).unwrap();
+    let moved = |shift: f64, scale: f64| {
+        let mut m = base.clone();
+        for p in &mut m.primitives {
+            for v in &mut p.vertices {
+                *v = (DVec3::from_array(*v) * scale + DVec3::splat(shift)).to_array();
+            }
+        }
+        m
+    };
+    for (shift, scale) in [(1e6, 1.0), (1e8, 1.0), (0.0, 1e-100), (0.0, 1e100)] {
+        let m = moved(shift, scale);
+        for (i, (p, q)) in base.primitives.iter().zip(&m.primitives).enumerate() {
+            let a = Primitive::new(i, p, 1.0).unwrap();
+            let b = Primitive::new(i, q, 1.0)
+                .unwrap_or_else(|e| panic!("moved by {shift:e}, scaled by {scale:e}: {e}"));
+            let centre = (b.centre - DVec3::splat(shift)) / scale;
+            assert!(
+                centre.distance(a.centre) < 1e-6 * a.radius,
+                "{shift:e} {scale:e}"
+            );
+            assert!((b.radius / scale - a.radius).abs() < 1e-6 * a.radius);
+        }
+    }
+    let reference = envelope(&base).unwrap();
+    let size = {
+        let (m, _) = reference.chart_mesh(4).unwrap();
+        let (lo, hi) = m.bbox();
+        (hi - lo).length()
+    };
+    let small = envelope(&moved(0.0, 1e-100)).unwrap();
+    let (m, _) = small.chart_mesh(4).unwrap();
+    let worst = m
+        .positions
+        .iter()
+        .map(|p| off_surface(&reference, *p / 1e-100))
+        .fold(0.0, f64::max);
+    assert!(worst <= 1e-6 * size, "{worst:e}");
 }

@@ -230,7 +230,10 @@ mod tests {
                 Some(_) => export(&path, &doc.mesh, &|_| false, Normals::Smooth).unwrap_err(),
                 None => save(&path, &doc).unwrap_err(),
             };
-            assert!(e.to_string().contains("vertex 5 is not a finite point"), "{name}: {e}");
+            assert!(
+                e.to_string().contains("vertex 5 is not a finite point"),
+                "{name}: {e}"
+            );
             assert!(!path.exists(), "{name}");
         }
         assert_eq!(std::fs::read_dir(scratch.path()).unwrap().count(), 0);

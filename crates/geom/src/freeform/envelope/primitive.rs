@@ -49,14 +49,20 @@ fn check_t(t: f64, what: impl Fn() -> String) -> Result<f64, EnvelopeError> {
     }
 }
 
-/// The least-squares sphere through `pts`: centre and radius.
+/// The least-squares sphere through `pts`: centre and radius. Solved about the points' mean
+/// and in units of their spread, so that where the primitive sits and how large it is (1e8
+/// away, 1e±100 across) change nothing but the answer's position and scale.
 fn circumsphere(pts: &[DVec3]) -> Option<(DVec3, f64)> {
-    // Normal equations of rows (2x, 2y, 2z, 1) · (G, c) = |P|², centred for conditioning.
+    // Normal equations of rows (2x, 2y, 2z, 1) · (G, c) = |P|², centred and scaled.
     let o = pts.iter().sum::<DVec3>() / pts.len() as f64;
+    let s = pts.iter().map(|p| (*p - o).length()).fold(0.0, f64::max);
+    if !(s > 0.0 && s.is_finite()) {
+        return None;
+    }
     let mut a = [[0.0; 4]; 4];
     let mut b = [0.0; 4];
     for p in pts {
-        let q = *p - o;
+        let q = (*p - o) / s;
         let row = [2.0 * q.x, 2.0 * q.y, 2.0 * q.z, 1.0];
         for i in 0..4 {
             for j in 0..4 {
@@ -72,7 +78,7 @@ fn circumsphere(pts: &[DVec3]) -> Option<(DVec3, f64)> {
     let x = m.inverse() * glam::DVec4::from_array(b);
     let g = x.truncate();
     let r2 = x.w + g.length_squared();
-    (r2 > 0.0).then(|| (g + o, r2.sqrt()))
+    (r2 > 0.0).then(|| (g * s + o, r2.sqrt() * s))
 }
 
 impl Primitive {
@@ -149,14 +155,17 @@ impl Primitive {
                 "edge {a}-{b} of face {f} has no second face: not closed"
             )));
         }
+        // Faces, planes and sides about the centre in units of the radius: where the
+        // primitive sits and how large it is change nothing.
+        let local: Vec<DVec3> = vertices.iter().map(|v| (*v - centre) / radius).collect();
         let newell = |face: &[usize]| {
             (0..face.len())
-                .map(|k| vertices[face[k]].cross(vertices[face[(k + 1) % face.len()]]))
+                .map(|k| local[face[k]].cross(local[face[(k + 1) % face.len()]]))
                 .sum::<DVec3>()
         };
         let outward = p.faces.iter().map(|f| {
-            let c = f.iter().map(|&v| vertices[v]).sum::<DVec3>() / f.len() as f64;
-            newell(f).dot(c - centre)
+            let c = f.iter().map(|&v| local[v]).sum::<DVec3>() / f.len() as f64;
+            newell(f).dot(c)
         });
         let sum: f64 = outward.sum();
         let faces: Vec<Vec<usize>> = if sum >= 0.0 {
@@ -173,23 +182,21 @@ impl Primitive {
             if nf == DVec3::ZERO {
                 return Err(bad(format!("face {f} has no area")));
             }
-            let d = nf.dot(vertices[face[0]]);
-            if let Some(&v) = face
-                .iter()
-                .find(|&&v| (nf.dot(vertices[v]) - d).abs() > tol)
-            {
+            let d = nf.dot(local[face[0]]);
+            let off = |v: usize| nf.dot(local[v]) - d;
+            if let Some(&v) = face.iter().find(|&&v| off(v).abs() > TOLERANCE) {
                 return Err(bad(format!(
                     "face {f} is not planar: vertex {v} is {:.3e} off its plane (tolerance {TOLERANCE:e} r)",
-                    (nf.dot(vertices[v]) - d).abs()
+                    off(v).abs() * radius
                 )));
             }
-            if let Some(v) = (0..n).find(|&v| nf.dot(vertices[v]) - d > tol) {
+            if let Some(v) = (0..n).find(|&v| off(v) > TOLERANCE) {
                 return Err(bad(format!(
                     "not convex: vertex {v} lies {:.3e} outside the plane of face {f}",
-                    nf.dot(vertices[v]) - d
+                    off(v) * radius
                 )));
             }
-            if d - nf.dot(centre) <= tol {
+            if d <= TOLERANCE {
                 return Err(bad(format!(
                     "its centre {centre:.4} is not inside it (on or beyond the plane of face {f})"
                 )));
