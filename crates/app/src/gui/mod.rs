@@ -438,6 +438,10 @@ impl PrismApp {
             Ok(_) => {}
             Err(e) => self.say(e),
         }
+        // An idle window draws no frame: ask to be woken when the next copy is due.
+        if let Some(due) = self.autosave.due_in(&self.doc) {
+            ctx.request_repaint_after(due);
+        }
         self.screenshot(&ctx);
     }
 }

@@ -87,12 +87,12 @@ impl PrismApp {
     /// The copy of unsaved work an earlier run left, as the document (undoable); it is then
     /// the work in progress, unsaved, until saved.
     pub(super) fn restore_autosave(&mut self) {
-        let Some(path) = self.autosave.path() else {
+        let Some(path) = self.autosave.offered_path() else {
             return;
         };
         match document::open(&path) {
             Ok((state, _)) => {
-                self.autosave.offer = None;
+                self.autosave.restored();
                 let origin = Origin {
                     path: None,
                     name: "recovered work".into(),

@@ -1,6 +1,7 @@
 //! No lost work: unsaved changes are copied (at once when the window closes, every two minutes
-//! otherwise), a save removes the copy, and the next start offers it for restore — restored,
-//! the document is the work as it was; discarded, the copy is gone.
+//! otherwise, an idle window woken for it), a save removes the copy, and the next start offers
+//! it for restore — restored, the document is the work as it was; discarded, the copy is gone.
+//! Every window has a copy of its own, and only a copy no running window owns is offered.
 
 use super::command::{CurveEdit, Edit};
 use super::*;
@@ -73,9 +74,10 @@ fn a_discarded_copy_is_gone() {
     let (dir, _) = left_behind("discard", 1);
     let mut b = app_in(&dir);
     assert!(b.autosave.offer.is_some());
+    let offered = b.autosave.offered_path().unwrap();
     b.run(Command::DiscardAutosave);
     assert!(b.autosave.offer.is_none());
-    assert!(!b.autosave.path().unwrap().exists());
+    assert!(!offered.exists());
     let c = app_in(&dir);
     assert!(c.autosave.offer.is_none());
     std::fs::remove_dir_all(&dir).ok();
@@ -92,5 +94,65 @@ fn the_offer_window_restores_on_click() {
     super::tests::settle(&mut h);
     assert_eq!(h.state().doc.state().curve, work);
     assert!(h.query_by_label("Restore it").is_none());
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// Two windows on one folder each copy their own work; neither offers or discards the other's
+/// copy while it runs; closed, each copy is left for a later start, and two later windows
+/// never offer the same copy.
+#[test]
+fn two_windows_never_share_or_discard_each_others_copy() {
+    let dir = scratch("two");
+    let mut a = app_in(&dir);
+    let mut b = app_in(&dir);
+    assert!(a.autosave.offer.is_none() && b.autosave.offer.is_none());
+    a.run(CurveEdit::SetLevels(1));
+    b.run(CurveEdit::SetLevels(3));
+    assert!(a.autosave.tick(&a.doc, true).unwrap());
+    assert!(b.autosave.tick(&b.doc, true).unwrap());
+    let (ca, cb) = (a.autosave.path().unwrap(), b.autosave.path().unwrap());
+    assert_ne!(ca, cb);
+    // A third window while both run: nothing is left behind to offer.
+    let c = app_in(&dir);
+    assert!(c.autosave.offer.is_none());
+    // b's Discard removes nothing of a's.
+    b.run(Command::DiscardAutosave);
+    assert!(ca.exists() && cb.exists());
+    drop((a, b, c));
+    // Two later windows: each offers one of the two copies, never the same.
+    let d = app_in(&dir);
+    let e = app_in(&dir);
+    let (od, oe) = (d.autosave.offered_path(), e.autosave.offered_path());
+    assert!(od.is_some() && oe.is_some() && od != oe, "{od:?} {oe:?}");
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// While the restore offer is unanswered the window's own work is still copied, to its own
+/// copy, and the offered one stays as it was.
+#[test]
+fn work_is_copied_while_the_offer_is_open() {
+    let (dir, _) = left_behind("offer-open", 1);
+    let mut b = app_in(&dir);
+    let offered = b.autosave.offered_path().unwrap();
+    let before = std::fs::read(&offered).unwrap();
+    b.run(CurveEdit::SetLevels(3));
+    assert!(b.autosave.tick(&b.doc, true).unwrap());
+    assert!(b.autosave.path().unwrap().exists());
+    assert_eq!(std::fs::read(&offered).unwrap(), before);
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// An idle window is woken for the copy: with unsaved changes the next copy is due within
+/// two minutes; with none, nothing is due.
+#[test]
+fn an_idle_window_is_woken_when_the_copy_is_due() {
+    let dir = scratch("idle");
+    let mut a = app_in(&dir);
+    assert_eq!(a.autosave.due_in(&a.doc), None);
+    a.run(CurveEdit::SetLevels(2));
+    let due = a.autosave.due_in(&a.doc).unwrap();
+    assert!(due <= super::autosave::EVERY);
+    assert!(a.autosave.tick(&a.doc, true).unwrap());
+    assert_eq!(a.autosave.due_in(&a.doc), None);
     std::fs::remove_dir_all(&dir).ok();
 }
