@@ -105,7 +105,7 @@ fn left_behind(dir: &Path) -> Option<(Owned, SystemTime)> {
             (when, e.path())
         })
         .collect();
-    copies.sort_by(|a, b| b.0.cmp(&a.0));
+    copies.sort_by_key(|c| std::cmp::Reverse(c.0));
     copies
         .into_iter()
         .find_map(|(when, copy)| Owned::take(copy).map(|o| (o, when)))
