@@ -35,8 +35,14 @@ fn plane_frame(n: DVec3) -> (DVec3, DVec3) {
     (x, n.cross(x))
 }
 
-fn segments_cross(a: DVec2, b: DVec2, c: DVec2, d: DVec2) -> bool {
-    let orient = |p: DVec2, q: DVec2, r: DVec2| (q - p).perp_dot(r - p);
+/// Whether segments ab and cd cross properly (each one's ends strictly on both sides of the
+/// other). Orientations within `eps` (an area) count as on the line: points along one straight
+/// side of a section, turned in space, are collinear up to rounding and must not cross.
+fn segments_cross(a: DVec2, b: DVec2, c: DVec2, d: DVec2, eps: f64) -> bool {
+    let orient = |p: DVec2, q: DVec2, r: DVec2| {
+        let o = (q - p).perp_dot(r - p);
+        if o.abs() <= eps { 0.0 } else { o }
+    };
     let (o1, o2) = (orient(a, b, c), orient(a, b, d));
     let (o3, o4) = (orient(c, d, a), orient(c, d, b));
     o1 * o2 < 0.0 && o3 * o4 < 0.0
@@ -113,7 +119,8 @@ pub(super) fn check(k: usize, s: &SectionInput) -> Result<(Vec<DVec3>, DVec3, DV
             if i == 0 && j == n - 1 {
                 continue;
             }
-            if segments_cross(flat[i], flat[(i + 1) % n], flat[j], flat[(j + 1) % n]) {
+            let eps = 1e-12 * size * size;
+            if segments_cross(flat[i], flat[(i + 1) % n], flat[j], flat[(j + 1) % n], eps) {
                 return Err(SkinError::SelfIntersecting {
                     section: k,
                     a: i,
