@@ -1601,6 +1601,28 @@ fn printed_estimate(o: &Output) -> u64 {
         .unwrap_or_else(|| panic!("no estimate printed: {so}{se}"))
 }
 
+/// A free-form job over the memory budget is refused naming its own knob — the resolution, the
+/// primitives — never "levels", which skin and envelope do not have.
+#[test]
+fn free_form_refusals_name_their_own_knobs() {
+    let out = tmp("knob.obj");
+    for (line, knob) in [
+        (
+            "skin assets/spout.skin.json -o {} --resolution 256 --memory-budget 10M",
+            "give a smaller --resolution",
+        ),
+        (
+            "envelope assets/table2-seven.envelope.json -o {} --resolution 128 --memory-budget 10M",
+            "give a smaller --resolution or fewer primitives",
+        ),
+    ] {
+        let o = run_with(line, &[&out]);
+        let (_, se) = text(&o);
+        assert_eq!(o.status.code(), Some(1), "{se}");
+        assert!(se.contains(knob) && !se.contains("levels"), "{se}");
+    }
+}
+
 /// The memory guard (issue 15, item 2): a job over `--memory-budget` is refused before any
 /// work with the estimate and the budget; `--levels 20` is refused at once by the default
 /// budget; a run at 1.3 × the printed estimate stays within it, and the estimate is not

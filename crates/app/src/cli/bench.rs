@@ -87,7 +87,9 @@ pub fn run(a: BenchArgs) -> Result<(), CliError> {
         Pipeline::with_tags(loaded.mesh, loaded.edge_attrs, loaded.tags, steps.clone());
     estimate.keep = Keep::Needed;
     let peak = estimate.estimate_peak() + estimate.input().bytes();
-    let budget = a.memory.check(peak, "this benchmark")?;
+    let budget = a
+        .memory
+        .check(peak, "this benchmark", "give fewer levels")?;
     let doc = estimate.into_last();
     if a.edit {
         return edit(doc, steps, budget, a.runs);

@@ -143,6 +143,7 @@ pub fn run(a: EnvelopeArgs) -> Result<(), CliError> {
         .check(
             prism_geom::memory::tessellation_bytes(&counts) + export + 330 * counts.faces,
             "this envelope",
+            "give a smaller --resolution or fewer primitives",
         )
         .map(|_| ())?;
     let (mesh, quality) = e.quality(spec.resolution).map_err(CliError::input)?;

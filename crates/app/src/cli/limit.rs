@@ -65,6 +65,7 @@ pub fn run(a: LimitArgs) -> Result<(), CliError> {
     let budget = a.memory.check(
         estimate.estimate_peak_then(48 * last.vertices + last.topology_bytes()),
         "this refinement",
+        "give fewer levels",
     )?;
     let input = estimate.into_last();
     let (mut mesh, mut attrs, mut tags) = (input.mesh, input.edge_attrs, input.tags);

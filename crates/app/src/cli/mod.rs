@@ -165,9 +165,10 @@ impl MemoryArgs {
     }
 
     /// Prints the estimate against the budget, and refuses a job over it (exit 1) naming
-    /// both and what to change; returns the budget, read once (the default follows the
-    /// memory available, which changes), for the work to run under.
-    pub fn check(&self, estimate: u64, what: &str) -> Result<u64, CliError> {
+    /// both and what to change — `smaller`, the command's own knob ("give fewer levels",
+    /// "give a smaller --resolution") — or the budget to give; returns the budget, read once
+    /// (the default follows the memory available, which changes), for the work to run under.
+    pub fn check(&self, estimate: u64, what: &str, smaller: &str) -> Result<u64, CliError> {
         use prism_geom::memory::mib;
         let budget = self.bytes();
         println!(
@@ -178,7 +179,7 @@ impl MemoryArgs {
         if estimate > budget {
             return Err(CliError::input(format!(
                 "{what} would need about {} MiB at its peak, more than the memory budget of {} MiB: \
-                 give fewer levels, or --memory-budget {}M if the machine has it",
+                 {smaller}, or --memory-budget {}M if the machine has it",
                 mib(estimate),
                 mib(budget),
                 mib(estimate) + mib(estimate) / 4 + 1

@@ -241,10 +241,11 @@ pub fn run(a: RenderArgs) -> Result<(), CliError> {
     // measured), its lines, and the picture at 4× multisampling with its depth.
     let last = pipeline.predicted_counts();
     let scene = 500 * last.triangles() + 64 * last.edges + 40 * u64::from(w) * u64::from(h);
-    let budget = a
-        .steps
-        .memory
-        .check(pipeline.estimate_peak_then(scene), "this picture")?;
+    let budget = a.steps.memory.check(
+        pipeline.estimate_peak_then(scene),
+        "this picture",
+        "give fewer levels or a smaller --size",
+    )?;
     pipeline.options = a.steps.options(budget);
     let mut warnings = super::level_lines::LevelWarnings::new(&pipeline.levels()[0].mesh);
     let n = pipeline.steps().len();

@@ -93,7 +93,11 @@ pub fn check_tessellation(
     let counts = memory::tessellation_counts(patches as u64, k as u64);
     let export = memory::export_bytes(&counts, io::ExportFormat::of(output));
     memory
-        .check(memory::tessellation_bytes(&counts) + export, what)
+        .check(
+            memory::tessellation_bytes(&counts) + export,
+            what,
+            "give a smaller --resolution",
+        )
         .map(|_| ())
 }
 

@@ -363,6 +363,7 @@ pub fn run(a: SubdivideArgs) -> Result<(), CliError> {
     let budget = a.steps.memory.check(
         pipeline.estimate_peak_then(output.max(report).max(crossing)),
         "this pipeline",
+        "give fewer levels",
     )?;
     pipeline.options.memory_budget = budget;
     let result = pipeline.compute_with(n, |k, level| {
