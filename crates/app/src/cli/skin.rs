@@ -150,11 +150,7 @@ pub fn run(a: SkinArgs) -> Result<(), CliError> {
         .enumerate()
         .map(|(k, (sh, t))| format!("{k}→{}: {sh} (twist {:.1}°)", k + 1, t.to_degrees()))
         .collect();
-    let paired = match (s.pairing, s.inserted.iter().any(|&i| i > 0)) {
-        (_, true) => "by polar angle",
-        (Pairing::Shape, false) => "by shape",
-        (Pairing::Paper, false) => "by least twist (paper)",
-    };
+    let paired = s.paired_by();
     println!(
         "{} sections of {n} points, {} patches, paired {paired}: shifts {}, {} point(s) inserted by polar angle, {} crease chain(s), largest normal jump across patch borders {:.2e}°",
         s.sections.len(),

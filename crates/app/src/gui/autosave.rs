@@ -121,28 +121,22 @@ pub struct Autosave {
     /// The generation the copy holds.
     written: Option<u64>,
     last: Instant,
-    /// A copy left by an earlier run, offered for restore: when it was written.
-    pub offer: Option<SystemTime>,
-    offered: Option<Owned>,
+    /// A copy left by an earlier run, offered for restore, and when it was written.
+    offered: Option<(Owned, SystemTime)>,
 }
 
 impl Autosave {
     /// Autosave into `dir`, for a document at `generation` as opened; a copy left behind there
     /// is offered.
     pub fn new(dir: Option<PathBuf>, generation: u64) -> Autosave {
-        let found = dir.as_deref().and_then(left_behind);
+        let offered = dir.as_deref().and_then(left_behind);
         let own = dir.as_deref().and_then(own_copy);
-        let (offered, offer) = match found {
-            Some((o, when)) => (Some(o), Some(when)),
-            None => (None, None),
-        };
         Autosave {
             dir,
             own,
             saved: generation,
             written: None,
             last: Instant::now(),
-            offer,
             offered,
         }
     }
@@ -161,9 +155,14 @@ impl Autosave {
         self.own.as_ref().map(|o| o.copy.clone())
     }
 
+    /// When the copy offered for restore was written (while the offer is open).
+    pub fn offer(&self) -> Option<SystemTime> {
+        self.offered.as_ref().map(|o| o.1)
+    }
+
     /// The copy offered for restore (while the offer is open).
     pub fn offered_path(&self) -> Option<PathBuf> {
-        self.offered.as_ref().map(|o| o.copy.clone())
+        self.offered.as_ref().map(|o| o.0.copy.clone())
     }
 
     /// The user saved or opened the document: nothing is unsaved, and the window's copy goes.
@@ -216,8 +215,7 @@ impl Autosave {
     /// The offered copy was restored into the document: it becomes the window's copy (its own,
     /// empty so far, goes), so a save removes it and a crash before the next copy keeps it.
     pub fn restored(&mut self) {
-        self.offer = None;
-        if let Some(o) = self.offered.take() {
+        if let Some((o, _)) = self.offered.take() {
             if let Some(own) = self.own.take() {
                 own.remove();
             }
@@ -228,8 +226,7 @@ impl Autosave {
 
     /// Drops the copy that was offered (and only that one).
     pub fn discard(&mut self) {
-        self.offer = None;
-        if let Some(o) = self.offered.take() {
+        if let Some((o, _)) = self.offered.take() {
             o.remove();
         }
     }

@@ -1,6 +1,7 @@
 //! The scaffold the 3D tabs (Skin, Envelope) share besides their view (`view3d.rs`): the
-//! layout of panel and view, the centre and scale fields, the pointer's drag — and the undo
-//! steps of continuous input: a number field dragged, a slider moved or a drag in the view is
+//! `Tab3d` trait (layout of panel and view, samples, edits), the placement rows (centre, turns,
+//! scale), the drags in the view and what they do to points, the resolution and radio rows —
+//! and the undo steps of continuous input: a number field dragged, a slider moved or a drag in the view is
 //! one gesture, and every edit it makes carries the gesture's number so that the document
 //! coalesces them into one undo step.
 
@@ -60,7 +61,7 @@ impl Gestures {
     /// A number field that acts by difference (turn, tilt, scale): returns its value before
     /// and after this frame's change and the change's gesture; when let go it falls back to
     /// `rest`.
-    pub fn delta_field(
+    fn delta_field(
         &mut self,
         ui: &mut egui::Ui,
         value: &mut f64,
@@ -84,7 +85,7 @@ impl Gestures {
 
     /// A number field in degrees that turns about `axis` by difference ([`Gestures::delta_field`]
     /// at rest 0): this frame's turn and its gesture.
-    pub fn turn_field(
+    fn turn_field(
         &mut self,
         ui: &mut egui::Ui,
         degrees: &mut f64,
@@ -100,7 +101,7 @@ impl Gestures {
 
     /// The "centre" row of the 3D tabs: three number fields for `centre`; the moved centre and
     /// its gesture when one changed this frame.
-    pub fn centre_field(
+    fn centre_field(
         &mut self,
         ui: &mut egui::Ui,
         centre: glam::DVec3,
@@ -161,7 +162,7 @@ impl Gestures {
 
     /// The "scale %" row of the 3D tabs, acting by difference ([`Gestures::delta_field`] at
     /// rest 100 %): this frame's factor and its gesture.
-    pub fn scale_field(&mut self, ui: &mut egui::Ui) -> Option<(f64, Option<u64>)> {
+    fn scale_field(&mut self, ui: &mut egui::Ui) -> Option<(f64, Option<u64>)> {
         let mut out = None;
         let mut percent = self.scale;
         ui.horizontal(|ui| {

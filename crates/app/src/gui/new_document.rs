@@ -110,7 +110,7 @@ impl PrismApp {
 
     /// Offers the copy of unsaved work an earlier run left (none once answered).
     pub(super) fn restore_window(&mut self, ctx: &egui::Context) -> Option<Command> {
-        let when = self.autosave.offer?;
+        let when = self.autosave.offer()?;
         let ago = when.elapsed().map_or(0, |d| d.as_secs() / 60);
         let mut out = None;
         egui::Window::new("Unsaved work")

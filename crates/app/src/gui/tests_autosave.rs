@@ -54,13 +54,13 @@ fn unsaved_work_is_copied_and_restored_at_the_next_start() {
 
     // The next start offers it; restored, the document is that work, unsaved and undoable.
     let mut b = app_in(&dir);
-    assert!(b.autosave.offer.is_some());
+    assert!(b.autosave.offer().is_some());
     assert_ne!(b.doc.state(), &work);
     b.run(Command::RestoreAutosave);
     assert_eq!(b.doc.state().pipelines[0], work.pipelines[0]);
     assert_eq!(b.doc.state().curve, work.curve);
     assert_eq!(b.doc.state().mesh, work.mesh);
-    assert!(b.autosave.offer.is_none());
+    assert!(b.autosave.offer().is_none());
     assert_eq!(b.doc.origin().name, "recovered work");
     // Saved: the copy goes.
     let saved = dir.join("work.prism.json");
@@ -73,13 +73,13 @@ fn unsaved_work_is_copied_and_restored_at_the_next_start() {
 fn a_discarded_copy_is_gone() {
     let (dir, _) = left_behind("discard", 1);
     let mut b = app_in(&dir);
-    assert!(b.autosave.offer.is_some());
+    assert!(b.autosave.offer().is_some());
     let offered = b.autosave.offered_path().unwrap();
     b.run(Command::DiscardAutosave);
-    assert!(b.autosave.offer.is_none());
+    assert!(b.autosave.offer().is_none());
     assert!(!offered.exists());
     let c = app_in(&dir);
-    assert!(c.autosave.offer.is_none());
+    assert!(c.autosave.offer().is_none());
     std::fs::remove_dir_all(&dir).ok();
 }
 
@@ -105,7 +105,7 @@ fn two_windows_never_share_or_discard_each_others_copy() {
     let dir = scratch("two");
     let mut a = app_in(&dir);
     let mut b = app_in(&dir);
-    assert!(a.autosave.offer.is_none() && b.autosave.offer.is_none());
+    assert!(a.autosave.offer().is_none() && b.autosave.offer().is_none());
     a.run(CurveEdit::SetLevels(1));
     b.run(CurveEdit::SetLevels(3));
     assert!(a.autosave.tick(&a.doc, true).unwrap());
@@ -114,7 +114,7 @@ fn two_windows_never_share_or_discard_each_others_copy() {
     assert_ne!(ca, cb);
     // A third window while both run: nothing is left behind to offer.
     let c = app_in(&dir);
-    assert!(c.autosave.offer.is_none());
+    assert!(c.autosave.offer().is_none());
     // b's Discard removes nothing of a's.
     b.run(Command::DiscardAutosave);
     assert!(ca.exists() && cb.exists());

@@ -114,11 +114,7 @@ impl SkinTab {
                     s.inserted.iter().sum::<usize>(),
                     s.creases()
                 ));
-                let paired = match (s.pairing, s.inserted.iter().any(|&i| i > 0)) {
-                    (_, true) => "by polar angle",
-                    (Pairing::Shape, false) => "by shape",
-                    (Pairing::Paper, false) => "by least twist (paper)",
-                };
+                let paired = s.paired_by();
                 let pairs: Vec<String> = s
                     .shifts
                     .iter()

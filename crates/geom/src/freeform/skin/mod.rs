@@ -363,6 +363,16 @@ impl Skin {
         out
     }
 
+    /// How the shifts were chosen, for a summary: "by polar angle" when points were inserted,
+    /// else "by shape" or "by least twist (paper)".
+    pub fn paired_by(&self) -> &'static str {
+        match (self.pairing, self.inserted.iter().any(|&i| i > 0)) {
+            (_, true) => "by polar angle",
+            (Pairing::Shape, false) => "by shape",
+            (Pairing::Paper, false) => "by least twist (paper)",
+        }
+    }
+
     /// Number of chains that are creases.
     pub fn creases(&self) -> usize {
         self.crease.iter().filter(|&&c| c).count()

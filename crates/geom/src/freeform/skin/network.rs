@@ -54,15 +54,6 @@ pub enum Pairing {
     Paper,
 }
 
-impl Pairing {
-    pub fn name(self) -> &'static str {
-        match self {
-            Pairing::Shape => "shape",
-            Pairing::Paper => "paper",
-        }
-    }
-}
-
 /// The shift σ pairing swept vertex i with vertex (i + σ) mod n of the next section by
 /// `pairing`, and its total twist (radians).
 pub fn pair(swept: &[DVec3], next: &Section, pairing: Pairing) -> (usize, f64) {
@@ -119,18 +110,11 @@ fn best_match(swept: &[DVec3], next: &Section) -> (usize, f64) {
     if !least.is_finite() {
         return least_twist(swept, next);
     }
-    let mut best = (0usize, f64::INFINITY, f64::INFINITY);
-    for &(s, residual) in &candidates {
-        if residual > least + NEAR_TIE * scale {
-            continue;
-        }
-        let (twist, dist) = twist_of(swept, next, s);
-        let tol = 1e-12 * (1.0 + twist);
-        if twist < best.1 - tol || ((twist - best.1).abs() <= tol && dist < best.2) {
-            best = (s, twist, dist);
-        }
-    }
-    (best.0, best.1)
+    let ties = candidates
+        .iter()
+        .filter(|c| c.1 <= least + NEAR_TIE * scale)
+        .map(|c| c.0);
+    least_twist_among(swept, next, ties)
 }
 
 /// Procrustes residuals closer than this share of the sections' scale (`Σ|z|² + Σ|w|²`) are
@@ -143,8 +127,18 @@ pub const NEAR_TIE: f64 = 1e-3;
 /// least total twist `Σ ∠(V'_i − C, V_(i+σ) − C)` over all n shifts; ties by the smaller sum of
 /// squared distances, then the smaller σ.
 pub fn least_twist(swept: &[DVec3], next: &Section) -> (usize, f64) {
+    least_twist_among(swept, next, 0..swept.len())
+}
+
+/// The shift of least total twist among `shifts` (ascending) and its twist; ties by the smaller
+/// sum of squared distances, then the earlier shift.
+fn least_twist_among(
+    swept: &[DVec3],
+    next: &Section,
+    shifts: impl Iterator<Item = usize>,
+) -> (usize, f64) {
     let mut best = (0usize, f64::INFINITY, f64::INFINITY);
-    for s in 0..swept.len() {
+    for s in shifts {
         let (twist, dist) = twist_of(swept, next, s);
         let tol = 1e-12 * (1.0 + twist);
         if twist < best.1 - tol || ((twist - best.1).abs() <= tol && dist < best.2) {
