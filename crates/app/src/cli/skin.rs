@@ -144,11 +144,8 @@ pub fn run(a: SkinArgs) -> Result<(), CliError> {
         .map_err(CliError::input)?;
     let n = s.points_per_section();
     let shifts: Vec<String> = s
-        .shifts
-        .iter()
-        .zip(&s.twists)
-        .enumerate()
-        .map(|(k, (sh, t))| format!("{k}→{}: {sh} (twist {:.1}°)", k + 1, t.to_degrees()))
+        .pairs()
+        .map(|(k, sh, t)| format!("{k}→{}: {sh} (twist {t:.1}°)", k + 1))
         .collect();
     let paired = s.paired_by();
     println!(

@@ -116,13 +116,8 @@ impl SkinTab {
                 ));
                 let paired = s.paired_by();
                 let pairs: Vec<String> = s
-                    .shifts
-                    .iter()
-                    .zip(&s.twists)
-                    .enumerate()
-                    .map(|(k, (sh, t))| {
-                        format!("{k}–{}: shift {sh}, twist {:.1}°", k + 1, t.to_degrees())
-                    })
+                    .pairs()
+                    .map(|(k, sh, t)| format!("{k}–{}: shift {sh}, twist {t:.1}°", k + 1))
                     .collect();
                 ui.label(format!("Paired {paired}: {}", pairs.join("; ")));
                 ui.label(format!(

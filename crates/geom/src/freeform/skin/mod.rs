@@ -363,6 +363,14 @@ impl Skin {
         out
     }
 
+    /// Each pair of neighbouring sections k, k + 1: k, the shift chosen and its total twist in
+    /// degrees.
+    pub fn pairs(&self) -> impl Iterator<Item = (usize, usize, f64)> + '_ {
+        (self.shifts.iter().zip(&self.twists))
+            .enumerate()
+            .map(|(k, (&shift, t))| (k, shift, t.to_degrees()))
+    }
+
     /// How the shifts were chosen, for a summary: "by polar angle" when points were inserted,
     /// else "by shape" or "by least twist (paper)".
     pub fn paired_by(&self) -> &'static str {
