@@ -94,6 +94,20 @@ fn the_window_opens_and_screenshots_itself() {
     assert!(light > 100, "no text in the panel");
 }
 
+/// Nine Catmull–Clark steps on the cube: 1.6 M quads, 3.1 M triangles, 340 MiB of vertices
+/// drawn smooth — more than wgpu's default largest buffer (256 MiB), which made the window
+/// panic. The window asks for the adapter's limits and draws larger scenes in parts.
+#[test]
+fn a_level_of_three_million_triangles_is_drawn() {
+    let steps = ["catmull-clark"; 9].join(",");
+    let img = screenshot(
+        "three-million",
+        &["assets/cube.obj", "--pipeline", &steps, "--show", "smooth"],
+    );
+    let n = shades(&img, 600..1100, 250..550);
+    assert!(n > 10, "only {n} shades in the view");
+}
+
 #[test]
 fn the_compare_split_draws_a_model_in_each_of_four_views() {
     let img = screenshot(

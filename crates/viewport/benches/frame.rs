@@ -21,7 +21,7 @@ fn frame_1m_triangles_1024x768(b: divan::Bencher) {
         "adapter: {} ({:?})",
         gpu.adapter_info.name, gpu.adapter_info.device_type
     );
-    let uploaded = gpu.upload(&scene);
+    let uploaded = gpu.upload(&scene).unwrap();
     let camera = Camera::looking(View::Iso, glam::Vec3::ZERO, scene.radius());
     b.bench(|| gpu.render_uploaded(&uploaded, &camera, 1024, 768).unwrap());
 }

@@ -5,10 +5,11 @@
 
 pub mod camera;
 pub mod offscreen;
+pub mod parts;
 pub mod renderer;
 pub mod scene;
 
 pub use camera::{Camera, View};
 pub use offscreen::{Offscreen, RenderError};
-pub use renderer::{CameraSlot, GpuScene, Renderer};
+pub use renderer::{CameraSlot, GpuScene, Renderer, UploadError};
 pub use scene::{ColorBy, Scene, SceneOptions, Shading};

@@ -19,6 +19,8 @@ pub enum RenderError {
     Device(String),
     #[error("image size {w}×{h} is out of range (1 to {max} pixels per side)")]
     Size { w: u32, h: u32, max: u32 },
+    #[error(transparent)]
+    Upload(#[from] crate::renderer::UploadError),
     #[error("reading the picture back failed: {0}")]
     Readback(String),
 }
@@ -81,18 +83,27 @@ impl Offscreen {
         width: u32,
         height: u32,
     ) -> Result<image::RgbaImage, RenderError> {
-        let gpu = self.upload(scene);
+        let gpu = self.upload(scene)?;
         self.render_uploaded(&gpu, camera, width, height)
     }
 
     /// Uploads a scene once, to render it many times (a frame-time benchmark, a turntable).
-    pub fn upload(&self, scene: &Scene) -> GpuScene {
-        self.renderer.upload(&self.device, scene)
+    pub fn upload(&self, scene: &Scene) -> Result<GpuScene, RenderError> {
+        Ok(self.renderer.upload(&self.device, scene)?)
+    }
+
+    /// [`Offscreen::upload`] in buffers of at most `max_bytes` (a test of the parts).
+    pub fn upload_within(&self, scene: &Scene, max_bytes: u64) -> Result<GpuScene, RenderError> {
+        Ok(self
+            .renderer
+            .upload_within(&self.device, scene, max_bytes)?)
     }
 
     /// Writes `scene` over an uploaded one where it fits ([`Renderer::refill`]).
-    pub fn refill(&self, gpu: &mut GpuScene, scene: &Scene) {
-        self.renderer.refill(&self.device, &self.queue, gpu, scene)
+    pub fn refill(&self, gpu: &mut GpuScene, scene: &Scene) -> Result<(), RenderError> {
+        Ok(self
+            .renderer
+            .refill(&self.device, &self.queue, gpu, scene)?)
     }
 
     /// Renders an uploaded scene: one frame, read back as an image.

@@ -3,6 +3,7 @@
 //! ([`crate::offscreen`]).
 
 use crate::camera::Camera;
+use crate::parts;
 use crate::scene::{LineVertex, Scene, Vertex};
 use wgpu::util::DeviceExt;
 
@@ -47,12 +48,29 @@ struct Globals {
     params: [f32; 4],
 }
 
-/// A scene uploaded to the GPU.
+/// A scene uploaded to the GPU: its triangles and its lines, each in one or more parts that
+/// fit the device's largest buffer ([`crate::parts`]).
 pub struct GpuScene {
-    vertices: wgpu::Buffer,
-    indices: wgpu::Buffer,
-    index_count: u32,
-    lines: Option<(wgpu::Buffer, u32)>,
+    faces: Vec<(wgpu::Buffer, wgpu::Buffer, u32)>,
+    lines: Vec<(wgpu::Buffer, u32)>,
+}
+
+impl GpuScene {
+    /// How many parts the triangles were cut into (1 when they fit one buffer).
+    pub fn face_parts(&self) -> usize {
+        self.faces.len()
+    }
+}
+
+/// Why a scene could not be put on the GPU.
+#[derive(Debug, thiserror::Error)]
+#[error(
+    "the graphics device could not hold the scene ({triangles} triangles, {mib} MiB of buffers): {reason}"
+)]
+pub struct UploadError {
+    pub triangles: usize,
+    pub mib: u64,
+    pub reason: String,
 }
 
 const VERTEX: wgpu::BufferUsages = wgpu::BufferUsages::VERTEX.union(wgpu::BufferUsages::COPY_DST);
@@ -206,17 +224,39 @@ impl Renderer {
         camera_slot(device, &self.layout)
     }
 
-    /// Uploads a scene into new buffers.
-    pub fn upload(&self, device: &wgpu::Device, scene: &Scene) -> GpuScene {
-        GpuScene {
-            vertices: buffer(device, "prism vertices", &scene.vertices, VERTEX),
-            indices: buffer(device, "prism indices", &scene.indices, INDEX),
-            index_count: scene.indices.len() as u32,
-            lines: (!scene.lines.is_empty()).then(|| {
-                (
-                    buffer(device, "prism lines", &scene.lines, VERTEX),
-                    scene.lines.len() as u32,
-                )
+    /// Uploads a scene into new buffers, in parts where it is larger than the device's largest
+    /// buffer. Running out of GPU memory is an error, not a crash.
+    pub fn upload(&self, device: &wgpu::Device, scene: &Scene) -> Result<GpuScene, UploadError> {
+        self.upload_within(device, scene, device.limits().max_buffer_size)
+    }
+
+    /// [`Renderer::upload`] with buffers of at most `max_bytes` (tests cut small scenes).
+    pub fn upload_within(
+        &self,
+        device: &wgpu::Device,
+        scene: &Scene,
+        max_bytes: u64,
+    ) -> Result<GpuScene, UploadError> {
+        let memory = device.push_error_scope(wgpu::ErrorFilter::OutOfMemory);
+        let invalid = device.push_error_scope(wgpu::ErrorFilter::Validation);
+        let faces = if parts::faces_fit(&scene.vertices, &scene.indices, max_bytes) {
+            vec![face_buffers(device, &scene.vertices, &scene.indices)]
+        } else {
+            parts::split_faces(&scene.vertices, &scene.indices, max_bytes)
+                .iter()
+                .map(|p| face_buffers(device, &p.vertices, &p.indices))
+                .collect()
+        };
+        let lines = parts::split_lines(&scene.lines, max_bytes)
+            .map(|run| (buffer(device, "prism lines", run, VERTEX), run.len() as u32))
+            .collect();
+        let errors = [invalid.pop(), memory.pop()].map(pollster::block_on);
+        match errors.into_iter().flatten().next() {
+            None => Ok(GpuScene { faces, lines }),
+            Some(e) => Err(UploadError {
+                triangles: scene.indices.len() / 3,
+                mib: scene_bytes(scene).div_ceil(1 << 20),
+                reason: e.to_string(),
             }),
         }
     }
@@ -230,37 +270,52 @@ impl Renderer {
         queue: &wgpu::Queue,
         gpu: &mut GpuScene,
         scene: &Scene,
-    ) {
-        refill(
-            device,
-            queue,
-            &mut gpu.vertices,
-            "prism vertices",
-            &scene.vertices,
-            VERTEX,
-        );
-        refill(
-            device,
-            queue,
-            &mut gpu.indices,
-            "prism indices",
-            &scene.indices,
-            INDEX,
-        );
-        gpu.index_count = scene.indices.len() as u32;
-        match (&mut gpu.lines, scene.lines.is_empty()) {
-            (_, true) => gpu.lines = None,
+    ) -> Result<(), UploadError> {
+        let max = device.limits().max_buffer_size;
+        if gpu.faces.len() > 1
+            || gpu.lines.len() > 1
+            || !parts::faces_fit(&scene.vertices, &scene.indices, max)
+            || !parts::fits::<LineVertex>(scene.lines.len(), max)
+        {
+            *gpu = self.upload(device, scene)?;
+            return Ok(());
+        }
+        match gpu.faces.first_mut() {
+            Some((vertices, indices, count)) => {
+                refill(
+                    device,
+                    queue,
+                    vertices,
+                    "prism vertices",
+                    &scene.vertices,
+                    VERTEX,
+                );
+                refill(
+                    device,
+                    queue,
+                    indices,
+                    "prism indices",
+                    &scene.indices,
+                    INDEX,
+                );
+                *count = scene.indices.len() as u32;
+            }
+            None => gpu.faces = vec![face_buffers(device, &scene.vertices, &scene.indices)],
+        }
+        match (gpu.lines.first_mut(), scene.lines.is_empty()) {
+            (_, true) => gpu.lines.clear(),
             (Some((buf, n)), false) => {
                 refill(device, queue, buf, "prism lines", &scene.lines, VERTEX);
                 *n = scene.lines.len() as u32;
             }
             (None, false) => {
-                gpu.lines = Some((
+                gpu.lines = vec![(
                     buffer(device, "prism lines", &scene.lines, VERTEX),
                     scene.lines.len() as u32,
-                ))
+                )]
             }
         }
+        Ok(())
     }
 
     /// Sets the camera for the next [`Renderer::draw`].
@@ -287,18 +342,38 @@ impl Renderer {
     /// Draws a scene with the camera of `slot`.
     pub fn draw_in(&self, pass: &mut wgpu::RenderPass<'_>, slot: &CameraSlot, scene: &GpuScene) {
         pass.set_bind_group(0, &slot.bind_group, &[]);
-        if scene.index_count > 0 {
-            pass.set_pipeline(&self.mesh_pipeline);
-            pass.set_vertex_buffer(0, scene.vertices.slice(..));
-            pass.set_index_buffer(scene.indices.slice(..), wgpu::IndexFormat::Uint32);
-            pass.draw_indexed(0..scene.index_count, 0, 0..1);
+        pass.set_pipeline(&self.mesh_pipeline);
+        for (vertices, indices, count) in scene.faces.iter().filter(|f| f.2 > 0) {
+            pass.set_vertex_buffer(0, vertices.slice(..));
+            pass.set_index_buffer(indices.slice(..), wgpu::IndexFormat::Uint32);
+            pass.draw_indexed(0..*count, 0, 0..1);
         }
-        if let Some((buf, n)) = &scene.lines {
-            pass.set_pipeline(&self.line_pipeline);
+        pass.set_pipeline(&self.line_pipeline);
+        for (buf, n) in scene.lines.iter().filter(|l| l.1 > 0) {
             pass.set_vertex_buffer(0, buf.slice(..));
             pass.draw(0..*n, 0..1);
         }
     }
+}
+
+/// The vertex and index buffers of one part and its index count.
+fn face_buffers(
+    device: &wgpu::Device,
+    vertices: &[Vertex],
+    indices: &[u32],
+) -> (wgpu::Buffer, wgpu::Buffer, u32) {
+    (
+        buffer(device, "prism vertices", vertices, VERTEX),
+        buffer(device, "prism indices", indices, INDEX),
+        indices.len() as u32,
+    )
+}
+
+/// Bytes a scene takes on the GPU.
+pub fn scene_bytes(scene: &Scene) -> u64 {
+    (scene.vertices.len() * std::mem::size_of::<Vertex>()
+        + scene.indices.len() * 4
+        + scene.lines.len() * std::mem::size_of::<LineVertex>()) as u64
 }
 
 fn camera_slot(device: &wgpu::Device, layout: &wgpu::BindGroupLayout) -> CameraSlot {

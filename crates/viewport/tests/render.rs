@@ -100,9 +100,9 @@ fn refilled_buffers_render_as_fresh_ones() {
     );
     assert_eq!(a.indices.len(), b.indices.len());
     let camera = Camera::looking(View::Iso, glam::Vec3::ZERO, a.radius());
-    let mut kept = gpu.upload(&a);
+    let mut kept = gpu.upload(&a).unwrap();
     for next in [&b, &c, &a] {
-        gpu.refill(&mut kept, next);
+        gpu.refill(&mut kept, next).unwrap();
         let refilled = gpu.render_uploaded(&kept, &camera, 160, 120).unwrap();
         let fresh = gpu.render(next, &camera, 160, 120).unwrap();
         assert!(refilled == fresh, "a refilled scene renders differently");
@@ -110,6 +110,37 @@ fn refilled_buffers_render_as_fresh_ones() {
     let first = gpu.render(&a, &camera, 160, 120).unwrap();
     let second = gpu.render(&b, &camera, 160, 120).unwrap();
     assert!(first != second, "the test needs scenes that look different");
+}
+
+/// A scene larger than the device's largest buffer is drawn in parts, each a run of
+/// triangles with its own vertices: cut into parts of at most 8 KiB, the tripod with its
+/// wireframe renders pixel for pixel as in one buffer.
+#[test]
+fn a_scene_in_parts_renders_as_in_one_buffer() {
+    let gpu = Offscreen::new().expect("a wgpu adapter (install mesa-vulkan-drivers)");
+    let opts = SceneOptions {
+        wireframe: true,
+        shading: Shading::Smooth,
+        ..SceneOptions::default()
+    };
+    let scene = tripod_scene(
+        "combination:r=0.3,combination:r=0.3,combination:r=0.3",
+        &opts,
+        false,
+    );
+    let camera = Camera::looking(View::Iso, glam::Vec3::ZERO, scene.radius());
+    let whole = gpu.upload(&scene).unwrap();
+    let parts = gpu.upload_within(&scene, 8 << 10).unwrap();
+    assert_eq!(whole.face_parts(), 1);
+    assert!(parts.face_parts() > 4, "{} parts", parts.face_parts());
+    let one = gpu.render_uploaded(&whole, &camera, 200, 150).unwrap();
+    let cut = gpu.render_uploaded(&parts, &camera, 200, 150).unwrap();
+    let differ = one
+        .pixels()
+        .zip(cut.pixels())
+        .filter(|(a, b)| a != b)
+        .count();
+    assert_eq!(differ, 0, "a scene in parts renders differently");
 }
 
 #[test]

@@ -304,7 +304,7 @@ pub fn run(a: RenderArgs) -> Result<(), CliError> {
     let input = (&pipeline.levels()[0].mesh, &topo);
     let mut camera = camera(&a, &scene, input, &last.mesh)?;
     let gpu = Offscreen::new().map_err(CliError::input)?;
-    let uploaded = gpu.upload(&scene);
+    let uploaded = gpu.upload(&scene).map_err(CliError::input)?;
     let frames = a.frames.unwrap_or(1);
     let t = std::time::Instant::now();
     for i in 0..frames {

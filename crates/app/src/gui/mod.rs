@@ -206,7 +206,7 @@ impl PrismApp {
             .wgpu_render_state
             .as_ref()
             .ok_or("the wgpu renderer is not available")?;
-        viewport::install(rs, SAMPLES as u32);
+        viewport::install(rs, SAMPLES as u32, &cc.egui_ctx);
         // A screenshot run shows what its arguments say, not what the last run left.
         let settings = if launch.screenshot.is_some() {
             None
@@ -459,6 +459,13 @@ pub fn run(launch: Launch) -> Result<(), String> {
             .with_inner_size([1280.0, 800.0])
             .with_drag_and_drop(true),
         renderer: eframe::Renderer::Wgpu,
+        wgpu_options: egui_wgpu::WgpuConfiguration {
+            wgpu_setup: egui_wgpu::WgpuSetup::CreateNew(egui_wgpu::WgpuSetupCreateNew {
+                device_descriptor: Arc::new(viewport::device_descriptor),
+                ..egui_wgpu::WgpuSetupCreateNew::without_display_handle()
+            }),
+            ..Default::default()
+        },
         multisampling: SAMPLES,
         depth_buffer: 32,
         ..Default::default()

@@ -190,6 +190,7 @@ impl View3d {
                     aspect: rect.width() / rect.height().max(1.0),
                 },
             ));
+            viewport::paint_refusal(ui, rect, self.slot + slot_offset);
         }
     }
 

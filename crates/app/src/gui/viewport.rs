@@ -3,8 +3,8 @@
 //! view (one, or two or four in the compare split) has its own camera slot and buffers.
 
 use prism_viewport::{Camera, CameraSlot, GpuScene, Renderer, Scene};
-use std::collections::HashMap;
-use std::sync::Arc;
+use std::collections::{BTreeMap, HashMap};
+use std::sync::{Arc, Mutex};
 
 /// What the callback of one view needs for one frame.
 pub struct ViewCallback {
@@ -21,16 +21,29 @@ pub struct ViewCallback {
 struct ViewGpu {
     slot: CameraSlot,
     uploaded: Option<(u64, GpuScene, GpuScene)>,
+    /// The version the device could not hold, so that it is not tried again every frame.
+    refused: Option<u64>,
 }
 
 /// GPU state kept in egui's callback resources.
 struct Resources {
     renderer: Renderer,
     views: HashMap<usize, ViewGpu>,
+    /// To draw the next frame when a view's scene was refused.
+    ctx: egui::Context,
+}
+
+/// Why each view draws nothing: the scene its device could not hold (set by the paint
+/// callback, read by the view's own drawing on the next frame).
+static REFUSED: Mutex<BTreeMap<usize, String>> = Mutex::new(BTreeMap::new());
+
+/// The message of a view whose scene the graphics device could not hold.
+pub fn refusal(view: usize) -> Option<String> {
+    REFUSED.lock().ok()?.get(&view).cloned()
 }
 
 /// Creates the renderer once, for the window's colour format and sample count.
-pub fn install(render_state: &egui_wgpu::RenderState, samples: u32) {
+pub fn install(render_state: &egui_wgpu::RenderState, samples: u32, ctx: &egui::Context) {
     let renderer = Renderer::new(&render_state.device, render_state.target_format, samples);
     render_state
         .renderer
@@ -39,7 +52,19 @@ pub fn install(render_state: &egui_wgpu::RenderState, samples: u32) {
         .insert(Resources {
             renderer,
             views: HashMap::new(),
+            ctx: ctx.clone(),
         });
+}
+
+/// What the window asks of its graphics device: the adapter's own limits rather than
+/// wgpu's portable defaults, whose largest buffer (256 MiB) a level of 1.5 M faces passes.
+/// Scenes larger still are drawn in parts ([`prism_viewport::parts`]).
+pub fn device_descriptor(adapter: &wgpu::Adapter) -> wgpu::DeviceDescriptor<'static> {
+    wgpu::DeviceDescriptor {
+        label: Some("prism window"),
+        required_limits: adapter.limits(),
+        ..Default::default()
+    }
 }
 
 impl egui_wgpu::CallbackTrait for ViewCallback {
@@ -58,21 +83,37 @@ impl egui_wgpu::CallbackTrait for ViewCallback {
         let v = res.views.entry(self.view).or_insert_with(|| ViewGpu {
             slot: renderer.camera_slot(device),
             uploaded: None,
+            refused: None,
         });
-        match &mut v.uploaded {
-            Some((version, _, _)) if *version == self.version => {}
+        let done = match &mut v.uploaded {
+            Some((version, _, _)) if *version == self.version => Ok(()),
+            _ if v.refused == Some(self.version) => Ok(()),
             // A new version: written over the buffers it fits (an edit keeps the counts).
             Some((version, scene, overlay)) => {
-                renderer.refill(device, queue, scene, &self.scene);
-                renderer.refill(device, queue, overlay, &self.overlay);
                 *version = self.version;
+                renderer
+                    .refill(device, queue, scene, &self.scene)
+                    .and_then(|()| renderer.refill(device, queue, overlay, &self.overlay))
             }
-            None => {
-                v.uploaded = Some((
-                    self.version,
-                    renderer.upload(device, &self.scene),
-                    renderer.upload(device, &self.overlay),
-                ))
+            None => renderer.upload(device, &self.scene).and_then(|scene| {
+                let overlay = renderer.upload(device, &self.overlay)?;
+                v.uploaded = Some((self.version, scene, overlay));
+                Ok(())
+            }),
+        };
+        if let Ok(mut refused) = REFUSED.lock() {
+            match done {
+                Err(e) => {
+                    v.uploaded = None;
+                    v.refused = Some(self.version);
+                    refused.insert(self.view, format!("{e}. Nothing is drawn in this view: show a lower level or a coarser surface."));
+                    res.ctx.request_repaint();
+                }
+                Ok(()) if v.refused != Some(self.version) => {
+                    v.refused = None;
+                    refused.remove(&self.view);
+                }
+                Ok(()) => {}
             }
         }
         renderer.set_slot_camera(queue, &v.slot, &self.camera, self.aspect);
@@ -121,7 +162,23 @@ pub fn camera_input(
     }
 }
 
-/// The renderer's background colour under a view (what shows without a GPU too).
+/// The message of a view whose scene the graphics device refused, across its middle.
+pub fn paint_refusal(ui: &egui::Ui, rect: egui::Rect, view: usize) {
+    if let Some(text) = refusal(view) {
+        let galley = ui.painter().layout(
+            text,
+            egui::FontId::proportional(14.0),
+            egui::Color32::from_rgb(240, 170, 90),
+            (rect.width() - 40.0).max(100.0),
+        );
+        ui.painter().galley(
+            rect.center() - galley.size() / 2.0,
+            galley,
+            egui::Color32::WHITE,
+        );
+    }
+}
+
 /// Light text over a view: `text` placed at `at` by `align`, `size` points, grey `gray`.
 pub fn caption(
     ui: &egui::Ui,
@@ -139,6 +196,7 @@ pub fn caption(
     );
 }
 
+/// The renderer's background colour under a view (what shows without a GPU too).
 pub fn paint_background(ui: &egui::Ui, rect: egui::Rect) {
     let bg = prism_viewport::renderer::BACKGROUND;
     let srgb = |x: f64| (255.0 * x.powf(1.0 / 2.2)) as u8;

@@ -107,6 +107,7 @@ impl ModelTab {
                         aspect: rect.width() / rect.height().max(1.0),
                     },
                 ));
+                viewport::paint_refusal(ui, rect, i);
             }
             if let Some(start) = self.box_start
                 && i == self.active
