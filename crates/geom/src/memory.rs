@@ -213,6 +213,13 @@ pub fn tessellation_bytes(counts: &Counts) -> u64 {
     padded(b) + BASELINE
 }
 
+/// Bytes a free-form surface of these counts holds while it is built and checked: its
+/// tessellation, the quality report's maps and the crossing check (about 330 bytes a face
+/// together; measured against the peak in docs/reliability.md).
+pub fn surface_bytes(counts: &Counts) -> u64 {
+    tessellation_bytes(counts) + 330 * counts.faces
+}
+
 /// The budget when none is given: half of the memory available now (Linux's
 /// `MemAvailable`), else 4 GiB.
 pub fn default_budget() -> u64 {

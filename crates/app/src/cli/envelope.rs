@@ -135,13 +135,13 @@ pub fn run(a: EnvelopeArgs) -> Result<(), CliError> {
     let start = Instant::now();
     let e = envelope(&spec).map_err(|e| CliError::input(format!("{}: {e}", a.input.display())))?;
     let millis = start.elapsed().as_secs_f64() * 1e3;
-    // The mesh's counts estimated from the charts at resolution 2; on top of the mesh, the
-    // quality report's maps (about 260 bytes a triangle) and the crossing check (about 70).
+    // The mesh's counts estimated from the charts at a low resolution; on top of the mesh,
+    // the quality report's maps and the crossing check.
     let counts = e.mesh_counts(spec.resolution);
     let export = prism_geom::memory::export_bytes(&counts, io::ExportFormat::of(&a.output));
     a.memory
         .check(
-            prism_geom::memory::tessellation_bytes(&counts) + export + 330 * counts.faces,
+            prism_geom::memory::surface_bytes(&counts) + export,
             "this envelope",
             "give a smaller --resolution or fewer primitives",
         )

@@ -80,6 +80,9 @@ pub const SAMPLES_FILES: [(&str, &str, &str); 6] = [
     ),
 ];
 
+/// The memory budget of a first run, MiB (the Model tab's field changes it).
+pub(super) const DEFAULT_BUDGET_MIB: u64 = 4096;
+
 /// What eframe remembers between runs.
 #[derive(Debug, Clone, serde::Serialize, serde::Deserialize)]
 #[serde(default)]
@@ -96,7 +99,7 @@ impl Default for Settings {
         Settings {
             display: Display::default(),
             tool: Tool::Orbit,
-            budget_mib: 4096,
+            budget_mib: DEFAULT_BUDGET_MIB,
             next: model::default_next().to_string(),
             last_file: None,
         }

@@ -22,6 +22,7 @@ mod edits;
 pub(crate) mod envelope;
 mod files;
 mod gestures;
+mod latest;
 mod launch;
 mod menu;
 pub mod model;
@@ -403,6 +404,8 @@ impl PrismApp {
             commands.push(Command::Open(f));
         }
         egui::Panel::top("menu").show(ui, |ui| commands.extend(self.menu_bar(ui)));
+        let budget = self.model.budget_mib << 20;
+        (self.skin.budget, self.envelope.budget) = (budget, budget);
         match self.tab {
             Tab::Model => {
                 let note = self.note.clone();

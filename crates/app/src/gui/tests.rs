@@ -705,6 +705,36 @@ fn bad_input_in_the_3d_tabs_shows_its_message_and_is_kept() {
     refused_and_kept(|a| &mut a.skin, (sections, says), |s| s.resolution = 0);
 }
 
+/// The 3D tabs refuse a surface whose mesh would go over the memory budget before they
+/// tessellate it, say so with both numbers, and build it when the budget is raised.
+#[test]
+fn the_3d_tabs_refuse_a_surface_over_the_memory_budget() {
+    use gestures::Tab3d;
+    let mut a = app();
+    let scene = envelope::EnvelopeTab::sample(0).ok();
+    a.run(Command::Edit(envelope::EnvelopeTab::edit(scene, None)));
+    let sections = skin::SkinTab::sample(0).ok();
+    a.run(Command::Edit(skin::SkinTab::edit(sections, None)));
+    for mib in [16, 4096] {
+        (a.envelope.budget, a.skin.budget) = (mib << 20, mib << 20);
+        a.wait_idle();
+        let surfaces = [
+            a.envelope.surface().map(|m| m.num_faces()),
+            a.skin.surface().map(|m| m.num_faces()),
+        ];
+        for s in surfaces {
+            match mib {
+                16 => {
+                    let e = s.expect_err("refused");
+                    assert!(e.contains("more than the memory budget of 16 MiB"), "{e}");
+                    assert!(e.contains("a smaller resolution"), "{e}");
+                }
+                _ => assert!(s.expect("built") > 0),
+            }
+        }
+    }
+}
+
 pub(super) fn settle(h: &mut Harness<'_, PrismApp>) {
     for _ in 0..3 {
         h.step();

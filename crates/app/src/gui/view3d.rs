@@ -206,3 +206,24 @@ impl View3d {
         viewport::caption(ui, (at, egui::Align2::LEFT_BOTTOM), text, 12.0, 170);
     }
 }
+
+/// Bytes the view's copy of a surface of these counts takes: three vertices of 36 bytes and
+/// three indices a triangle (flat shading; smooth shares fewer).
+pub fn view_bytes(counts: &prism_geom::memory::Counts) -> u64 {
+    120 * counts.triangles()
+}
+
+/// Refuses a surface that would hold `need` bytes, more than `budget` (the Model tab's
+/// memory budget), naming what would help.
+pub fn within_budget(need: u64, budget: u64, what: &str, smaller: &str) -> Result<(), String> {
+    use prism_geom::memory::mib;
+    if need > budget {
+        return Err(format!(
+            "{what} would need about {} MiB, more than the memory budget of {} MiB (Model tab): \
+             give {smaller}, or raise the budget if the machine has it",
+            mib(need),
+            mib(budget)
+        ));
+    }
+    Ok(())
+}

@@ -4,11 +4,11 @@
 //! (primitive edges, silhouette edges, fusion edges, insertion curves and the sections'
 //! straight edges in their own colours), the picked vertex.
 
-use crate::gui::view3d::{Look, framing, overlay_for, sampled};
+use crate::gui::view3d::{Look, framing, overlay_for, sampled, view_bytes, within_budget};
 use glam::DVec3;
 use prism_geom::freeform::envelope::chart::quality::Quality;
 use prism_geom::freeform::envelope::{CurveKind, Envelope, EnvelopeSpec, envelope};
-use prism_geom::{EdgeAttrs, PolyMesh};
+use prism_geom::{EdgeAttrs, PolyMesh, memory};
 use prism_viewport::Scene;
 use std::sync::Arc;
 use std::sync::mpsc::{Receiver, TryRecvError};
@@ -55,6 +55,8 @@ pub const FOLDED: [f32; 3] = [1.0, 0.1, 0.1];
 /// One build of the envelope.
 pub struct Built {
     pub spec: EnvelopeSpec,
+    /// The memory budget it was built within.
+    pub budget: u64,
     pub result: Result<(Envelope, PolyMesh), String>,
     /// Network and patches, milliseconds (no tessellation).
     pub millis: f64,
@@ -83,15 +85,30 @@ pub enum Crossings {
 }
 
 impl Built {
+    /// The tab's build (on its worker thread): [`Built::new`] with the crossing check.
+    pub fn checked((spec, budget): &(EnvelopeSpec, u64)) -> Built {
+        Built::new(spec, *budget, true)
+    }
+
     /// The envelope of `spec`, its folds, and — when `check_crossings` (the view the summary
-    /// describes; the t sweep's views show no summary) — a crossing check started on a thread.
-    pub fn new(spec: &EnvelopeSpec, check_crossings: bool) -> Built {
+    /// describes; the t sweep's views show no summary) — a crossing check started on a
+    /// thread. A mesh that with its checks and the view's copy would take more than `budget`
+    /// bytes is refused before it is built.
+    pub fn new(spec: &EnvelopeSpec, budget: u64, check_crossings: bool) -> Built {
         let start = Instant::now();
         let e = envelope(spec);
         let millis = start.elapsed().as_secs_f64() * 1e3;
         // The region of each face, for the quality report on the check's thread.
         let mut regions = Vec::new();
         let result = e.map_err(|e| e.to_string()).and_then(|e| {
+            let counts = e.mesh_counts(spec.resolution);
+            let need = memory::surface_bytes(&counts) + view_bytes(&counts);
+            within_budget(
+                need,
+                budget,
+                "this envelope",
+                "a smaller resolution or fewer primitives",
+            )?;
             let (m, r) = e.mesh(spec.resolution).map_err(|e| e.to_string())?;
             regions = r;
             Ok((e, m))
@@ -126,6 +143,7 @@ impl Built {
         };
         Built {
             spec: spec.clone(),
+            budget,
             result,
             millis,
             jump,

@@ -2,7 +2,8 @@
 //! tab"): a primitive from the library, moved, turned and scaled by typed or dragged numbers or
 //! by dragging in the view; the global t and a picked vertex's own t; the envelope rebuilt
 //! live with its curve network — on a worker thread, the last surface shown until the next is
-//! ready (a build that answers within [`BUILD_WAIT`] is shown in the same frame). Every change
+//! ready ([`super::latest`]; the t sweep's three builds too); a surface whose mesh would not
+//! fit the memory budget is refused before it is tessellated. Every change
 //! is one [`Edit::SetEnvelope`]; a drag is one undo step.
 //! Any number of primitives: those the others swallow (their centre is not a corner of the
 //! hull of the centres) are named in the summary.
@@ -15,6 +16,7 @@ use super::command::Edit;
 use super::doc_state::DocState;
 pub use super::gestures::Mouse;
 use super::gestures::{self, Base, Tab3d, dragged_points};
+use super::latest::{BUILD_WAIT, Latest};
 use super::model::pick::{Projector, pick_vertex};
 use super::view3d::View3d;
 use super::viewport;
@@ -25,11 +27,6 @@ use prism_geom::freeform::envelope::{
 };
 use prism_viewport::Scene;
 use std::sync::Arc;
-use std::sync::mpsc::{Receiver, RecvTimeoutError};
-use std::time::Duration;
-
-/// How long a frame waits for the worker's build before it shows the last one instead.
-pub const BUILD_WAIT: Duration = Duration::from_millis(40);
 
 /// The bundled scenes: name, file name, contents.
 pub const ENVELOPE_SAMPLES: [(&str, &str, &str); 6] = [
@@ -109,6 +106,15 @@ struct SweepView {
     overlay: Arc<Scene>,
 }
 
+/// The sweep's builds of `spec` at each t of [`SWEEP`] (on the worker thread).
+fn sweep_builds((spec, budget): &(EnvelopeSpec, u64)) -> (EnvelopeSpec, Vec<Built>) {
+    let builds = SWEEP
+        .iter()
+        .map(|&t| Built::new(&with_uniform_t(spec, t), *budget, false))
+        .collect();
+    (spec.clone(), builds)
+}
+
 /// The scene with one uniform t (own values of primitives and vertices dropped).
 pub fn with_uniform_t(spec: &EnvelopeSpec, t: f64) -> EnvelopeSpec {
     let mut s = spec.clone();
@@ -138,11 +144,15 @@ pub struct EnvelopeTab {
     /// Shows t = 1, 0.5, 0.1 side by side instead of the one view (Table 1).
     pub sweep: bool,
     sweep_views: Vec<SweepView>,
+    /// The scene the sweep's views were built from.
+    sweep_for: Option<EnvelopeSpec>,
+    sweeps: Latest<(EnvelopeSpec, u64), (EnvelopeSpec, Vec<Built>)>,
     /// The view, the gesture counter and this frame's commands.
     pub base: Base,
+    /// The memory the envelope may take (the Model tab's budget), bytes.
+    pub budget: u64,
     built: Option<Built>,
-    /// The build under way on the worker thread: its scene and where it will answer.
-    pending: Option<(EnvelopeSpec, Receiver<Built>)>,
+    builds: Latest<(EnvelopeSpec, u64), Built>,
     shown: Option<(Option<(usize, usize)>, Overlays)>,
     gesture: Gesture,
 }
@@ -157,9 +167,12 @@ impl Default for EnvelopeTab {
             overlays: Overlays::default(),
             sweep: false,
             sweep_views: Vec::new(),
+            sweep_for: None,
+            sweeps: Latest::new(sweep_builds),
             base: Base::new(VIEW_SLOT),
+            budget: super::launch::DEFAULT_BUDGET_MIB << 20,
             built: None,
-            pending: None,
+            builds: Latest::new(Built::checked),
             shown: None,
             gesture: Gesture::default(),
         }
@@ -196,39 +209,26 @@ impl EnvelopeTab {
 
     /// Whether a build is under way on the worker thread (the view shows the last one).
     pub fn building(&self) -> bool {
-        self.pending.is_some()
+        self.builds.busy() || self.sweeps.busy()
     }
 
-    /// Starts the build of `spec` on the worker thread unless it is under way, and takes its
-    /// answer when it comes within [`BUILD_WAIT`]; true when a new build was taken.
+    /// Takes the worker's build of `spec` when it has come (within [`BUILD_WAIT`]), or an
+    /// earlier one newer than the view's; true when a new build was taken.
     fn rebuild(&mut self, spec: &EnvelopeSpec) -> bool {
-        if self.built.as_ref().is_some_and(|b| &b.spec == spec) {
-            self.pending = None;
+        if self
+            .built
+            .as_ref()
+            .is_some_and(|b| &b.spec == spec && b.budget == self.budget)
+        {
+            self.builds.clear();
             return false;
         }
-        if self.pending.as_ref().is_none_or(|(s, _)| s != spec) {
-            let (tx, rx) = std::sync::mpsc::channel();
-            let s = spec.clone();
-            // A build that is no longer wanted finishes and its answer is dropped.
-            std::thread::spawn(move || {
-                let _ = tx.send(Built::new(&s, true));
-            });
-            self.pending = Some((spec.clone(), rx));
-        }
-        let Some((_, rx)) = &self.pending else {
-            return false;
-        };
-        match rx.recv_timeout(BUILD_WAIT) {
-            Ok(b) => {
+        match self.builds.want(&(spec.clone(), self.budget), BUILD_WAIT) {
+            Some(b) => {
                 self.built = Some(b);
-                self.pending = None;
                 true
             }
-            Err(RecvTimeoutError::Timeout) => false,
-            Err(RecvTimeoutError::Disconnected) => {
-                self.pending = None;
-                false
-            }
+            None => false,
         }
     }
 
@@ -295,7 +295,8 @@ impl Tab3d for EnvelopeTab {
     fn sync(&mut self, spec: Option<&EnvelopeSpec>) {
         let Some(spec) = spec else {
             self.built = None;
-            self.pending = None;
+            self.builds.clear();
+            self.sweeps.clear();
             self.base.view.clear();
             self.shown = None;
             self.picked = None;
@@ -321,28 +322,38 @@ impl Tab3d for EnvelopeTab {
             self.picked = None;
         }
         self.selected = self.selected.min(spec.primitives.len().saturating_sub(1));
+        let overlays_changed = self.shown.is_none_or(|(_, o)| o != self.overlays);
         if fresh || self.shown != Some((self.picked, self.overlays)) {
             let b = self.built.as_ref().expect("built above");
             self.base
                 .view
                 .show(build::scenes(b, self.picked, &self.overlays));
             self.shown = Some((self.picked, self.overlays));
-            self.sweep_views.clear();
         }
-        if self.sweep && self.sweep_views.is_empty() {
-            self.sweep_views = SWEEP
-                .iter()
-                .map(|&t| {
-                    let built = Built::new(&with_uniform_t(spec, t), false);
-                    let (scene, overlay) = build::scenes(&built, None, &self.overlays);
-                    SweepView {
+        // The sweep's three builds on the worker too; the last ones shown until they come.
+        let mut swept = false;
+        if self.sweep && self.sweep_for.as_ref() != Some(spec) {
+            if let Some((s, builds)) = self.sweeps.want(&(spec.clone(), self.budget), BUILD_WAIT) {
+                self.sweep_views = builds
+                    .into_iter()
+                    .zip(SWEEP)
+                    .map(|(built, t)| SweepView {
                         t,
                         built,
-                        scene,
-                        overlay,
-                    }
-                })
-                .collect();
+                        scene: Arc::default(),
+                        overlay: Arc::default(),
+                    })
+                    .collect();
+                self.sweep_for = Some(s);
+                swept = true;
+            }
+        } else if !self.sweep {
+            self.sweeps.clear();
+        }
+        if swept || overlays_changed {
+            for v in &mut self.sweep_views {
+                (v.scene, v.overlay) = build::scenes(&v.built, None, &self.overlays);
+            }
         }
     }
 

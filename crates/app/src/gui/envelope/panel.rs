@@ -3,6 +3,7 @@
 //! options.
 
 use super::*;
+use std::time::Duration;
 
 impl EnvelopeTab {
     /// The tab's side panel: the library or a bundled scene when there is none; else the

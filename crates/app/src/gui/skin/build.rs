@@ -4,12 +4,12 @@
 //! frame can spare), and the scene and the teaching overlays (section curves, chains,
 //! trajectories, swept sections, twist angles) drawn from it.
 
-use crate::gui::view3d::{Look, framing, overlay_for, sampled};
+use crate::gui::view3d::{Look, framing, overlay_for, sampled, view_bytes, within_budget};
 use glam::DVec3;
 use prism_geom::freeform::skin::SkinCrossings;
 use prism_geom::freeform::spline;
 use prism_geom::freeform::{Skin, SkinSpec};
-use prism_geom::{EdgeAttrs, PolyMesh};
+use prism_geom::{EdgeAttrs, PolyMesh, memory};
 use prism_viewport::Scene;
 use std::sync::Arc;
 use std::sync::mpsc::{Receiver, TryRecvError};
@@ -89,6 +89,8 @@ pub fn contours(mesh: &PolyMesh, count: usize) -> Vec<(DVec3, DVec3)> {
 /// One build of the skin.
 pub struct Built {
     pub spec: SkinSpec,
+    /// The memory budget it was built within.
+    pub budget: u64,
     pub result: Result<(Skin, PolyMesh), String>,
     pub millis: f64,
     /// Largest analytic normal jump across inner patch borders, degrees.
@@ -127,9 +129,18 @@ impl Built {
         }
     }
 
-    pub fn new(spec: &SkinSpec) -> Built {
+    /// The skin of `spec` within `budget` bytes (on the tab's worker thread): the patches,
+    /// then — when their mesh, its crossing check and the view's buffers fit the budget — the
+    /// mesh.
+    pub fn new((spec, budget): &(SkinSpec, u64)) -> Built {
         let start = Instant::now();
         let result = spec.build().map_err(|e| e.to_string()).and_then(|s| {
+            let counts =
+                memory::tessellation_counts(s.patches.len() as u64, spec.resolution as u64);
+            let need = memory::tessellation_bytes(&counts)
+                + memory::crossing_bytes(&counts)
+                + view_bytes(&counts);
+            within_budget(need, *budget, "this skin", "a smaller resolution")?;
             let m = s
                 .tessellate(spec.resolution, spec.caps)
                 .map_err(|e| e.to_string())?;
@@ -149,6 +160,7 @@ impl Built {
         };
         Built {
             spec: spec.clone(),
+            budget: *budget,
             result,
             millis,
             jump,

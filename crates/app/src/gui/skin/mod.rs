@@ -1,8 +1,10 @@
 //! The Skin tab (seed 003; docs/algorithms/skin.md, docs/user-guide.md "The Skin tab"): the
 //! sections listed, added, deleted, reordered, moved, turned, tilted and scaled by typed or
 //! dragged numbers, their points edited in their own plane; the G1 skin through them rebuilt
-//! live, with the paper's teaching pictures on request (trajectories, swept sections, the
-//! chosen chains). Every change is one [`Edit::SetSkin`]; a drag of one number is one undo step.
+//! live on a worker thread, the last skin shown until the next is ready ([`super::latest`]),
+//! with the paper's teaching pictures on request (trajectories, swept sections, the chosen
+//! chains). A skin whose mesh would not fit the memory budget is refused before it is
+//! tessellated. Every change is one [`Edit::SetSkin`]; a drag of one number is one undo step.
 
 mod build;
 mod section;
@@ -11,6 +13,7 @@ use super::command::Edit;
 use super::doc_state::DocState;
 pub use super::gestures::Mouse;
 use super::gestures::{self, Base, Tab3d, dragged_points};
+use super::latest::{BUILD_WAIT, Latest};
 use super::view3d::View3d;
 use build::{Built, Overlays};
 use glam::DVec3;
@@ -54,7 +57,10 @@ pub struct SkinTab {
     pub overlays: Overlays,
     /// The view, the gesture counter and this frame's commands.
     pub base: Base,
+    /// The memory the skin may take (the Model tab's budget), bytes.
+    pub budget: u64,
     built: Option<Built>,
+    builds: Latest<(SkinSpec, u64), Built>,
     shown: Option<(usize, Overlays)>,
     gesture: Gesture,
 }
@@ -67,7 +73,9 @@ impl Default for SkinTab {
             drag: None,
             overlays: Overlays::default(),
             base: Base::new(VIEW_SLOT),
+            budget: super::launch::DEFAULT_BUDGET_MIB << 20,
             built: None,
+            builds: Latest::new(Built::new),
             shown: None,
             gesture: Gesture::default(),
         }
@@ -90,9 +98,9 @@ fn frame(points: &[DVec3]) -> (DVec3, DVec3, DVec3, DVec3) {
 }
 
 impl SkinTab {
-    /// Whether the crossing check of the last build is under way.
+    /// Whether a build or the crossing check of the last one is under way.
     pub fn checking(&self) -> bool {
-        self.built.as_ref().is_some_and(|b| b.crossings().is_none())
+        self.builds.busy() || self.built.as_ref().is_some_and(|b| b.crossings().is_none())
     }
 
     /// The last build (for the tests).
@@ -102,6 +110,15 @@ impl SkinTab {
     }
 
     fn summary(&self, ui: &mut egui::Ui) {
+        if self.builds.busy() {
+            let text = match self.built {
+                Some(_) => "Building… (the last skin is shown)",
+                None => "Building…",
+            };
+            ui.label(egui::RichText::new(text).weak());
+            ui.ctx()
+                .request_repaint_after(std::time::Duration::from_millis(30));
+        }
         let Some(b) = &self.built else { return };
         match &b.result {
             Ok((s, m)) => {
@@ -189,13 +206,26 @@ impl Tab3d for SkinTab {
     fn sync(&mut self, spec: Option<&SkinSpec>) {
         let Some(spec) = spec else {
             self.built = None;
+            self.builds.clear();
             self.base.view.clear();
             self.shown = None;
             return;
         };
-        let fresh = self.built.as_ref().is_none_or(|b| &b.spec != spec);
-        if fresh {
-            self.built = Some(Built::new(spec));
+        let fresh = if self
+            .built
+            .as_ref()
+            .is_some_and(|b| &b.spec == spec && b.budget == self.budget)
+        {
+            self.builds.clear();
+            false
+        } else if let Some(b) = self.builds.want(&(spec.clone(), self.budget), BUILD_WAIT) {
+            self.built = Some(b);
+            true
+        } else {
+            false
+        };
+        if self.built.is_none() {
+            return;
         }
         // The crossings' marks join the overlay when the check's answer comes.
         let checked = self.built.as_mut().is_some_and(|b| b.poll_crossings());
