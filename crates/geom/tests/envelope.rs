@@ -375,6 +375,38 @@ fn bad_primitives_are_named() {
         vertex_t: None,
     };
     assert!(err(half, 1.0).contains("is not inside it"));
+    // A vertex repeated (and a face using it, so that only the coincidence is wrong).
+    let mut twice = cube.clone();
+    twice.vertices.push(twice.vertices[0]);
+    twice.faces[0][0] = 8;
+    assert!(err(twice, 1.0).contains("vertices 0 and 8 coincide"));
+    // The octahedron with one edge flipped through the inside: its vertices are on the
+    // sphere, its surface closed and oriented, but two faces are reflex.
+    let o = [
+        [1.0, 0.0, 0.0],
+        [0.0, 1.0, 0.0],
+        [-1.0, 0.0, 0.0],
+        [0.0, -1.0, 0.0],
+        [0.0, 0.0, 1.0],
+        [0.0, 0.0, -1.0],
+    ];
+    let flipped = PrimitiveInput {
+        vertices: o.to_vec(),
+        faces: vec![
+            vec![4, 0, 5],
+            vec![4, 5, 1],
+            vec![4, 1, 2],
+            vec![4, 2, 3],
+            vec![4, 3, 0],
+            vec![5, 2, 1],
+            vec![5, 3, 2],
+            vec![5, 0, 3],
+        ],
+        t: None,
+        vertex_t: None,
+    };
+    let e = err(flipped, 1.0);
+    assert!(e.contains("not convex: vertex"), "{e}");
     assert!(matches!(
         envelope(&EnvelopeSpec {
             t: 1.0,

@@ -6,7 +6,7 @@ mod box_pairs;
 mod counts;
 mod crossings;
 mod curvature;
-mod face_grid;
+pub(crate) mod face_grid;
 mod fillet;
 mod winding;
 

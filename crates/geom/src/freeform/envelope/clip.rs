@@ -68,6 +68,14 @@ const NEAR_INSIDE: f64 = 0.03;
 /// Unit directions closer than this are one network vertex.
 const SAME_DIRECTION: f64 = 1e-9;
 
+/// The cell size of the directions' lookup (much larger than [`SAME_DIRECTION`], so that a
+/// lookup meets one or two cells a side).
+const DIRECTION_CELL: f64 = 1e-6;
+
+fn direction_cell(u: DVec3) -> [i64; 3] {
+    (u / DIRECTION_CELL).floor().as_i64vec3().to_array()
+}
+
 /// A §6.3 piece whose leg at either end is shorter than this share of its chord is treated as
 /// hooked: such a curve is nearly straight but spends most of its parameter at the short leg's
 /// end (weights like 1, 71, 0.25, 1), and the patches on it fold (envelope.md, "Nearly hooked
@@ -95,6 +103,10 @@ struct Clipper<'a> {
     tol: f64,
     /// (unit direction, network vertex, where) of every vertex added.
     points: Vec<(DVec3, usize, At)>,
+    /// The points by cell of their direction ([`DIRECTION_CELL`]) and by network vertex, so
+    /// that a primitive of many faces finds them without a scan.
+    by_cell: HashMap<[i64; 3], Vec<usize>>,
+    by_vertex: HashMap<usize, usize>,
     /// Whole curved edges, (a, b) with a < b, from a to b.
     full: HashMap<(usize, usize), RationalBezier>,
     /// Curves by their (unordered) end vertices.
@@ -290,24 +302,39 @@ impl Clipper<'_> {
             (l.position - g).normalize(),
             l.t * l.position.distance(g),
         );
+        self.by_cell
+            .entry(direction_cell(u))
+            .or_default()
+            .push(self.points.len());
+        self.by_vertex.insert(v, self.points.len());
         self.points.push((u, v, c.at));
         Ok(v)
     }
 
     /// The network vertex already added in direction u (unit, from G), if any.
     fn known(&self, u: DVec3) -> Option<usize> {
-        self.points
-            .iter()
-            .find(|(w, _, _)| w.distance(u) <= SAME_DIRECTION)
-            .map(|p| p.1)
+        let (lo, hi) = (
+            direction_cell(u - DVec3::splat(SAME_DIRECTION)),
+            direction_cell(u + DVec3::splat(SAME_DIRECTION)),
+        );
+        // The first added among those within the tolerance, as a scan in order would find.
+        let mut first: Option<usize> = None;
+        for x in lo[0]..=hi[0] {
+            for y in lo[1]..=hi[1] {
+                for z in lo[2]..=hi[2] {
+                    for &i in self.by_cell.get(&[x, y, z]).into_iter().flatten() {
+                        if self.points[i].0.distance(u) <= SAME_DIRECTION {
+                            first = Some(first.map_or(i, |f| f.min(i)));
+                        }
+                    }
+                }
+            }
+        }
+        first.map(|i| self.points[i].1)
     }
 
     fn at_of(&self, v: usize) -> At {
-        self.points
-            .iter()
-            .find(|p| p.1 == v)
-            .map(|p| p.2)
-            .expect("added")
+        self.points[self.by_vertex[&v]].2
     }
 
     /// The curve of a side from vertex x to vertex y along `along`, as a side of the region.
@@ -395,6 +422,8 @@ pub fn add_primitive(
         cuts,
         tol,
         points: Vec::new(),
+        by_cell: HashMap::new(),
+        by_vertex: HashMap::new(),
         full: HashMap::new(),
         curves: HashMap::new(),
         monotone,

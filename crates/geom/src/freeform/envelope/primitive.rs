@@ -8,9 +8,11 @@
 //! distance in general (docs/algorithms/envelope.md, "Primitives").
 
 use super::EnvelopeError;
+use crate::analysis::face_grid::FaceGrid;
 use crate::primitives;
 use glam::{DMat3, DVec3};
 use serde::{Deserialize, Serialize};
+use std::collections::HashMap;
 
 /// Relative tolerance (of r) for "on the sphere", "planar face", "convex" and "centre inside".
 pub const TOLERANCE: f64 = 1e-6;
@@ -117,6 +119,10 @@ impl Primitive {
         let (centre, radius) =
             circumsphere(&vertices).ok_or_else(|| bad("its vertices span no sphere".into()))?;
         let tol = TOLERANCE * radius;
+        // Vertices by cell of side 4 tol: a vertex meets the few before it in its cell and
+        // the cells beside it, not all of them.
+        let mut cells: HashMap<[i64; 3], Vec<usize>> = HashMap::new();
+        let cell_of = |v: DVec3| ((v - centre) / (4.0 * tol)).floor().as_i64vec3().to_array();
         for (i, v) in vertices.iter().enumerate() {
             let off = (v.distance(centre) - radius).abs();
             if off > tol {
@@ -124,12 +130,22 @@ impl Primitive {
                     "vertex {i} is {off:.3e} off the sphere through the vertices (centre {centre:.4}, r = {radius:.4}; tolerance {TOLERANCE:e} r)"
                 )));
             }
-            if let Some(j) = vertices[..i].iter().position(|w| w.distance(*v) <= tol) {
+            let c = cell_of(*v);
+            let same = (0..27)
+                .flat_map(|k| {
+                    let near = [c[0] + k % 3 - 1, c[1] + (k / 3) % 3 - 1, c[2] + k / 9 - 1];
+                    cells.get(&near).into_iter().flatten()
+                })
+                .copied()
+                .filter(|&j| vertices[j].distance(*v) <= tol)
+                .min();
+            if let Some(j) = same {
                 return Err(bad(format!("vertices {j} and {i} coincide")));
             }
+            cells.entry(c).or_default().push(i);
         }
         // Closed and consistently oriented: every directed edge once, its reverse once.
-        let mut directed = std::collections::HashMap::new();
+        let mut directed = HashMap::new();
         for (f, face) in p.faces.iter().enumerate() {
             if face.len() < 3 {
                 return Err(bad(format!("face {f} has {} vertices", face.len())));
@@ -176,6 +192,9 @@ impl Primitive {
                 .map(|f| f.iter().rev().copied().collect())
                 .collect()
         };
+        // The vertices on a grid, so that a face meets those near its cap of the sphere (the
+        // only ones that can lie beyond its plane) rather than all of them.
+        let grid = FaceGrid::of_boxes(local.iter().map(|&u| (u, u)).collect(), local.len() as f64);
         let mut normals = Vec::with_capacity(faces.len());
         for (f, face) in faces.iter().enumerate() {
             let nf = newell(face).normalize_or_zero();
@@ -190,7 +209,16 @@ impl Primitive {
                     off(v).abs() * radius
                 )));
             }
-            if let Some(v) = (0..n).find(|&v| off(v) > TOLERANCE) {
+            // A vertex beyond the plane (n·u > d + TOLERANCE, |u| ≤ 1 + TOLERANCE) lies within
+            // this distance of the cap's pole n.
+            let reach = DVec3::splat((2.0 - 2.0 * d).max(0.0).sqrt() + 1e-5);
+            let mut beyond: Option<usize> = None;
+            grid.for_each_overlapping((nf - reach, nf + reach), |v| {
+                if off(v) > TOLERANCE {
+                    beyond = Some(beyond.map_or(v, |b| b.min(v)));
+                }
+            });
+            if let Some(v) = beyond {
                 return Err(bad(format!(
                     "not convex: vertex {v} lies {:.3e} outside the plane of face {f}",
                     off(v) * radius

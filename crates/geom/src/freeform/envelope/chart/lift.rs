@@ -26,6 +26,7 @@
 //! fusion edge: the lid's border is untouched.
 
 use super::{Axial, Chart, Frame};
+use crate::analysis::face_grid::FaceGrid;
 use crate::freeform::envelope::network::{CurveKind, Network, RegionKind};
 use crate::freeform::envelope::primitive::Primitive;
 use glam::{DVec2, DVec3};
@@ -361,25 +362,48 @@ fn raises(
             }
         }
     }
+    // A ball about each region's corners that holds every point a raise can reach.
+    let balls: Vec<(DVec3, f64)> = charts
+        .par_iter()
+        .map(|ch| {
+            let corners: Vec<DVec3> = ch
+                .sides
+                .iter()
+                .map(|s| ch.frame.point(s.a, ch.value(s.a)))
+                .collect();
+            let mid = corners.iter().sum::<DVec3>() / corners.len().max(1) as f64;
+            let reach = corners.iter().map(|c| c.distance(mid)).fold(0.0, f64::max);
+            (mid, reach * (2.0 + RAISE_REACH))
+        })
+        .collect();
+    // The points on a grid, each as a box of the median reach, so that a region meets the
+    // points near it rather than all of them.
+    let mut reaches: Vec<f64> = balls
+        .iter()
+        .map(|b| b.1)
+        .filter(|r| r.is_finite())
+        .collect();
+    reaches.sort_by(f64::total_cmp);
+    let pad = DVec3::splat(reaches.get(reaches.len() / 2).copied().unwrap_or(0.0));
+    let grid = (!points.is_empty())
+        .then(|| FaceGrid::of_boxes(points.iter().map(|p| (p.1 - pad, p.1 + pad)).collect(), 1e6));
     // Every region's raise on its own (in parallel, like the meshing).
-    let raise = |ch: &Chart| -> Option<Raise> {
+    let raise = |(ch, &(mid, reach)): (&Chart, &(DVec3, f64))| -> Option<Raise> {
         // A primitive's own regions hold its faces by construction (s ≥ 1).
         let own = match net.regions[ch.region].kind {
             RegionKind::Fusion { .. } => return None,
             RegionKind::Primitive { primitive, .. } => Some(primitive),
             RegionKind::Lid { .. } => None,
         };
-        // A ball about the region's corners that holds every point a raise can reach.
-        let corners: Vec<DVec3> = ch
-            .sides
-            .iter()
-            .map(|s| ch.frame.point(s.a, ch.value(s.a)))
-            .collect();
-        let mid = corners.iter().sum::<DVec3>() / corners.len() as f64;
-        let reach =
-            corners.iter().map(|c| c.distance(mid)).fold(0.0, f64::max) * (2.0 + RAISE_REACH);
+        let mut near = Vec::new();
+        if let Some(g) = &grid {
+            let r = DVec3::splat(reach);
+            g.for_each_overlapping((mid - r, mid + r), |k| near.push(k));
+        }
+        // In the order of the points, as a scan would meet them.
+        near.sort_unstable();
         let mut bumps = Vec::new();
-        for &(i, x) in &points {
+        for &(i, x) in near.iter().map(|&k| &points[k]) {
             if own == Some(i) || x.distance(mid) > reach {
                 continue;
             }
@@ -406,5 +430,5 @@ fn raises(
             bumps,
         })
     };
-    charts.par_iter().filter_map(raise).collect()
+    charts.par_iter().zip(&balls).filter_map(raise).collect()
 }

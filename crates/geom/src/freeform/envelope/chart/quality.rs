@@ -9,7 +9,9 @@
 //!   chart's direction: never for a graph);
 //! - per primitive, the enclosure margin: the least signed distance (inside positive, as a
 //!   share of its radius) of points on its faces, edges and vertices from the mesh, inside
-//!   decided by the generalized winding number.
+//!   decided by the parity of a ray's crossings ([`crate::analysis::Inside`]), the
+//!   distance by the triangles near the point on a grid, the search widened until the nearest
+//!   found lies within it: about a point's neighbourhood rather than every triangle.
 
 use super::Chart;
 use crate::freeform::envelope::primitive::Primitive;
@@ -17,9 +19,12 @@ use crate::mesh::PolyMesh;
 use glam::DVec3;
 use std::collections::HashMap;
 
-/// The enclosure margins are measured up to this many triangles (a winding number and a
-/// distance of every sample point over every triangle: about 0.1 s for the seven at K = 8,
-/// 150 points a primitive).
+/// Enclosure margins are measured up to this share of a primitive's radius: a primitive
+/// further inside the surface reads this (one swallowed deep inside a heap of thousands would
+/// otherwise search most of the mesh for each of its points).
+pub const MARGIN_CAP: f64 = 1.0;
+
+/// The enclosure margins are measured up to this many triangles.
 pub const ENCLOSURE_CHECK_FACES: usize = 1_000_000;
 
 /// The report.
@@ -147,7 +152,7 @@ pub fn quality_with(
         })
         .fold(0.0f64, f64::max);
     let enclosure = if nf <= ENCLOSURE_CHECK_FACES {
-        prims.iter().map(|pr| margin(mesh, pr)).collect()
+        margins(mesh, prims)
     } else {
         Vec::new()
     };
@@ -218,21 +223,53 @@ fn point_triangle(q: DVec3, a: DVec3, b: DVec3, c: DVec3) -> f64 {
     q.distance(a + ab * (vb * den) + ac * (vc * den))
 }
 
-/// The enclosure margin of a primitive (share of r; negative when a point lies outside).
-fn margin(mesh: &PolyMesh, pr: &Primitive) -> f64 {
-    let mut worst = f64::INFINITY;
-    for q in primitive_points(pr) {
-        let inside = crate::analysis::winding_number(mesh, q) > 0.5;
-        let d = (0..mesh.num_faces())
-            .map(|f| {
+/// The enclosure margin of every primitive (share of its r; negative when a point lies
+/// outside), on all cores.
+fn margins(mesh: &PolyMesh, prims: &[Primitive]) -> Vec<f64> {
+    use rayon::prelude::*;
+    let inside = crate::analysis::Inside::new(mesh);
+    let grid = crate::analysis::face_grid::FaceGrid::new(mesh);
+    let ((lo, hi), whole) = (mesh.bbox(), mesh.bbox_diagonal());
+    debug_assert!(whole.is_finite());
+    // The distance from q to the mesh when it is under `most` (else at least `most`): the
+    // triangles whose boxes come within a reach of q, the reach widened until the nearest lies
+    // within it. A face not visited has its box, so itself, further than the reach.
+    let distance = |q: DVec3, start: f64, most: f64| {
+        let mut reach = start.min(most);
+        loop {
+            let mut d = f64::INFINITY;
+            let r = DVec3::splat(reach);
+            grid.for_each_overlapping((q - r, q + r), |f| {
                 let [a, b, c] = tri(mesh, f).map(|i| mesh.positions[i as usize]);
-                point_triangle(q, a, b, c)
-            })
-            .fold(f64::INFINITY, f64::min);
-        let signed = if inside { d } else { -d };
-        worst = worst.min(signed / pr.radius);
-    }
-    worst
+                d = d.min(point_triangle(q, a, b, c));
+            });
+            if d <= reach || reach >= most {
+                return d.min(most);
+            }
+            reach = (4.0 * reach).min(most);
+        }
+    };
+    prims
+        .par_iter()
+        .map(|pr| {
+            let r = pr.radius;
+            let mut worst = f64::INFINITY;
+            for q in primitive_points(pr) {
+                // A point inside matters only when it is nearer the surface than the worst so
+                // far and than one radius (margins are measured up to 1); one outside always
+                // does.
+                let m = if inside.contains(q) {
+                    distance(q, 0.05 * r, worst.min(MARGIN_CAP) * r) / r
+                } else {
+                    // No point of the mesh is further than this.
+                    let far = whole + q.distance(q.clamp(lo, hi));
+                    -distance(q, 0.05 * r, far) / r
+                };
+                worst = worst.min(m);
+            }
+            worst
+        })
+        .collect()
 }
 
 impl Quality {
