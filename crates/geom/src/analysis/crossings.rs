@@ -29,19 +29,56 @@ use glam::DVec3;
 /// Relative tolerance of the plane sides and of the overlap (× the pair's size).
 const TOL: f64 = 1e-9;
 
-/// The pairs of faces `(f, g)`, `f < g`, that cross each other, ascending.
+/// The pairs of faces `(f, g)`, `f < g`, that cross each other, ascending. A face of more
+/// than [`WHOLE`] triangles (a skin's cap, a big polygon) takes part as its triangles, each
+/// with its own box: such a face's box meets every face near it, and testing all of its
+/// triangles against each of them was quadratic (two caps of 20,000 points: 20 s).
 pub fn crossings(mesh: &PolyMesh) -> Vec<(u32, u32)> {
     use rayon::prelude::*;
 
-    let boxes: Vec<(DVec3, DVec3)> = (0..mesh.num_faces())
-        .into_par_iter()
-        .map(|f| face_box(mesh, f))
-        .collect();
     let tris = FaceTris::new(mesh);
-    let mut out = overlapping_pairs(&boxes, |f, g| faces_cross(mesh, tris.of(f), tris.of(g)));
+    // The search's items: a face, or one triangle of a big face; (face, its triangles).
+    let mut items: Vec<(u32, std::ops::Range<u32>)> = Vec::with_capacity(mesh.num_faces());
+    for f in 0..mesh.num_faces() as u32 {
+        let r = tris.range(f);
+        if r.len() > WHOLE {
+            items.extend(r.map(|t| (f, t..t + 1)));
+        } else {
+            items.push((f, r));
+        }
+    }
+    let boxes: Vec<(DVec3, DVec3)> = items
+        .par_iter()
+        .map(|(f, r)| {
+            if r.len() == 1 && tris.range(*f).len() > WHOLE {
+                let t = &tris.tris[r.start as usize];
+                let p = t.v.map(|v| mesh.positions[v as usize]);
+                (p[0].min(p[1]).min(p[2]), p[0].max(p[1]).max(p[2]))
+            } else {
+                face_box(mesh, *f as usize)
+            }
+        })
+        .collect();
+    let of = |i: u32| {
+        let r = &items[i as usize].1;
+        &tris.tris[r.start as usize..r.end as usize]
+    };
+    let mut out: Vec<(u32, u32)> = overlapping_pairs(&boxes, |i, j| {
+        items[i as usize].0 != items[j as usize].0 && faces_cross(mesh, of(i), of(j))
+    })
+    .into_iter()
+    .map(|(i, j)| {
+        let (f, g) = (items[i as usize].0, items[j as usize].0);
+        (f.min(g), f.max(g))
+    })
+    .collect();
     out.sort_unstable();
+    out.dedup();
     out
 }
+
+/// Faces of more triangles than this take part in [`crossings`] triangle by triangle.
+const WHOLE: usize = 16;
 
 /// The pairs `(f, g)`, `f` one of `faces`, in which it crosses a face `g` of `mesh` (one of
 /// them — then both ways — or another), ascending: the same test as [`crossings`], for a few
@@ -223,8 +260,8 @@ impl FaceTris {
         out
     }
 
-    fn of(&self, f: u32) -> &[Tri] {
-        &self.tris[self.first[f as usize] as usize..self.first[f as usize + 1] as usize]
+    fn range(&self, f: u32) -> std::ops::Range<u32> {
+        self.first[f as usize]..self.first[f as usize + 1]
     }
 }
 

@@ -6,8 +6,10 @@
 //! vertices marked as corners.
 
 use super::{SectionInput, SkinError};
+use crate::analysis::face_grid::FaceGrid;
 use crate::freeform::spline::{self, Cubic};
 use glam::{DVec2, DVec3};
+use std::collections::HashMap;
 use std::f64::consts::TAU;
 
 /// Largest distance of a point from its section's plane, as a fraction of the section's
@@ -67,16 +69,31 @@ pub(super) fn check(k: usize, s: &SectionInput) -> Result<(Vec<DVec3>, DVec3, DV
         .iter()
         .fold((p[0], p[0]), |(lo, hi), &q| (lo.min(q), hi.max(q)));
     let size = (hi - lo).length();
-    for i in 0..p.len() {
-        for j in i + 1..p.len() {
-            if (p[i] - p[j]).length() <= 1e-12 * size {
-                return Err(SkinError::RepeatedPoint {
-                    section: k,
-                    a: i,
-                    b: j,
-                });
-            }
+    // Repeated points by cells of side 4e-12 size: each point meets the few before it in its
+    // cell and the cells beside it, not all of them.
+    let tol = 1e-12 * size;
+    let mut cells: HashMap<[i64; 3], Vec<usize>> = HashMap::new();
+    for (j, &q) in p.iter().enumerate() {
+        let c = ((q - lo) / (4.0 * tol).max(f64::MIN_POSITIVE))
+            .floor()
+            .as_i64vec3()
+            .to_array();
+        let earlier = (0..27)
+            .flat_map(|k| {
+                let near = [c[0] + k % 3 - 1, c[1] + (k / 3) % 3 - 1, c[2] + k / 9 - 1];
+                cells.get(&near).into_iter().flatten()
+            })
+            .copied()
+            .filter(|&i| (p[i] - q).length() <= tol)
+            .min();
+        if let Some(i) = earlier {
+            return Err(SkinError::RepeatedPoint {
+                section: k,
+                a: i,
+                b: j,
+            });
         }
+        cells.entry(c).or_default().push(j);
     }
     if let Some(&c) = s.corners.iter().find(|&&c| c >= p.len()) {
         return Err(SkinError::CornerOutOfRange {
@@ -114,19 +131,32 @@ pub(super) fn check(k: usize, s: &SectionInput) -> Result<(Vec<DVec3>, DVec3, DV
         .map(|q| DVec2::new((q - mean).dot(x), (q - mean).dot(y)))
         .collect();
     let n = flat.len();
+    // Sides that cross: each side against those whose boxes meet its own on a grid.
+    let eps = 1e-12 * size * size;
+    // Padded by the tolerance, so that sides the test finds touching are tried.
+    let side_box = |i: usize| {
+        let (a, b) = (flat[i], flat[(i + 1) % n]);
+        let pad = DVec2::splat(tol);
+        ((a.min(b) - pad).extend(0.0), (a.max(b) + pad).extend(0.0))
+    };
+    let grid = FaceGrid::of_boxes((0..n).map(side_box).collect(), n as f64);
     for i in 0..n {
-        for j in i + 2..n {
-            if i == 0 && j == n - 1 {
-                continue;
+        let mut first: Option<usize> = None;
+        grid.for_each_overlapping(side_box(i), |j| {
+            let apart = j >= i + 2 && !(i == 0 && j == n - 1);
+            if apart
+                && first.is_none_or(|f| j < f)
+                && segments_cross(flat[i], flat[(i + 1) % n], flat[j], flat[(j + 1) % n], eps)
+            {
+                first = Some(j);
             }
-            let eps = 1e-12 * size * size;
-            if segments_cross(flat[i], flat[(i + 1) % n], flat[j], flat[(j + 1) % n], eps) {
-                return Err(SkinError::SelfIntersecting {
-                    section: k,
-                    a: i,
-                    b: j,
-                });
-            }
+        });
+        if let Some(j) = first {
+            return Err(SkinError::SelfIntersecting {
+                section: k,
+                a: i,
+                b: j,
+            });
         }
     }
     // Area centroid in the plane.
@@ -243,4 +273,67 @@ pub(super) fn check_star(k: usize, s: &Section) -> Result<(), SkinError> {
         });
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The first pair of crossing sides as a scan of every pair finds it.
+    fn crossing_by_scan(flat: &[DVec2], eps: f64) -> Option<(usize, usize)> {
+        let n = flat.len();
+        (0..n).find_map(|i| {
+            (i + 2..n)
+                .filter(|&j| !(i == 0 && j == n - 1))
+                .find(|&j| {
+                    segments_cross(flat[i], flat[(i + 1) % n], flat[j], flat[(j + 1) % n], eps)
+                })
+                .map(|j| (i, j))
+        })
+    }
+
+    /// Wavy star-shaped sections with two points swapped or one repeated, at several
+    /// places: the grid's checks name what a scan of every pair names.
+    #[test]
+    fn the_grid_checks_name_what_a_scan_names() {
+        for n in [7usize, 40, 301] {
+            let ring: Vec<DVec3> = (0..n)
+                .map(|i| {
+                    let a = TAU * i as f64 / n as f64;
+                    let r = 1.0 + 0.3 * (5.0 * a).sin();
+                    DVec3::new(r * a.cos(), r * a.sin(), 0.4)
+                })
+                .collect();
+            for k in [0, n / 3, n - 2] {
+                let mut swapped = ring.clone();
+                swapped.swap(k, k + 1);
+                let size = 4.0;
+                let flat: Vec<DVec2> = swapped.iter().map(|p| p.truncate()).collect();
+                let expected = crossing_by_scan(&flat, 1e-12 * size * size);
+                let input = SectionInput {
+                    points: swapped,
+                    ..SectionInput::default()
+                };
+                match check(2, &input) {
+                    Err(SkinError::SelfIntersecting { section: 2, a, b }) => {
+                        let (i, j) = expected.expect("the scan finds a crossing");
+                        // The frame's own origin differs from the test's; the pair is the same.
+                        assert_eq!((a, b), (i, j), "n = {n}, swapped at {k}");
+                    }
+                    other => assert!(expected.is_none(), "n = {n}, k = {k}: {other:?}"),
+                }
+                let mut twice = ring.clone();
+                twice[(k + n / 2) % n] = twice[k];
+                let (a, b) = (k.min((k + n / 2) % n), k.max((k + n / 2) % n));
+                let input = SectionInput {
+                    points: twice,
+                    ..SectionInput::default()
+                };
+                assert!(
+                    matches!(check(2, &input), Err(SkinError::RepeatedPoint { section: 2, a: x, b: y }) if (x, y) == (a, b)),
+                    "n = {n}, k = {k}"
+                );
+            }
+        }
+    }
 }
