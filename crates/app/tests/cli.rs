@@ -1617,9 +1617,11 @@ fn free_form_refusals_name_their_own_knobs() {
         ),
     ] {
         let o = run_with(line, &[&out]);
-        let (_, se) = text(&o);
+        let (so, se) = text(&o);
         assert_eq!(o.status.code(), Some(1), "{se}");
         assert!(se.contains(knob) && !se.contains("levels"), "{se}");
+        // The envelope is refused on its construction's estimate, before it is built.
+        assert!(!so.contains("primitives="), "{so}");
     }
 }
 

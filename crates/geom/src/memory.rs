@@ -220,6 +220,15 @@ pub fn surface_bytes(counts: &Counts) -> u64 {
     tessellation_bytes(counts) + 330 * counts.faces
 }
 
+/// Bytes an envelope's construction holds for primitives of `faces` faces in all (before its
+/// mesh): the network, the charts with their sides and the lifts, about 25 KiB a face at most
+/// (measured: a 20,000-face primitive peaks at 518 MB with its mesh at resolution 1, 80,000
+/// faces at 1,521 MB; 3,000 cubes, most swallowed, at 196 MB; docs/reliability.md). Without
+/// the process's [`BASELINE`], which the mesh's estimate holds.
+pub fn envelope_construction_bytes(faces: u64) -> u64 {
+    25 * 1024 * faces
+}
+
 /// The budget when none is given: half of the memory available now (Linux's
 /// `MemAvailable`), else 4 GiB.
 pub fn default_budget() -> u64 {

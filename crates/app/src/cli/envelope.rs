@@ -132,6 +132,12 @@ pub fn run(a: EnvelopeArgs) -> Result<(), CliError> {
             spec.resolution
         )));
     }
+    // The construction's memory, from the primitives alone, before it is built.
+    let faces: usize = spec.primitives.iter().map(|p| p.faces.len()).sum();
+    let construction = prism_geom::memory::envelope_construction_bytes(faces as u64);
+    let knob = "give a smaller --resolution or fewer primitives";
+    let alone = construction + prism_geom::memory::BASELINE;
+    a.memory.refuse_over(alone, "this envelope", knob)?;
     let start = Instant::now();
     let e = envelope(&spec).map_err(|e| CliError::input(format!("{}: {e}", a.input.display())))?;
     let millis = start.elapsed().as_secs_f64() * 1e3;
@@ -141,9 +147,9 @@ pub fn run(a: EnvelopeArgs) -> Result<(), CliError> {
     let export = prism_geom::memory::export_bytes(&counts, io::ExportFormat::of(&a.output));
     a.memory
         .check(
-            prism_geom::memory::surface_bytes(&counts) + export,
+            construction + prism_geom::memory::surface_bytes(&counts) + export,
             "this envelope",
-            "give a smaller --resolution or fewer primitives",
+            knob,
         )
         .map(|_| ())?;
     let (mesh, quality) = e.quality(spec.resolution).map_err(CliError::input)?;

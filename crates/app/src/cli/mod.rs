@@ -176,6 +176,15 @@ impl MemoryArgs {
             mib(estimate),
             mib(budget)
         );
+        self.refuse_over(estimate, what, smaller)?;
+        Ok(budget)
+    }
+
+    /// Refuses, without a line, a job whose `estimate` is already over the budget before
+    /// the whole can be estimated (an envelope's construction, before its mesh is known).
+    pub fn refuse_over(&self, estimate: u64, what: &str, smaller: &str) -> Result<(), CliError> {
+        use prism_geom::memory::mib;
+        let budget = self.bytes();
         if estimate > budget {
             return Err(CliError::input(format!(
                 "{what} would need about {} MiB at its peak, more than the memory budget of {} MiB: \
@@ -185,7 +194,7 @@ impl MemoryArgs {
                 mib(estimate) + mib(estimate) / 4 + 1
             )));
         }
-        Ok(budget)
+        Ok(())
     }
 }
 
