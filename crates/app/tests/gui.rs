@@ -108,6 +108,20 @@ fn a_level_of_three_million_triangles_is_drawn() {
     assert!(n > 10, "only {n} shades in the view");
 }
 
+/// The bundled spout at resolution 256 (what the guide allows): 3.9 M quads, drawn.
+#[test]
+fn a_skin_at_resolution_256_is_drawn() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+    let text = std::fs::read_to_string(root.join("assets/spout.skin.json")).unwrap();
+    let mut spec: serde_json::Value = serde_json::from_str(&text).unwrap();
+    spec["resolution"] = 256.into();
+    let file = Path::new(env!("CARGO_TARGET_TMPDIR")).join("spout-256.skin.json");
+    std::fs::write(&file, spec.to_string()).unwrap();
+    let img = screenshot("skin-256", &[file.to_str().unwrap(), "--tab", "skin"]);
+    let n = shades(&img, 500..1100, 250..600);
+    assert!(n > 10, "only {n} shades in the view");
+}
+
 #[test]
 fn the_compare_split_draws_a_model_in_each_of_four_views() {
     let img = screenshot(

@@ -175,9 +175,13 @@ pub fn run(a: EnvelopeArgs) -> Result<(), CliError> {
         .as_ref()
         .and_then(|c| e.crossing_warning(c, spec.resolution));
     println!("quality: {}", quality.summary());
-    for w in [e.fold_warning(&folds), crossed, quality.enclosure_warning()]
-        .into_iter()
-        .flatten()
+    for w in [
+        e.fold_warning(&folds),
+        crossed,
+        quality.enclosure_warning(&e.removed),
+    ]
+    .into_iter()
+    .flatten()
     {
         eprintln!("warning: {w}");
     }

@@ -243,7 +243,7 @@ impl EnvelopeTab {
                                 e.describe_region(q.largest_turn.1)
                             ),
                         );
-                        match q.enclosure_warning() {
+                        match q.enclosure_warning(&e.removed) {
                             Some(w) => row(
                                 ui,
                                 egui::RichText::new(format!(

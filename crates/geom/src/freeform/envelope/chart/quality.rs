@@ -302,17 +302,61 @@ impl Quality {
         )
     }
 
-    /// The warning for primitives not enclosed (a point more than 10⁻⁶ r outside), naming the
-    /// worst.
-    pub fn enclosure_warning(&self) -> Option<String> {
+    /// The warning for primitives not enclosed (a point more than 10⁻⁶ r outside): each by
+    /// number (the first eight), those in `swallowed` (left out of the network) marked so,
+    /// and the worst.
+    pub fn enclosure_warning(&self, swallowed: &[usize]) -> Option<String> {
         let out: Vec<usize> = (0..self.enclosure.len())
             .filter(|&i| self.enclosure[i] < -1e-6)
             .collect();
         let (worst, m) = self.worst_enclosure().filter(|w| w.1 < -1e-6)?;
+        let mut names: Vec<String> = out
+            .iter()
+            .take(8)
+            .map(|&i| match swallowed.contains(&i) {
+                true => format!("{i} (swallowed)"),
+                false => i.to_string(),
+            })
+            .collect();
+        if out.len() > 8 {
+            names.push(format!("and {} more", out.len() - 8));
+        }
         Some(format!(
-            "{} primitive(s) not wholly inside the surface: primitive {worst} reaches {:.3} r outside (a corner cut off by the silhouette plane through a centre, seed 004 §5.1, that no strip's lift reaches: past the partner's centre plane, beside a lid, or with the paper's cut: envelope.md, \"Enclosure\"); primitives further apart or a t nearer 1 usually clear it",
+            "{} primitive(s) not wholly inside the surface: {}; primitive {worst} reaches {:.3} r outside (a corner cut off by the silhouette plane through a centre, seed 004 §5.1, that no strip's lift or raise reaches: past the partner's centre plane, beside a lid, or with the paper's cut: envelope.md, \"Enclosure\"); primitives further apart or a t nearer 1 usually clear it",
             out.len(),
+            names.join(", "),
             -m
         ))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every primitive left outside is named (eight, then a count), the swallowed ones marked,
+    /// the worst given with its distance; none when all are inside.
+    #[test]
+    fn the_enclosure_warning_names_each_primitive_out() {
+        let mut q = Quality {
+            triangles: 1,
+            smallest_angle: 60.0,
+            largest_angle: 60.0,
+            largest_turn: (0.0, 0),
+            border_turn: 0.0,
+            border_gap: 0.0,
+            open_edges: 0,
+            inward: 0,
+            enclosure: vec![0.2, -0.01, 0.3, -0.05, 1.0],
+        };
+        let w = q.enclosure_warning(&[3]).expect("two out");
+        assert!(w.starts_with("2 primitive(s)"), "{w}");
+        assert!(w.contains(": 1, 3 (swallowed);"), "{w}");
+        assert!(w.contains("primitive 3 reaches 0.050 r outside"), "{w}");
+        q.enclosure = (0..11).map(|i| -0.001 * (i + 1) as f64).collect();
+        let w = q.enclosure_warning(&[]).expect("all out");
+        assert!(w.contains("0, 1, 2, 3, 4, 5, 6, 7, and 3 more"), "{w}");
+        q.enclosure = vec![0.0, 0.5];
+        assert_eq!(q.enclosure_warning(&[0]), None);
     }
 }
