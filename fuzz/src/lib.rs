@@ -11,7 +11,7 @@ use prism_geom::freeform::envelope::envelope;
 use prism_geom::freeform::{Basis, SectionInput, skin_with};
 use prism_geom::io::{self, Document};
 use prism_geom::scheme::CATALOGUE;
-use prism_geom::{Pipeline, analysis, curve::CurveScheme};
+use prism_geom::{Pipeline, analysis, curve::CurveScheme, memory};
 use std::path::Path;
 
 /// The most faces a mesh may have for the step target to refine it.
@@ -90,10 +90,38 @@ fn skin_sections(s: &[SectionInput]) {
     }
     for basis in [Basis::Virtual, Basis::OneSided] {
         if let Ok(skin) = skin_with(s, basis) {
-            let _ = skin.tessellate(2, true);
-            let _ = skin.tessellate(1, false);
+            for (k, caps) in [(2, true), (1, false)] {
+                if let Ok(m) = skin.tessellate(k, caps) {
+                    // What a writer would get: finite, and within the memory guard's counts.
+                    assert_finite(&m, "skin");
+                    let counts = memory::tessellation_counts(skin.patches.len() as u64, k as u64);
+                    within_counts(&m, &counts, caps, "skin");
+                    // The crossing check the CLI refuses on runs on whatever is accepted.
+                    let _ = skin.crossings(&m, k);
+                }
+            }
         }
     }
+}
+
+/// Every point of `m` is finite: no writer ever gets NaN.
+fn assert_finite(m: &prism_geom::PolyMesh, what: &str) {
+    if let Some(i) = m.positions.iter().position(|p| !p.is_finite()) {
+        panic!("{what}: vertex {i} is {}", m.positions[i]);
+    }
+}
+
+/// The mesh is no larger than the memory guard's counts said (caps add their polygons).
+fn within_counts(m: &prism_geom::PolyMesh, c: &memory::Counts, caps: bool, what: &str) {
+    let extra = if caps { 2 } else { 0 };
+    assert!(
+        m.num_vertices() as u64 <= c.vertices && m.num_faces() as u64 <= c.faces + extra,
+        "{what}: {} vertices, {} faces against an estimate of {} and {}",
+        m.num_vertices(),
+        m.num_faces(),
+        c.vertices,
+        c.faces
+    );
 }
 
 /// The scene reader, then the envelope, its tessellation and its G1 measure.
@@ -114,7 +142,10 @@ fn scene_of(spec: &prism_geom::freeform::envelope::EnvelopeSpec) {
         return;
     }
     if let Ok(e) = envelope(spec) {
-        let _ = e.tessellate(spec.resolution);
+        if let Ok(m) = e.tessellate(spec.resolution) {
+            assert_finite(&m, "envelope");
+            within_counts(&m, &e.mesh_counts(spec.resolution), false, "envelope");
+        }
         let _ = e.largest_border_jump();
     }
 }
