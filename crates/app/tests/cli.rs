@@ -1699,6 +1699,26 @@ fn the_memory_guard_is_honest_both_ways() {
             "{scheme}: estimate {estimate} MiB, peak {peak_mib} MiB"
         );
     }
+    // The free-form commands at three sizes each: never below the peak, within 3 × it.
+    let out = tmp("guard-free-form.obj");
+    for line in [
+        "envelope assets/diagonal-cubes.envelope.json --resolution 64 -o {}",
+        "envelope assets/diagonal-cubes.envelope.json --resolution 128 -o {}",
+        "envelope assets/diagonal-cubes.envelope.json --resolution 192 -o {}",
+        "skin assets/spout.skin.json --resolution 64 -o {}",
+        "skin assets/spout.skin.json --resolution 128 -o {}",
+        "skin assets/spout.skin.json --resolution 192 -o {}",
+    ] {
+        let line = line.replace("{}", out.to_str().unwrap());
+        let args: Vec<&str> = line.split(' ').collect();
+        let (o, peak) = run_measured(&args);
+        assert!(o.status.success(), "{line}: {:?}", text(&o));
+        let (estimate, peak_mib) = (printed_estimate(&o), peak >> 20);
+        assert!(
+            peak_mib <= estimate && estimate <= 3 * peak_mib,
+            "{line}: estimate {estimate} MiB, peak {peak_mib} MiB"
+        );
+    }
 }
 
 /// `--normals` writes a `vn` a corner into OBJ (faces `v//n`), smooth or flat, and the file

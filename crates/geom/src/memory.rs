@@ -213,11 +213,12 @@ pub fn tessellation_bytes(counts: &Counts) -> u64 {
     padded(b) + BASELINE
 }
 
-/// Bytes a free-form surface of these counts holds while it is built and checked: its
-/// tessellation, the quality report's maps and the crossing check (about 330 bytes a face
-/// together; measured against the peak in docs/reliability.md).
+/// Bytes an envelope's mesh of these counts holds while it is built and checked: its
+/// tessellation, the quality report (vertex normals by region in hash maps, the ray-parity
+/// bins and the face grid of the enclosure margins) and the crossing check, about 500 bytes a
+/// triangle together (measured against the peak in docs/reliability.md).
 pub fn surface_bytes(counts: &Counts) -> u64 {
-    tessellation_bytes(counts) + 330 * counts.faces
+    tessellation_bytes(counts) + 500 * counts.faces
 }
 
 /// Bytes an envelope's construction holds for primitives of `faces` faces in all (before its

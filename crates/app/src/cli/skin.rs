@@ -80,8 +80,8 @@ fn patches_json(s: &Skin) -> serde_json::Value {
     })
 }
 
-/// The memory guard of a tessellated surface: `patches` patches at `k`×`k` quads, and the
-/// export of `output` when it is assembled in memory (shared with `envelope`).
+/// The memory guard of a skin: `patches` patches at `k`×`k` quads, their crossing check, and
+/// the export of `output` when it is assembled in memory.
 pub fn check_tessellation(
     memory: &super::MemoryArgs,
     output: &std::path::Path,
@@ -92,9 +92,11 @@ pub fn check_tessellation(
     use prism_geom::memory;
     let counts = memory::tessellation_counts(patches as u64, k as u64);
     let export = memory::export_bytes(&counts, io::ExportFormat::of(output));
+    // The crossing check runs on every skin before it is written.
+    let check = memory::crossing_bytes(&counts);
     memory
         .check(
-            memory::tessellation_bytes(&counts) + export,
+            memory::tessellation_bytes(&counts) + check + export,
             what,
             "give a smaller --resolution",
         )
