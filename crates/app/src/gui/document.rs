@@ -26,6 +26,18 @@ pub fn open_with(
     progress: &prism_geom::progress::Progress,
 ) -> Result<(DocState, Origin), String> {
     let (doc, numbering) = io::load_with(path, progress).map_err(|e| e.to_string())?;
+    // A file with nothing to show (an OBJ of no faces: text that is not a mesh) leaves the
+    // document as it is, as the command line refuses it.
+    let nothing = doc.mesh.num_faces() == 0
+        && doc.skin.is_none()
+        && doc.envelope.is_none()
+        && doc.curve.is_none();
+    if nothing {
+        return Err(format!(
+            "{}: the mesh has no faces (is it a mesh?); the document is as it was",
+            path.display()
+        ));
+    }
     let native = io::FileKind::of(path).ok() == Some(io::FileKind::Document);
     Ok((
         DocState::from_document(doc),

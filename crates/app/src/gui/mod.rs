@@ -391,6 +391,9 @@ impl PrismApp {
     /// draw, then carry out what the menu, the keys and the tab asked for.
     pub fn frame_ui(&mut self, ui: &mut egui::Ui) {
         let ctx = ui.ctx().clone();
+        // An option that changes the result (the clamp, mending) asks for a sync without a
+        // command: every frame brings the views in line (nothing to do when they are).
+        self.model.sync(&self.doc);
         if self.model.poll_jobs() {
             ctx.request_repaint();
         }

@@ -408,6 +408,15 @@ fn bundled_samples_open_and_bad_files_say_why() {
         "as the OBJ counts: {:?}",
         a.note
     );
+    // Text that is not a mesh (it reads as an OBJ of no faces), opened or dropped: refused,
+    // named, the document kept (issue 66, item 5).
+    let text = scratch.path().join("notes.obj");
+    std::fs::write(&text, "hello\nthese are notes, not a mesh\n").unwrap();
+    let before = a.doc.generation();
+    a.run(Command::Open(text));
+    let note = a.note.clone().unwrap_or_default();
+    assert!(note.contains("notes.obj: the mesh has no faces"), "{note}");
+    assert_eq!(a.doc.generation(), before, "the document is kept");
     // Opening is undoable.
     a.run(Command::Undo);
     a.wait_idle();
@@ -733,6 +742,45 @@ fn the_3d_tabs_refuse_a_surface_over_the_memory_budget() {
             }
         }
     }
+}
+
+/// The clamp's checkbox acts at once (issue 66, item 3): a radius too big for the tripod is
+/// refused with the clamp off; ticking the box computes the level with clamped radii, and
+/// unticking refuses it again, with no other change in between; the mending box too.
+#[test]
+fn toggling_the_clamp_recomputes_at_once() {
+    use egui_kittest::kittest::Queryable;
+    let mut h = harness(app());
+    settle(&mut h);
+    let label = "Clamp overlapping radii and chamfers";
+    h.get_by_label(label).click();
+    settle(&mut h);
+    assert!(!h.state().model.clamp);
+    let steps = parse_pipeline("combination:r=1.5").unwrap();
+    h.state_mut()
+        .run(Command::Edit(Edit::SetPipeline { view: 0, steps }));
+    settle(&mut h);
+    let levels = |h: &Harness<'_, PrismApp>| h.state().model.views[0].pipeline.levels().len();
+    assert_eq!(levels(&h), 1, "refused without the clamp");
+    assert!(h.state().model.views[0].error.is_some());
+    for (on, expected) in [(true, 2), (false, 1)] {
+        h.get_by_label(label).click();
+        settle(&mut h);
+        assert_eq!(h.state().model.clamp, on);
+        assert_eq!(
+            levels(&h),
+            expected,
+            "clamp {on}: {:?}",
+            h.state().model.views[0].error
+        );
+    }
+    // Mending, likewise: the levels are computed again with the new option.
+    let mending = h.state().model.mend_crossings;
+    h.get_by_label("Mend faces that pass through each other")
+        .click();
+    settle(&mut h);
+    let options = &h.state().model.views[0].pipeline.options;
+    assert_eq!(options.mend.crossings, !mending);
 }
 
 pub(super) fn settle(h: &mut Harness<'_, PrismApp>) {
