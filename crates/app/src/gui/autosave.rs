@@ -180,6 +180,11 @@ impl Autosave {
         self.saved = generation;
     }
 
+    /// Whether the document has changes that no save or open holds.
+    pub fn unsaved(&self, doc: &Document) -> bool {
+        doc.generation() != self.saved
+    }
+
     /// How long until the next copy is due, when the document has unsaved changes the copy
     /// does not hold (the window asks to be woken then, so an idle window copies too).
     pub fn due_in(&self, doc: &Document) -> Option<Duration> {

@@ -14,6 +14,7 @@
 //! the test under Xvfb and the pictures in docs/ use it.
 
 mod autosave;
+mod closing;
 pub mod command;
 mod curves;
 pub mod doc_state;
@@ -111,6 +112,8 @@ pub struct PrismApp {
     pub autosave: autosave::Autosave,
     /// A big file being opened on a thread (opening.rs).
     opening: Option<opening::Opening>,
+    /// The title shown and the question on closing (closing.rs).
+    pub closing: closing::Closing,
     /// Files at least this large open on a thread ([`opening::IN_BACKGROUND_FROM`]).
     open_in_background_from: u64,
 }
@@ -199,6 +202,7 @@ impl PrismApp {
             last_file,
             opening: in_background.map(|p| opening::Opening::start(&p, Arc::new(|| {}))),
             open_in_background_from: opening::IN_BACKGROUND_FROM,
+            closing: Default::default(),
         })
     }
 
@@ -401,6 +405,7 @@ impl PrismApp {
             ctx.request_repaint_after(std::time::Duration::from_millis(50));
         }
         self.drop_keys_typed_in_dialog(&ctx);
+        self.closing(&ctx);
         let mut commands = self.keys(&ctx);
         if let Some(f) = ctx.input(|i| i.raw.dropped_files.first().map(|f| f.path().to_path_buf()))
         {

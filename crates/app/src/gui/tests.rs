@@ -783,6 +783,35 @@ fn toggling_the_clamp_recomputes_at_once() {
     assert_eq!(options.mend.crossings, !mending);
 }
 
+/// The title says the document's name and marks unsaved changes with `*` (issue 66, item
+/// 11); a save clears the mark. On closing with unsaved changes the window asks: *Cancel*
+/// keeps it open, *Don't save* lets the close through.
+#[test]
+fn the_title_marks_unsaved_changes_and_closing_asks() {
+    use egui_kittest::kittest::Queryable;
+    let mut h = harness(app());
+    settle(&mut h);
+    assert_eq!(h.state().title(), "tripod (bundled sample) — Prism");
+    let steps = parse_pipeline("doo-sabin").unwrap();
+    h.state_mut()
+        .run(Command::Edit(Edit::SetPipeline { view: 0, steps }));
+    settle(&mut h);
+    assert_eq!(h.state().title(), "*tripod (bundled sample) — Prism");
+    for (answer, leave) in [("Cancel", false), ("Don't save", true)] {
+        h.state_mut().closing.asking = true;
+        settle(&mut h);
+        h.get_by_label("Save the changes before closing?");
+        h.get_by_label(answer).click();
+        settle(&mut h);
+        assert!(!h.state().closing.asking, "{answer}");
+        assert_eq!(h.state().closing.leave, leave, "{answer}");
+    }
+    let scratch = tempfile::tempdir().unwrap();
+    let doc = scratch.path().join("kept.prism.json");
+    h.state_mut().save_to(&doc).unwrap();
+    assert_eq!(h.state().title(), "kept.prism.json — Prism");
+}
+
 pub(super) fn settle(h: &mut Harness<'_, PrismApp>) {
     for _ in 0..3 {
         h.step();
