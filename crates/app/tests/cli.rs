@@ -4,8 +4,14 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
 fn prism(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_prism"))
-        .args(args)
+    let mut c = Command::new(env!("CARGO_BIN_EXE_prism"));
+    // Mesa's Vulkan loader says "XDG_RUNTIME_DIR is invalid or not set" without one: a
+    // private folder (0700) for the run, removed after it.
+    let runtime = tempfile::tempdir().unwrap();
+    if std::env::var_os("XDG_RUNTIME_DIR").is_none() {
+        c.env("XDG_RUNTIME_DIR", runtime.path());
+    }
+    c.args(args)
         .current_dir(Path::new(env!("CARGO_MANIFEST_DIR")).join("../.."))
         .output()
         .expect("runs")
