@@ -6,7 +6,7 @@
 //! Adding an edit (e.g. for the Skin or Envelope tab): a variant here, its case in `edits::apply_to`,
 //! and a test in `document.rs` that it undoes.
 
-use super::doc_state::{DocState, Origin};
+use super::doc_state::{DocState, Origin, Part};
 use glam::{DVec2, DVec3};
 use prism_geom::curve::{CurveScheme, Polyline};
 use prism_geom::freeform::SkinSpec;
@@ -138,6 +138,27 @@ pub enum CoalesceKey {
 }
 
 impl Edit {
+    /// The part of the document this edit changes (what undo names).
+    pub fn part(&self) -> Part {
+        match self {
+            Edit::PushStep { .. }
+            | Edit::PopStep { .. }
+            | Edit::SetStep { .. }
+            | Edit::SwapSteps { .. }
+            | Edit::RemoveStep { .. }
+            | Edit::TruncateSteps { .. }
+            | Edit::SetPipeline { .. }
+            | Edit::SetViews(_) => Part::Pipeline,
+            Edit::MarkEdges { .. } | Edit::MoveVertices { .. } | Edit::DragVertices { .. } => {
+                Part::Solid
+            }
+            Edit::Curve(_) => Part::Curve,
+            Edit::SetSkin { .. } => Part::Skin,
+            Edit::SetEnvelope { .. } => Part::Envelope,
+            Edit::Replace { .. } => Part::File,
+        }
+    }
+
     /// Edits with the same key, one right after the other, are one undo step.
     pub fn coalesce_key(&self) -> Option<CoalesceKey> {
         match self {

@@ -52,6 +52,43 @@ impl DocState {
     }
 }
 
+/// A part of the document, as undo names a change to it, with the tab that edits it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Part {
+    /// Another document (a file opened, a sample, a new solid).
+    File,
+    Solid,
+    Pipeline,
+    Curve,
+    Skin,
+    Envelope,
+}
+
+impl Part {
+    /// The change, in words.
+    pub fn describe(self) -> &'static str {
+        match self {
+            Part::File => "opening a document",
+            Part::Solid => "a change to the solid (vertices, creases, radii, tags)",
+            Part::Pipeline => "a change to the pipeline",
+            Part::Curve => "a change to the curve sketch",
+            Part::Skin => "a change to the skin's sections",
+            Part::Envelope => "a change to the envelope's scene",
+        }
+    }
+
+    /// The tab that edits this part (a document opened: every tab's).
+    pub fn tab_name(self) -> Option<&'static str> {
+        match self {
+            Part::File => None,
+            Part::Solid | Part::Pipeline => Some("Model"),
+            Part::Curve => Some("Curves"),
+            Part::Skin => Some("Skin"),
+            Part::Envelope => Some("Envelope"),
+        }
+    }
+}
+
 /// Where the document came from.
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct Origin {

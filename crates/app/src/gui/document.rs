@@ -10,7 +10,7 @@
 //! know when to recompute; nothing keeps a dirty flag.
 
 use super::command::{CoalesceKey, Edit};
-pub use super::doc_state::{DocState, Origin};
+pub use super::doc_state::{DocState, Origin, Part};
 use super::edits::apply_to;
 use prism_geom::io;
 use std::path::Path;
@@ -49,8 +49,9 @@ pub fn open_with(
     ))
 }
 
-/// One snapshot of the history.
-type Snapshot = (DocState, Origin);
+/// One snapshot of the history: the document before a change, and the part that change
+/// touched (what undo names).
+type Snapshot = (DocState, Origin, Part);
 
 /// Undo and redo stacks of whole document states (control meshes are small next to their
 /// refined levels; the stacks hold at most [`History::LIMIT`] states each).
@@ -115,6 +116,11 @@ impl Document {
     pub fn live(&self) -> bool {
         self.live
     }
+    /// What the next undo would take back.
+    pub fn next_undo(&self) -> Option<Part> {
+        self.history.undo.last().map(|s| s.2)
+    }
+
     pub fn can_undo(&self) -> bool {
         !self.history.undo.is_empty()
     }
@@ -125,8 +131,7 @@ impl Document {
     /// Applies one edit. Returns whether it changed the document (then it is recorded for
     /// undo), or why it was refused (the document is then as it was).
     pub fn apply(&mut self, edit: Edit) -> Result<bool, String> {
-        let key = edit.coalesce_key();
-        let live = edit.is_live();
+        let (key, live, part) = (edit.coalesce_key(), edit.is_live(), edit.part());
         let mut next = self.state.clone();
         let mut origin = self.origin.clone();
         apply_to(&mut next, &mut origin, edit)?;
@@ -136,6 +141,7 @@ impl Document {
         let before = (
             std::mem::replace(&mut self.state, next),
             std::mem::replace(&mut self.origin, origin),
+            part,
         );
         self.history.record(before, key);
         self.normalise();
@@ -163,12 +169,13 @@ impl Document {
         } else {
             (&mut h.undo, &mut h.redo)
         };
-        let Some((state, origin)) = from.pop() else {
+        let Some((state, origin, part)) = from.pop() else {
             return false;
         };
         to.push((
             std::mem::replace(&mut self.state, state),
             std::mem::replace(&mut self.origin, origin),
+            part,
         ));
         h.open = None;
         self.live = false;

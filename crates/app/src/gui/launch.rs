@@ -30,6 +30,18 @@ pub enum Tab {
     Envelope,
 }
 
+impl Tab {
+    /// The tab's name as its button says it.
+    pub fn name(self) -> &'static str {
+        match self {
+            Tab::Model => "Model",
+            Tab::Curves => "Curves",
+            Tab::Skin => "Skin",
+            Tab::Envelope => "Envelope",
+        }
+    }
+}
+
 /// How the app was started.
 #[derive(Debug, Default)]
 pub struct Launch {

@@ -89,9 +89,16 @@ impl PrismApp {
                 });
             });
             ui.menu_button("Edit", |ui| {
+                let undo = match self.doc.next_undo() {
+                    Some(p) => match p.tab_name() {
+                        Some(t) => format!("Undo {} ({t}) (Ctrl+Z)", p.describe()),
+                        None => format!("Undo {} (Ctrl+Z)", p.describe()),
+                    },
+                    None => "Undo (Ctrl+Z)".to_string(),
+                };
                 let entries = [
                     (
-                        "Undo (Ctrl+Z)",
+                        undo.as_str(),
                         self.doc.can_undo(),
                         Command::Undo,
                         "Nothing to undo",

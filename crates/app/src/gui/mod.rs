@@ -73,6 +73,7 @@ mod tests_rounding;
 mod tests_skin;
 
 use command::Command;
+use doc_state::Part;
 use document::{DocState, Document, Origin};
 use gestures::Tab3d;
 use launch::SETTINGS_KEY;
@@ -114,6 +115,8 @@ pub struct PrismApp {
     opening: Option<opening::Opening>,
     /// The title shown and the question on closing (closing.rs).
     pub closing: closing::Closing,
+    /// The generation at which Ctrl+Z said the next undo reaches into another tab.
+    undo_warned: Option<u64>,
     /// Files at least this large open on a thread ([`opening::IN_BACKGROUND_FROM`]).
     open_in_background_from: u64,
 }
@@ -203,6 +206,7 @@ impl PrismApp {
             opening: in_background.map(|p| opening::Opening::start(&p, Arc::new(|| {}))),
             open_in_background_from: opening::IN_BACKGROUND_FROM,
             closing: Default::default(),
+            undo_warned: None,
         })
     }
 
@@ -255,6 +259,24 @@ impl PrismApp {
                 }
             }
             Command::Undo => {
+                // From a tab whose own changes are all undone, the first Ctrl+Z says what
+                // the next would take back in another tab; the second does it.
+                let part = self.doc.next_undo();
+                let elsewhere = part
+                    .and_then(Part::tab_name)
+                    .filter(|t| *t != self.tab.name());
+                let generation = self.doc.generation();
+                if let (Some(p), Some(t)) = (part, elsewhere)
+                    && self.undo_warned != Some(generation)
+                {
+                    self.undo_warned = Some(generation);
+                    self.say(format!(
+                        "nothing left to undo in the {} tab; Ctrl+Z again undoes {} in the {t} tab",
+                        self.tab.name(),
+                        p.describe()
+                    ));
+                    return;
+                }
                 let before = self.doc.origin().clone();
                 // Undoing the edit that blew a level up (vertices thrown far out) brings back
                 // the camera from before it, not the one framed on the wreck.
@@ -267,7 +289,9 @@ impl PrismApp {
                         self.model.camera = c;
                     }
                     self.follow_document_switch(&before);
-                    self.say("undone");
+                    let what = part.map_or("the last change", Part::describe);
+                    let tab = part.and_then(Part::tab_name).map(|t| format!(" ({t} tab)"));
+                    self.say(format!("undid {what}{}", tab.unwrap_or_default()));
                 }
             }
             Command::Redo => {

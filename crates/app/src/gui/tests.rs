@@ -580,8 +580,11 @@ fn the_curve_sketch_is_undone_with_the_document_and_saved() {
     );
     std::fs::remove_file(&path).ok();
 
+    a.tab = Tab::Curves;
     a.run(Command::Undo);
     assert_eq!(a.doc.state().curve.control.points.len(), 4);
+    let note = a.note.clone().unwrap_or_default();
+    assert_eq!(note, "undid a change to the curve sketch (Curves tab)");
     a.run(Command::Undo);
     assert_eq!(
         a.doc.state().curve.scheme,
@@ -594,8 +597,21 @@ fn the_curve_sketch_is_undone_with_the_document_and_saved() {
         "the drag is one step"
     );
     assert!(!a.doc.state().edge_attrs.is_empty(), "the crease stays");
+    // The crease was made in the Model tab: from the Curves tab, whose own changes are all
+    // undone, Ctrl+Z first says what the next would take back there (issue 66, item 7).
+    a.run(Command::Undo);
+    assert!(!a.doc.state().edge_attrs.is_empty(), "not yet");
+    let note = a.note.clone().unwrap_or_default();
+    assert!(
+        note.starts_with(
+            "nothing left to undo in the Curves tab; Ctrl+Z again undoes a change to the solid"
+        ),
+        "{note}"
+    );
     a.run(Command::Undo);
     assert!(a.doc.state().edge_attrs.is_empty());
+    let note = a.note.clone().unwrap_or_default();
+    assert!(note.ends_with("(Model tab)"), "{note}");
 }
 
 #[test]
