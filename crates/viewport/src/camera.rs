@@ -14,6 +14,20 @@ pub enum View {
     Front,
     /// Looking down −z.
     Top,
+    /// Looking along −x (from the right).
+    Right,
+}
+
+impl View {
+    /// The orbit's yaw and pitch (radians) of this view.
+    pub fn angles(self) -> (f32, f32) {
+        match self {
+            View::Iso => (35f32.to_radians(), 30f32.to_radians()),
+            View::Front => (0.0, 0.0),
+            View::Top => (0.0, 89.0f32.to_radians()),
+            View::Right => (-90f32.to_radians(), 0.0),
+        }
+    }
 }
 
 /// An orbit camera around `target`.
@@ -38,11 +52,7 @@ impl Default for Camera {
 impl Camera {
     /// A camera of view `view` that frames a sphere of `radius` around `target`.
     pub fn looking(view: View, target: Vec3, radius: f32) -> Camera {
-        let (yaw, pitch) = match view {
-            View::Iso => (35f32.to_radians(), 30f32.to_radians()),
-            View::Front => (0.0, 0.0),
-            View::Top => (0.0, 89.0f32.to_radians()),
-        };
+        let (yaw, pitch) = view.angles();
         let mut c = Camera {
             target,
             distance: 1.0,
@@ -90,6 +100,11 @@ impl Camera {
             self.pitch.sin(),
         );
         self.target + self.distance * dir
+    }
+
+    /// Turns to a standard view about the same target, from the same distance.
+    pub fn turn_to(&mut self, view: View) {
+        (self.yaw, self.pitch) = view.angles();
     }
 
     /// Orbit by screen-space drag (radians).

@@ -1,6 +1,6 @@
 //! `prism render IN -o OUT.png [--pipeline P | --scheme S --levels N ...] [--shading flat|smooth]
 //! [--wireframe] [--cage] [--color-by uniform|kind|curvature|scheme|flipped|crossings] [--size 1280x800]
-//! [--view iso|front|top | --eye X,Y,Z --target X,Y,Z] [--fov DEG] [--frame-vertex N]
+//! [--view iso|front|top|right | --eye X,Y,Z --target X,Y,Z] [--fov DEG] [--frame-vertex N]
 //! [--frames N]`: a headless picture with the viewport's renderer, on any adapter (Mesa's
 //! software Vulkan on a machine without a GPU).
 //!
@@ -46,6 +46,7 @@ pub enum ViewArg {
     Iso,
     Front,
     Top,
+    Right,
 }
 
 #[derive(Debug, Args)]
@@ -154,6 +155,7 @@ fn camera(
         ViewArg::Iso => View::Iso,
         ViewArg::Front => View::Front,
         ViewArg::Top => View::Top,
+        ViewArg::Right => View::Right,
     };
     let target = a
         .target

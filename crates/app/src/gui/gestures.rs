@@ -417,12 +417,17 @@ pub trait Tab3d {
     fn ui(&mut self, ui: &mut egui::Ui, doc: &DocState) -> Vec<Command> {
         let spec = Self::part(doc);
         self.sync(spec);
-        egui::Panel::left(Self::PANEL)
-            .resizable(true)
-            .default_size(300.0)
-            .show(ui, |ui| {
-                egui::ScrollArea::vertical().show(ui, |ui| self.panel(ui, spec));
-            });
+        if let Some(v) = super::viewport::standard_view_key(ui.ctx()) {
+            self.base().view.camera.turn_to(v);
+        }
+        if !super::viewport::full_view(ui.ctx()) {
+            egui::Panel::left(Self::PANEL)
+                .resizable(true)
+                .default_size(300.0)
+                .show(ui, |ui| {
+                    egui::ScrollArea::vertical().show(ui, |ui| self.panel(ui, spec));
+                });
+        }
         egui::CentralPanel::default().show(ui, |ui| self.view(ui, spec));
         std::mem::take(self.out())
     }

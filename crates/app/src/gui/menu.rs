@@ -18,6 +18,9 @@ impl PrismApp {
         } else if ctx.input_mut(|i| i.consume_shortcut(&undo)) {
             out.push(Command::Undo);
         }
+        if ctx.input_mut(|i| i.consume_key(Modifiers::NONE, Key::F11)) {
+            super::viewport::toggle_full_view(ctx);
+        }
         if ctx.input_mut(|i| i.consume_shortcut(&save)) {
             out.push(Command::SaveDialog { as_new: false });
         }

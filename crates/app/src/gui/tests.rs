@@ -828,6 +828,49 @@ fn the_title_marks_unsaved_changes_and_closing_asks() {
     assert_eq!(h.state().title(), "kept.prism.json — Prism");
 }
 
+/// F11 hides the side panel so that the views fill the window, and shows it again; the
+/// number keys turn the camera to the standard views (issue 66, items 9 and 11), in the
+/// Model tab and in the 3D tabs.
+#[test]
+fn f11_hides_the_panel_and_number_keys_give_standard_views() {
+    use egui_kittest::kittest::Queryable;
+    let mut h = harness(app());
+    settle(&mut h);
+    h.get_by_label("Pipeline");
+    h.key_press(egui::Key::F11);
+    settle(&mut h);
+    assert!(
+        h.query_by_label("Pipeline").is_none(),
+        "the panel is hidden"
+    );
+    h.key_press(egui::Key::F11);
+    settle(&mut h);
+    h.get_by_label("Pipeline");
+    let turned = |c: prism_viewport::Camera, v: prism_viewport::View| {
+        let (yaw, pitch) = v.angles();
+        assert!(
+            (c.yaw - yaw).abs() < 1e-6 && (c.pitch - pitch).abs() < 1e-6,
+            "{v:?}: {c:?}"
+        );
+    };
+    use prism_viewport::View;
+    for (key, view) in [
+        (egui::Key::Num1, View::Front),
+        (egui::Key::Num3, View::Right),
+        (egui::Key::Num7, View::Top),
+        (egui::Key::Num0, View::Iso),
+    ] {
+        h.key_press(key);
+        settle(&mut h);
+        turned(h.state().model.camera, view);
+    }
+    h.get_by_label("Envelope").click();
+    settle(&mut h);
+    h.key_press(egui::Key::Num3);
+    settle(&mut h);
+    turned(h.state().envelope.base.view.camera, View::Right);
+}
+
 pub(super) fn settle(h: &mut Harness<'_, PrismApp>) {
     for _ in 0..3 {
         h.step();

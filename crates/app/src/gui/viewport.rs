@@ -136,6 +136,42 @@ impl egui_wgpu::CallbackTrait for ViewCallback {
     }
 }
 
+/// Whether the side panels are hidden so that the views fill the window (F11).
+pub fn full_view(ctx: &egui::Context) -> bool {
+    ctx.data(|d| d.get_temp(full_view_id())).unwrap_or(false)
+}
+
+/// Hides or shows the side panels.
+pub fn toggle_full_view(ctx: &egui::Context) {
+    let on = !full_view(ctx);
+    ctx.data_mut(|d| d.insert_temp(full_view_id(), on));
+}
+
+fn full_view_id() -> egui::Id {
+    egui::Id::unique("prism-full-view")
+}
+
+/// The standard view a number key asks for, as Blender's numpad has them: 1 front, 3 right,
+/// 7 top, 0 the three-quarter view (none while a text field has the keyboard).
+pub fn standard_view_key(ctx: &egui::Context) -> Option<prism_viewport::View> {
+    use egui::Key;
+    use prism_viewport::View;
+    if ctx.egui_wants_keyboard_input() {
+        return None;
+    }
+    let keys = [
+        (Key::Num1, View::Front),
+        (Key::Num3, View::Right),
+        (Key::Num7, View::Top),
+        (Key::Num0, View::Iso),
+    ];
+    ctx.input(|i| {
+        keys.iter()
+            .find(|(k, _)| i.modifiers.is_none() && i.key_pressed(*k))
+            .map(|(_, v)| *v)
+    })
+}
+
 /// Orbit (drag with `orbit`), pan (drag with any of `pan`) and zoom (the wheel over the
 /// view) of a view's camera: the mouse of every 3D view.
 pub fn camera_input(

@@ -422,6 +422,9 @@ impl ModelTab {
             self.sel_verts.clear();
             self.sel_edges.clear();
         }
+        if let Some(v) = super::viewport::standard_view_key(ctx) {
+            self.camera.turn_to(v);
+        }
     }
 
     /// The tab: side panel, compare table, views and the memory question. Returns what the
@@ -429,15 +432,17 @@ impl ModelTab {
     pub fn ui(&mut self, ui: &mut egui::Ui, doc: &Document, note: Option<&str>) -> Vec<Command> {
         let ctx = ui.ctx().clone();
         let d = doc.state();
-        egui::Panel::left("panels")
-            .resizable(true)
-            .default_size(300.0)
-            .show(ui, |ui| {
-                // A solid scroll bar: at 1280×800 a long pipeline with the Edges tool is
-                // taller than the window, and the floating bar shows only on hover.
-                ui.spacing_mut().scroll = egui::style::ScrollStyle::solid();
-                egui::ScrollArea::vertical().show(ui, |ui| self.side_panel(ui, doc));
-            });
+        if !super::viewport::full_view(&ctx) {
+            egui::Panel::left("panels")
+                .resizable(true)
+                .default_size(300.0)
+                .show(ui, |ui| {
+                    // A solid scroll bar: at 1280×800 a long pipeline with the Edges tool is
+                    // taller than the window, and the floating bar shows only on hover.
+                    ui.spacing_mut().scroll = egui::style::ScrollStyle::solid();
+                    egui::ScrollArea::vertical().show(ui, |ui| self.side_panel(ui, doc));
+                });
+        }
         egui::Panel::bottom("status").show(ui, |ui| self.status(ui, note));
         let n = d.pipelines.len();
         if n > 1 {
