@@ -871,6 +871,41 @@ fn f11_hides_the_panel_and_number_keys_give_standard_views() {
     turned(h.state().envelope.base.view.camera, View::Right);
 }
 
+/// Compare: with "Same level in every view" ticked, the level slider moves every view
+/// (issue 66, item 9); without it, only the active one.
+#[test]
+fn one_level_for_every_compare_view() {
+    use egui_kittest::kittest::{NodeT, Queryable};
+    let mut a = app();
+    run_pipeline(&mut a, "doo-sabin,doo-sabin,doo-sabin");
+    a.run(Edit::SetViews(2));
+    let steps = parse_pipeline("catmull-clark,catmull-clark,catmull-clark").unwrap();
+    a.run(Edit::SetPipeline { view: 1, steps });
+    a.wait_idle();
+    let mut h = harness(a);
+    settle(&mut h);
+    let levels = |h: &Harness<'_, PrismApp>| -> Vec<usize> {
+        h.state().model.views.iter().map(|v| v.level).collect()
+    };
+    assert_eq!(levels(&h), [3, 3]);
+    for (link, expected) in [(false, [2, 3]), (true, [1, 1])] {
+        if link {
+            h.get_by_label("Same level in every view").click();
+            settle(&mut h);
+        }
+        // The level slider: the one whose value is the active view's level.
+        let shown = h.state().model.views[0].level as f64;
+        h.get_all_by_role(egui::accesskit::Role::Slider)
+            .find(|s| s.accesskit_node().numeric_value() == Some(shown))
+            .expect("the level slider")
+            .focus();
+        h.step();
+        h.key_press(egui::Key::ArrowLeft);
+        settle(&mut h);
+        assert_eq!(levels(&h), expected, "linked {link}");
+    }
+}
+
 pub(super) fn settle(h: &mut Harness<'_, PrismApp>) {
     for _ in 0..3 {
         h.step();

@@ -81,6 +81,8 @@ pub struct ModelTab {
     pub crease_value: f64,
     pub radius_value: f64,
     pub sharper_deg: f64,
+    /// The level slider moves every view of the compare split.
+    pub link_levels: bool,
     /// The document generation the views were last brought in line with.
     synced: Option<u64>,
     /// How the document's file counts its vertices and faces, for step errors about them.
@@ -118,6 +120,7 @@ impl ModelTab {
             crease_value: 10.0,
             radius_value: 0.1,
             sharper_deg: 60.0,
+            link_levels: false,
             synced: None,
             numbering: Default::default(),
             pending: Vec::new(),

@@ -116,20 +116,30 @@ impl ModelTab {
                 self.back();
             }
         });
-        let v = &mut self.views[a];
-        let n = v.steps().len();
+        let n = self.views[a].steps().len();
         if n > 0 {
-            let mut lv = v.level.min(n);
+            let mut lv = self.views[a].level.min(n);
             if ui
                 .add(egui::Slider::new(&mut lv, 0..=n).text("level shown"))
                 .changed()
             {
-                v.level = lv;
+                self.views[a].level = lv;
+                if self.link_levels {
+                    // Every view at that level (or its last, when it has fewer steps).
+                    for w in &mut self.views {
+                        w.level = lv.min(w.steps().len());
+                    }
+                }
             }
-            if v.keep == prism_geom::pipeline::Keep::Needed {
+            if self.views.len() > 1 {
+                ui.checkbox(&mut self.link_levels, "Same level in every view")
+                    .on_hover_text("the slider moves every view of the compare split to one level");
+            }
+            if self.views[a].keep == prism_geom::pipeline::Keep::Needed {
                 ui.label("the levels between the input and the last were freed (memory)");
             }
         }
+        let v = &mut self.views[a];
         if let Some(job) = &v.job {
             let (k, of) = job.computing();
             let secs = job.started.elapsed().as_secs_f32();
