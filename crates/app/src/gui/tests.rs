@@ -906,6 +906,60 @@ fn one_level_for_every_compare_view() {
     }
 }
 
+/// The camera stays put in the world while the model changes under it (issue 66, item 6):
+/// a vertex moved far out grows the level's box, whose centre the scene's positions are
+/// measured from, and the view does not re-frame; in the Skin tab likewise when a section
+/// moves.
+#[test]
+fn the_camera_stays_put_while_the_model_changes() {
+    let mut h = harness(app());
+    settle(&mut h);
+    let world = |h: &Harness<'_, PrismApp>| {
+        let m = &h.state().model;
+        m.views[0].scene.origin + m.view_camera(0).target.as_dvec3()
+    };
+    let before = world(&h);
+    let origin = h.state().model.views[0].scene.origin;
+    h.state_mut().run(Command::Edit(Edit::MoveVertices {
+        verts: vec![0],
+        by: glam::DVec3::new(10.0, 10.0, 10.0),
+    }));
+    settle(&mut h);
+    assert_ne!(
+        h.state().model.views[0].scene.origin,
+        origin,
+        "the test needs a moved box"
+    );
+    assert!(
+        (world(&h) - before).length() < 1e-5,
+        "{} against {before}",
+        world(&h)
+    );
+    // The Skin tab: a section moved along x.
+    use egui_kittest::kittest::Queryable;
+    h.get_by_label("Skin").click();
+    settle(&mut h);
+    h.get_by_label("Spout (6 sections)").click();
+    settle(&mut h);
+    let world = |h: &Harness<'_, PrismApp>| {
+        let v = &h.state().skin.base.view;
+        v.scene.origin + v.camera.target.as_dvec3()
+    };
+    let before = world(&h);
+    let mut spec = h.state().doc.state().skin.clone().unwrap();
+    for p in &mut spec.sections[5].points {
+        p.x += 4.0;
+    }
+    h.state_mut()
+        .run(Command::Edit(skin::SkinTab::edit(Some(spec), None)));
+    settle(&mut h);
+    assert!(
+        (world(&h) - before).length() < 1e-5,
+        "{} against {before}",
+        world(&h)
+    );
+}
+
 pub(super) fn settle(h: &mut Harness<'_, PrismApp>) {
     for _ in 0..3 {
         h.step();
@@ -1008,6 +1062,9 @@ fn undoing_an_open_frames_the_document_it_brings_back() {
         .position(|s| s.0 == "Computer room")
         .unwrap();
     h.state_mut().run(Command::OpenSample(room));
+    // The old picture goes at once (issue 66, item 6): the view frames the new model when
+    // its first level comes, not the old one still on screen.
+    assert!(h.state().model.views[0].scene.vertices.is_empty());
     settle(&mut h);
     let far = h.state().model.camera.distance;
     assert!(far > 2.0 * tripod, "{far} vs {tripod}");

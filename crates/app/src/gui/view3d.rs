@@ -113,8 +113,14 @@ impl View3d {
         }
     }
 
-    /// New scenes to draw.
+    /// New scenes to draw. The camera stays where it is in the world: a scene about another
+    /// origin (a section dragged moves the box its positions are measured from) moves the
+    /// camera's target by the difference, so the picture does not jump under the cursor.
     pub fn show(&mut self, (scene, overlay): (Arc<Scene>, Arc<Scene>)) {
+        let drawn = |s: &Scene| !(s.vertices.is_empty() && s.lines.is_empty());
+        if self.framed && drawn(&self.scene) && drawn(&scene) {
+            self.camera.target += (self.scene.origin - scene.origin).as_vec3();
+        }
         self.scene = scene;
         self.overlay = overlay;
         self.version += 1;

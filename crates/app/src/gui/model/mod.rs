@@ -83,6 +83,10 @@ pub struct ModelTab {
     pub sharper_deg: f64,
     /// The level slider moves every view of the compare split.
     pub link_levels: bool,
+    /// The active view and where its camera's target is measured from in the world (its
+    /// scene's origin plus its framing centre): when a new scene moves it, the camera moves
+    /// back by as much, so the model does not jump during a drag or between levels.
+    anchor: Option<(usize, glam::DVec3)>,
     /// The document generation the views were last brought in line with.
     synced: Option<u64>,
     /// How the document's file counts its vertices and faces, for step errors about them.
@@ -121,6 +125,7 @@ impl ModelTab {
             radius_value: 0.1,
             sharper_deg: 60.0,
             link_levels: false,
+            anchor: None,
             synced: None,
             numbering: Default::default(),
             pending: Vec::new(),
@@ -332,6 +337,7 @@ impl ModelTab {
         self.cancel_all();
         for v in &mut self.views {
             v.keep = prism_geom::pipeline::Keep::All;
+            v.clear_scene();
         }
         self.sel_verts.clear();
         self.sel_edges.clear();
@@ -369,6 +375,25 @@ impl ModelTab {
         let r = r * half_y.sin() / half_x.min(half_y).sin();
         self.camera = Camera::looking(View::Iso, Vec3::ZERO, r);
         self.framed = true;
+        self.anchor = None;
+    }
+
+    /// Keeps the camera where it is in the world when the active view's scene moves its
+    /// origin or framing centre ([`ModelTab::anchor`]).
+    pub(super) fn hold_camera(&mut self) {
+        let a = self.active;
+        let v = &self.views[a];
+        if v.scene.vertices.is_empty() {
+            return;
+        }
+        let anchor = v.scene.origin + v.frame_sphere().0.as_dvec3();
+        if let Some((i, old)) = self.anchor
+            && i == a
+            && self.framed
+        {
+            self.camera.target -= (anchor - old).as_vec3();
+        }
+        self.anchor = Some((a, anchor));
     }
 
     /// Frames face `f` of the active view's shown level (its neighbourhood: a sphere three
@@ -398,6 +423,7 @@ impl ModelTab {
         // The linked camera's target is relative to the view's framing centre.
         self.camera.target -= v.frame_sphere().0;
         self.framed = true;
+        self.anchor = None;
     }
 
     /// The keys of the Model tab (S, B, F, W, X/Y/Z, Esc), when no text field has them.

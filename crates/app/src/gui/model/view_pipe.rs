@@ -318,6 +318,18 @@ impl ViewPipe {
         self.version += 1;
     }
 
+    /// Draws nothing until the next scene comes (a new document: the old picture goes at
+    /// once, and the view frames the new model when its first level arrives).
+    pub fn clear_scene(&mut self) {
+        self.scene = Arc::new(Scene::default());
+        self.overlay = Arc::new(Scene::default());
+        self.scene_key = None;
+        self.overlay_key = None;
+        self.scene_serial += 1;
+        self.sphere = std::sync::OnceLock::new();
+        self.version += 1;
+    }
+
     /// Shows `scene` in place of the shown level's (tests: a level that threw vertices far
     /// out without a scheme that does).
     #[cfg(test)]

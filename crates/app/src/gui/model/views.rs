@@ -66,6 +66,7 @@ impl ModelTab {
         if !self.framed && !self.views[0].scene.vertices.is_empty() {
             self.frame(doc);
         }
+        self.hold_camera();
         for (i, cell) in cells.into_iter().enumerate() {
             let header = if n > 1 {
                 egui::Rect::from_min_size(cell.min, egui::vec2(cell.width(), 20.0))
