@@ -424,6 +424,7 @@ pub trait Tab3d {
             egui::Panel::left(Self::PANEL)
                 .resizable(true)
                 .default_size(300.0)
+                .size_range(super::model::SIDE_PANEL)
                 .show(ui, |ui| {
                     egui::ScrollArea::vertical().show(ui, |ui| self.panel(ui, spec));
                 });

@@ -960,6 +960,31 @@ fn the_camera_stays_put_while_the_model_changes() {
     );
 }
 
+/// Layout at 1024 × 700 (issue 66, item 8): a step's warning in the panel (vector sum above
+/// α = ¼) wraps instead of widening the side panel, which stays within its width range.
+#[test]
+fn long_messages_never_widen_the_side_panel() {
+    let mut a = app();
+    run_pipeline(&mut a, "vector-sum:alpha=0.45,vector-sum:alpha=0.45");
+    let mut h = Harness::builder()
+        .with_size(egui::vec2(1024.0, 700.0))
+        .build_ui_state(|ui, app: &mut PrismApp| app.frame_ui(ui), a);
+    settle(&mut h);
+    use egui_kittest::kittest::Queryable;
+    let right = h
+        .query_all_by_label_contains("above 0.25")
+        .map(|n| n.rect().right())
+        .fold(0.0f32, f32::max);
+    assert!(right > 0.0, "the warning is shown");
+    assert!(right <= 440.0, "the warning reaches x = {right}");
+    // The status bar starts where the side panel ends.
+    let edge = h
+        .query_all_by_label_contains("level 2 of 2")
+        .map(|n| n.rect().left())
+        .fold(f32::INFINITY, f32::min);
+    assert!(edge <= 460.0, "the side panel ends at x = {edge}");
+}
+
 pub(super) fn settle(h: &mut Harness<'_, PrismApp>) {
     for _ in 0..3 {
         h.step();

@@ -43,6 +43,10 @@ struct VertexDrag {
 }
 
 /// The Model tab's state.
+/// The side panels' width: resizable within this, never widened by their text (a long
+/// message wraps).
+pub const SIDE_PANEL: std::ops::RangeInclusive<f32> = 240.0..=440.0;
+
 pub struct ModelTab {
     pub views: Vec<ViewPipe>,
     /// The view the pipeline panel edits.
@@ -465,6 +469,7 @@ impl ModelTab {
             egui::Panel::left("panels")
                 .resizable(true)
                 .default_size(300.0)
+                .size_range(SIDE_PANEL)
                 .show(ui, |ui| {
                     // A solid scroll bar: at 1280×800 a long pipeline with the Edges tool is
                     // taller than the window, and the floating bar shows only on hover.

@@ -2,7 +2,7 @@
 //! bar is `status.rs`). Panels read the document and queue commands; they write only the tab's own
 //! state (selection, tool, display, the level shown).
 
-use super::scheme_editor::scheme_editor;
+use super::scheme_editor::{repeat_warning, scheme_editor};
 use super::{Coloring, ModelTab, Tool};
 use crate::gui::command::{Command, EdgeMark, Edit};
 use crate::gui::document::{DocState, Document};
@@ -90,6 +90,7 @@ impl ModelTab {
                     edit = Some(Edit::RemoveStep { view, index: k });
                 }
             });
+            repeat_warning(ui, s);
         }
         if let Some(e) = edit {
             self.push(e);
@@ -101,6 +102,7 @@ impl ModelTab {
                 self.next = n;
             }
         });
+        repeat_warning(ui, &self.next);
         if self.next.shrinks_when_repeated() {
             ui.horizontal(|ui| {
                 ui.label("repeated, divide by");

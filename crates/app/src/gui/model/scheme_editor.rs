@@ -70,9 +70,13 @@ pub fn scheme_editor(
             }
         }
     });
-    // A value that cannot be repeated (vector sum above α = ¼) is admitted and named.
-    let shown = out.as_ref().unwrap_or(s);
-    if let (Some(w), Some(p)) = (shown.repeat_warning(), kind.entry().param)
+    out
+}
+
+/// Under a step's row, on a line of its own (so that it wraps rather than widening the
+/// panel): a value that cannot be repeated (vector sum above α = ¼) is admitted and named.
+pub fn repeat_warning(ui: &mut egui::Ui, s: &Scheme) {
+    if let (Some(w), Some(p)) = (s.repeat_warning(), s.kind().entry().param)
         && let Some((bound, _)) = p.repeatable
     {
         ui.colored_label(
@@ -81,7 +85,6 @@ pub fn scheme_editor(
         )
         .on_hover_text(w);
     }
-    out
 }
 
 /// The step Step >> appends when the settings name none: the combination rule.
