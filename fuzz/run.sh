@@ -12,7 +12,7 @@ cd "$(dirname "$0")"
 seconds=${1:-600}
 shift || true
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || targets=(obj document polyline sections scene step)
+[ ${#targets[@]} -gt 0 ] || targets=(obj document polyline sections scene step stl)
 shared=../../shared/meshes
 [ -d "$shared" ] || shared=../../../shared/meshes
 
@@ -27,6 +27,8 @@ seed step ../assets/*.obj "$shared"/opensubdiv/*.obj
 seed document ../assets/*.prism.json
 seed sections ../assets/*.skin.json
 seed scene ../assets/*.envelope.json
+mkdir -p corpus/stl
+[ -f corpus/stl/cube.stl ] || printf 'solid c\nfacet normal 0 0 -1\nouter loop\nvertex 0 0 0\nvertex 0 1 0\nvertex 1 0 0\nendloop\nendfacet\nendsolid c\n' > corpus/stl/cube.stl
 mkdir -p corpus/polyline
 printf '%s' '{"closed": true, "points": [[1,0],[0,1],[-1,0],[0,-1]]}' > corpus/polyline/square.json
 printf '%s' '{"closed": false, "points": [[0,0],[1,0],[1.5,0.8],[1.2,2]]}' > corpus/polyline/open.json

@@ -1759,3 +1759,38 @@ fn subdivide_writes_obj_normals_on_request() {
     ));
     assert!(!std::fs::read_to_string(&out).unwrap().contains("vn "));
 }
+
+/// STL in (issue 66, item 11): a level exported as STL opens as a closed solid of the same
+/// facets and rounds; a facet with two equal corners is refused by number.
+#[test]
+fn stl_files_are_read_as_solids() {
+    let stl = tmp("read-back.stl");
+    succeeds(run_with(
+        "subdivide assets/cube.obj --scheme catmull-clark --levels 1 -o {}",
+        &[&stl],
+    ));
+    let out = tmp("from-stl.obj");
+    let o = run_with(
+        "subdivide {} --scheme combination --radius 0.1 --levels 1 -o {}",
+        &[&stl, &out],
+    );
+    let (so, se) = text(&o);
+    assert!(o.status.success(), "{se}");
+    assert!(so.contains("level 0: 26 vertices"), "{so}");
+    let bad = tmp("degenerate.stl");
+    std::fs::write(
+        &bad,
+        "solid d\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 1 0 0\nendloop\nendfacet\nendsolid d\n",
+    )
+    .unwrap();
+    let o = run_with(
+        "subdivide {} --scheme catmull-clark --levels 1 -o {}",
+        &[&bad, &out],
+    );
+    assert_eq!(o.status.code(), Some(1));
+    assert!(
+        text(&o).1.contains("facet 0 has two equal corners"),
+        "{:?}",
+        text(&o)
+    );
+}

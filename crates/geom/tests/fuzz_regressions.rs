@@ -27,13 +27,14 @@ type Target = (&'static str, fn(&[u8]));
 
 #[test]
 fn every_crash_the_fuzzer_found_is_an_answer_now() {
-    let targets: [Target; 6] = [
+    let targets: [Target; 7] = [
         ("obj", bodies::obj),
         ("document", bodies::document),
         ("polyline", bodies::polyline),
         ("sections", bodies::sections),
         ("scene", bodies::scene),
         ("step", bodies::step),
+        ("stl", bodies::stl),
     ];
     let mut replayed = 0;
     for (target, body) in targets {

@@ -148,7 +148,7 @@ impl PrismApp {
     pub(super) fn open_dialog(&mut self) {
         let picked = self.dialog(|| {
             rfd::FileDialog::new()
-                .add_filter("Prism documents and OBJ", &["json", "obj"])
+                .add_filter("Prism documents, OBJ and STL", &["json", "obj", "stl"])
                 .pick_file()
         });
         if let Some(p) = picked {

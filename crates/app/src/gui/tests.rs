@@ -417,6 +417,15 @@ fn bundled_samples_open_and_bad_files_say_why() {
     let note = a.note.clone().unwrap_or_default();
     assert!(note.contains("notes.obj: the mesh has no faces"), "{note}");
     assert_eq!(a.doc.generation(), before, "the document is kept");
+    // An STL opens as a solid (its facets welded), as dropped or opened.
+    let stl = scratch.path().join("tetra.stl");
+    let tet = prism_geom::primitives::tetrahedron();
+    std::fs::write(&stl, prism_geom::io::stl_bytes(&tet, &|_| false)).unwrap();
+    a.run(Command::Open(stl));
+    a.wait_idle();
+    let m = &a.doc.state().mesh;
+    assert_eq!((m.num_vertices(), m.num_faces()), (4, 4));
+    a.run(Command::Undo);
     // Opening is undoable.
     a.run(Command::Undo);
     a.wait_idle();

@@ -1,5 +1,5 @@
-//! Files: OBJ (read in one pass, polygons kept as they are), the native `.prism.json`
-//! document, and the JSON inputs of the curve, skin and envelope commands. Every write goes to a temporary file in the same folder that is renamed into
+//! Files: OBJ (read in one pass, polygons kept as they are), STL (its facets welded into a
+//! solid), the native `.prism.json` document, and the JSON inputs of the curve, skin and envelope commands. Every write goes to a temporary file in the same folder that is renamed into
 //! place, so a failed save never destroys the previous file.
 
 mod atomic;
@@ -8,6 +8,7 @@ mod export;
 mod inputs;
 mod obj;
 mod obj_tags;
+mod stl;
 mod validate;
 
 pub use atomic::{check_writable, forced, save_target, write_atomically, write_atomically_with};
@@ -59,7 +60,7 @@ pub enum IoError {
     UnknownVersion { path: PathBuf, found: u64 },
     #[error("{path}: {message}")]
     Invalid { path: PathBuf, message: String },
-    #[error("{path}: unknown file type (use .obj or .prism.json)")]
+    #[error("{path}: unknown file type (use .obj, .stl or .prism.json)")]
     UnknownExtension { path: PathBuf },
     #[error("opening {path} was cancelled")]
     Cancelled { path: PathBuf },
@@ -70,6 +71,8 @@ pub enum IoError {
 pub enum FileKind {
     Obj,
     Document,
+    /// Read as a solid (its facets welded); written as the export writes it.
+    Stl,
 }
 
 impl FileKind {
@@ -80,6 +83,8 @@ impl FileKind {
             .unwrap_or_default();
         if name.ends_with(".obj") {
             Ok(FileKind::Obj)
+        } else if name.ends_with(".stl") {
+            Ok(FileKind::Stl)
         } else if name.ends_with(".prism.json") || name.ends_with(".json") {
             Ok(FileKind::Document)
         } else {
@@ -108,6 +113,7 @@ pub fn load_with(path: &Path, progress: &Progress) -> Result<(Document, Numberin
             })?;
             (document_from_str(path, &text)?, Numbering::default())
         }
+        FileKind::Stl => stl::read_stl_bytes(path, &read_bytes(path, progress, 1)?)?,
     };
     progress
         .check()
@@ -147,12 +153,21 @@ fn read_bytes(path: &Path, progress: &Progress, parts: u64) -> Result<Vec<u8>, I
     }
 }
 
+/// As [`load`], for bytes already in memory (STL may be binary; the other kinds are text).
+pub fn load_bytes(path: &Path, bytes: &[u8]) -> Result<(Document, Numbering), IoError> {
+    match FileKind::of(path)? {
+        FileKind::Stl => checked(path, stl::read_stl_bytes(path, bytes)?),
+        _ => load_str(path, &String::from_utf8_lossy(bytes)),
+    }
+}
+
 /// As [`load`], for text already in memory (the app's bundled samples); the kind comes
 /// from `path`'s name, which messages quote.
 pub fn load_str(path: &Path, text: &str) -> Result<(Document, Numbering), IoError> {
     let loaded = match FileKind::of(path)? {
         FileKind::Obj => from_obj(read_obj_str(path, text)?),
         FileKind::Document => (document_from_str(path, text)?, Numbering::default()),
+        FileKind::Stl => stl::read_stl_bytes(path, text.as_bytes())?,
     };
     checked(path, loaded)
 }
@@ -207,6 +222,15 @@ pub fn save(path: &Path, doc: &Document) -> Result<Vec<String>, IoError> {
     match FileKind::of(path)? {
         FileKind::Obj => write_obj(path, &doc.mesh, &doc.edge_attrs, &doc.tags),
         FileKind::Document => write_document(path, doc).map(|_| Vec::new()),
+        FileKind::Stl => {
+            check_finite_points(path, &doc.mesh)?;
+            write_atomically(path, &stl_bytes(&doc.mesh, &|_| false)).map(|_| {
+                vec![
+                    "STL keeps the facets only: the pipeline, creases and tags are not in it"
+                        .into(),
+                ]
+            })
+        }
     }
 }
 
