@@ -392,16 +392,11 @@ fn bad_primitives_are_named() {
     ];
     let flipped = PrimitiveInput {
         vertices: o.to_vec(),
-        faces: vec![
-            vec![4, 0, 5],
-            vec![4, 5, 1],
-            vec![4, 1, 2],
-            vec![4, 2, 3],
-            vec![4, 3, 0],
-            vec![5, 2, 1],
-            vec![5, 3, 2],
-            vec![5, 0, 3],
-        ],
+        faces: [[4, 0, 5], [4, 5, 1], [4, 1, 2], [4, 2, 3]]
+            .into_iter()
+            .chain([[4, 3, 0], [5, 2, 1], [5, 3, 2], [5, 0, 3]])
+            .map(|f| f.to_vec())
+            .collect(),
         t: None,
         vertex_t: None,
     };
