@@ -46,6 +46,7 @@ impl PrismApp {
         let native = io::FileKind::of(path).ok() == Some(io::FileKind::Document);
         if native {
             self.last_file = Some(path.to_path_buf());
+            self.remember(path);
         }
         self.doc.saved_as(path, native);
         if native {

@@ -104,6 +104,8 @@ pub struct Settings {
     pub(super) budget_mib: u64,
     pub(super) next: String,
     pub(super) last_file: Option<PathBuf>,
+    /// Files opened or saved, the latest first (File ▸ Recent).
+    pub(super) recent: Vec<PathBuf>,
 }
 
 impl Default for Settings {
@@ -114,6 +116,7 @@ impl Default for Settings {
             budget_mib: DEFAULT_BUDGET_MIB,
             next: model::default_next().to_string(),
             last_file: None,
+            recent: Vec::new(),
         }
     }
 }

@@ -43,6 +43,26 @@ impl PrismApp {
                 if ui.button("Open… (Ctrl+O)").clicked() {
                     out.push(Command::OpenDialog);
                 }
+                let recent: Vec<PathBuf> =
+                    self.recent.iter().filter(|p| p.exists()).cloned().collect();
+                ui.add_enabled_ui(!recent.is_empty(), |ui| {
+                    ui.menu_button("Recent", |ui| {
+                        for p in recent {
+                            let name = p.file_name().map_or(p.display().to_string(), |n| {
+                                n.to_string_lossy().into_owned()
+                            });
+                            if ui
+                                .button(name)
+                                .on_hover_text(p.display().to_string())
+                                .clicked()
+                            {
+                                out.push(Command::Open(p));
+                            }
+                        }
+                    })
+                    .response
+                    .on_disabled_hover_text("No file opened or saved yet");
+                });
                 ui.menu_button("Samples", |ui| {
                     for (k, (name, _, _)) in SAMPLES_FILES.iter().enumerate() {
                         if ui.button(*name).clicked() {

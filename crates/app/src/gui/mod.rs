@@ -109,6 +109,8 @@ pub struct PrismApp {
     /// The camera before the last edit, and the document generation that edit made.
     camera_before_edit: Option<(u64, prism_viewport::Camera)>,
     last_file: Option<PathBuf>,
+    /// Files opened or saved, the latest first (File ▸ Recent; remembered between runs).
+    pub recent: Vec<PathBuf>,
     pub new_solid: new_solid::NewSolid,
     pub autosave: autosave::Autosave,
     /// A big file being opened on a thread (opening.rs).
@@ -120,6 +122,9 @@ pub struct PrismApp {
     /// Files at least this large open on a thread ([`opening::IN_BACKGROUND_FROM`]).
     open_in_background_from: u64,
 }
+
+/// How many files File ▸ Recent lists.
+pub const RECENT: usize = 8;
 
 impl PrismApp {
     /// The app without a window (tests drive it this way; `new` adds the GPU).
@@ -180,6 +185,7 @@ impl PrismApp {
         );
         model.sel_edges = launch.select_edges.into_iter().collect();
         let last_file = origin.path.clone().or(settings.last_file);
+        let recent = settings.recent.clone();
         let first_tab = tab_for(&state);
         let doc = Document::new(state, origin);
         model.sync(&doc);
@@ -203,6 +209,7 @@ impl PrismApp {
             after_dialog: None,
             camera_before_edit: None,
             last_file,
+            recent,
             opening: in_background.map(|p| opening::Opening::start(&p, Arc::new(|| {}))),
             open_in_background_from: opening::IN_BACKGROUND_FROM,
             closing: Default::default(),
@@ -239,7 +246,16 @@ impl PrismApp {
             budget_mib: self.model.budget_mib,
             next: self.model.next.to_string(),
             last_file: self.last_file.clone(),
+            recent: self.recent.clone(),
         }
+    }
+
+    /// Puts `path` first in File ▸ Recent (at most [`RECENT`] files, each once).
+    pub(super) fn remember(&mut self, path: &std::path::Path) {
+        let path = std::path::absolute(path).unwrap_or_else(|_| path.to_path_buf());
+        self.recent.retain(|p| *p != path);
+        self.recent.insert(0, path);
+        self.recent.truncate(RECENT);
     }
 
     fn say(&mut self, text: impl Into<String>) {

@@ -147,6 +147,10 @@ impl PrismApp {
             self.last_file = Some(p.clone());
         }
         let name = origin.name.clone();
+        // A file (not a sample, a new solid or recovered work) goes to File ▸ Recent.
+        if std::path::Path::new(&name).is_file() {
+            self.remember(std::path::Path::new(&name));
+        }
         let state = Box::new(state);
         self.run(command::Edit::Replace { state, origin });
         self.say(format!("opened {name}"));

@@ -994,6 +994,38 @@ fn long_messages_never_widen_the_side_panel() {
     assert!(edge <= 460.0, "the side panel ends at x = {edge}");
 }
 
+/// File ▸ Recent (issue 66, item 11): files opened or saved, the latest first, each once,
+/// remembered with the settings; choosing one opens it.
+#[test]
+fn recent_files_are_listed_remembered_and_opened() {
+    use egui_kittest::kittest::Queryable;
+    let scratch = tempfile::tempdir().unwrap();
+    let (a_obj, b_obj) = (scratch.path().join("a.obj"), scratch.path().join("b.obj"));
+    let tet = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 3 1 4\n";
+    std::fs::write(&a_obj, tet).unwrap();
+    std::fs::write(&b_obj, tet).unwrap();
+    let mut a = app();
+    for p in [&a_obj, &b_obj, &a_obj] {
+        a.run(Command::Open(p.clone()));
+    }
+    let saved = scratch.path().join("c.prism.json");
+    a.save_to(&saved).unwrap();
+    let abs = |p: &std::path::Path| std::path::absolute(p).unwrap();
+    assert_eq!(a.recent, [abs(&saved), abs(&a_obj), abs(&b_obj)]);
+    // The next run remembers them; File ▸ Recent ▸ b.obj opens it.
+    let b = PrismApp::headless(Launch::default(), Some(a.settings())).unwrap();
+    assert_eq!(b.recent.len(), 3);
+    let mut h = harness(b);
+    settle(&mut h);
+    h.get_by_label("File").click();
+    h.run();
+    h.get_by_label("Recent").hover();
+    h.run();
+    h.get_by_label("b.obj").click();
+    settle(&mut h);
+    assert!(h.state().doc.origin().name.ends_with("b.obj"));
+}
+
 pub(super) fn settle(h: &mut Harness<'_, PrismApp>) {
     for _ in 0..3 {
         h.step();
