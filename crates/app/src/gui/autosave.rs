@@ -60,9 +60,17 @@ impl Owned {
         })
     }
 
+    /// Where the document came from, beside its copy: `COPY.origin`.
+    fn origin_path(copy: &Path) -> PathBuf {
+        let mut name = copy.as_os_str().to_owned();
+        name.push(".origin");
+        PathBuf::from(name)
+    }
+
     /// Removes the copy and its lock file (the lock goes with the window).
     fn remove(&self) {
         let _ = std::fs::remove_file(&self.copy);
+        let _ = std::fs::remove_file(Owned::origin_path(&self.copy));
         if self.lock.is_some()
             && let Some(l) = Owned::lock_path(&self.copy)
         {
@@ -213,6 +221,13 @@ impl Autosave {
                 .map_err(|e| format!("autosave: cannot make {}: {e}", d.display()))?;
         }
         io::save(&path, &doc.state().to_document()).map_err(|e| format!("autosave: {e}"))?;
+        // The document's name and save target, so that restored work keeps them: the name on
+        // the first line, the `.prism.json` it saves to (if any) on the second.
+        let origin = doc.origin();
+        let target = origin.path.as_ref().map(|p| p.display().to_string());
+        let text = format!("{}\n{}\n", origin.name, target.unwrap_or_default());
+        io::write_atomically(&Owned::origin_path(&path), text.as_bytes())
+            .map_err(|e| format!("autosave: {e}"))?;
         self.written = Some(generation);
         Ok(true)
     }
@@ -226,6 +241,26 @@ impl Autosave {
             }
             self.own = Some(o);
             self.written = None;
+        }
+    }
+
+    /// The name and save target of the work offered for restore, when its copy recorded
+    /// them and they still name files (else "recovered work", with no target).
+    pub fn offered_origin(&self) -> (String, Option<PathBuf>) {
+        let recorded = self
+            .offered_path()
+            .and_then(|c| std::fs::read_to_string(Owned::origin_path(&c)).ok());
+        let mut lines = recorded.as_deref().unwrap_or_default().lines();
+        let name = lines.next().unwrap_or_default();
+        let target = lines
+            .next()
+            .filter(|t| !t.is_empty())
+            .map(PathBuf::from)
+            .filter(|p| p.is_file());
+        match target {
+            Some(t) => (name.to_string(), Some(t)),
+            None if Path::new(name).is_file() => (name.to_string(), None),
+            None => ("recovered work".to_string(), None),
         }
     }
 

@@ -90,12 +90,14 @@ impl PrismApp {
         let Some(path) = self.autosave.offered_path() else {
             return;
         };
+        let (name, target) = self.autosave.offered_origin();
         match document::open(&path) {
             Ok((state, _)) => {
                 self.autosave.restored();
+                // The work keeps its name and save target (Ctrl+S writes it back there).
                 let origin = Origin {
-                    path: None,
-                    name: "recovered work".into(),
+                    path: target,
+                    name,
                     ..Default::default()
                 };
                 self.replace_document(state, origin);

@@ -156,3 +156,33 @@ fn an_idle_window_is_woken_when_the_copy_is_due() {
     assert_eq!(a.autosave.due_in(&a.doc), None);
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// Restored work keeps its name and save target (issue 66, item 4): a document saved as a
+/// `.prism.json`, edited and left unsaved comes back under that name, marked unsaved, and
+/// Save writes it back there without asking.
+#[test]
+fn restored_work_keeps_its_name_and_save_target() {
+    let dir = scratch("origin");
+    std::fs::create_dir_all(&dir).unwrap();
+    let target = dir.join("bracket.prism.json");
+    let mut a = app_in(&dir);
+    a.save_to(&target).unwrap();
+    a.run(CurveEdit::SetLevels(3));
+    assert!(a.autosave.tick(&a.doc, true).unwrap());
+    let work = a.doc.state().clone();
+    drop(a);
+    let mut b = app_in(&dir);
+    b.run(Command::RestoreAutosave);
+    assert_eq!(b.doc.origin().path.as_deref(), Some(target.as_path()));
+    assert_eq!(b.doc.origin().name, target.display().to_string());
+    assert!(
+        b.title().starts_with("*bracket.prism.json"),
+        "{}",
+        b.title()
+    );
+    b.run(Command::SaveDialog { as_new: false });
+    assert!(!b.unsaved());
+    let (saved, _) = document::open(&target).unwrap();
+    assert_eq!(saved.curve, work.curve);
+    std::fs::remove_dir_all(&dir).ok();
+}
