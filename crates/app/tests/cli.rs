@@ -1794,3 +1794,50 @@ fn stl_files_are_read_as_solids() {
         text(&o)
     );
 }
+
+/// A refusal for radii that do not fit says first the one radius that fits every edge
+/// (issue 66, item 2), and that radius is accepted while a hair more is refused — on the
+/// tripod, the L-block and a generated pentagonal pyramid.
+#[test]
+fn the_refusal_says_the_radius_that_fits_every_edge() {
+    let pyramid = tmp("fit-pyramid.obj");
+    succeeds(run_with(
+        "new pyramid --sides 5 --radius 1.3 --height 0.9 -o {}",
+        &[&pyramid],
+    ));
+    let out = tmp("fit-out.obj");
+    for input in [
+        PathBuf::from("assets/tripod.obj"),
+        PathBuf::from("assets/l-block.obj"),
+        pyramid,
+    ] {
+        let at = |r: f64| {
+            run_with(
+                &format!("subdivide {{}} --scheme combination --radius {r} --levels 1 -o {{}}"),
+                &[&input, &out],
+            )
+        };
+        let o = at(5.0);
+        assert_eq!(o.status.code(), Some(1), "{input:?}");
+        let se = text(&o).1;
+        let fits: f64 = se
+            .split("a radius of at most ")
+            .nth(1)
+            .and_then(|t| t.split(' ').next())
+            .and_then(|t| t.parse().ok())
+            .unwrap_or_else(|| panic!("{input:?}: {se}"));
+        assert!(
+            se.find("at most") < se.find("edge "),
+            "the number first: {se}"
+        );
+        assert!(
+            at(fits).status.success(),
+            "{input:?}: r = {fits} is refused"
+        );
+        assert_eq!(
+            at(fits * 1.01).status.code(),
+            Some(1),
+            "{input:?}: r = 1.01 × {fits}"
+        );
+    }
+}

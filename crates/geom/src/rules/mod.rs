@@ -158,8 +158,9 @@ pub enum RuleError {
     #[error("the new point of face {face} at vertex {vertex} is not finite")]
     NonFinite { face: u32, vertex: u32 },
     #[error(
-        "the rounds of {} edge(s) do not fit their faces (neighbouring rounds would overlap): {}; lower the radius or clamp it",
+        "the rounds of {} edge(s) do not fit their faces (neighbouring rounds would overlap); a radius of at most {} fits them all: {}; lower the radius or clamp it",
         .edges.len(),
+        overlap::largest_fit(.edges),
         overlap::list(.edges)
     )]
     Overlap { edges: Vec<EdgeFit> },

@@ -90,11 +90,26 @@ fn short(x: f64) -> String {
 
 /// `fits` as a short list for an error or a warning: the first five, then how many more.
 pub fn list(fits: &[EdgeFit]) -> String {
-    let mut s: Vec<String> = fits.iter().take(5).map(|e| e.to_string()).collect();
+    // The tightest first: the edges that decide the radius that fits.
+    let mut sorted: Vec<&EdgeFit> = fits.iter().collect();
+    sorted.sort_by(|a, b| a.fits.total_cmp(&b.fits));
+    let mut s: Vec<String> = sorted.iter().take(5).map(|e| e.to_string()).collect();
     if fits.len() > 5 {
         s.push(format!("and {} more", fits.len() - 5));
     }
     s.join(", ")
+}
+
+/// The largest radius that fits every edge of `fits` (each edge's bound with its neighbours
+/// at their asked radii; lower neighbours leave it more room, so this one number fits all),
+/// rounded down to four significant digits, so that the number said is one that fits.
+pub fn largest_fit(fits: &[EdgeFit]) -> f64 {
+    let x = fits.iter().map(|e| e.fits).fold(f64::INFINITY, f64::min);
+    if !(x.is_finite() && x > 0.0) {
+        return x;
+    }
+    let scale = 10f64.powi(3 - x.log10().floor() as i32);
+    (x * scale).floor() / scale
 }
 
 /// The sentence a step's report gives for the radii `fits` lowered ([`crate::step::StepReport::notes`]).
