@@ -46,22 +46,9 @@ impl PrismApp {
                 let recent: Vec<PathBuf> =
                     self.recent.iter().filter(|p| p.exists()).cloned().collect();
                 ui.add_enabled_ui(!recent.is_empty(), |ui| {
-                    ui.menu_button("Recent", |ui| {
-                        for p in recent {
-                            let name = p.file_name().map_or(p.display().to_string(), |n| {
-                                n.to_string_lossy().into_owned()
-                            });
-                            if ui
-                                .button(name)
-                                .on_hover_text(p.display().to_string())
-                                .clicked()
-                            {
-                                out.push(Command::Open(p));
-                            }
-                        }
-                    })
-                    .response
-                    .on_disabled_hover_text("No file opened or saved yet");
+                    ui.menu_button("Recent", |ui| out.extend(recent_menu(ui, &recent)))
+                        .response
+                        .on_disabled_hover_text("No file opened or saved yet");
                 });
                 ui.menu_button("Samples", |ui| {
                     for (k, (name, _, _)) in SAMPLES_FILES.iter().enumerate() {
@@ -156,4 +143,22 @@ impl PrismApp {
         });
         out
     }
+}
+
+/// File ▸ Recent's entries: each file by name (the whole path on hover); the one chosen.
+fn recent_menu(ui: &mut egui::Ui, recent: &[PathBuf]) -> Option<Command> {
+    let mut chosen = None;
+    for p in recent {
+        let name = p.file_name().map_or(p.display().to_string(), |n| {
+            n.to_string_lossy().into_owned()
+        });
+        if ui
+            .button(name)
+            .on_hover_text(p.display().to_string())
+            .clicked()
+        {
+            chosen = Some(Command::Open(p.clone()));
+        }
+    }
+    chosen
 }
