@@ -133,8 +133,7 @@ pub fn run(a: EnvelopeArgs) -> Result<(), CliError> {
         )));
     }
     // The construction's memory, from the primitives alone, before it is built.
-    let faces: usize = spec.primitives.iter().map(|p| p.faces.len()).sum();
-    let construction = prism_geom::memory::envelope_construction_bytes(faces as u64);
+    let construction = spec.construction_bytes();
     let knob = "give a smaller --resolution or fewer primitives";
     let alone = construction + prism_geom::memory::BASELINE;
     a.memory.refuse_over(alone, "this envelope", knob)?;

@@ -95,8 +95,7 @@ impl Built {
     /// thread. A mesh that with its checks and the view's copy would take more than `budget`
     /// bytes is refused before it is built.
     pub fn new(spec: &EnvelopeSpec, budget: u64, check_crossings: bool) -> Built {
-        let faces: usize = spec.primitives.iter().map(|p| p.faces.len()).sum();
-        let construction = memory::envelope_construction_bytes(faces as u64);
+        let construction = spec.construction_bytes();
         let (what, knob) = ("this envelope", "a smaller resolution or fewer primitives");
         let start = Instant::now();
         let e = within_budget(construction + memory::BASELINE, budget, what, knob)

@@ -74,6 +74,15 @@ pub struct EnvelopeSpec {
     pub enclosure: Enclosure,
 }
 
+impl EnvelopeSpec {
+    /// Bytes its construction holds, from the primitives' faces alone (before it is built;
+    /// [`crate::memory::envelope_construction_bytes`]).
+    pub fn construction_bytes(&self) -> u64 {
+        let faces: usize = self.primitives.iter().map(|p| p.faces.len()).sum();
+        crate::memory::envelope_construction_bytes(faces as u64)
+    }
+}
+
 fn is_lifted(e: &Enclosure) -> bool {
     *e == Enclosure::Lifted
 }
