@@ -64,6 +64,18 @@ fn casteljau(q: &mut [DVec4], t: f64) -> DVec4 {
 
 /// The hodograph (control points of the derivative, `n Δ`) of the polynomial 4D Bézier curve
 /// `p`, into `out` (one point fewer).
+/// A homogeneous cubic at t, by its Bernstein polynomials.
+fn cubic_point(h: &[DVec4; 4], t: f64) -> DVec4 {
+    let s = 1.0 - t;
+    h[0] * (s * s * s) + h[1] * (3.0 * s * s * t) + h[2] * (3.0 * s * t * t) + h[3] * (t * t * t)
+}
+
+/// A homogeneous cubic's first derivative at t.
+fn cubic_first(h: &[DVec4; 4], t: f64) -> DVec4 {
+    let s = 1.0 - t;
+    3.0 * ((h[1] - h[0]) * (s * s) + (h[2] - h[1]) * (2.0 * s * t) + (h[3] - h[2]) * (t * t))
+}
+
 fn hodograph(p: &[DVec4], out: &mut [DVec4]) {
     let n = (p.len() - 1) as f64;
     for (o, w) in out.iter_mut().zip(p.windows(2)) {
@@ -139,14 +151,54 @@ impl RationalBezier {
 
     /// The point at parameter t.
     pub fn eval(&self, t: f64) -> DVec3 {
+        if let Some(h) = self.cubic() {
+            let q = cubic_point(&h, t);
+            return q.truncate() / q.w;
+        }
         let q = self.with_homogeneous(|h| casteljau(h, t));
         q.truncate() / q.w
+    }
+
+    /// The point and its first derivative at t (a cubic in closed form, any other degree from
+    /// [`RationalBezier::derivatives`]).
+    pub fn point_and_tangent(&self, t: f64) -> (DVec3, DVec3) {
+        let Some(h) = self.cubic() else {
+            let d = self.derivatives(t);
+            return (d.point, d.d1);
+        };
+        let (q, q1) = (cubic_point(&h, t), cubic_first(&h, t));
+        let c = q.truncate() / q.w;
+        (c, (q1.truncate() - q1.w * c) / q.w)
+    }
+
+    /// The homogeneous control points of a cubic (the network's curves are all cubics: the
+    /// closed forms below are their fast path).
+    fn cubic(&self) -> Option<[DVec4; 4]> {
+        (self.points.len() == 4).then(|| {
+            std::array::from_fn(|i| (self.points[i] * self.weights[i]).extend(self.weights[i]))
+        })
     }
 
     /// The point and its first and second derivatives at t: de Casteljau in homogeneous space
     /// on the points and on their first and second hodographs, then the quotient rule.
     pub fn derivatives(&self, t: f64) -> Derivatives {
-        let (q, q1, q2) = self.with_homogeneous(|h| {
+        let (q, q1, q2) = if let Some(h) = self.cubic() {
+            let s = 1.0 - t;
+            let second = 6.0 * (s * (h[2] - 2.0 * h[1] + h[0]) + t * (h[3] - 2.0 * h[2] + h[1]));
+            (cubic_point(&h, t), cubic_first(&h, t), second)
+        } else {
+            self.general_derivatives(t)
+        };
+        let (w, w1, w2) = (q.w, q1.w, q2.w);
+        let c = q.truncate() / w;
+        let d1 = (q1.truncate() - w1 * c) / w;
+        let d2 = (q2.truncate() - 2.0 * w1 * d1 - w2 * c) / w;
+        Derivatives { point: c, d1, d2 }
+    }
+
+    /// The homogeneous point and its first and second derivatives at t for any degree.
+    fn general_derivatives(&self, t: f64) -> (DVec4, DVec4, DVec4) {
+        self.with_homogeneous(|h| {
             let m = h.len();
             let (mut stack1, mut stack2) = ([DVec4::ZERO; ON_STACK], [DVec4::ZERO; ON_STACK]);
             let (mut heap1, mut heap2);
@@ -164,12 +216,7 @@ impl RationalBezier {
                 DVec4::ZERO
             };
             (casteljau(h, t), casteljau(d1, t), q2)
-        });
-        let (w, w1, w2) = (q.w, q1.w, q2.w);
-        let c = q.truncate() / w;
-        let d1 = (q1.truncate() - w1 * c) / w;
-        let d2 = (q2.truncate() - 2.0 * w1 * d1 - w2 * c) / w;
-        Derivatives { point: c, d1, d2 }
+        })
     }
 
     /// Curvature `|C' × C''| / |C'|³` at t (0 where the tangent vanishes).

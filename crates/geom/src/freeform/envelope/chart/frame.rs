@@ -122,6 +122,30 @@ impl Frame {
         }
     }
 
+    /// The chart point and scalar of x, as [`Frame::chart`], and the derivative of the chart
+    /// point along v: the map's differential in closed form.
+    pub fn chart_along(&self, x: DVec3, v: DVec3) -> Option<(DVec2, f64, DVec2)> {
+        let (c, h) = self.chart(x)?;
+        let dc = match *self {
+            Frame::Radial { g, o, e1, e2 } => {
+                // p = g + k (x − g)/((x − g)·n), k = (o − g)·n.
+                let n = e1.cross(e2);
+                let (k, a) = ((o - g).dot(n), (x - g).dot(n));
+                let dp = k * (v * a - (x - g) * v.dot(n)) / (a * a);
+                DVec2::new(dp.dot(e1), dp.dot(e2))
+            }
+            Frame::Axial(ax) => {
+                let w = x - ax.a;
+                let r = w - w.dot(ax.d) * ax.d;
+                let dr = v - v.dot(ax.d) * ax.d;
+                let dtheta = ax.d.dot(r.cross(dr)) / r.length_squared();
+                DVec2::new(ax.rbar * dtheta, v.dot(ax.d))
+            }
+            Frame::Height { e1, e2, .. } => DVec2::new(v.dot(e1), v.dot(e2)),
+        };
+        Some((c, h, dc))
+    }
+
     /// The gradient of h at chart point c with scalar h that makes the surface tangent to the
     /// plane with unit normal n (`None` where n·N ≤ 0: the plane holds the chart's direction).
     pub fn gradient(&self, c: DVec2, h: f64, n: DVec3) -> Option<DVec2> {
@@ -204,6 +228,20 @@ mod tests {
                 let (c2, h2) = f.chart(x).unwrap();
                 assert!((c2 - c).length() < 1e-12 && (h2 - h).abs() < 1e-12, "{f:?}");
             }
+        }
+    }
+
+    /// The chart map's differential in closed form agrees with a central difference quotient.
+    #[test]
+    fn chart_along_is_the_differential() {
+        for f in frames() {
+            let x = f.point(DVec2::new(0.2, -0.1), 1.3);
+            let v = DVec3::new(0.3, -0.7, 0.4);
+            let (_, _, dc) = f.chart_along(x, v).unwrap();
+            let e = 1e-6;
+            let (c1, _) = f.chart(x + e * v).unwrap();
+            let (c0, _) = f.chart(x - e * v).unwrap();
+            assert!((dc - (c1 - c0) / (2.0 * e)).length() < 1e-8, "{f:?}");
         }
     }
 

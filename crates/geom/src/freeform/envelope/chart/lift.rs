@@ -11,8 +11,10 @@
 //!
 //! `R′(θ, z) = R(θ, z)·exp(L(θ, z))`, L the [`smooth_max`] of the terms `λ_v·b_θ(θ − θ_v)·b_z(z; z_v)`,
 //!
-//! one term for every sample point v of either primitive's removed part ([`sample_points`])
-//! that lies between the two silhouette planes, 0 < z_v < D, and not more than [`TRIGGER`] under
+//! one term for every sample point v ([`sample_points`]) of either primitive's removed part, or
+//! of any other primitive's part outside its own regions (a third primitive's corner, a swallowed
+//! primitive's) not more than [`RAISE_REACH`] above the strip, that lies between the two
+//! silhouette planes, 0 < z_v < D, over the strip's quads and not more than [`TRIGGER`] under
 //! the strip, with `λ_v = ln(R_v(1 + μ)/R(θ_v, z_v))`, μ = [`MARGIN`]. Every term is
 //! non-negative and L is at least each, which is λ_v at its own point, so `R′ ≥ R_v(1 + μ)` at
 //! every such point: the removed corners
@@ -173,8 +175,36 @@ fn strip_value(charts: &[&Chart], x: DVec3) -> Option<f64> {
 /// from each primitive's [`sample_points`], computed once.
 pub fn enclosure(net: &Network, charts: &[Chart], prims: &[Primitive]) -> (Vec<Lift>, Vec<Raise>) {
     let samples: Vec<Vec<DVec3>> = prims.iter().map(sample_points).collect();
-    let (lifts, held) = lifts(net, charts, prims, &samples);
-    let raises = raises(net, charts, prims, &samples, &held);
+    // A primitive's partners: the other ends of its strips. Its part on this side of every
+    // cut towards them lies under its own regions (s ≥ 1): only the rest can stick out.
+    let mut partners: Vec<Vec<usize>> = vec![Vec::new(); prims.len()];
+    for r in &net.regions {
+        if let RegionKind::Fusion { from, to } = r.kind {
+            if !partners[from].contains(&to) {
+                partners[from].push(to);
+            }
+            if !partners[to].contains(&from) {
+                partners[to].push(from);
+            }
+        }
+    }
+    let loose: Vec<Vec<bool>> = prims
+        .iter()
+        .enumerate()
+        .map(|(i, p)| {
+            samples[i]
+                .iter()
+                .map(|&x| {
+                    partners[i].is_empty()
+                        || partners[i]
+                            .iter()
+                            .any(|&j| (x - p.centre).dot(prims[j].centre - p.centre) > 0.0)
+                })
+                .collect()
+        })
+        .collect();
+    let (lifts, held) = lifts(net, charts, prims, &samples, &loose);
+    let raises = raises(charts, net, &samples, &loose, &held);
     (lifts, raises)
 }
 
@@ -186,6 +216,7 @@ fn lifts(
     charts: &[Chart],
     prims: &[Primitive],
     samples: &[Vec<DVec3>],
+    loose: &[Vec<bool>],
 ) -> (Vec<Lift>, Vec<Vec<bool>>) {
     let mut held: Vec<Vec<bool>> = samples.iter().map(|s| vec![false; s.len()]).collect();
     let mut strips: Vec<(usize, usize)> = net
@@ -238,11 +269,37 @@ fn lifts(
                 lift.cylindrical(x).0
             })
             .collect();
-        for (i, towards) in [(from, d), (to, -d)] {
-            let p = &prims[i];
-            // The strip's own two primitives' parts beyond its silhouette planes.
+        // The strip's own two primitives' parts beyond its silhouette planes, and any other
+        // primitive's part that sticks out of its own regions into the strip's reach.
+        // Another primitive is met only if its sphere comes within reach of the strip: between
+        // its silhouette planes and less than [`RAISE_REACH`] above twice its corners' radii.
+        let widest = quads
+            .iter()
+            .flat_map(|ch| ch.sides.iter().map(|s| ch.value(s.a)))
+            .fold(0.0, f64::max);
+        let near: Vec<bool> = prims
+            .iter()
+            .map(|p| {
+                let (_, z, r) = lift.cylindrical(p.centre);
+                z + p.radius > 0.0
+                    && z - p.radius < length
+                    && r - p.radius < 2.0 * widest * (1.0 + RAISE_REACH)
+            })
+            .collect();
+        for (i, p) in prims.iter().enumerate() {
+            let own = i == from || i == to;
+            if !own && !near[i] {
+                continue;
+            }
             for (k, &x) in samples[i].iter().enumerate() {
-                if (x - p.centre).dot(towards) <= 0.0 {
+                let beyond = if i == from {
+                    (x - p.centre).dot(d) > 0.0
+                } else if i == to {
+                    (x - p.centre).dot(d) < 0.0
+                } else {
+                    loose[i][k]
+                };
+                if !beyond {
                     continue;
                 }
                 let (theta, z, r) = lift.cylindrical(x);
@@ -256,7 +313,9 @@ fn lifts(
                     .iter()
                     .map(|&e| angle_between(theta, e).abs())
                     .fold(WIDTH, f64::min);
-                if width <= 1e-9 {
+                // Another primitive's point far above the strip lies beyond another part of the
+                // surface, not under this one.
+                if width <= 1e-9 || (!own && r > r0 * (1.0 + RAISE_REACH)) {
                     continue;
                 }
                 // A term this narrow is steep: the regions beside raise it too.
@@ -329,35 +388,16 @@ impl Raise {
 /// The raises of the primitives' and lids' regions over every point of every primitive
 /// (its `samples`) that lies above one of them and that no strip's lift holds (`held`).
 fn raises(
-    net: &Network,
     charts: &[Chart],
-    prims: &[Primitive],
+    net: &Network,
     samples: &[Vec<DVec3>],
+    loose: &[Vec<bool>],
     held: &[Vec<bool>],
 ) -> Vec<Raise> {
-    // A primitive's partners: the other ends of its strips. Its part on this side of every
-    // cut towards them lies under its own regions (s ≥ 1): only the rest can stick out.
-    let mut partners: Vec<Vec<usize>> = vec![Vec::new(); prims.len()];
-    for r in &net.regions {
-        if let RegionKind::Fusion { from, to } = r.kind {
-            if !partners[from].contains(&to) {
-                partners[from].push(to);
-            }
-            if !partners[to].contains(&from) {
-                partners[to].push(from);
-            }
-        }
-    }
     let mut points: Vec<(usize, DVec3)> = Vec::new();
-    for (i, p) in prims.iter().enumerate() {
-        let kept = |x: DVec3| {
-            !partners[i].is_empty()
-                && partners[i]
-                    .iter()
-                    .all(|&j| (x - p.centre).dot(prims[j].centre - p.centre) <= 0.0)
-        };
-        for (k, &x) in samples[i].iter().enumerate() {
-            if !kept(x) && !held[i][k] {
+    for (i, s) in samples.iter().enumerate() {
+        for (k, &x) in s.iter().enumerate() {
+            if loose[i][k] && !held[i][k] {
                 points.push((i, x));
             }
         }

@@ -318,14 +318,15 @@ pub fn tessellate_chart(
             .with_max_additional_vertices(4 * before_refining + 64),
     );
     let outer: std::collections::HashSet<_> = result.excluded_faces.into_iter().collect();
-    let points: Vec<DVec3> = dt
+    let inner: Vec<DVec2> = dt
         .vertices()
         .skip(nb)
         .map(|v| {
             let p = v.position();
-            chart.point(DVec2::new(p.x, p.y))
+            DVec2::new(p.x, p.y)
         })
         .collect();
+    let points = chart.points(&inner);
     let id = |k: usize| -> u32 {
         if k < nb {
             border[k].1

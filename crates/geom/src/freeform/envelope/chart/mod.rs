@@ -99,6 +99,20 @@ impl Chart {
         self.frame.point(c, self.value(c))
     }
 
+    /// The surface points of many chart points ([`Chart::point`] of each; a fusion quad computes
+    /// its sides' data once for each abscissa and height the points share).
+    pub fn points(&self, cs: &[DVec2]) -> Vec<DVec3> {
+        match &self.coons {
+            Some(corners) => self
+                .coons_many(cs, corners)
+                .into_iter()
+                .zip(cs)
+                .map(|(h, &c)| self.frame.point(c, h))
+                .collect(),
+            None => cs.iter().map(|&c| self.point(c)).collect(),
+        }
+    }
+
     /// The domain's corners, counter-clockwise.
     pub fn corners(&self) -> Vec<DVec2> {
         self.sides.iter().map(|s| s.a).collect()

@@ -38,10 +38,15 @@ pub enum Normals {
 impl Normals {
     /// The unit normal along `curve` at τ.
     pub fn at(&self, curve: &RationalBezier, tau: f64) -> DVec3 {
-        let d = curve.derivatives(tau);
-        let t = d.d1.normalize_or_zero();
+        let (point, d1) = curve.point_and_tangent(tau);
+        self.at_point(point, d1, tau)
+    }
+
+    /// The unit normal at τ where the curve's point and first derivative are `point` and `d1`.
+    pub fn at_point(&self, point: DVec3, d1: DVec3, tau: f64) -> DVec3 {
+        let t = d1.normalize_or_zero();
         let m = match *self {
-            Normals::Radial(g) => d.point - g,
+            Normals::Radial(g) => point - g,
             Normals::Between(n0, n1) => n0.lerp(n1, tau.clamp(0.0, 1.0)),
         };
         (m - m.dot(t) * t).normalize_or_zero()
@@ -186,8 +191,8 @@ impl ChartSide {
     /// The data of piece `i` at τ, from the curve.
     fn exact(&self, i: usize, tau: f64) -> Option<Data> {
         let p = &self.pieces[i];
-        let x = p.bezier.eval(tau);
-        let n = p.normals.at(&p.bezier, tau);
+        let (x, d1) = p.bezier.point_and_tangent(tau);
+        let n = p.normals.at_point(x, d1, tau);
         let (c, h) = self.frame.chart(x)?;
         let grad = self.frame.gradient(c, h, n)?;
         let g = grad.dot(self.inward);
@@ -225,15 +230,12 @@ impl ChartSide {
         let piece = hi.piece;
         let p = &self.pieces[piece];
         let tau_lo = if lo.piece == piece { lo.tau } else { p.t0 };
-        // σ and dσ/dτ at τ: the chart's map differentiated along C′ by a difference quotient.
+        // σ and dσ/dτ at τ: the chart's map differentiated along C′.
         let sigma_and_slope = |tau: f64| -> Option<(f64, f64)> {
-            let d = p.bezier.derivatives(tau);
-            let (c, _) = self.frame.chart(d.point)?;
-            let eps = 1e-7 / d.d1.length().max(1e-300);
-            let (c2, _) = self.frame.chart(d.point + eps * d.d1)?;
+            let (point, d1) = p.bezier.point_and_tangent(tau);
+            let (c, _, dc) = self.frame.chart_along(point, d1)?;
             let s = (c - self.a).dot(self.along) / self.length;
-            let ds = (c2 - c).dot(self.along) / self.length / eps;
-            Some((s, ds))
+            Some((s, dc.dot(self.along) / self.length))
         };
         // Newton from the secant between the bracketing marks, kept inside the bracket
         // (bisection where a step would leave it).

@@ -6,6 +6,7 @@ use super::side::{self, ChartSide};
 use super::{Chart, Frame};
 use crate::freeform::g1::hermite;
 use glam::DVec2;
+use std::collections::HashMap;
 
 /// A corner of a fusion quad's rectangle in ln R and (u, v) units: the value, ∂u, ∂v, and the
 /// twist as the bottom or top side gives it (its ∂v differentiated along u) and as the left or
@@ -103,14 +104,51 @@ impl Chart {
     /// chart, sides 0 (z = 0), 1 (x = x₁), 2 (z = D) and 3 (x = x₀). R > 0 whatever the data (a
     /// graph about the axis), and a strip that does not change along the axis is reproduced
     /// exactly — the strip between two equal aligned primitives is their section swept along d.
-    pub(super) fn coons(&self, c: DVec2, [c00, c10, c01, c11]: &[Corner; 4]) -> f64 {
+    pub(super) fn coons(&self, c: DVec2, corners: &[Corner; 4]) -> f64 {
+        self.coons_from(c, corners, self.bottom_top(c.x), self.left_right(c.y))
+    }
+
+    /// The bottom and top sides' data at abscissa x, in ln R.
+    fn bottom_top(&self, x: f64) -> [side::Data; 2] {
+        [along_x(&self.sides[0], x), along_x(&self.sides[2], x)]
+    }
+
+    /// The left and right sides' data at height z, in ln R.
+    fn left_right(&self, z: f64) -> [side::Data; 2] {
+        [along_z(&self.sides[3], z), along_z(&self.sides[1], z)]
+    }
+
+    /// [`Chart::coons`] at many points, each side's data computed once for every abscissa and
+    /// height the points share (a lattice's rows and columns).
+    pub(super) fn coons_many(&self, cs: &[DVec2], corners: &[Corner; 4]) -> Vec<f64> {
+        let mut xs: HashMap<u64, [side::Data; 2]> = HashMap::new();
+        let mut zs: HashMap<u64, [side::Data; 2]> = HashMap::new();
+        cs.iter()
+            .map(|&c| {
+                let bt = *xs
+                    .entry(c.x.to_bits())
+                    .or_insert_with(|| self.bottom_top(c.x));
+                let lr = *zs
+                    .entry(c.y.to_bits())
+                    .or_insert_with(|| self.left_right(c.y));
+                self.coons_from(c, corners, bt, lr)
+            })
+            .collect()
+    }
+
+    /// The Coons blend at c from the bottom and top sides' data at c.x and the left and right
+    /// sides' at c.y.
+    fn coons_from(
+        &self,
+        c: DVec2,
+        [c00, c10, c01, c11]: &[Corner; 4],
+        [b, t]: [side::Data; 2],
+        [l, r]: [side::Data; 2],
+    ) -> f64 {
         let Rect { x0, z0, w, d } = self.rect();
-        let [bottom, right, top, left] = self.rect_sides();
         let u = (c.x - x0) / w;
         let v = (c.y - z0) / d;
         // Side data at the point's projections, in (u, v) units: value and the slope across.
-        let (b, t) = (along_x(bottom, c.x), along_x(top, c.x));
-        let (l, r) = (along_z(left, c.y), along_z(right, c.y));
         let pu = hermite(u);
         let pv = hermite(v);
         let p_u = pu[0] * l.h + pu[1] * r.h + pu[2] * l.grad.x * w + pu[3] * r.grad.x * w;
