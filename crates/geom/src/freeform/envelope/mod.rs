@@ -45,6 +45,7 @@ pub use spec::{Enclosure, EnvelopeError, EnvelopeSpec, Surfacing};
 use crate::mesh::PolyMesh;
 use glam::DVec3;
 use network::{PatchSide, Region, RegionKind};
+use rayon::prelude::*;
 use std::collections::HashMap;
 
 /// The envelope: checked primitives, the curve network (with the insertion curves of the
@@ -349,46 +350,52 @@ impl Envelope {
         Ok((mesh, regions))
     }
 
-    /// Moves every vertex of a fusion strip's triangles by the strip's lift, and every vertex of
-    /// a raised region by its raise ([`chart::lift`]): each the identity to first order on the
-    /// borders it ends at, so vertices shared with other regions stay put.
+    /// Moves every vertex by the strips' lifts ([`chart::lift`]: each one smooth map of space
+    /// about its strip's axis, identity to first order on the silhouette sections; where several
+    /// reach a vertex, their displacements weighted by the fourth power of their lengths, so the
+    /// largest leads and the order of the strips does not matter), then every vertex of
+    /// a raised region by its raise (identity to first order on the region's borders, so
+    /// vertices shared with other regions stay put).
     fn lift(&self, mesh: &mut PolyMesh, regions: &[u32]) {
         if self.lifts.is_empty() && self.raises.is_empty() {
             return;
         }
-        // Per region: its strip's lift or its raise; per vertex: those of a region it lies in
-        // (a vertex on a border is left where it is by both sides' maps).
-        let mut lift_of: Vec<Option<usize>> = vec![None; self.network.regions.len()];
+        let moved: Vec<DVec3> = mesh
+            .positions
+            .par_iter()
+            .map(|&x| {
+                // Where several lifts reach a point (near a lid's corner), their displacements
+                // weighted by |d|⁴: the largest leads, smoothly, and they do not pile up.
+                let (mut num, mut den) = (DVec3::ZERO, 0.0);
+                for l in &self.lifts {
+                    let (lo, hi) = l.bounds();
+                    if x.cmpge(lo).all() && x.cmple(hi).all() {
+                        let d = l.apply(x) - x;
+                        let w = d.length_squared().powi(2);
+                        num += w * d;
+                        den += w;
+                    }
+                }
+                if den > 0.0 { x + num / den } else { x }
+            })
+            .collect();
+        mesh.positions = moved;
         let mut raise_of: Vec<Option<usize>> = vec![None; self.network.regions.len()];
-        for (r, region) in self.network.regions.iter().enumerate() {
-            if let RegionKind::Fusion { from, to } = region.kind {
-                lift_of[r] = self.lifts.iter().position(|l| (l.from, l.to) == (from, to));
-            }
-        }
         for (k, x) in self.raises.iter().enumerate() {
             raise_of[x.region] = Some(k);
         }
-        let mut strip: Vec<Option<usize>> = vec![None; mesh.num_vertices()];
         let mut raised: Vec<Option<usize>> = vec![None; mesh.num_vertices()];
         for (f, &r) in regions.iter().enumerate() {
-            let (lift, raise) = (lift_of.get(r as usize), raise_of.get(r as usize));
-            for c in mesh.face_corners(f) {
-                let v = mesh.corner_verts[c] as usize;
-                if let Some(&Some(l)) = lift {
-                    strip[v] = Some(l);
-                }
-                if let Some(&Some(k)) = raise {
-                    raised[v] = Some(k);
+            if let Some(&Some(k)) = raise_of.get(r as usize) {
+                for c in mesh.face_corners(f) {
+                    raised[mesh.corner_verts[c] as usize] = Some(k);
                 }
             }
         }
-        for v in 0..mesh.num_vertices() {
-            if let Some(l) = strip[v] {
-                mesh.positions[v] = self.lifts[l].apply(mesh.positions[v]);
-            }
-            if let Some(k) = raised[v] {
+        for (p, k) in mesh.positions.iter_mut().zip(raised) {
+            if let Some(k) = k {
                 let x = &self.raises[k];
-                mesh.positions[v] = x.apply(&self.charts[x.region], mesh.positions[v]);
+                *p = x.apply(&self.charts[x.region], *p);
             }
         }
     }

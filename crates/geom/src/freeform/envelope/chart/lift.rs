@@ -14,18 +14,23 @@
 //! one term for every sample point v ([`sample_points`]) of either primitive's removed part, or
 //! of any other primitive's part outside its own regions (a third primitive's corner, a swallowed
 //! primitive's) not more than [`RAISE_REACH`] above the strip, that lies between the two
-//! silhouette planes, 0 < z_v < D, over the strip's quads and not more than [`TRIGGER`] under
-//! the strip, with `λ_v = ln(R_v(1 + μ)/R(θ_v, z_v))`, μ = [`MARGIN`]. Every term is
-//! non-negative and L is at least each, which is λ_v at its own point, so `R′ ≥ R_v(1 + μ)` at
-//! every such point: the removed corners
-//! and edges lie inside. `b_z` rises from 0 at z = 0 to 1 at z_v and falls to 0 at z = D, `b_θ`
-//! falls from 1 to 0 at |θ − θ_v| = w_v, both smoothsteps (value and slope 0 at their ends, 1
-//! and 0 at the top). So L and its gradient vanish on both silhouette sections (the strip's
-//! borders with the primitives' charts, whose tangent planes it keeps: G1 as before), and the
-//! map `(θ, z, R) ↦ (θ, z, R·exp L)` is one smooth map of the strip's whole neighbourhood,
-//! applied alike to both quads beside a fusion edge (G1 kept there too). Where the strip ends
-//! at a lid (three or more primitives), w_v shrinks so that the term vanishes before that
-//! fusion edge: the lid's border is untouched.
+//! silhouette planes, 0 < z_v < D, over the strip's quads — or over a lid it ends at, less than
+//! half a term's width past their common fusion edge and at least [`LID_CORNER`] of the strip's
+//! length from its ends, R(θ_v, z_v) then the lid's along that ray ([`lid_value`]) — and not
+//! more than [`TRIGGER`] under the surface, with `λ_v = ln(R_v(1 + μ)/R(θ_v, z_v))`,
+//! μ = [`MARGIN`]. Every term is non-negative and L is at least each, which is λ_v at its own
+//! point, so `R′ ≥ R_v(1 + μ)` at every such point: the removed corners and edges lie inside.
+//! `b_z` rises from 0 at z = 0 to 1 at z_v and falls to 0 at z = D, `b_θ` falls from 1 to 0 at
+//! |θ − θ_v| = [`WIDTH`], both smoothsteps (value and slope 0 at their ends, 1 and 0 at the top).
+//!
+//! The lift is a map of space, `(θ, z, R) ↦ (θ, z, R·exp(L(θ, z)·c(R)))`, c = 1 up to
+//! [`INNER`] times the largest radius it lifts a point to and falling smoothly to 0 at
+//! [`REACH`] times that: L and its gradient vanish on both silhouette planes (the borders with
+//! the primitives' own charts, whose tangent planes it keeps), and every vertex of the mesh in
+//! its reach — the strip's, a lid's beside it, another region's that comes near — is moved by
+//! it (`Envelope::chart_mesh`), so the surface stays closed and tangent-continuous across every
+//! border the map crosses. Where several lifts reach one vertex (about a lid's corner), their
+//! displacements are weighted by the fourth power of their lengths.
 
 use super::{Axial, Chart, Frame};
 use crate::analysis::face_grid::FaceGrid;
@@ -77,7 +82,21 @@ pub struct Lift {
     ey: DVec3,
     length: f64,
     bumps: Vec<Bump>,
+    /// The lift is whole up to this distance from the axis and fades out by [`Lift::outer`]
+    /// (`REACH` times it), so that it moves the strip and the regions beside it and leaves
+    /// far parts of the surface where they are.
+    inner: f64,
 }
+
+/// A point over a lid is held by a strip's lift only this share of the strip's length or
+/// more from its ends (nearer, where the strips about a lid's corner meet, the lid's raise).
+const LID_CORNER: f64 = 0.3;
+
+/// A lift is whole up to this multiple of the largest radius it lifts a point to.
+const INNER: f64 = 1.25;
+
+/// How far past [`Lift::inner`], as a multiple of it, a lift fades out.
+const REACH: f64 = 2.5;
 
 /// The `SMOOTH_MAX`-norm of non-negative terms.
 fn smooth_max(terms: impl Iterator<Item = f64>) -> f64 {
@@ -122,15 +141,37 @@ impl Lift {
         }))
     }
 
-    /// The lifted point of x.
+    /// The distance from the axis by which the lift has faded out.
+    fn outer(&self) -> f64 {
+        REACH * self.inner
+    }
+
+    /// The lifted point of x: `R ↦ R·exp(L(θ, z)·c(R))`, c = 1 up to [`Lift::inner`] and
+    /// falling smoothly to 0 at [`Lift::outer`].
     pub fn apply(&self, x: DVec3) -> DVec3 {
         let (theta, z, r) = self.cylindrical(x);
-        let l = self.at(theta, z);
-        if l == 0.0 || r <= 0.0 {
+        if r <= 0.0 || r >= self.outer() {
+            return x;
+        }
+        let fade = 1.0 - smoothstep((r - self.inner) / (self.outer() - self.inner));
+        let l = self.at(theta, z) * fade;
+        if l == 0.0 {
             return x;
         }
         let radial = x - self.a - z * self.d;
         x + radial * (l.exp() - 1.0)
+    }
+
+    /// The middle of its axis between the two centres.
+    pub fn midpoint(&self) -> DVec3 {
+        self.a + 0.5 * self.length * self.d
+    }
+
+    /// A box that holds every point the lift moves.
+    pub fn bounds(&self) -> (DVec3, DVec3) {
+        let (p, q) = (self.a, self.a + self.length * self.d);
+        let pad = DVec3::splat(self.outer());
+        (p.min(q) - pad, p.max(q) + pad)
     }
 
     /// Whether the lift moves nothing.
@@ -169,6 +210,40 @@ fn strip_value(charts: &[&Chart], x: DVec3) -> Option<f64> {
         let inside = ch.sides.iter().all(|s| s.coords(c).1 >= -1e-12 * s.length);
         inside.then(|| ch.value(c))
     })
+}
+
+/// Where the ray from `base` on a strip's axis through x meets the lid of chart `lid`, as a
+/// distance from `base` (bisection: the ray starts under the lid, on the hull edge); none where
+/// x's foot is not over the lid's domain or the ray does not leave the lid's underside.
+fn lid_value(lid: &Chart, base: DVec3, x: DVec3) -> Option<f64> {
+    let (c, _) = lid.frame.chart(x)?;
+    if lid.sides.iter().any(|s| s.coords(c).1 < 0.0) {
+        return None;
+    }
+    let dir = (x - base).normalize_or_zero();
+    let above = |rho: f64| -> Option<f64> {
+        let (c, h) = lid.frame.chart(base + rho * dir)?;
+        Some(h - lid.value(c))
+    };
+    let (mut lo, mut hi) = (0.0, base.distance(x));
+    if above(lo)? >= 0.0 {
+        return None;
+    }
+    while above(hi)? < 0.0 {
+        hi *= 2.0;
+        if hi > 1e3 * base.distance(x) {
+            return None;
+        }
+    }
+    for _ in 0..48 {
+        let mid = 0.5 * (lo + hi);
+        if above(mid)? < 0.0 {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    Some(0.5 * (lo + hi))
 }
 
 /// The strips' lifts and the regions' raises that hold the primitives ([`lifts`], [`raises`]),
@@ -251,26 +326,27 @@ fn lifts(
             ey,
             length,
             bumps: Vec::new(),
+            inner: 0.0,
         };
-        // The angles of the fusion edges where the strip meets a lid: no term reaches them.
-        let ends: Vec<f64> = net
+        // The lids the strip ends at, with the angle of the fusion edge it meets each along: a
+        // point over a lid less than half a term's width past that edge is held by the lift too
+        // (one smooth map across the edge), not by a steep raise of the lid beside its side.
+        let lids: Vec<(f64, &Chart)> = net
             .regions
             .iter()
-            .filter(|r| matches!(r.kind, RegionKind::Lid { .. }))
-            .flat_map(|r| r.sides.iter())
-            .filter(|s| net.curves[s.curve].kind == CurveKind::Fusion)
-            .filter(|s| {
-                quads
-                    .iter()
-                    .any(|ch| ch.pieces.iter().flatten().any(|p| p.curve == s.curve))
-            })
-            .map(|s| {
-                let x = net.curves[s.curve].bezier.eval(0.5);
-                lift.cylindrical(x).0
+            .enumerate()
+            .filter(|(_, r)| matches!(r.kind, RegionKind::Lid { .. }))
+            .filter_map(|(k, r)| {
+                let s = r.sides.iter().find(|s| {
+                    net.curves[s.curve].kind == CurveKind::Fusion
+                        && quads
+                            .iter()
+                            .any(|ch| ch.pieces.iter().flatten().any(|p| p.curve == s.curve))
+                })?;
+                let end = lift.cylindrical(net.curves[s.curve].bezier.eval(0.5)).0;
+                Some((end, charts.iter().find(|ch| ch.region == k)?))
             })
             .collect();
-        // The strip's own two primitives' parts beyond its silhouette planes, and any other
-        // primitive's part that sticks out of its own regions into the strip's reach.
         // Another primitive is met only if its sphere comes within reach of the strip: between
         // its silhouette planes and less than [`RAISE_REACH`] above twice its corners' radii.
         let widest = quads
@@ -306,31 +382,32 @@ fn lifts(
                 if !(z > 0.0 && z < length) || r <= 0.0 {
                     continue;
                 }
-                let Some(r0) = strip_value(&quads, x) else {
+                let Some(r0) = strip_value(&quads, x).or_else(|| {
+                    lids.iter()
+                        .filter(|(end, _)| {
+                            angle_between(theta, *end).abs() < 0.5 * WIDTH
+                                && z.min(length - z) > LID_CORNER * length
+                        })
+                        .find_map(|(_, lid)| lid_value(lid, lift.a + z * lift.d, x))
+                }) else {
                     continue;
                 };
-                let width = ends
-                    .iter()
-                    .map(|&e| angle_between(theta, e).abs())
-                    .fold(WIDTH, f64::min);
                 // Another primitive's point far above the strip lies beyond another part of the
                 // surface, not under this one.
-                if width <= 1e-9 || (!own && r > r0 * (1.0 + RAISE_REACH)) {
+                if !own && r > r0 * (1.0 + RAISE_REACH) {
                     continue;
                 }
-                // A term this narrow is steep: the regions beside raise it too.
-                if width >= 0.25 * WIDTH {
-                    held[i][k] = true;
-                }
+                held[i][k] = true;
                 // A point under the strip by more than [`TRIGGER`] is left as it lies.
                 if r * (1.0 + TRIGGER) <= r0 {
                     continue;
                 }
+                lift.inner = lift.inner.max(INNER * r * (1.0 + MARGIN));
                 lift.bumps.push(Bump {
                     theta,
                     z,
                     lambda: (r * (1.0 + MARGIN) / r0).ln(),
-                    width,
+                    width: WIDTH,
                 });
             }
         }
