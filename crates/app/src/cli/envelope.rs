@@ -37,7 +37,8 @@ pub struct EnvelopeArgs {
     #[arg(long, value_parser = ["charts", "paper"])]
     pub patches: Option<String>,
     /// What holds the corners the silhouette plane through each centre cuts off: `lifted`
-    /// (the fusion strips raised over them: every primitive inside) or `paper` (the paper's
+    /// (the fusion strips, and the lids beside them, raised over them; the quality line names any
+    /// primitive still out) or `paper` (the paper's
     /// central cut as it lies, for the teaching gallery; default: the scene's, else lifted).
     /// The charts only.
     #[arg(long, value_parser = ["lifted", "paper"])]

@@ -419,7 +419,7 @@ fn lifts(
 }
 
 /// A raise of one primitive's or lid's region over the points that no strip's lift holds: a
-/// corner past the partner's centre plane (primitives overlapping deeply), one beside a lid, a
+/// corner past the partner's centre plane (primitives overlapping deeply), one near a lid's corner, a
 /// swallowed primitive's. On the region's chart, `h′(c) = h(c) +` the [`smooth_max`] of the `λ_v·B_v(c)`,
 /// `B_v(c) = Π_i smoothstep(min(1, δ_i(c)/δ_i(c_v)))`, δ_i the distance from the domain's side i:
 /// 1 at the point's own chart point c_v and, with its gradient, 0 on every side of the domain —

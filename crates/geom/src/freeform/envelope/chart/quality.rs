@@ -322,7 +322,7 @@ impl Quality {
             names.push(format!("and {} more", out.len() - 8));
         }
         Some(format!(
-            "{} primitive(s) not wholly inside the surface: {}; primitive {worst} reaches {:.3} r outside (a corner cut off by the silhouette plane through a centre, seed 004 §5.1, that no strip's lift or raise reaches: past the partner's centre plane, beside a lid, or with the paper's cut: envelope.md, \"Enclosure\"); primitives further apart or a t nearer 1 usually clear it",
+            "{} primitive(s) not wholly inside the surface: {}; primitive {worst} reaches {:.3} r outside (a corner cut off by the silhouette plane through a centre, seed 004 §5.1, that no strip's lift or raise reaches: past the partner's centre plane, near a lid's corner, or with the paper's cut: envelope.md, \"Enclosure\"); primitives further apart or a t nearer 1 usually clear it",
             out.len(),
             names.join(", "),
             -m
