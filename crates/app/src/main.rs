@@ -29,7 +29,7 @@ fn end_quietly_on_broken_pipes() {
 fn main() -> ExitCode {
     #[cfg(unix)]
     end_quietly_on_broken_pipes();
-    let args = match cli::Cli::try_parse() {
+    let args = match cli::Cli::try_parse_from(cli::with_negative_values(std::env::args_os())) {
         Ok(a) => a,
         Err(e) => {
             let code = if e.use_stderr() { 2 } else { 0 };

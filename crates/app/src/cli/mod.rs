@@ -6,12 +6,14 @@ mod curve_plot;
 mod envelope;
 pub(crate) mod level_lines;
 mod limit;
+mod negative;
 mod new;
 mod render;
 mod skin;
 pub(crate) mod subdivide;
 
 use clap::{Parser, Subcommand};
+pub use negative::joined as with_negative_values;
 
 /// Prism — interactive polyhedral subdivision: chamfer and round the edges of solids.
 #[derive(Debug, Parser)]
@@ -45,7 +47,6 @@ pub struct Cli {
     pub screenshot: Option<std::path::PathBuf>,
 }
 
-/// "0-1,4-5" as edges.
 /// Encodes `img` as PNG and writes it through a temporary file (`render`'s pictures and
 /// `curve`'s plots).
 pub(crate) fn write_png(img: image::DynamicImage, path: &std::path::Path) -> Result<(), CliError> {
