@@ -34,6 +34,28 @@ fn write_png(buf: Vec<u8>, w: u32, h: u32, path: &Path) -> Result<(), CliError> 
 }
 
 /// The range of `v` with a margin, never empty.
+/// Pixels along the top of the curve's plot kept free for its legend (three rows).
+const LEGEND_BAND: f64 = 80.0;
+
+/// The x and y ranges of a plot `pw` × `ph` pixels with one scale on both axes, holding the box
+/// `lo`–`hi` (and 4 % round it) centred below the top [`LEGEND_BAND`] pixels.
+fn equal_scales(
+    pw: f64,
+    ph: f64,
+    lo: glam::DVec2,
+    hi: glam::DVec2,
+) -> (std::ops::Range<f64>, std::ops::Range<f64>) {
+    let below_legend = (ph - LEGEND_BAND).max(0.5 * ph);
+    let c = 0.5 * (lo + hi);
+    let half = 0.5 * (hi - lo).max_element().max(1e-9) * 1.08;
+    let px = pw.min(below_legend) / (2.0 * half);
+    let y0 = c.y - below_legend / (2.0 * px);
+    (
+        (c.x - pw / (2.0 * px))..(c.x + pw / (2.0 * px)),
+        y0..(y0 + ph / px),
+    )
+}
+
 fn padded(lo: f64, hi: f64) -> std::ops::Range<f64> {
     let span = (hi - lo).abs().max(1e-9);
     (lo - 0.05 * span)..(hi + 0.05 * span)
@@ -90,15 +112,19 @@ pub fn curve_plot(
             clo = clo.min((*t).into());
             chi = chi.max((*t).into());
         }
-        // Equal scales on both axes: a square box around the curve and its comb.
-        let c = 0.5 * (clo + chi);
-        let half = 0.5 * (chi - clo).max_element().max(1e-9) * 1.08;
-        let mut chart = ChartBuilder::on(&left)
-            .caption(title, (FONT, 20))
-            .margin(12)
-            .x_label_area_size(28)
-            .y_label_area_size(40)
-            .build_cartesian_2d((c.x - half)..(c.x + half), (c.y - half)..(c.y + half))
+        // Equal scales on both axes in pixels, the curve and its comb in a square box below
+        // a band kept free for the legend.
+        let area = left.titled(title, (FONT, 20)).map_err(draw_error)?;
+        let (margin, x_labels, y_labels) = (12, 28, 40);
+        let (aw, ah) = area.dim_in_pixel();
+        let pw = f64::from(aw.saturating_sub(2 * margin + y_labels).max(1));
+        let ph = f64::from(ah.saturating_sub(2 * margin + x_labels).max(1));
+        let (xs, ys) = equal_scales(pw, ph, clo, chi);
+        let mut chart = ChartBuilder::on(&area)
+            .margin(margin)
+            .x_label_area_size(x_labels)
+            .y_label_area_size(y_labels)
+            .build_cartesian_2d(xs, ys)
             .map_err(draw_error)?;
         chart
             .configure_mesh()
@@ -143,6 +169,7 @@ pub fn curve_plot(
             .legend(|(x, y)| PathElement::new([(x, y), (x + 18, y)], RGBColor(30, 90, 180)));
         chart
             .configure_series_labels()
+            .position(SeriesLabelPosition::UpperLeft)
             .label_font((FONT, 13))
             .background_style(WHITE.mix(0.8))
             .border_style(BLACK)
@@ -327,4 +354,28 @@ pub fn study_plot(
         root.present().map_err(draw_error)?;
     }
     write_png(buf, w, h, path)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use glam::DVec2;
+
+    /// One unit is as many pixels across as up, and the box lies inside, under the legend's
+    /// band, for boxes wider and taller than the plot.
+    #[test]
+    fn a_circle_is_drawn_round_and_clear_of_the_legend() {
+        let (pw, ph) = (536.0, 448.0);
+        for (lo, hi) in [
+            (DVec2::new(-1.0, -1.0), DVec2::new(1.0, 1.0)),
+            (DVec2::new(0.0, 0.0), DVec2::new(10.0, 1.0)),
+            (DVec2::new(2.0, -5.0), DVec2::new(3.0, 5.0)),
+        ] {
+            let (xs, ys) = equal_scales(pw, ph, lo, hi);
+            let (sx, sy) = (pw / (xs.end - xs.start), ph / (ys.end - ys.start));
+            assert!((sx / sy - 1.0).abs() < 1e-12, "{sx} {sy}");
+            assert!(xs.start <= lo.x && hi.x <= xs.end && ys.start <= lo.y);
+            assert!(hi.y <= ys.end - LEGEND_BAND / sy, "{lo} {hi}");
+        }
+    }
 }
