@@ -213,7 +213,7 @@ fn strip_value(charts: &[&Chart], x: DVec3) -> Option<f64> {
 }
 
 /// Where the ray from `base` on a strip's axis through x meets the lid of chart `lid`, as a
-/// distance from `base` (bisection: the ray starts under the lid, on the hull edge); none where
+/// distance from `base` (the ray starts under the lid, on the hull edge); none where
 /// x's foot is not over the lid's domain or the ray does not leave the lid's underside.
 fn lid_value(lid: &Chart, base: DVec3, x: DVec3) -> Option<f64> {
     let (c, _) = lid.frame.chart(x)?;
@@ -235,15 +235,31 @@ fn lid_value(lid: &Chart, base: DVec3, x: DVec3) -> Option<f64> {
             return None;
         }
     }
-    for _ in 0..48 {
-        let mid = 0.5 * (lo + hi);
-        if above(mid)? < 0.0 {
-            lo = mid;
+    // Regula falsi with the Illinois step (the stale end's value halved), to 10⁻¹² of the
+    // bracket: a few steps where bisection took 48.
+    let (mut flo, mut fhi) = (above(lo)?, above(hi)?);
+    let mut side = 0;
+    for _ in 0..64 {
+        let mid = (lo * fhi - hi * flo) / (fhi - flo);
+        let fm = above(mid)?;
+        if fm < 0.0 {
+            (lo, flo) = (mid, fm);
+            if side == -1 {
+                fhi *= 0.5;
+            }
+            side = -1;
         } else {
-            hi = mid;
+            (hi, fhi) = (mid, fm);
+            if side == 1 {
+                flo *= 0.5;
+            }
+            side = 1;
+        }
+        if hi - lo <= 1e-12 * hi || fm == 0.0 {
+            break;
         }
     }
-    Some(0.5 * (lo + hi))
+    Some(if flo.abs() < fhi.abs() { lo } else { hi })
 }
 
 /// The strips' lifts and the regions' raises that hold the primitives ([`lifts`], [`raises`]),
