@@ -33,7 +33,6 @@ fn write_png(buf: Vec<u8>, w: u32, h: u32, path: &Path) -> Result<(), CliError> 
     super::write_png(img.into(), path)
 }
 
-/// The range of `v` with a margin, never empty.
 /// Pixels along the top of the curve's plot kept free for its legend (three rows).
 const LEGEND_BAND: f64 = 80.0;
 
@@ -56,6 +55,7 @@ fn equal_scales(
     )
 }
 
+/// The range of `v` with a margin, never empty.
 fn padded(lo: f64, hi: f64) -> std::ops::Range<f64> {
     let span = (hi - lo).abs().max(1e-9);
     (lo - 0.05 * span)..(hi + 0.05 * span)

@@ -62,8 +62,6 @@ fn casteljau(q: &mut [DVec4], t: f64) -> DVec4 {
     q.first().copied().unwrap_or(DVec4::ZERO)
 }
 
-/// The hodograph (control points of the derivative, `n Δ`) of the polynomial 4D Bézier curve
-/// `p`, into `out` (one point fewer).
 /// A homogeneous cubic at t, by its Bernstein polynomials.
 fn cubic_point(h: &[DVec4; 4], t: f64) -> DVec4 {
     let s = 1.0 - t;
@@ -76,6 +74,8 @@ fn cubic_first(h: &[DVec4; 4], t: f64) -> DVec4 {
     3.0 * ((h[1] - h[0]) * (s * s) + (h[2] - h[1]) * (2.0 * s * t) + (h[3] - h[2]) * (t * t))
 }
 
+/// The hodograph (control points of the derivative, `n Δ`) of the polynomial 4D Bézier curve
+/// `p`, into `out` (one point fewer).
 fn hodograph(p: &[DVec4], out: &mut [DVec4]) {
     let n = (p.len() - 1) as f64;
     for (o, w) in out.iter_mut().zip(p.windows(2)) {

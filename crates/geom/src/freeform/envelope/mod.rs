@@ -360,6 +360,7 @@ impl Envelope {
         if self.lifts.is_empty() && self.raises.is_empty() {
             return;
         }
+        let bounds: Vec<(DVec3, DVec3)> = self.lifts.iter().map(|l| l.bounds()).collect();
         let moved: Vec<DVec3> = mesh
             .positions
             .par_iter()
@@ -367,8 +368,7 @@ impl Envelope {
                 // Where several lifts reach a point (near a lid's corner), their displacements
                 // weighted by |d|⁴: the largest leads, smoothly, and they do not pile up.
                 let (mut num, mut den) = (DVec3::ZERO, 0.0);
-                for l in &self.lifts {
-                    let (lo, hi) = l.bounds();
+                for (l, &(lo, hi)) in self.lifts.iter().zip(&bounds) {
                     if x.cmpge(lo).all() && x.cmple(hi).all() {
                         let d = l.apply(x) - x;
                         let w = d.length_squared().powi(2);

@@ -162,11 +162,6 @@ impl Lift {
         x + radial * (l.exp() - 1.0)
     }
 
-    /// The middle of its axis between the two centres.
-    pub fn midpoint(&self) -> DVec3 {
-        self.a + 0.5 * self.length * self.d
-    }
-
     /// A box that holds every point the lift moves.
     pub fn bounds(&self) -> (DVec3, DVec3) {
         let (p, q) = (self.a, self.a + self.length * self.d);
@@ -226,18 +221,20 @@ fn lid_value(lid: &Chart, base: DVec3, x: DVec3) -> Option<f64> {
         Some(h - lid.value(c))
     };
     let (mut lo, mut hi) = (0.0, base.distance(x));
-    if above(lo)? >= 0.0 {
+    let mut flo = above(lo)?;
+    if flo >= 0.0 {
         return None;
     }
-    while above(hi)? < 0.0 {
+    let mut fhi = above(hi)?;
+    while fhi < 0.0 {
         hi *= 2.0;
         if hi > 1e3 * base.distance(x) {
             return None;
         }
+        fhi = above(hi)?;
     }
     // Regula falsi with the Illinois step (the stale end's value halved), to 10⁻¹² of the
     // bracket: a few steps where bisection took 48.
-    let (mut flo, mut fhi) = (above(lo)?, above(hi)?);
     let mut side = 0;
     for _ in 0..64 {
         let mid = (lo * fhi - hi * flo) / (fhi - flo);

@@ -36,12 +36,6 @@ pub enum Normals {
 }
 
 impl Normals {
-    /// The unit normal along `curve` at τ.
-    pub fn at(&self, curve: &RationalBezier, tau: f64) -> DVec3 {
-        let (point, d1) = curve.point_and_tangent(tau);
-        self.at_point(point, d1, tau)
-    }
-
     /// The unit normal at τ where the curve's point and first derivative are `point` and `d1`.
     pub fn at_point(&self, point: DVec3, d1: DVec3, tau: f64) -> DVec3 {
         let t = d1.normalize_or_zero();
