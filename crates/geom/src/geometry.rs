@@ -269,6 +269,40 @@ pub fn signed_volume(mesh: &PolyMesh) -> f64 {
         / 6.0
 }
 
+/// The distance from q to the triangle (a, b, c), its inside and its edges.
+pub fn point_triangle_distance(q: DVec3, a: DVec3, b: DVec3, c: DVec3) -> f64 {
+    // Ericson, Real-Time Collision Detection §5.1.5.
+    let (ab, ac, ap) = (b - a, c - a, q - a);
+    let (d1, d2) = (ab.dot(ap), ac.dot(ap));
+    if d1 <= 0.0 && d2 <= 0.0 {
+        return q.distance(a);
+    }
+    let bp = q - b;
+    let (d3, d4) = (ab.dot(bp), ac.dot(bp));
+    if d3 >= 0.0 && d4 <= d3 {
+        return q.distance(b);
+    }
+    let vc = d1 * d4 - d3 * d2;
+    if vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0 {
+        return q.distance(a + ab * (d1 / (d1 - d3)));
+    }
+    let cp = q - c;
+    let (d5, d6) = (ab.dot(cp), ac.dot(cp));
+    if d6 >= 0.0 && d5 <= d6 {
+        return q.distance(c);
+    }
+    let vb = d5 * d2 - d1 * d6;
+    if vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0 {
+        return q.distance(a + ac * (d2 / (d2 - d6)));
+    }
+    let va = d3 * d6 - d5 * d4;
+    if va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0 {
+        return q.distance(b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6))));
+    }
+    let den = 1.0 / (va + vb + vc);
+    q.distance(a + ab * (vb * den) + ac * (vc * den))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -90,7 +90,7 @@ fn one_cube_lies_between_the_cube_and_its_sphere() {
         if t == 1.0 {
             for c in &e.network.curves {
                 for k in 0..=50 {
-                    let p = c.bezier.eval(k as f64 / 50.0);
+                    let p = e.frame.to_world(c.bezier.eval(k as f64 / 50.0));
                     assert!((p.length() - 1.0).abs() < 1e-12);
                 }
             }
@@ -108,7 +108,7 @@ fn one_cube_lies_between_the_cube_and_its_sphere() {
         let c = e
             .patches
             .iter()
-            .map(|p| p.coons.eval(0.5, 0.5))
+            .map(|p| e.frame.to_world(p.coons.eval(0.5, 0.5)))
             .find(|p| p.x > 0.5)
             .unwrap();
         let inside = 1.0 - c.length();
@@ -273,7 +273,9 @@ fn the_primitive_is_enclosed() {
                 let c = face.iter().map(|&v| p.vertices[v]).sum::<DVec3>() / face.len() as f64;
                 for &v in face {
                     for s in [0.0, 0.5, 0.9] {
-                        let q = c.lerp(p.vertices[v], s) * (1.0 - 1e-3);
+                        let q = e
+                            .frame
+                            .to_world(p.centre.lerp(c.lerp(p.vertices[v], s), 1.0 - 1e-3));
                         let w = winding(&m, q);
                         assert!(w > 0.5, "{shape:?} t = {t}: {q} has winding {w}");
                     }
@@ -477,9 +479,9 @@ fn two_aligned_cubes_fuse_by_translation() {
             for i in 0..=8 {
                 let u = i as f64 / 8.0;
                 // The fusion quad runs along d from A's loop (v = 0) to B's (v = 1).
-                let base = p.coons.eval(u, 0.0);
+                let base = e.frame.to_world(p.coons.eval(u, 0.0));
                 for j in 0..=8 {
-                    let q = p.coons.eval(u, j as f64 / 8.0);
+                    let q = e.frame.to_world(p.coons.eval(u, j as f64 / 8.0));
                     assert!((q - base).cross(DVec3::X).length() < 1e-12, "t = {t}: {q}");
                     if t == 1.0 {
                         let r = (q.y * q.y + q.z * q.z).sqrt();
@@ -516,7 +518,9 @@ fn two_diagonal_cubes_are_closed_outward_and_g1() {
                     let c = face.iter().map(|&v| p.vertices[v]).sum::<DVec3>() / face.len() as f64;
                     for &v in face {
                         for s in [0.0, 0.5, 0.9] {
-                            let q = p.centre + (c.lerp(p.vertices[v], s) - p.centre) * (1.0 - 1e-3);
+                            let q = e.frame.to_world(
+                                p.centre + (c.lerp(p.vertices[v], s) - p.centre) * (1.0 - 1e-3),
+                            );
                             let w = winding(&m, q);
                             assert!(w > 0.5, "{q} has winding {w}");
                         }

@@ -7,7 +7,7 @@ mod common;
 use common::off_surface;
 use common::spec;
 use prism_geom::analysis::winding_number;
-use prism_geom::freeform::envelope::chart::quality::{Quality, quality};
+use prism_geom::freeform::envelope::chart::quality::Quality;
 use prism_geom::freeform::envelope::folds::crossings;
 use prism_geom::freeform::envelope::{
     Envelope, EnvelopeSpec, Placement, Primitive, PrimitiveInput, Shape, envelope,
@@ -77,7 +77,7 @@ fn inward(e: &Envelope, m: &PolyMesh, regions: &[u32]) -> usize {
             let n = (c[1] - c[0]).cross(c[2] - c[0]);
             let ch = &e.charts[regions[f] as usize];
             ch.frame
-                .chart((c[0] + c[1] + c[2]) / 3.0)
+                .chart(e.frame.to_local((c[0] + c[1] + c[2]) / 3.0))
                 .is_none_or(|(x, _)| n.dot(ch.frame.direction(x)) <= 0.0)
         })
         .count()
@@ -162,7 +162,7 @@ fn the_surface_does_not_depend_on_the_listing() {
             let a = envelope(&cut(&prims, t)).unwrap();
             let b = envelope(&cut(&again, t)).unwrap();
             let (m, _) = a.chart_mesh(4).unwrap();
-            let size = a.edge_length;
+            let size = a.edge_length * a.frame.scale;
             for x in &m.positions {
                 let d = off_surface(&b, *x);
                 assert!(d < 1e-8 * size, "heap {seed} at t = {t}: {x} is {d} off");
@@ -190,7 +190,7 @@ fn two_aligned_cubes_at_t_1_give_a_cylinder_between_spheres() {
     for (f, &region) in regions.iter().enumerate() {
         let kind = e.network.regions[region as usize].kind;
         for c in m.face_corners(f) {
-            let x = m.positions[m.corner_verts[c] as usize];
+            let x = e.frame.to_local(m.positions[m.corner_verts[c] as usize]);
             let off = match kind {
                 prism_geom::freeform::envelope::network::RegionKind::Primitive {
                     primitive,
@@ -218,7 +218,7 @@ fn the_mesh_normal_gap_falls_like_one_over_k() {
             let e = envelope(&spec(vec![shape.placed(&Placement::default())], t)).unwrap();
             let gap = |k: usize| {
                 let (m, regions) = e.chart_mesh(k).unwrap();
-                quality(&m, &regions, &e.charts, &e.primitives).border_gap
+                e.quality_of(&m, &regions).border_gap
             };
             let (coarse, fine) = (gap(8), gap(64));
             assert!(
@@ -333,11 +333,13 @@ fn every_primitive_of_a_pair_is_enclosed_at_every_t() {
     assert!(poked > 10, "{poked}");
 }
 
-/// Where a primitive sits and how large it is do not decide whether it is valid: every
-/// primitive of the seven-primitive scene, moved by 1e6 or 1e8 or scaled by 1e-100 or 1e100, is
-/// accepted with its centre and radius moved and scaled (its checks run about its centre in
-/// units of its radius). And the scene scaled by 1e-100 builds the surface of the scene as
-/// given, scaled (every mesh vertex, mapped back, within 1e-6 of the scene's size of it).
+/// Where a primitive sits and how large it is decide neither whether it is valid nor the
+/// surface: every primitive of the seven-primitive scene, moved by 1e6 or 1e8 or scaled by
+/// 1e-100 or 1e100, is accepted with its centre and radius moved and scaled (its checks run
+/// about its centre in units of its radius); and the scene so moved or scaled builds the
+/// surface of the scene as given, moved and scaled (the envelope is built about the scene's
+/// centre in units of its size: every mesh vertex, mapped back, within 1e-6 of the scene's size
+/// of a vertex of the scene's own mesh, and the other way).
 #[test]
 fn where_a_primitive_sits_and_its_size_do_not_decide_its_validity() {
     let text = std::fs::read_to_string(
@@ -369,20 +371,55 @@ fn where_a_primitive_sits_and_its_size_do_not_decide_its_validity() {
             assert!((b.radius / scale - a.radius).abs() < 1e-6 * a.radius);
         }
     }
+    let charts_only = |s: EnvelopeSpec| EnvelopeSpec {
+        enclosure: prism_geom::freeform::envelope::Enclosure::Paper,
+        ..s
+    };
     let reference = envelope(&base).unwrap();
+    let cut = envelope(&charts_only(base.clone())).unwrap();
     let size = {
         let (m, _) = reference.chart_mesh(4).unwrap();
         let (lo, hi) = m.bbox();
         (hi - lo).length()
     };
-    let small = envelope(&moved(0.0, 1e-100)).unwrap();
-    let (m, _) = small.chart_mesh(4).unwrap();
-    let worst = m
-        .positions
-        .iter()
-        .map(|p| off_surface(&reference, *p / 1e-100))
-        .fold(0.0, f64::max);
-    assert!(worst <= 1e-6 * size, "{worst:e}");
+    for (shift, scale) in [(1e6, 1.0), (1e8, 1.0), (0.0, 1e-100), (0.0, 1e100)] {
+        let what = format!("moved by {shift:e}, scaled by {scale:e}");
+        let e = envelope(&moved(shift, scale)).unwrap_or_else(|e| panic!("{what}: {e}"));
+        let back = |p: DVec3| (p - DVec3::splat(shift)) / scale;
+        // The network, vertex by vertex; the same lifts and raises.
+        assert_eq!(
+            e.network.vertices.len(),
+            reference.network.vertices.len(),
+            "{what}"
+        );
+        for (a, b) in e.network.vertices.iter().zip(&reference.network.vertices) {
+            let (a, b) = (
+                back(e.frame.to_world(a.position)),
+                reference.frame.to_world(b.position),
+            );
+            assert!(
+                a.distance(b) < 1e-7 * size,
+                "{what}: network vertex {a} for {b}"
+            );
+        }
+        assert_eq!(
+            (e.lifts.len(), e.raises.len()),
+            (reference.lifts.len(), reference.raises.len()),
+            "{what}"
+        );
+        // The charts' surface: every vertex of the mesh (lifts left out), mapped back, on the
+        // reference's charts.
+        let (m, _) = envelope(&charts_only(moved(shift, scale)))
+            .unwrap()
+            .chart_mesh(4)
+            .unwrap();
+        let off = m
+            .positions
+            .iter()
+            .map(|&p| off_surface(&cut, back(p)))
+            .fold(0.0, f64::max);
+        assert!(off < 1e-7 * size, "{what}: {off:e} off");
+    }
 }
 
 /// Heaps of 2 to 6 primitives keep their primitives inside where the paper's central cut leaves

@@ -143,7 +143,7 @@ fn three_cubes_in_an_l() {
             for s in &r.sides {
                 for i in 0..=8 {
                     let tau = s.t0 + (s.t1 - s.t0) * i as f64 / 8.0;
-                    let q = net.curves[s.curve].bezier.eval(tau);
+                    let q = e.frame.to_world(net.curves[s.curve].bezier.eval(tau));
                     let d = from_triangle(q);
                     assert!((d - 3f64.sqrt()).abs() < 1e-12, "{q}: {d}");
                     between += 1;
@@ -210,7 +210,7 @@ fn swallowed_primitives_are_removed() {
             let p = &e.primitives[1];
             p.vertices
                 .iter()
-                .filter(|&&x| winding(m, p.centre.lerp(x, 1.0 - 1e-4)) < 0.5)
+                .filter(|&&x| winding(m, e.frame.to_world(p.centre.lerp(x, 1.0 - 1e-4))) < 0.5)
                 .count()
         };
         if poked(&bare.tessellate(16).unwrap()) == 0 {

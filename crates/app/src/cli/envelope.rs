@@ -87,7 +87,7 @@ fn curves_obj(e: &Envelope, segments: usize) -> String {
         };
         let _ = writeln!(out, "# curve {i}: {kind}");
         for j in 0..=segments {
-            let p = c.bezier.eval(j as f64 / segments as f64);
+            let p = e.frame.to_world(c.bezier.eval(j as f64 / segments as f64));
             let _ = writeln!(out, "v {} {} {}", p.x, p.y, p.z);
         }
         let ids: Vec<String> = (base..=base + segments).map(|k| k.to_string()).collect();

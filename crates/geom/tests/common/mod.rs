@@ -43,20 +43,22 @@ pub fn cubes_on_a_sphere(
 /// holds it): the surface itself, not a mesh of it.
 #[allow(dead_code)] // not every test crate that includes this module uses it
 pub fn off_surface(e: &prism_geom::freeform::envelope::Envelope, x: DVec3) -> f64 {
-    e.charts
-        .iter()
-        .filter_map(|ch| {
-            let (c, h) = ch.frame.chart(x)?;
-            let inside = ch.sides.iter().all(|s| s.coords(c).1 >= -1e-9 * s.length);
-            inside.then(|| (ch.value(c) - h).abs() * ch.frame.direction(c).length())
-        })
-        .fold(f64::INFINITY, f64::min)
+    let x = e.frame.to_local(x);
+    e.frame.scale
+        * e.charts
+            .iter()
+            .filter_map(|ch| {
+                let (c, h) = ch.frame.chart(x)?;
+                let inside = ch.sides.iter().all(|s| s.coords(c).1 >= -1e-9 * s.length);
+                inside.then(|| (ch.value(c) - h).abs() * ch.frame.direction(c).length())
+            })
+            .fold(f64::INFINITY, f64::min)
 }
 
 /// Points of every kept primitive's faces — each face's centre moved the `shares` of the way
 /// to its corners — on the kept side of the planes through the primitive's centre towards
 /// every other kept primitive (a part of what the envelope's construction keeps), pulled the
-/// share `pull` towards the centre.
+/// share `pull` towards the centre; in the scene's coordinates.
 #[allow(dead_code)] // not every test crate that includes this module uses it
 pub fn kept_points(
     e: &prism_geom::freeform::envelope::Envelope,
@@ -83,7 +85,7 @@ pub fn kept_points(
                         .iter()
                         .all(|d| (x - p.centre).dot(*d) <= -1e-9 * p.radius)
                     {
-                        out.push(p.centre + (x - p.centre) * (1.0 - pull));
+                        out.push(e.frame.to_world(p.centre + (x - p.centre) * (1.0 - pull)));
                     }
                 }
             }

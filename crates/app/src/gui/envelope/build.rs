@@ -126,6 +126,7 @@ impl Built {
                 let points = f
                     .iter()
                     .filter_map(|c| e.patches.get(c.patch).map(|p| p.coons.eval(c.u, c.v)))
+                    .map(|x| e.frame.to_world(x))
                     .collect();
                 (e.fold_warning(&f).map(|w| (f.len(), w)), points)
             }
@@ -254,12 +255,16 @@ pub fn scenes(
                 .curves
                 .iter()
                 .filter(|c| c.kind == kind)
-                .flat_map(|c| sampled(|u| c.bezier.eval(u), 24))
+                .flat_map(|c| sampled(|u| e.frame.to_world(c.bezier.eval(u)), 24))
                 .collect();
             overlay.add_segments(&segs, color);
         }
         if o.straight {
-            let segs: Vec<(DVec3, DVec3)> = e.straight.iter().map(|s| (s[0], s[1])).collect();
+            let segs: Vec<(DVec3, DVec3)> = e
+                .straight
+                .iter()
+                .map(|s| (e.frame.to_world(s[0]), e.frame.to_world(s[1])))
+                .collect();
             overlay.add_segments(&segs, STRAIGHT);
         }
     }

@@ -206,9 +206,14 @@ impl EnvelopeTab {
                     .on_hover_text("The paper cuts every primitive by the plane through its centre normal to each partner; these keep nothing (seed 004 §5.1.3). A primitive inside a larger one's sphere whose shape lies inside the others' envelope is left out too: the strip between them would fold");
                 }
                 if let Some(p) = e.primitives.get(self.selected) {
+                    let c = e.frame.to_world(p.centre);
                     ui.label(format!(
                         "primitive {}: centre ({:.3}, {:.3}, {:.3}), sphere radius r = {:.4}",
-                        self.selected, p.centre.x, p.centre.y, p.centre.z, p.radius
+                        self.selected,
+                        c.x,
+                        c.y,
+                        c.z,
+                        p.radius * e.frame.scale
                     ));
                 }
                 ui.label(format!(

@@ -27,6 +27,7 @@ mod facet;
 pub mod folds;
 pub mod fusion;
 pub mod hull;
+pub mod local;
 pub mod nested;
 pub mod network;
 pub mod patches;
@@ -37,6 +38,7 @@ mod wrap;
 mod report;
 mod spec;
 
+pub use local::LocalFrame;
 pub use network::{CurveKind, Network};
 pub use patches::EnvelopePatch;
 pub use primitive::{Placement, Primitive, PrimitiveInput, Shape};
@@ -49,9 +51,13 @@ use rayon::prelude::*;
 use std::collections::HashMap;
 
 /// The envelope: checked primitives, the curve network (with the insertion curves of the
-/// n-sided split) and the patches.
+/// n-sided split) and the patches, all in the local coordinates of [`Envelope::frame`]; its
+/// meshes ([`Envelope::mesh`], [`Envelope::tessellate`], [`Envelope::chart_mesh`]) are in the
+/// scene's.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Envelope {
+    /// Where the local coordinates lie in the scene's ([`local`]).
+    pub frame: LocalFrame,
     pub primitives: Vec<Primitive>,
     pub network: Network,
     /// Faces of the network before the n-sided split.
@@ -75,7 +81,7 @@ pub struct Envelope {
     pub lifts: Vec<chart::lift::Lift>,
     /// The primitives' and lids' regions raised over the points no lift holds (likewise).
     pub raises: Vec<chart::lift::Raise>,
-    /// The mesh spacing for resolution 1: the mean length of the primitives' edges.
+    /// The mesh spacing for resolution 1: the mean length of the primitives' edges (local).
     pub edge_length: f64,
 }
 
@@ -90,8 +96,25 @@ fn ccw(d: DVec3, from: DVec3, to: DVec3) -> f64 {
         .rem_euclid(std::f64::consts::TAU)
 }
 
-/// Builds the envelope of a scene.
+/// Builds the envelope of a scene, in the local coordinates of [`LocalFrame::of`] its
+/// primitives.
 pub fn envelope(spec: &EnvelopeSpec) -> Result<Envelope, EnvelopeError> {
+    let frame = LocalFrame::of(&spec.primitives);
+    let local = EnvelopeSpec {
+        primitives: spec
+            .primitives
+            .iter()
+            .map(|p| frame.input_to_local(p))
+            .collect(),
+        ..spec.clone()
+    };
+    let mut e = envelope_here(&local)?;
+    e.frame = frame;
+    Ok(e)
+}
+
+/// The envelope of a scene in its own coordinates (the identity frame).
+fn envelope_here(spec: &EnvelopeSpec) -> Result<Envelope, EnvelopeError> {
     if !(spec.t.is_finite() && spec.t > 0.0) {
         return Err(EnvelopeError::BadT {
             what: "the scene".into(),
@@ -266,6 +289,7 @@ fn assemble(
             Enclosure::Paper => (Vec::new(), Vec::new()),
         };
         return Ok(Envelope {
+            frame: LocalFrame::IDENTITY,
             primitives,
             network,
             regions,
@@ -284,6 +308,7 @@ fn assemble(
     let patches = patches::build(&mut network, &primitives);
     let folded = folds::folds(&network, &patches, folds::FOLD_CELLS);
     Ok(Envelope {
+        frame: LocalFrame::IDENTITY,
         primitives,
         network,
         regions,
@@ -313,13 +338,41 @@ fn non_finite_face(mesh: &PolyMesh) -> Option<usize> {
 }
 
 impl Envelope {
-    /// The welded tessellation, `k` × `k` quads a patch.
+    /// The welded tessellation, `k` × `k` quads a patch (the charts' mesh at resolution `k`),
+    /// in the scene's coordinates.
     pub fn tessellate(&self, k: usize) -> Result<PolyMesh, EnvelopeError> {
+        self.local_tessellation(k).map(|m| self.to_world(m))
+    }
+
+    /// A mesh in local coordinates moved to the scene's.
+    fn to_world(&self, mut mesh: PolyMesh) -> PolyMesh {
+        if self.frame != LocalFrame::IDENTITY {
+            for p in &mut mesh.positions {
+                *p = self.frame.to_world(*p);
+            }
+        }
+        mesh
+    }
+
+    /// A mesh in the scene's coordinates moved to local ones.
+    pub(crate) fn to_local<'a>(&self, mesh: &'a PolyMesh) -> std::borrow::Cow<'a, PolyMesh> {
+        if self.frame == LocalFrame::IDENTITY {
+            return std::borrow::Cow::Borrowed(mesh);
+        }
+        let mut m = mesh.clone();
+        for p in &mut m.positions {
+            *p = self.frame.to_local(*p);
+        }
+        std::borrow::Cow::Owned(m)
+    }
+
+    /// [`Envelope::tessellate`] in local coordinates.
+    fn local_tessellation(&self, k: usize) -> Result<PolyMesh, EnvelopeError> {
         if k == 0 || k > 256 {
             return Err(EnvelopeError::Resolution(k));
         }
         if self.surfacing == Surfacing::Charts {
-            return self.chart_mesh(k).map(|(m, _)| m);
+            return self.local_chart_mesh(k).map(|(m, _)| m);
         }
         let mesh = tessellate::tessellate(&self.network, &self.patches, k);
         // Never a mesh with a point that is not finite: the patch it came from is named (each
@@ -333,8 +386,13 @@ impl Envelope {
     }
 
     /// The charts' mesh at resolution `k` (about k segments along a primitive's edge) and the
-    /// region of each triangle.
+    /// region of each triangle, in the scene's coordinates.
     pub fn chart_mesh(&self, k: usize) -> Result<(PolyMesh, Vec<u32>), EnvelopeError> {
+        self.local_chart_mesh(k).map(|(m, r)| (self.to_world(m), r))
+    }
+
+    /// [`Envelope::chart_mesh`] in local coordinates.
+    fn local_chart_mesh(&self, k: usize) -> Result<(PolyMesh, Vec<u32>), EnvelopeError> {
         if k == 0 || k > 256 {
             return Err(EnvelopeError::Resolution(k));
         }
@@ -401,12 +459,17 @@ impl Envelope {
     }
 
     /// The tessellation at resolution `k` and the region of each face: the charts' triangles,
-    /// or the paper's patches (k × k faces a patch, in order).
+    /// or the paper's patches (k × k faces a patch, in order); in the scene's coordinates.
     pub fn mesh(&self, k: usize) -> Result<(PolyMesh, Vec<u32>), EnvelopeError> {
+        self.local_mesh(k).map(|(m, r)| (self.to_world(m), r))
+    }
+
+    /// [`Envelope::mesh`] in local coordinates.
+    pub(crate) fn local_mesh(&self, k: usize) -> Result<(PolyMesh, Vec<u32>), EnvelopeError> {
         if self.surfacing == Surfacing::Charts {
-            return self.chart_mesh(k);
+            return self.local_chart_mesh(k);
         }
-        let mesh = self.tessellate(k)?;
+        let mesh = self.local_tessellation(k)?;
         let regions = (0..mesh.num_faces())
             .map(|f| self.patches.get(f / (k * k)).map_or(0, |p| p.region) as u32)
             .collect();
@@ -423,7 +486,7 @@ impl Envelope {
         }
         let k0 = k.min(8);
         let (v0, t0) = self
-            .chart_mesh(k0 as usize)
+            .local_chart_mesh(k0 as usize)
             .map(|(m, _)| (m.num_vertices() as u64, m.num_faces() as u64))
             .unwrap_or((0, 0));
         let scale = |x: u64| (x * k * k / (k0 * k0)) * 5 / 4 + 64;

@@ -8,6 +8,11 @@ impl Envelope {
     /// paper build's polygons are measured as fans, a triangle counted inward when it faces
     /// its primitive's centre or the segment between a fusion strip's two centres.
     pub fn quality_of(&self, mesh: &PolyMesh, regions: &[u32]) -> chart::quality::Quality {
+        self.local_quality_of(&self.to_local(mesh), regions)
+    }
+
+    /// [`Envelope::quality_of`] a mesh in local coordinates.
+    fn local_quality_of(&self, mesh: &PolyMesh, regions: &[u32]) -> chart::quality::Quality {
         if self.surfacing == Surfacing::Charts {
             return chart::quality::quality(mesh, regions, &self.charts, &self.primitives);
         }
@@ -40,9 +45,9 @@ impl Envelope {
 
     /// The tessellation at resolution `k` and its quality report.
     pub fn quality(&self, k: usize) -> Result<(PolyMesh, chart::quality::Quality), EnvelopeError> {
-        let (mesh, regions) = self.mesh(k)?;
-        let q = self.quality_of(&mesh, &regions);
-        Ok((mesh, q))
+        let (mesh, regions) = self.local_mesh(k)?;
+        let q = self.local_quality_of(&mesh, &regions);
+        Ok((self.to_world(mesh), q))
     }
 
     /// The number of surface pieces: patches, or one chart a region.
