@@ -22,6 +22,12 @@ impl Progress {
         self.total.store(total, Ordering::Relaxed);
     }
 
+    /// Starts a stage of `total` units, none done (the bar shows the stage under way).
+    pub fn restart(&self, total: u64) {
+        self.done.store(0, Ordering::Relaxed);
+        self.total.store(total, Ordering::Relaxed);
+    }
+
     /// Adds `units` done.
     pub fn add(&self, units: u64) {
         self.done.fetch_add(units, Ordering::Relaxed);

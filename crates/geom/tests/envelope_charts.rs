@@ -10,7 +10,7 @@ use prism_geom::analysis::winding_number;
 use prism_geom::freeform::envelope::chart::quality::Quality;
 use prism_geom::freeform::envelope::folds::crossings;
 use prism_geom::freeform::envelope::{
-    Envelope, EnvelopeSpec, Placement, Primitive, PrimitiveInput, Shape, envelope,
+    Envelope, EnvelopeError, EnvelopeSpec, Placement, Primitive, PrimitiveInput, Shape, envelope,
 };
 use prism_geom::{DVec3, PolyMesh, Topology};
 
@@ -457,4 +457,17 @@ fn heaps_keep_their_primitives_inside_but_near_a_lids_corner() {
         );
         assert!(cut >= cut_least, "t = {t}: the central cut leaves {cut}");
     }
+}
+
+/// A mesh whose progress is cancelled stops with `Cancelled`; a whole one counts every chart
+/// and is the mesh as built without progress (the Envelope tab's progress bar and Cancel).
+#[test]
+fn a_cancelled_mesh_stops_and_a_whole_one_counts_every_chart() {
+    let e = envelope(&spec(vec![Shape::Cube.placed(&Placement::default())], 0.5)).unwrap();
+    let progress = prism_geom::progress::Progress::default();
+    let whole = e.mesh_with(8, &progress).unwrap();
+    assert_eq!(progress.fraction(), 1.0);
+    assert_eq!(whole, e.mesh(8).unwrap());
+    progress.cancel();
+    assert_eq!(e.mesh_with(8, &progress), Err(EnvelopeError::Cancelled));
 }

@@ -625,3 +625,19 @@ proptest::proptest! {
         proptest::prop_assert!(d64.0 <= d16.0 / 3.0, "{counts:?}: borders {:.2}° → {:.2}°", d16.0, d64.0);
     }
 }
+
+/// A tessellation whose progress is cancelled stops with `Cancelled`; a whole one counts every
+/// row (the Skin tab's progress bar and Cancel).
+#[test]
+fn a_cancelled_tessellation_stops_and_a_whole_one_counts_every_row() {
+    let s = skin(&spout()).unwrap();
+    let progress = prism_geom::progress::Progress::default();
+    let whole = s.tessellate_with(8, true, &progress).unwrap();
+    assert_eq!(progress.fraction(), 1.0);
+    assert_eq!(whole, s.tessellate(8, true).unwrap());
+    progress.cancel();
+    assert_eq!(
+        s.tessellate_with(8, true, &progress),
+        Err(SkinError::Cancelled)
+    );
+}

@@ -308,3 +308,50 @@ fn values_outside_the_sliders_are_kept() {
     settle(&mut h);
     assert_eq!(h.state().doc.state().skin.as_ref(), Some(&skin));
 }
+
+/// A long build shows its progress and stops at Cancel: the view keeps the last surface, the
+/// tab says so and does not build the cancelled scene again until asked (Build).
+#[test]
+fn a_long_build_shows_its_progress_and_stops_at_cancel() {
+    let mut h = in_tab("Envelope");
+    h.get_by_label("Tetrahedron").click();
+    settle(&mut h);
+    let small = scene(&h).expect("a scene");
+    // The seven primitives at resolution 160 (about 3.4 M triangles): seconds of meshing,
+    // within a budget that lets it start.
+    h.state_mut().envelope.budget = 16 << 30;
+    let text = std::fs::read_to_string(
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("../../assets/table2-seven.envelope.json"),
+    )
+    .unwrap();
+    let mut big: prism_geom::freeform::envelope::EnvelopeSpec =
+        serde_json::from_str(&text).unwrap();
+    big.resolution = 160;
+    h.state_mut().run(Command::Edit(Edit::SetEnvelope {
+        spec: Some(big.clone()),
+        gesture: None,
+    }));
+    for _ in 0..5 {
+        h.step();
+    }
+    assert!(h.state().envelope.building());
+    h.get_by_label_contains("Building…");
+    h.get_by_label("Cancel").click();
+    for _ in 0..5 {
+        h.step();
+    }
+    assert!(!h.state().envelope.building(), "stopped");
+    h.get_by_label_contains("Cancelled: the view shows the last one built");
+    let b = h.state().envelope.built().expect("the last build");
+    assert_eq!(b.spec, small, "the last surface kept");
+    assert_eq!(scene(&h), Some(big), "the document keeps the scene");
+    // Build asks again.
+    h.get_by_label("Build").click();
+    h.step();
+    h.step();
+    assert!(h.state().envelope.building());
+    h.get_by_label("Cancel").click();
+    h.step();
+    assert!(!h.state().envelope.building());
+}

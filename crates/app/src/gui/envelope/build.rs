@@ -8,6 +8,7 @@ use crate::gui::view3d::{Look, framing, overlay_for, sampled, view_bytes, within
 use glam::DVec3;
 use prism_geom::freeform::envelope::chart::quality::Quality;
 use prism_geom::freeform::envelope::{CurveKind, Envelope, EnvelopeSpec, envelope};
+use prism_geom::progress::Progress;
 use prism_geom::{EdgeAttrs, PolyMesh, memory};
 use prism_viewport::Scene;
 use std::sync::Arc;
@@ -86,15 +87,21 @@ pub enum Crossings {
 
 impl Built {
     /// The tab's build (on its worker thread): [`Built::new`] with the crossing check.
-    pub fn checked((spec, budget): &(EnvelopeSpec, u64)) -> Built {
-        Built::new(spec, *budget, true)
+    pub fn checked((spec, budget): &(EnvelopeSpec, u64), progress: &Progress) -> Built {
+        Built::new(spec, *budget, true, progress)
     }
 
     /// The envelope of `spec`, its folds, and — when `check_crossings` (the view the summary
     /// describes; the t sweep's views show no summary) — a crossing check started on a
     /// thread. A mesh that with its checks and the view's copy would take more than `budget`
-    /// bytes is refused before it is built.
-    pub fn new(spec: &EnvelopeSpec, budget: u64, check_crossings: bool) -> Built {
+    /// bytes is refused before it is built. The mesh counts its charts in `progress` and stops
+    /// when it is cancelled.
+    pub fn new(
+        spec: &EnvelopeSpec,
+        budget: u64,
+        check_crossings: bool,
+        progress: &Progress,
+    ) -> Built {
         let construction = spec.construction_bytes();
         let (what, knob) = ("this envelope", "a smaller resolution or fewer primitives");
         let start = Instant::now();
@@ -112,7 +119,9 @@ impl Built {
                 "this envelope",
                 "a smaller resolution or fewer primitives",
             )?;
-            let (m, r) = e.mesh(spec.resolution).map_err(|e| e.to_string())?;
+            let (m, r) = e
+                .mesh_with(spec.resolution, progress)
+                .map_err(|e| e.to_string())?;
             regions = r;
             Ok((e, m))
         });

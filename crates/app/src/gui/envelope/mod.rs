@@ -107,10 +107,13 @@ struct SweepView {
 }
 
 /// The sweep's builds of `spec` at each t of [`SWEEP`] (on the worker thread).
-fn sweep_builds((spec, budget): &(EnvelopeSpec, u64)) -> (EnvelopeSpec, Vec<Built>) {
+fn sweep_builds(
+    (spec, budget): &(EnvelopeSpec, u64),
+    progress: &prism_geom::progress::Progress,
+) -> (EnvelopeSpec, Vec<Built>) {
     let builds = SWEEP
         .iter()
-        .map(|&t| Built::new(&with_uniform_t(spec, t), *budget, false))
+        .map(|&t| Built::new(&with_uniform_t(spec, t), *budget, false, progress))
         .collect();
     (spec.clone(), builds)
 }

@@ -3,7 +3,7 @@
 //! options.
 
 use super::*;
-use std::time::Duration;
+use crate::gui::latest;
 
 impl EnvelopeTab {
     /// The tab's side panel: the library or a bundled scene when there is none; else the
@@ -176,18 +176,15 @@ impl EnvelopeTab {
         });
     }
 
-    fn summary(&self, ui: &mut egui::Ui) {
+    fn summary(&mut self, ui: &mut egui::Ui) {
+        let shown = self.built.is_some();
+        if self.sweep {
+            latest::progress_row(ui, &mut self.sweeps, !self.sweep_views.is_empty());
+        }
+        latest::progress_row(ui, &mut self.builds, shown);
         let Some(b) = &self.built else {
-            if self.building() {
-                ui.label(egui::RichText::new("Building…").weak());
-                ui.ctx().request_repaint_after(Duration::from_millis(30));
-            }
             return;
         };
-        if self.building() {
-            ui.label(egui::RichText::new("Building… (the last surface is shown)").weak());
-            ui.ctx().request_repaint_after(Duration::from_millis(30));
-        }
         match &b.result {
             Ok((e, m)) => {
                 ui.label(format!(

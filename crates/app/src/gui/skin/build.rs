@@ -9,6 +9,7 @@ use glam::DVec3;
 use prism_geom::freeform::skin::SkinCrossings;
 use prism_geom::freeform::spline;
 use prism_geom::freeform::{Skin, SkinSpec};
+use prism_geom::progress::Progress;
 use prism_geom::{EdgeAttrs, PolyMesh, memory};
 use prism_viewport::Scene;
 use std::sync::Arc;
@@ -131,8 +132,8 @@ impl Built {
 
     /// The skin of `spec` within `budget` bytes (on the tab's worker thread): the patches,
     /// then — when their mesh, its crossing check and the view's buffers fit the budget — the
-    /// mesh.
-    pub fn new((spec, budget): &(SkinSpec, u64)) -> Built {
+    /// mesh, counting its rows in `progress` and stopping when it is cancelled.
+    pub fn new((spec, budget): &(SkinSpec, u64), progress: &Progress) -> Built {
         let start = Instant::now();
         let result = spec.build().map_err(|e| e.to_string()).and_then(|s| {
             let counts =
@@ -142,7 +143,7 @@ impl Built {
                 + view_bytes(&counts);
             within_budget(need, *budget, "this skin", "a smaller resolution")?;
             let m = s
-                .tessellate(spec.resolution, spec.caps)
+                .tessellate_with(spec.resolution, spec.caps, progress)
                 .map_err(|e| e.to_string())?;
             Ok((s, m))
         });

@@ -109,16 +109,8 @@ impl SkinTab {
         self.built.as_ref()
     }
 
-    fn summary(&self, ui: &mut egui::Ui) {
-        if self.builds.busy() {
-            let text = match self.built {
-                Some(_) => "Building… (the last skin is shown)",
-                None => "Building…",
-            };
-            ui.label(egui::RichText::new(text).weak());
-            ui.ctx()
-                .request_repaint_after(std::time::Duration::from_millis(30));
-        }
+    fn summary(&mut self, ui: &mut egui::Ui) {
+        super::latest::progress_row(ui, &mut self.builds, self.built.is_some());
         let Some(b) = &self.built else { return };
         match &b.result {
             Ok((s, m)) => {

@@ -45,6 +45,7 @@ pub use primitive::{Placement, Primitive, PrimitiveInput, Shape};
 pub use spec::{Enclosure, EnvelopeError, EnvelopeSpec, Surfacing};
 
 use crate::mesh::PolyMesh;
+use crate::progress::Progress;
 use glam::DVec3;
 use network::{PatchSide, Region, RegionKind};
 use rayon::prelude::*;
@@ -341,7 +342,8 @@ impl Envelope {
     /// The welded tessellation, `k` × `k` quads a patch (the charts' mesh at resolution `k`),
     /// in the scene's coordinates.
     pub fn tessellate(&self, k: usize) -> Result<PolyMesh, EnvelopeError> {
-        self.local_tessellation(k).map(|m| self.to_world(m))
+        self.local_tessellation(k, &Progress::default())
+            .map(|m| self.to_world(m))
     }
 
     /// A mesh in local coordinates moved to the scene's.
@@ -367,13 +369,14 @@ impl Envelope {
     }
 
     /// [`Envelope::tessellate`] in local coordinates.
-    fn local_tessellation(&self, k: usize) -> Result<PolyMesh, EnvelopeError> {
+    fn local_tessellation(&self, k: usize, progress: &Progress) -> Result<PolyMesh, EnvelopeError> {
         if k == 0 || k > 256 {
             return Err(EnvelopeError::Resolution(k));
         }
         if self.surfacing == Surfacing::Charts {
-            return self.local_chart_mesh(k).map(|(m, _)| m);
+            return self.local_chart_mesh(k, progress).map(|(m, _)| m);
         }
+        progress.check().map_err(|_| EnvelopeError::Cancelled)?;
         let mesh = tessellate::tessellate(&self.network, &self.patches, k);
         // Never a mesh with a point that is not finite: the patch it came from is named (each
         // patch writes k × k faces in order).
@@ -388,17 +391,22 @@ impl Envelope {
     /// The charts' mesh at resolution `k` (about k segments along a primitive's edge) and the
     /// region of each triangle, in the scene's coordinates.
     pub fn chart_mesh(&self, k: usize) -> Result<(PolyMesh, Vec<u32>), EnvelopeError> {
-        self.local_chart_mesh(k).map(|(m, r)| (self.to_world(m), r))
+        self.local_chart_mesh(k, &Progress::default())
+            .map(|(m, r)| (self.to_world(m), r))
     }
 
-    /// [`Envelope::chart_mesh`] in local coordinates.
-    fn local_chart_mesh(&self, k: usize) -> Result<(PolyMesh, Vec<u32>), EnvelopeError> {
+    /// [`Envelope::chart_mesh`] in local coordinates, a unit of `progress` a chart.
+    fn local_chart_mesh(
+        &self,
+        k: usize,
+        progress: &Progress,
+    ) -> Result<(PolyMesh, Vec<u32>), EnvelopeError> {
         if k == 0 || k > 256 {
             return Err(EnvelopeError::Resolution(k));
         }
         let spacing = self.edge_length / k as f64;
         let (mut mesh, regions) =
-            chart::mesh::tessellate(&self.network, &self.charts, spacing, 64 * k)?;
+            chart::mesh::tessellate(&self.network, &self.charts, spacing, 64 * k, progress)?;
         self.lift(&mut mesh, &regions);
         if let Some(face) = non_finite_face(&mesh) {
             return Err(EnvelopeError::NonFinite {
@@ -461,15 +469,31 @@ impl Envelope {
     /// The tessellation at resolution `k` and the region of each face: the charts' triangles,
     /// or the paper's patches (k × k faces a patch, in order); in the scene's coordinates.
     pub fn mesh(&self, k: usize) -> Result<(PolyMesh, Vec<u32>), EnvelopeError> {
-        self.local_mesh(k).map(|(m, r)| (self.to_world(m), r))
+        self.mesh_with(k, &Progress::default())
     }
 
-    /// [`Envelope::mesh`] in local coordinates.
-    pub(crate) fn local_mesh(&self, k: usize) -> Result<(PolyMesh, Vec<u32>), EnvelopeError> {
+    /// [`Envelope::mesh`], counting its charts done in `progress` and stopping with
+    /// [`EnvelopeError::Cancelled`] at the next chart once it is cancelled (the Envelope tab's
+    /// progress bar and Cancel).
+    pub fn mesh_with(
+        &self,
+        k: usize,
+        progress: &Progress,
+    ) -> Result<(PolyMesh, Vec<u32>), EnvelopeError> {
+        self.local_mesh(k, progress)
+            .map(|(m, r)| (self.to_world(m), r))
+    }
+
+    /// [`Envelope::mesh_with`] in local coordinates.
+    pub(crate) fn local_mesh(
+        &self,
+        k: usize,
+        progress: &Progress,
+    ) -> Result<(PolyMesh, Vec<u32>), EnvelopeError> {
         if self.surfacing == Surfacing::Charts {
-            return self.local_chart_mesh(k);
+            return self.local_chart_mesh(k, progress);
         }
-        let mesh = self.local_tessellation(k)?;
+        let mesh = self.local_tessellation(k, progress)?;
         let regions = (0..mesh.num_faces())
             .map(|f| self.patches.get(f / (k * k)).map_or(0, |p| p.region) as u32)
             .collect();
@@ -486,7 +510,7 @@ impl Envelope {
         }
         let k0 = k.min(8);
         let (v0, t0) = self
-            .local_chart_mesh(k0 as usize)
+            .local_chart_mesh(k0 as usize, &Progress::default())
             .map(|(m, _)| (m.num_vertices() as u64, m.num_faces() as u64))
             .unwrap_or((0, 0));
         let scale = |x: u64| (x * k * k / (k0 * k0)) * 5 / 4 + 64;

@@ -45,7 +45,7 @@ impl Envelope {
 
     /// The tessellation at resolution `k` and its quality report.
     pub fn quality(&self, k: usize) -> Result<(PolyMesh, chart::quality::Quality), EnvelopeError> {
-        let (mesh, regions) = self.local_mesh(k)?;
+        let (mesh, regions) = self.local_mesh(k, &Progress::default())?;
         let q = self.local_quality_of(&mesh, &regions);
         Ok((self.to_world(mesh), q))
     }

@@ -25,6 +25,8 @@ pub enum EnvelopeError {
     NonFinite { patch: usize },
     #[error("region {region} has no chart: {why} (a bug: please report the scene)")]
     Chart { region: usize, why: String },
+    #[error("cancelled")]
+    Cancelled,
 }
 
 /// How the regions of the network are filled (docs/algorithms/envelope.md).

@@ -158,6 +158,8 @@ pub enum SkinError {
     TurnsBack { section: usize, chain: usize },
     #[error("resolution {0} is out of range: 1 to 256 quads a patch side")]
     Resolution(usize),
+    #[error("cancelled")]
+    Cancelled,
 }
 
 /// A polygon turn (degrees) above which an unmarked section point is named by

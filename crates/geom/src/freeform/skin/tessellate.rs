@@ -8,6 +8,7 @@
 
 use super::{Skin, SkinError};
 use crate::mesh::PolyMesh;
+use crate::progress::Progress;
 
 /// Largest number of quads along a patch side.
 pub const MAX_RESOLUTION: usize = 256;
@@ -15,6 +16,18 @@ pub const MAX_RESOLUTION: usize = 256;
 impl Skin {
     /// The skin tessellated at `k` quads a patch side, with or without caps.
     pub fn tessellate(&self, k: usize, caps: bool) -> Result<PolyMesh, SkinError> {
+        self.tessellate_with(k, caps, &Progress::default())
+    }
+
+    /// [`Skin::tessellate`], counting its rows of vertices done in `progress` and stopping with
+    /// [`SkinError::Cancelled`] at the next row once it is cancelled (the Skin tab's progress
+    /// bar and Cancel).
+    pub fn tessellate_with(
+        &self,
+        k: usize,
+        caps: bool,
+        progress: &Progress,
+    ) -> Result<PolyMesh, SkinError> {
         if k == 0 || k > MAX_RESOLUTION {
             return Err(SkinError::Resolution(k));
         }
@@ -23,7 +36,10 @@ impl Skin {
         let rows = (m - 1) * k + 1;
         let cols = n * k;
         let mut positions = Vec::with_capacity(rows * cols);
+        progress.restart(rows as u64);
         for r in 0..rows {
+            progress.check().map_err(|_| SkinError::Cancelled)?;
+            progress.add(1);
             let cell_k = (r / k).min(m - 2);
             let v = (r - cell_k * k) as f64 / k as f64;
             for c in 0..cols {

@@ -20,6 +20,7 @@ use super::Chart;
 use crate::freeform::envelope::EnvelopeError;
 use crate::freeform::envelope::network::Network;
 use crate::mesh::PolyMesh;
+use crate::progress::Progress;
 use glam::{DVec2, DVec3};
 use rayon::prelude::*;
 use spade::{
@@ -355,6 +356,7 @@ pub fn tessellate(
     charts: &[Chart],
     spacing: f64,
     most: usize,
+    progress: &Progress,
 ) -> Result<(PolyMesh, Vec<u32>), EnvelopeError> {
     let mut positions: Vec<DVec3> = net.vertices.iter().map(|v| v.position).collect();
     let mut used = vec![false; net.curves.len()];
@@ -366,9 +368,16 @@ pub fn tessellate(
     let samples = sample_curves(net, &used, spacing, most, &mut positions);
     // The charts are independent once the curves are sampled: triangulated in parallel, then
     // numbered in chart order (the same mesh whatever the number of threads).
+    // One unit of `progress` a chart; a cancel stops the charts not yet begun.
+    progress.restart(charts.len() as u64);
     let parts: Vec<Result<ChartMesh, EnvelopeError>> = charts
         .par_iter()
-        .map(|ch| tessellate_chart(ch, &samples, spacing, &positions))
+        .map(|ch| {
+            progress.check().map_err(|_| EnvelopeError::Cancelled)?;
+            let part = tessellate_chart(ch, &samples, spacing, &positions);
+            progress.add(1);
+            part
+        })
         .collect();
     let mut triangles = Vec::new();
     let mut regions = Vec::new();
