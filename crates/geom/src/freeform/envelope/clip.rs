@@ -46,6 +46,7 @@ use super::edges::{curved_edge, legs_for};
 use super::network::{CurveKind, Network, PatchSide, Region, RegionKind};
 use super::primitive::Primitive;
 use crate::freeform::bezier::RationalBezier;
+use crate::freeform::envelope::tolerances::TOLERANCES;
 use glam::DVec3;
 use std::collections::HashMap;
 
@@ -55,39 +56,27 @@ mod face;
 use curves::{angle, at_direction, hooks, third_cubic};
 use face::{Along, At, Corner, clip_face};
 
-/// Relative tolerance (of r) for "on a cut plane".
-const ON_PLANE: f64 = 1e-9;
+/// [`TOLERANCES`]`.on_plane`.
+const ON_PLANE: f64 = TOLERANCES.on_plane;
 
-/// Corners inside one face closer than about this share of r across it are drawn to one
-/// distance from the centre ([`Clipper::inside_corners`]): of 1,800 mixed heaps 0, 3, 27
-/// fold at t = 0.5, 0.2, 0.1 with it, 0, 4, 28 with 0.02 and 0, 6, 32 with 0.05 (first
-/// measured with the located distance: 2, 6, 39 with it; 6, 16, 44 with the 1/d² weights
-/// alone, 18, 40, 72 with the plain mean; envelope.md, "Corners inside a face").
-const NEAR_INSIDE: f64 = 0.03;
+/// [`TOLERANCES`]`.near_inside`.
+const NEAR_INSIDE: f64 = TOLERANCES.near_inside;
 
-/// Unit directions closer than this are one network vertex.
-const SAME_DIRECTION: f64 = 1e-9;
+/// [`TOLERANCES`]`.same_direction`.
+const SAME_DIRECTION: f64 = TOLERANCES.same_direction;
 
-/// The cell size of the directions' lookup (much larger than [`SAME_DIRECTION`], so that a
-/// lookup meets one or two cells a side).
-const DIRECTION_CELL: f64 = 1e-6;
+/// [`TOLERANCES`]`.direction_cell`.
+const DIRECTION_CELL: f64 = TOLERANCES.direction_cell;
 
 fn direction_cell(u: DVec3) -> [i64; 3] {
     (u / DIRECTION_CELL).floor().as_i64vec3().to_array()
 }
 
-/// A §6.3 piece whose leg at either end is shorter than this share of its chord is treated as
-/// hooked: such a curve is nearly straight but spends most of its parameter at the short leg's
-/// end (weights like 1, 71, 0.25, 1), and the patches on it fold (envelope.md, "Nearly hooked
-/// pieces"). An arc normal to two radii of equal length has legs of at least a third of its
-/// chord, so t = 1 never meets it.
-const NEAR_HOOK: f64 = 0.15;
+/// [`TOLERANCES`]`.near_hook`.
+const NEAR_HOOK: f64 = TOLERANCES.near_hook;
 
-/// The same for a kept piece of a primitive's edge rebuilt between a corner and a silhouette
-/// point; a larger share reaches the pieces of two diagonal cubes at t = 0.1, from each corner
-/// to the middle of its edge, whose legs are short but whose cubic would bulge past the curved
-/// edges beside them (envelope.md, "Nearly hooked pieces").
-const NEAR_HOOK_EDGE: f64 = 0.05;
+/// [`TOLERANCES`]`.near_hook_edge`.
+const NEAR_HOOK_EDGE: f64 = TOLERANCES.near_hook_edge;
 
 /// A point located on the curved primitive.
 #[derive(Debug, Clone, Copy)]

@@ -28,22 +28,18 @@
 use super::edges::legs_for;
 use super::network::{CurveKind, Network, PatchSide, Region, RegionKind};
 use crate::freeform::bezier::RationalBezier;
+use crate::freeform::envelope::tolerances::TOLERANCES;
 use glam::DVec3;
 use std::f64::consts::{PI, TAU};
 
-/// Angles closer than this (radians) are one.
-const SAME_ANGLE: f64 = 1e-9;
+/// [`TOLERANCES`]`.same_angle`.
+const SAME_ANGLE: f64 = TOLERANCES.same_angle;
 
-/// A point of one section and one of the other whose angles are closer than this (radians),
-/// each the other's nearest with nothing between, are a vertex pair as they are for the
-/// paper's patches: inserting a T-point for each would leave a fusion quad this thin between
-/// them (envelope.md, "Nearly equal angles"). The charts pair equal angles only (0), so that
-/// every fusion edge lies in a half-plane through the axis.
-pub const NEAR_ANGLE: f64 = 0.02;
+/// [`TOLERANCES`]`.near_angle`.
+pub const NEAR_ANGLE: f64 = TOLERANCES.near_angle;
 
-/// How far (radians) a chain's end may lie from its ray (rounding only: both are where the
-/// same two cuts cross).
-const END_ANGLE: f64 = 1e-7;
+/// [`TOLERANCES`]`.end_angle`.
+const END_ANGLE: f64 = TOLERANCES.end_angle;
 
 /// The frame of polar angles about d.
 fn frame(d: DVec3) -> (DVec3, DVec3) {

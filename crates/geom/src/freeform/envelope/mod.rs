@@ -33,6 +33,7 @@ pub mod network;
 pub mod patches;
 pub mod primitive;
 pub mod tessellate;
+pub mod tolerances;
 mod wrap;
 
 mod report;
@@ -43,6 +44,7 @@ pub use network::{CurveKind, Network};
 pub use patches::EnvelopePatch;
 pub use primitive::{Placement, Primitive, PrimitiveInput, Shape};
 pub use spec::{Enclosure, EnvelopeError, EnvelopeSpec, Surfacing};
+pub use tolerances::{TOLERANCES, Tolerances};
 
 use crate::mesh::PolyMesh;
 use crate::progress::Progress;
@@ -86,9 +88,8 @@ pub struct Envelope {
     pub edge_length: f64,
 }
 
-/// A primitive whose centre lies within this share of its sphere's radius of the hull of the
-/// others' centres is swallowed (hull.rs): its part would be a sliver.
-const SWALLOW: f64 = 0.1;
+/// [`TOLERANCES`]`.swallow`.
+const SWALLOW: f64 = TOLERANCES.swallow;
 
 /// The signed angle (0 to 2π) from `from` to `to` about unit `d`, counter-clockwise.
 fn ccw(d: DVec3, from: DVec3, to: DVec3) -> f64 {

@@ -22,14 +22,13 @@
 
 use super::{Envelope, EnvelopeSpec, Primitive, assemble};
 use crate::analysis::Inside;
+use crate::freeform::envelope::tolerances::TOLERANCES;
 
-/// Quads along a patch side of the envelope of the others, about which the containment test
-/// asks.
-pub const NESTED_K: usize = 4;
+/// [`TOLERANCES`]`.nested_resolution`.
+pub const NESTED_K: usize = TOLERANCES.nested_resolution;
 
-/// Quads along a patch side of a candidate, whose vertices the containment test asks about:
-/// its corners, its edges' midpoints and the centres of its patches.
-pub const CANDIDATE_K: usize = 2;
+/// [`TOLERANCES`]`.candidate_resolution`.
+pub const CANDIDATE_K: usize = TOLERANCES.candidate_resolution;
 
 /// The primitives (indices, ascending) whose centre lies in a larger one's sphere.
 pub(super) fn candidates(primitives: &[Primitive]) -> Vec<usize> {

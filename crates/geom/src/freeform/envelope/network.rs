@@ -12,6 +12,7 @@
 //! curves meet).
 
 use crate::freeform::bezier::RationalBezier;
+use crate::freeform::envelope::tolerances::TOLERANCES;
 use crate::freeform::skin::Basis;
 use glam::DVec3;
 
@@ -150,14 +151,11 @@ pub(crate) fn perpendicular(n: DVec3, tangent: DVec3) -> DVec3 {
     n.cross(tangent.normalize_or_zero())
 }
 
-/// Legs closer to antiparallel than this (radians) continue each other: rule (a).
-const STRAIGHT: f64 = 1e-9;
+/// [`TOLERANCES`]`.straight_legs`.
+const STRAIGHT: f64 = TOLERANCES.straight_legs;
 
-/// Rule (a) only where the crossing curves leave the curve at a real angle (sine at least
-/// this): a crossing that grazes the curve (a cut passing close to a primitive's edge) would
-/// put g almost along C′, and the cross derivative `k g + h C′` turns parallel to the curve
-/// somewhere along it — a fold inside the patches with both sides agreeing (envelope.md).
-const GRAZING: f64 = 0.5;
+/// [`TOLERANCES`]`.grazing`.
+const GRAZING: f64 = TOLERANCES.grazing;
 
 impl Network {
     /// Adds a vertex.

@@ -30,10 +30,11 @@ use super::coons::{Coons, Side};
 use super::network::{CurveKind, Network, PatchSide, Region, RegionKind};
 use super::primitive::Primitive;
 use crate::freeform::bezier::RationalBezier;
+use crate::freeform::envelope::tolerances::TOLERANCES;
 use glam::DVec3;
 
-/// λ₀ of §11.7 step 5: the least leg an insertion curve leaves P_d with, in units of b_k.
-const LAMBDA_MIN: f64 = 0.25;
+/// [`TOLERANCES`]`.lambda_min`.
+const LAMBDA_MIN: f64 = TOLERANCES.lambda_min;
 
 /// One four-sided patch: its sides in the network and its Coons patch.
 #[derive(Debug, Clone, PartialEq)]

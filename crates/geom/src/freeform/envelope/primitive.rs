@@ -9,13 +9,14 @@
 
 use super::EnvelopeError;
 use crate::analysis::face_grid::FaceGrid;
+use crate::freeform::envelope::tolerances::TOLERANCES;
 use crate::primitives;
 use glam::{DMat3, DVec3};
 use serde::{Deserialize, Serialize};
 use std::collections::HashMap;
 
-/// Relative tolerance (of r) for "on the sphere", "planar face", "convex" and "centre inside".
-pub const TOLERANCE: f64 = 1e-6;
+/// [`TOLERANCES`]`.primitive`.
+pub const TOLERANCE: f64 = TOLERANCES.primitive;
 
 /// A primitive as a scene file lists it.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]

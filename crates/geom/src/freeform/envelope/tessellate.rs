@@ -14,10 +14,12 @@
 
 use super::network::Network;
 use super::patches::EnvelopePatch;
+use crate::freeform::envelope::tolerances::TOLERANCES;
 use crate::mesh::PolyMesh;
 use glam::DVec3;
 
-const SAME: f64 = 1e-12;
+/// [`TOLERANCES`]`.same_parameter`.
+const SAME: f64 = TOLERANCES.same_parameter;
 
 /// Per curve, its mesh vertices by parameter, ascending.
 struct CurveSamples {

@@ -36,30 +36,25 @@ use super::{Axial, Chart, Frame};
 use crate::analysis::face_grid::FaceGrid;
 use crate::freeform::envelope::network::{CurveKind, Network, RegionKind};
 use crate::freeform::envelope::primitive::Primitive;
+use crate::freeform::envelope::tolerances::TOLERANCES;
 use glam::{DVec2, DVec3};
 use rayon::prelude::*;
 use std::f64::consts::PI;
 
-/// A lifted point clears the removed corner by this share of its distance from the axis.
-pub const MARGIN: f64 = 0.05;
+/// [`TOLERANCES`]`.margin`.
+pub const MARGIN: f64 = TOLERANCES.margin;
 
-/// A point less than this share under the surface gets its term too, and is cleared by
-/// [`MARGIN`] (the mesh's chords would otherwise leave it just outside); one further under is
-/// left as it lies. (At 1 % instead of 5 %, 60 generated heaps at K = 8 left points outside in
-/// 8 / 16 / 39 / 47 heaps at t = 1 / 0.5 / 0.2 / 0.1 against 6 / 13 / 34 / 41.)
-pub const TRIGGER: f64 = MARGIN;
+/// [`TOLERANCES`]`.trigger`.
+pub const TRIGGER: f64 = TOLERANCES.trigger;
 
-/// The half-width (radians) of a term's bump about the axis.
-pub const WIDTH: f64 = 0.5;
+/// [`TOLERANCES`]`.width`.
+pub const WIDTH: f64 = TOLERANCES.width;
 
-/// The terms of a lift or raise are joined by their `SMOOTH_MAX`-norm, `(Σ tᵢᵖ)^(1/p)`: at
-/// least the largest term (so each point is held as its own term holds it) and at most
-/// `n^(1/p)` times it, where a sum of many overlapping terms would pile up into wrinkles; C¹
-/// wherever the terms are (each is C¹ and vanishes with its gradient where it ends).
-const SMOOTH_MAX: i32 = 6;
+/// [`TOLERANCES`]`.smooth_max`.
+const SMOOTH_MAX: i32 = TOLERANCES.smooth_max;
 
-/// Points along each edge of a removed part that the lift holds, besides its ends.
-const EDGE_POINTS: usize = 3;
+/// [`TOLERANCES`]`.edge_points`.
+const EDGE_POINTS: usize = TOLERANCES.edge_points;
 
 /// One term of L.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -88,15 +83,14 @@ pub struct Lift {
     inner: f64,
 }
 
-/// A point over a lid is held by a strip's lift only this share of the strip's length or
-/// more from its ends (nearer, where the strips about a lid's corner meet, the lid's raise).
-const LID_CORNER: f64 = 0.3;
+/// [`TOLERANCES`]`.lid_corner`.
+const LID_CORNER: f64 = TOLERANCES.lid_corner;
 
-/// A lift is whole up to this multiple of the largest radius it lifts a point to.
-const INNER: f64 = 1.25;
+/// [`TOLERANCES`]`.lift_inner`.
+const INNER: f64 = TOLERANCES.lift_inner;
 
-/// How far past [`Lift::inner`], as a multiple of it, a lift fades out.
-const REACH: f64 = 2.5;
+/// [`TOLERANCES`]`.lift_reach`.
+const REACH: f64 = TOLERANCES.lift_reach;
 
 /// The `SMOOTH_MAX`-norm of non-negative terms.
 fn smooth_max(terms: impl Iterator<Item = f64>) -> f64 {
@@ -446,8 +440,8 @@ pub struct Raise {
     bumps: Vec<(DVec2, f64)>,
 }
 
-/// A raise reaches points at most this share of the graph's value above it.
-pub const RAISE_REACH: f64 = 0.5;
+/// [`TOLERANCES`]`.raise_reach`.
+pub const RAISE_REACH: f64 = TOLERANCES.raise_reach;
 
 impl Raise {
     /// The [`smooth_max`] of the λ_v B_v at chart point c of `chart` (the chart of [`Raise::region`]).

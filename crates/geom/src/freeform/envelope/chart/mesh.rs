@@ -19,6 +19,7 @@
 use super::Chart;
 use crate::freeform::envelope::EnvelopeError;
 use crate::freeform::envelope::network::Network;
+use crate::freeform::envelope::tolerances::TOLERANCES;
 use crate::mesh::PolyMesh;
 use crate::progress::Progress;
 use glam::{DVec2, DVec3};
@@ -27,18 +28,16 @@ use spade::{
     AngleLimit, ConstrainedDelaunayTriangulation, Point2, RefinementParameters, Triangulation,
 };
 
-/// The refinement's least triangle angle (degrees). Ruppert's algorithm terminates for limits
-/// up to about 20.7°; border segments that meet at a smaller angle keep what they force.
-pub const ANGLE_LIMIT: f64 = 20.0;
+/// [`TOLERANCES`]`.angle_limit`.
+pub const ANGLE_LIMIT: f64 = TOLERANCES.angle_limit;
 
 /// The points of each curve in the mesh: (τ, mesh vertex), ascending in τ.
 pub struct CurveSamples {
     pub params: Vec<Vec<(f64, u32)>>,
 }
 
-/// How fast the mesh spacing may grow away from a short piece: each border segment at most
-/// this many times the one before.
-const GROWTH: f64 = 1.5;
+/// [`TOLERANCES`]`.growth`.
+const GROWTH: f64 = TOLERANCES.growth;
 
 /// Parameters at which a curve piece from τ = a to b is cut: spacing `spacing` in its middle,
 /// growing from `s0` at a and `s1` at b by at most [`GROWTH`] a segment (arc length measured
@@ -151,7 +150,7 @@ pub fn sample_curves(
 impl CurveSamples {
     /// The samples from τ = a to b (a > b: backwards), both ends included.
     fn between(&self, curve: usize, a: f64, b: f64) -> Vec<(f64, u32)> {
-        const SAME: f64 = 1e-12;
+        const SAME: f64 = TOLERANCES.same_parameter;
         let (lo, hi) = (a.min(b), a.max(b));
         let p = &self.params[curve];
         let from = p.partition_point(|&(t, _)| t < lo - SAME);

@@ -41,6 +41,7 @@ pub mod quality;
 pub mod side;
 mod strip;
 
+use crate::freeform::envelope::tolerances::TOLERANCES;
 pub use frame::{Axial, Frame};
 use side::{ChartSide, Normals, Piece, Ribbons};
 use strip::Corner;
@@ -50,9 +51,8 @@ use super::network::{CurveKind, Network, PatchSide, RegionKind};
 use super::primitive::Primitive;
 use glam::{DVec2, DVec3};
 
-/// Chart directions of consecutive sides closer than this (sine) are one straight side (a
-/// T-point, or a curve split where another region's corner lies on it).
-const STRAIGHT: f64 = 1e-7;
+/// [`TOLERANCES`]`.straight_sides`.
+const STRAIGHT: f64 = TOLERANCES.straight_sides;
 
 /// The region's chart: its frame, its convex domain's sides counter-clockwise (seen from
 /// outside), and the region sides along each.
