@@ -460,6 +460,56 @@ fn render_writes_a_picture() {
     assert_eq!(o.status.code(), Some(2));
 }
 
+/// `prism render` draws a curves file (an OBJ of `l` lines, here the envelope's network) alone,
+/// and over a surface with `--lines`; lines and steps together, or a bad line, are refused by
+/// name.
+#[test]
+fn render_draws_a_curves_file_alone_and_over_a_surface() {
+    let (surface, curves) = (tmp("seven-render.obj"), tmp("seven-render-curves.obj"));
+    let o = run_with(
+        "envelope assets/table2-seven.envelope.json -o {} --curves {} --resolution 4",
+        &[&surface, &curves],
+    );
+    assert!(o.status.success(), "{}", text(&o).1);
+    // The network's orange against the background: pixels whose red leads blue by far.
+    let orange = |png: &Path| {
+        let img = image::open(png).unwrap().to_rgb8();
+        img.pixels()
+            .filter(|p| p[0] as i32 - p[2] as i32 > 80)
+            .count()
+    };
+    let alone = tmp("curves-alone.png");
+    let o = run_with("render {} -o {} --size 320x200", &[&curves, &alone]);
+    let (stdout, err) = text(&o);
+    assert!(o.status.success(), "{err}");
+    assert!(stdout.contains("0 triangles and"), "{stdout}");
+    assert!(orange(&alone) > 300, "{}", orange(&alone));
+    let over = tmp("curves-over.png");
+    let o = run_with(
+        "render {} --lines {} -o {} --size 320x200",
+        &[&surface, &curves, &over],
+    );
+    assert!(o.status.success(), "{}", text(&o).1);
+    let bare = tmp("curves-bare.png");
+    let o = run_with("render {} -o {} --size 320x200", &[&surface, &bare]);
+    assert!(o.status.success(), "{}", text(&o).1);
+    assert!(
+        orange(&over) > orange(&bare) + 100,
+        "{} {}",
+        orange(&over),
+        orange(&bare)
+    );
+    // Lines have nothing to subdivide.
+    let o = run_with("render {} -o {} --scheme loop", &[&curves, &alone]);
+    assert_eq!(o.status.code(), Some(2), "{}", text(&o).1);
+    // A line naming a vertex that is not there.
+    let bad = tmp("bad-lines.obj");
+    std::fs::write(&bad, "v 0 0 0\nv 1 0 0\nl 1 3\n").unwrap();
+    let o = run_with("render {} -o {}", &[&bad, &alone]);
+    assert!(!o.status.success());
+    assert!(text(&o).1.contains("line 3"), "{}", text(&o).1);
+}
+
 #[test]
 fn curve_refines_and_round_trips_its_json() {
     let input = tmp("square.json");

@@ -1,7 +1,7 @@
 //! `prism render IN -o OUT.png [--pipeline P | --scheme S --levels N ...] [--shading flat|smooth]
 //! [--wireframe] [--cage] [--color-by uniform|kind|curvature|scheme|flipped|crossings] [--size 1280x800]
 //! [--view iso|front|top|right | --eye X,Y,Z --target X,Y,Z] [--fov DEG] [--frame-vertex N]
-//! [--frames N]`: a headless picture with the viewport's renderer, on any adapter (Mesa's
+//! [--frames N] [--lines CURVES.obj]`: a headless picture with the viewport's renderer, on any adapter (Mesa's
 //! software Vulkan on a machine without a GPU).
 //!
 //! The camera is a named view of the whole model, or a free one (`--eye`, `--target`, in
@@ -10,6 +10,8 @@
 //! sphere of half its shortest edge around the final level's vertex nearest it).
 //! `--frames N` turns the camera once about the vertical through its target and writes
 //! N pictures `OUT-000.png`, `OUT-001.png`, …
+//! `--lines` draws an OBJ's polylines over the surface; an input OBJ of lines and no faces (a
+//! curve network, `prism envelope --curves`) is drawn alone.
 
 use super::CliError;
 use crate::cli::subdivide::steps_from;
@@ -92,6 +94,28 @@ pub struct RenderArgs {
     /// written to OUT-000.png, OUT-001.png, ...
     #[arg(long)]
     pub frames: Option<u32>,
+    /// Polylines to draw over the surface: an OBJ's `l` lines (`prism envelope --curves`);
+    /// an input OBJ of lines and no faces is drawn alone, in the same colour.
+    #[arg(long)]
+    pub lines: Option<PathBuf>,
+}
+
+/// The colour of the polylines.
+const LINES: [f32; 3] = [0.9, 0.3, 0.05];
+
+/// The polylines of OBJ `path`.
+fn read_lines(path: &Path) -> Result<Vec<Vec<DVec3>>, CliError> {
+    let text = std::fs::read_to_string(path)
+        .map_err(|e| CliError::input(format!("cannot read {}: {e}", path.display())))?;
+    prism_geom::io::obj_polylines_from_str(path, &text).map_err(CliError::input)
+}
+
+/// The segments of `lines`.
+fn segments(lines: &[Vec<DVec3>]) -> Vec<(DVec3, DVec3)> {
+    lines
+        .iter()
+        .flat_map(|l| l.windows(2).map(|w| (w[0], w[1])))
+        .collect()
 }
 
 fn parse_point(flag: &str, s: &str) -> Result<DVec3, CliError> {
@@ -141,7 +165,7 @@ fn vertex_neighbourhood(
 fn camera(
     a: &RenderArgs,
     scene: &Scene,
-    input: (&PolyMesh, &Topology),
+    input: Option<(&PolyMesh, &Topology)>,
     last: &PolyMesh,
 ) -> Result<Camera, CliError> {
     if !(1.0..=150.0).contains(&a.fov) {
@@ -171,7 +195,10 @@ fn camera(
     cam.fov_y = fov;
     let (centre, radius, normal) = match a.frame_vertex {
         Some(n) => {
-            let (p, normal, shortest) = vertex_neighbourhood(input.0, input.1, n)?;
+            let (mesh, topo) = input.ok_or_else(|| {
+                CliError::usage(format!("--frame-vertex {n}: the input has no faces"))
+            })?;
+            let (p, normal, shortest) = vertex_neighbourhood(mesh, topo, n)?;
             // The final level's vertex nearest the input vertex: the rounded corner.
             let near = last
                 .positions
@@ -231,7 +258,15 @@ pub fn run(a: RenderArgs) -> Result<(), CliError> {
             "--frames 0: a turntable needs at least one frame",
         ));
     }
+    let over = a.lines.as_deref().map(read_lines).transpose()?;
     let (doc, numbering) = super::load_input(&a.input)?;
+    if doc.mesh.num_faces() == 0 {
+        // An OBJ of lines and no faces (a curve network): drawn alone.
+        let lines = read_lines(&a.input)?;
+        if !lines.is_empty() {
+            return render_lines(&a, (w, h), &lines, over.as_deref());
+        }
+    }
     let topo = Topology::build(&doc.mesh).map_err(|e| {
         CliError::input(format!("{}: {}", a.input.display(), numbering.describe(&e)))
     })?;
@@ -303,10 +338,57 @@ pub fn run(a: RenderArgs) -> Result<(), CliError> {
     if let (true, Some(p)) = (a.cage, prev) {
         scene.add_cage(p, [0.95, 0.75, 0.25]);
     }
+    if let Some(l) = &over {
+        scene.add_segments(&segments(l), LINES);
+    }
     let input = (&pipeline.levels()[0].mesh, &topo);
-    let mut camera = camera(&a, &scene, input, &last.mesh)?;
+    let camera = camera(&a, &scene, Some(input), &last.mesh)?;
+    draw(&a, (w, h), &scene, camera)
+}
+
+/// Polylines alone (and those of `--lines`), framed as the whole model is.
+fn render_lines(
+    a: &RenderArgs,
+    size: (u32, u32),
+    lines: &[Vec<DVec3>],
+    over: Option<&[Vec<DVec3>]>,
+) -> Result<(), CliError> {
+    if a.cage || a.steps.scheme.is_some() || a.steps.pipeline.is_some() {
+        return Err(CliError::usage(format!(
+            "{}: lines and no faces: nothing to subdivide or cage",
+            a.input.display()
+        )));
+    }
+    let mut scene = Scene::plain(&PolyMesh::new());
+    let all: Vec<DVec3> = lines
+        .iter()
+        .chain(over.unwrap_or_default())
+        .flatten()
+        .copied()
+        .collect();
+    let (lo, hi) = all.iter().fold(
+        (DVec3::splat(f64::INFINITY), DVec3::splat(f64::NEG_INFINITY)),
+        |(lo, hi), p| (lo.min(*p), hi.max(*p)),
+    );
+    scene.origin = 0.5 * (lo + hi);
+    scene.bbox = (lo, hi);
+    scene.add_segments(&segments(lines), LINES);
+    if let Some(l) = over {
+        scene.add_segments(&segments(l), LINES);
+    }
+    let camera = camera(a, &scene, None, &PolyMesh::new())?;
+    draw(a, size, &scene, camera)
+}
+
+/// Renders `scene` through `camera` (turned for each frame of a turntable) and writes it.
+fn draw(
+    a: &RenderArgs,
+    (w, h): (u32, u32),
+    scene: &Scene,
+    mut camera: Camera,
+) -> Result<(), CliError> {
     let gpu = Offscreen::new().map_err(CliError::input)?;
-    let uploaded = gpu.upload(&scene).map_err(CliError::input)?;
+    let uploaded = gpu.upload(scene).map_err(CliError::input)?;
     let frames = a.frames.unwrap_or(1);
     let t = std::time::Instant::now();
     for i in 0..frames {
@@ -330,8 +412,9 @@ pub fn run(a: RenderArgs) -> Result<(), CliError> {
         None => a.output.display().to_string(),
     };
     println!(
-        "rendered {} triangles at {w}x{h} in {ms:.1} ms per frame on {} ({:?}); wrote {wrote}",
+        "rendered {} triangles and {} line segments at {w}x{h} in {ms:.1} ms per frame on {} ({:?}); wrote {wrote}",
         scene.triangles(),
+        scene.lines.len() / 2,
         gpu.adapter_info.name,
         gpu.adapter_info.device_type,
     );

@@ -7,6 +7,7 @@ mod document;
 mod export;
 mod inputs;
 mod obj;
+mod obj_lines;
 mod obj_tags;
 mod stl;
 mod validate;
@@ -22,6 +23,7 @@ pub use obj::{
     ObjModel, obj_to_string, read_obj, read_obj_str, read_obj_with, write_obj,
     write_obj_with_normals, write_point_lines,
 };
+pub use obj_lines::polylines_from_str as obj_polylines_from_str;
 pub use validate::validate_model;
 
 pub use crate::numbering::Numbering;
