@@ -510,6 +510,48 @@ fn render_draws_a_curves_file_alone_and_over_a_surface() {
     assert!(text(&o).1.contains("line 3"), "{}", text(&o).1);
 }
 
+/// `--levels-strip`: every level through one camera, the tiles side by side (four a row) in
+/// the output and each level in its own file; the levels differ, the input's tile is the input
+/// drawn alone with the same camera.
+#[test]
+fn render_levels_strip_tiles_every_level_through_one_camera() {
+    let out = tmp("strip.png");
+    let o = run_with(
+        "render assets/tripod.obj -o {} --scheme doo-sabin --levels 4 --levels-strip --size 160x120",
+        &[&out],
+    );
+    let (stdout, err) = text(&o);
+    assert!(o.status.success(), "{err}");
+    assert!(stdout.contains("rendered 5 levels"), "{stdout}");
+    let strip = image::open(&out).unwrap().to_rgb8();
+    assert_eq!(
+        strip.dimensions(),
+        (4 * 160, 2 * 120),
+        "five tiles, four a row"
+    );
+    let frame = |k: usize| {
+        let p = out.with_file_name(format!("strip-L{k}.png"));
+        image::open(&p).unwrap().to_rgb8()
+    };
+    let frames: Vec<_> = (0..5).map(frame).collect();
+    assert!(frames.iter().all(|f| f.dimensions() == (160, 120)));
+    assert_ne!(frames[0], frames[1], "level 1 is not the input");
+    // The input alone, through the same camera as the strip's first tile (framed on it).
+    let alone = tmp("strip-input.png");
+    let o = run_with("render assets/tripod.obj -o {} --size 160x120", &[&alone]);
+    assert!(o.status.success(), "{}", text(&o).1);
+    assert_eq!(image::open(&alone).unwrap().to_rgb8(), frames[0]);
+    // The tile holds the frame (below its label's rows).
+    for (x, y, p) in frames[1].enumerate_pixels().filter(|(_, y, _)| *y >= 40) {
+        assert_eq!(strip.get_pixel(160 + x, y), p);
+    }
+    let o = run_with(
+        "render assets/tripod.obj -o {} --scheme loop --levels-strip --frames 3",
+        &[&out],
+    );
+    assert_eq!(o.status.code(), Some(2), "{}", text(&o).1);
+}
+
 #[test]
 fn curve_refines_and_round_trips_its_json() {
     let input = tmp("square.json");

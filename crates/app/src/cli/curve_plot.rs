@@ -1,27 +1,14 @@
 //! The pictures of `prism curve`, drawn with `plotters` into a buffer and written as PNG:
 //! a refined curve (its control polygon, the curve, its curvature comb) beside its curvature
 //! against arc length; and the §4 study as dimensional stacking (θ₁, θ₂ outer, l₁, l₂ inner).
-//! Text uses the font egui ships (Ubuntu Light), so nothing depends on the system's fonts.
+//! Text uses [`super::font`].
 
 use super::CliError;
+use super::font::{FONT, register_font};
 use plotters::prelude::*;
 use prism_geom::curve::Polyline;
 use prism_geom::curve_study::StudyRow;
 use std::path::Path;
-
-const FONT: &str = "sans-serif";
-
-fn register_font() {
-    static ONCE: std::sync::Once = std::sync::Once::new();
-    ONCE.call_once(|| {
-        // The bytes are a valid TrueType font (egui draws its whole UI with them).
-        let _ = plotters::style::register_font(
-            FONT,
-            FontStyle::Normal,
-            epaint_default_fonts::UBUNTU_LIGHT,
-        );
-    });
-}
 
 fn draw_error(e: impl std::fmt::Display) -> CliError {
     CliError::input(format!("drawing the plot: {e}"))

@@ -1,7 +1,7 @@
 //! `prism render IN -o OUT.png [--pipeline P | --scheme S --levels N ...] [--shading flat|smooth]
 //! [--wireframe] [--cage] [--color-by uniform|kind|curvature|scheme|flipped|crossings] [--size 1280x800]
 //! [--view iso|front|top|right | --eye X,Y,Z --target X,Y,Z] [--fov DEG] [--frame-vertex N]
-//! [--frames N] [--lines CURVES.obj]`: a headless picture with the viewport's renderer, on any adapter (Mesa's
+//! [--frames N | --levels-strip] [--lines CURVES.obj]`: a headless picture with the viewport's renderer, on any adapter (Mesa's
 //! software Vulkan on a machine without a GPU).
 //!
 //! The camera is a named view of the whole model, or a free one (`--eye`, `--target`, in
@@ -11,14 +11,15 @@
 //! `--frames N` turns the camera once about the vertical through its target and writes
 //! N pictures `OUT-000.png`, `OUT-001.png`, …
 //! `--lines` draws an OBJ's polylines over the surface; an input OBJ of lines and no faces (a
-//! curve network, `prism envelope --curves`) is drawn alone.
+//! curve network, `prism envelope --curves`) is drawn alone. `--levels-strip` draws every
+//! level through one camera (`levels_strip.rs`).
 
 use super::CliError;
 use crate::cli::subdivide::steps_from;
 use clap::{Args, ValueEnum};
 use glam::DVec3;
 use prism_geom::geometry::{face_normal_raw, unit_or_zero};
-use prism_geom::{Pipeline, PolyMesh, Topology};
+use prism_geom::{Level, Pipeline, PolyMesh, Topology};
 use prism_viewport::scene::FLIPPED_COLOR;
 use prism_viewport::{Camera, ColorBy, Offscreen, Scene, SceneOptions, Shading, View};
 use std::path::{Path, PathBuf};
@@ -98,6 +99,11 @@ pub struct RenderArgs {
     /// an input OBJ of lines and no faces is drawn alone, in the same colour.
     #[arg(long)]
     pub lines: Option<PathBuf>,
+    /// Every level, level 0 (the input) included, through one camera (framed on the input):
+    /// tiles of --size side by side in OUT.png (four a row, each labelled with its level and
+    /// step) and each level alone in OUT-L0.png, OUT-L1.png, …
+    #[arg(long, conflicts_with_all = ["frames", "cage"])]
+    pub levels_strip: bool,
 }
 
 /// The colour of the polylines.
@@ -319,29 +325,59 @@ pub fn run(a: RenderArgs) -> Result<(), CliError> {
     if matches!(a.color_by, ColorArg::Kind) && !has_kinds {
         eprintln!("note: --color-by kind needs a biquadratic last step; drawing one colour");
     }
-    let mut scene = Scene::of_level(&last, &opts);
-    if matches!(a.color_by, ColorArg::Flipped) {
-        let flipped = last.report.as_ref().map_or(&[][..], |r| &r.flipped[..]);
-        scene.paint_faces(&last.mesh, flipped, FLIPPED_COLOR);
-        println!("{} flipped face(s) drawn in red", flipped.len());
-    }
-    if matches!(a.color_by, ColorArg::Crossings) {
-        let pairs = prism_geom::analysis::crossings(&last.mesh);
-        let faces = prism_geom::analysis::crossing_faces(&pairs);
-        scene.paint_faces(&last.mesh, &faces, FLIPPED_COLOR);
+    // A level's scene: its faces painted as --color-by asks, the --lines over it.
+    let scene_of = |lv: &Level, say: bool| {
+        let mut scene = Scene::of_level(lv, &opts);
+        if matches!(a.color_by, ColorArg::Flipped) {
+            let flipped = lv.report.as_ref().map_or(&[][..], |r| &r.flipped[..]);
+            scene.paint_faces(&lv.mesh, flipped, FLIPPED_COLOR);
+            if say {
+                println!("{} flipped face(s) drawn in red", flipped.len());
+            }
+        }
+        if matches!(a.color_by, ColorArg::Crossings) {
+            let pairs = prism_geom::analysis::crossings(&lv.mesh);
+            let faces = prism_geom::analysis::crossing_faces(&pairs);
+            scene.paint_faces(&lv.mesh, &faces, FLIPPED_COLOR);
+            if say {
+                println!(
+                    "{} face(s) that pass through another drawn in red ({} pair(s))",
+                    faces.len(),
+                    pairs.len()
+                );
+            }
+        }
+        if let Some(l) = &over {
+            scene.add_segments(&segments(l), LINES);
+        }
+        scene
+    };
+    let input = (&pipeline.levels()[0].mesh, &topo);
+    if a.levels_strip {
+        let first = scene_of(&levels[0], false);
+        let camera = camera(&a, &first, Some(input), &last.mesh)?;
+        super::levels_strip::render(
+            &a.output,
+            (w, h),
+            levels,
+            pipeline.steps(),
+            &first,
+            &camera,
+            |lv| scene_of(lv, false),
+        )?;
         println!(
-            "{} face(s) that pass through another drawn in red ({} pair(s))",
-            faces.len(),
-            pairs.len()
+            "rendered {} levels at {w}x{h} through one camera; wrote {} and {} … {}",
+            levels.len(),
+            a.output.display(),
+            super::levels_strip::level_path(&a.output, 0).display(),
+            super::levels_strip::level_path(&a.output, levels.len() - 1).display(),
         );
+        return Ok(());
     }
+    let mut scene = scene_of(&last, true);
     if let (true, Some(p)) = (a.cage, prev) {
         scene.add_cage(p, [0.95, 0.75, 0.25]);
     }
-    if let Some(l) = &over {
-        scene.add_segments(&segments(l), LINES);
-    }
-    let input = (&pipeline.levels()[0].mesh, &topo);
     let camera = camera(&a, &scene, Some(input), &last.mesh)?;
     draw(&a, (w, h), &scene, camera)
 }
