@@ -47,6 +47,11 @@ pub struct Cli {
     /// Without a subcommand: open the window, save a screenshot of it to this PNG, exit.
     #[arg(long)]
     pub screenshot: Option<std::path::PathBuf>,
+    /// Without a subcommand: start with the clamp off, the papers' literal rules (a rounding
+    /// whose radius does not fit its faces is refused, naming the edges, as the subcommands do
+    /// without --clamp).
+    #[arg(long)]
+    pub no_clamp: bool,
 }
 
 /// Encodes `img` as PNG and writes it through a temporary file (`render`'s pictures and
@@ -405,6 +410,7 @@ pub fn run(cli: Cli) -> Result<(), CliError> {
                     crate::gui::autosave_dir()
                 },
                 screenshot: cli.screenshot,
+                no_clamp: cli.no_clamp,
             })
             .map_err(CliError::input)
         }

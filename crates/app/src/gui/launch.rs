@@ -56,6 +56,8 @@ pub struct Launch {
     pub screenshot: Option<PathBuf>,
     /// Where unsaved work is copied (none: no autosave).
     pub autosave: Option<PathBuf>,
+    /// Start with the clamp off (the papers' literal rules).
+    pub no_clamp: bool,
 }
 
 /// The bundled samples: name, file name, contents.

@@ -184,6 +184,9 @@ impl PrismApp {
             settings.budget_mib,
         );
         model.sel_edges = launch.select_edges.into_iter().collect();
+        if launch.no_clamp {
+            model.set_clamp(false);
+        }
         let last_file = origin.path.clone().or(settings.last_file);
         let recent = settings.recent.clone();
         let first_tab = tab_for(&state);

@@ -1305,3 +1305,36 @@ fn a_missing_file_at_start_opens_the_tripod_and_says_why() {
         "{note}"
     );
 }
+
+/// `--no-clamp` starts the app on the papers' literal rules: a radius that does not fit the
+/// tripod's arms is refused (the default clamps it and computes), and the panel says the clamp
+/// is off.
+#[test]
+fn no_clamp_at_start_gives_the_papers_literal_rules() {
+    let launch = |no_clamp: bool| {
+        let mut a = PrismApp::headless(
+            Launch {
+                pipeline: parse_pipeline("combination:r=1.5").unwrap(),
+                no_clamp,
+                ..Launch::default()
+            },
+            None,
+        )
+        .unwrap();
+        a.wait_idle();
+        a
+    };
+    let clamped = launch(false);
+    assert!(clamped.model.clamp);
+    assert!(clamped.model.views[0].error.is_none());
+    let literal = launch(true);
+    assert!(!literal.model.clamp);
+    let error = literal.model.views[0].error.clone().unwrap_or_default();
+    assert!(error.contains("fits up to"), "{error}");
+    let mut h = harness(literal);
+    h.step();
+    egui_kittest::kittest::Queryable::get_by_label_contains(
+        &h,
+        "Clamp off: the papers' literal rules",
+    );
+}

@@ -170,6 +170,14 @@ impl ModelTab {
         {
             self.set_clamp(clamp);
         }
+        if !self.clamp {
+            ui.label(
+                egui::RichText::new(
+                    "Clamp off: the papers' literal rules (a radius that does not fit is refused)",
+                )
+                .weak(),
+            );
+        }
         let mut mend = self.mend_crossings;
         if ui
             .checkbox(&mut mend, "Mend faces that pass through each other")
