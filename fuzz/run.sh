@@ -12,7 +12,7 @@ cd "$(dirname "$0")"
 seconds=${1:-600}
 shift || true
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || targets=(obj document polyline sections scene step stl)
+[ ${#targets[@]} -gt 0 ] || targets=(obj document polyline sections scene step stl ply)
 shared=../../shared/meshes
 [ -d "$shared" ] || shared=../../../shared/meshes
 
@@ -29,6 +29,8 @@ seed sections ../assets/*.skin.json
 seed scene ../assets/*.envelope.json
 mkdir -p corpus/stl
 [ -f corpus/stl/cube.stl ] || printf 'solid c\nfacet normal 0 0 -1\nouter loop\nvertex 0 0 0\nvertex 0 1 0\nvertex 1 0 0\nendloop\nendfacet\nendsolid c\n' > corpus/stl/cube.stl
+mkdir -p corpus/ply
+[ -f corpus/ply/tetra.ply ] || printf 'ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\nelement face 4\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n' > corpus/ply/tetra.ply
 mkdir -p corpus/polyline
 printf '%s' '{"closed": true, "points": [[1,0],[0,1],[-1,0],[0,-1]]}' > corpus/polyline/square.json
 printf '%s' '{"closed": false, "points": [[0,0],[1,0],[1.5,0.8],[1.2,2]]}' > corpus/polyline/open.json

@@ -44,6 +44,22 @@ pub fn stl(data: &[u8]) {
     }
 }
 
+/// The PLY reader (ASCII or binary) with the model checks, then one Catmull–Clark step of what
+/// it accepts, as `prism subdivide FILE.ply` runs.
+pub fn ply(data: &[u8]) {
+    let Ok((doc, _)) = io::load_bytes(Path::new("fuzz.ply"), data) else {
+        return;
+    };
+    if doc.mesh.num_faces() <= MAX_FACES {
+        let steps = vec![prism_geom::scheme::SchemeKind::CatmullClark.default_scheme()];
+        let mut p = Pipeline::with_tags(doc.mesh, doc.edge_attrs, doc.tags, steps);
+        p.options.memory_budget = STEP_BUDGET;
+        if p.compute().is_ok() {
+            assert_finite(&p.levels()[1].mesh, "ply");
+        }
+    }
+}
+
 /// The `.prism.json` reader with its validation, then what the app computes on opening it:
 /// the document's pipeline (its first three steps), skin and envelope.
 pub fn document(data: &[u8]) {

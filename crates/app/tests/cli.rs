@@ -552,6 +552,44 @@ fn render_levels_strip_tiles_every_level_through_one_camera() {
     assert_eq!(o.status.code(), Some(2), "{}", text(&o).1);
 }
 
+/// A PLY solid is read (here a cube, ASCII, with a colour per vertex) and subdivided; PLY as
+/// an output is refused before any work (Prism reads it, does not write it).
+#[test]
+fn ply_is_read_and_refused_as_an_output() {
+    let ply = tmp("cube.ply");
+    let mut body = String::from(
+        "ply\nformat ascii 1.0\nelement vertex 8\nproperty float x\nproperty float y\nproperty float z\nproperty uchar red\nelement face 6\nproperty list uchar int vertex_indices\nend_header\n",
+    );
+    for v in 0..8 {
+        body += &format!("{} {} {} 200\n", v & 1, (v >> 1) & 1, (v >> 2) & 1);
+    }
+    for f in [
+        [0, 2, 3, 1],
+        [4, 5, 7, 6],
+        [0, 1, 5, 4],
+        [1, 3, 7, 5],
+        [3, 2, 6, 7],
+        [2, 0, 4, 6],
+    ] {
+        body += &format!("4 {} {} {} {}\n", f[0], f[1], f[2], f[3]);
+    }
+    std::fs::write(&ply, body).unwrap();
+    let out = tmp("cube-from-ply.obj");
+    let o = run_with(
+        "subdivide {} -o {} --scheme catmull-clark --levels 2",
+        &[&ply, &out],
+    );
+    let (stdout, err) = text(&o);
+    assert!(o.status.success(), "{err}");
+    assert!(
+        stdout.contains("98 vertices, 192 edges, 96 faces"),
+        "{stdout}"
+    );
+    let o = run_with("subdivide {} -o {} --scheme loop", &[&ply, &tmp("out.ply")]);
+    assert_eq!(o.status.code(), Some(2), "{}", text(&o).1);
+    assert!(text(&o).1.contains("PLY is read only"), "{}", text(&o).1);
+}
+
 #[test]
 fn curve_refines_and_round_trips_its_json() {
     let input = tmp("square.json");

@@ -27,7 +27,7 @@ type Target = (&'static str, fn(&[u8]));
 
 #[test]
 fn every_crash_the_fuzzer_found_is_an_answer_now() {
-    let targets: [Target; 7] = [
+    let targets: [Target; 8] = [
         ("obj", bodies::obj),
         ("document", bodies::document),
         ("polyline", bodies::polyline),
@@ -35,6 +35,7 @@ fn every_crash_the_fuzzer_found_is_an_answer_now() {
         ("scene", bodies::scene),
         ("step", bodies::step),
         ("stl", bodies::stl),
+        ("ply", bodies::ply),
     ];
     let mut replayed = 0;
     for (target, body) in targets {

@@ -218,9 +218,11 @@ pub fn load_input(
 /// A solid's output must be one of the kinds Prism writes: bad usage (exit 2) otherwise.
 pub fn check_solid_output_kind(path: &std::path::Path) -> Result<(), CliError> {
     use prism_geom::io::{ExportFormat, FileKind};
-    if ExportFormat::of(path).is_none() && FileKind::of(path).is_err() {
+    if ExportFormat::of(path).is_none()
+        && !matches!(FileKind::of(path), Ok(k) if k != FileKind::Ply)
+    {
         return Err(CliError::usage(format!(
-            "{}: unknown output type (use .obj, .prism.json, .stl or .glb)",
+            "{}: unknown output type (use .obj, .prism.json, .stl or .glb; PLY is read only)",
             path.display()
         )));
     }

@@ -149,7 +149,10 @@ impl PrismApp {
     pub(super) fn open_dialog(&mut self) {
         let picked = self.dialog(|| {
             rfd::FileDialog::new()
-                .add_filter("Prism documents, OBJ and STL", &["json", "obj", "stl"])
+                .add_filter(
+                    "Prism documents, OBJ, STL and PLY",
+                    &["json", "obj", "stl", "ply"],
+                )
                 .pick_file()
         });
         if let Some(p) = picked {

@@ -1,5 +1,5 @@
 //! Files: OBJ (read in one pass, polygons kept as they are), STL (its facets welded into a
-//! solid), the native `.prism.json` document, and the JSON inputs of the curve, skin and envelope commands. Every write goes to a temporary file in the same folder that is renamed into
+//! solid), PLY (read only: its vertices and polygons), the native `.prism.json` document, and the JSON inputs of the curve, skin and envelope commands. Every write goes to a temporary file in the same folder that is renamed into
 //! place, so a failed save never destroys the previous file.
 
 mod atomic;
@@ -9,6 +9,7 @@ mod inputs;
 mod obj;
 mod obj_lines;
 mod obj_tags;
+mod ply;
 mod stl;
 mod validate;
 
@@ -62,8 +63,12 @@ pub enum IoError {
     UnknownVersion { path: PathBuf, found: u64 },
     #[error("{path}: {message}")]
     Invalid { path: PathBuf, message: String },
-    #[error("{path}: unknown file type (use .obj, .stl or .prism.json)")]
+    #[error("{path}: unknown file type (use .obj, .stl, .ply or .prism.json)")]
     UnknownExtension { path: PathBuf },
+    #[error(
+        "{path}: Prism reads PLY but does not write it: save as .prism.json or .obj, or export .stl or .glb"
+    )]
+    ReadOnlyKind { path: PathBuf },
     #[error("opening {path} was cancelled")]
     Cancelled { path: PathBuf },
 }
@@ -75,6 +80,8 @@ pub enum FileKind {
     Document,
     /// Read as a solid (its facets welded); written as the export writes it.
     Stl,
+    /// Read only (ASCII or binary; its vertices and faces).
+    Ply,
 }
 
 impl FileKind {
@@ -87,6 +94,8 @@ impl FileKind {
             Ok(FileKind::Obj)
         } else if name.ends_with(".stl") {
             Ok(FileKind::Stl)
+        } else if name.ends_with(".ply") {
+            Ok(FileKind::Ply)
         } else if name.ends_with(".prism.json") || name.ends_with(".json") {
             Ok(FileKind::Document)
         } else {
@@ -116,6 +125,7 @@ pub fn load_with(path: &Path, progress: &Progress) -> Result<(Document, Numberin
             (document_from_str(path, &text)?, Numbering::default())
         }
         FileKind::Stl => stl::read_stl_bytes(path, &read_bytes(path, progress, 1)?)?,
+        FileKind::Ply => ply::read_ply_bytes(path, &read_bytes(path, progress, 1)?)?,
     };
     progress
         .check()
@@ -159,6 +169,7 @@ fn read_bytes(path: &Path, progress: &Progress, parts: u64) -> Result<Vec<u8>, I
 pub fn load_bytes(path: &Path, bytes: &[u8]) -> Result<(Document, Numbering), IoError> {
     match FileKind::of(path)? {
         FileKind::Stl => checked(path, stl::read_stl_bytes(path, bytes)?),
+        FileKind::Ply => checked(path, ply::read_ply_bytes(path, bytes)?),
         _ => load_str(path, &String::from_utf8_lossy(bytes)),
     }
 }
@@ -170,6 +181,7 @@ pub fn load_str(path: &Path, text: &str) -> Result<(Document, Numbering), IoErro
         FileKind::Obj => from_obj(read_obj_str(path, text)?),
         FileKind::Document => (document_from_str(path, text)?, Numbering::default()),
         FileKind::Stl => stl::read_stl_bytes(path, text.as_bytes())?,
+        FileKind::Ply => ply::read_ply_bytes(path, text.as_bytes())?,
     };
     checked(path, loaded)
 }
@@ -233,6 +245,7 @@ pub fn save(path: &Path, doc: &Document) -> Result<Vec<String>, IoError> {
                 ]
             })
         }
+        FileKind::Ply => Err(IoError::ReadOnlyKind { path: path.into() }),
     }
 }
 
