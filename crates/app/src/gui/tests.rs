@@ -1338,3 +1338,39 @@ fn no_clamp_at_start_gives_the_papers_literal_rules() {
         "Clamp off: the papers' literal rules",
     );
 }
+
+/// Play levels shows the levels one after another, a second each, round again after the
+/// last; Pause levels stops at the level shown.
+#[test]
+fn play_levels_steps_through_them_and_pause_stops() {
+    use egui_kittest::kittest::Queryable;
+    let mut a = PrismApp::headless(
+        Launch {
+            pipeline: parse_pipeline("catmull-clark,catmull-clark").unwrap(),
+            ..Launch::default()
+        },
+        None,
+    )
+    .unwrap();
+    a.wait_idle();
+    let mut h = harness(a);
+    h.step();
+    assert_eq!(h.state().model.views[0].level, 2);
+    h.get_by_label("Play levels").click();
+    h.step();
+    assert!(h.state().model.playing.is_some());
+    let mut shown = Vec::new();
+    for _ in 0..4 {
+        // As if a second had passed.
+        h.state_mut().model.playing =
+            Some(std::time::Instant::now() - std::time::Duration::from_millis(1100));
+        h.step();
+        shown.push(h.state().model.views[0].level);
+    }
+    assert_eq!(shown, [0, 1, 2, 0], "round again after the last");
+    h.get_by_label("Pause levels").click();
+    h.step();
+    assert!(h.state().model.playing.is_none());
+    h.step();
+    assert_eq!(h.state().model.views[0].level, 0, "stays");
+}

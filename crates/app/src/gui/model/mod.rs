@@ -87,6 +87,9 @@ pub struct ModelTab {
     pub sharper_deg: f64,
     /// The level slider moves every view of the compare split.
     pub link_levels: bool,
+    /// Playing the levels (one a [`PLAY_STEP`], round again after the last): when the shown
+    /// level last moved.
+    pub playing: Option<std::time::Instant>,
     /// The active view and where its camera's target is measured from in the world (its
     /// scene's origin plus its framing centre): when a new scene moves it, the camera moves
     /// back by as much, so the model does not jump during a drag or between levels.
@@ -102,7 +105,36 @@ pub struct ModelTab {
     pub has_gpu: bool,
 }
 
+/// How long each level is shown while the levels play.
+pub const PLAY_STEP: std::time::Duration = std::time::Duration::from_secs(1);
+
 impl ModelTab {
+    /// Shows the active view's next level (the input after the last; every view with the
+    /// levels linked) once [`PLAY_STEP`] has passed since the last move; true when it moved.
+    pub fn play_tick(&mut self, now: std::time::Instant) -> bool {
+        let Some(last) = self.playing else {
+            return false;
+        };
+        if now.duration_since(last) < PLAY_STEP || self.views.is_empty() {
+            return false;
+        }
+        let a = self.active.min(self.views.len() - 1);
+        let n = self.views[a].steps().len();
+        let next = if self.views[a].level >= n {
+            0
+        } else {
+            self.views[a].level + 1
+        };
+        self.views[a].level = next;
+        if self.link_levels {
+            for w in &mut self.views {
+                w.level = next.min(w.steps().len());
+            }
+        }
+        self.playing = Some(now);
+        true
+    }
+
     pub fn new(display: Display, tool: Tool, next: Scheme, budget_mib: u64) -> ModelTab {
         ModelTab {
             views: Vec::new(),
@@ -128,6 +160,7 @@ impl ModelTab {
             crease_value: 10.0,
             radius_value: 0.1,
             sharper_deg: 60.0,
+            playing: None,
             link_levels: false,
             anchor: None,
             synced: None,

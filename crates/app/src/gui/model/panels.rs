@@ -119,8 +119,31 @@ impl ModelTab {
             }
         });
         let n = self.views[a].steps().len();
+        if n == 0 {
+            self.playing = None;
+        }
         if n > 0 {
+            self.play_tick(std::time::Instant::now());
             let mut lv = self.views[a].level.min(n);
+            ui.horizontal(|ui| {
+                let (icon, tip) = match self.playing {
+                    Some(_) => ("Pause levels", "Stop at the level shown"),
+                    None => (
+                        "Play levels",
+                        "Show the levels one after another, a second each, from the input to the last and round again",
+                    ),
+                };
+                if ui.button(icon).on_hover_text(tip).clicked() {
+                    self.playing = match self.playing {
+                        Some(_) => None,
+                        None => Some(std::time::Instant::now()),
+                    };
+                }
+            });
+            if let Some(last) = self.playing {
+                ui.ctx()
+                    .request_repaint_after(super::PLAY_STEP.saturating_sub(last.elapsed()));
+            }
             if ui
                 .add(egui::Slider::new(&mut lv, 0..=n).text("level shown"))
                 .changed()
