@@ -590,6 +590,51 @@ fn ply_is_read_and_refused_as_an_output() {
     assert!(text(&o).1.contains("PLY is read only"), "{}", text(&o).1);
 }
 
+/// `prism envelope-study` (seed 004 figs. 11 and 12): a row per count of cubes, the regions a
+/// face within the paper's spread, the same scenes from the same seed, and the plot.
+#[test]
+fn envelope_study_tables_and_plots_figs_11_and_12() {
+    let png = tmp("study.png");
+    let line = "envelope-study --max 4 --scenes 4 --resolution 2 --plot {}";
+    let o = run_with(line, &[&png]);
+    let (stdout, err) = text(&o);
+    assert!(o.status.success(), "{err}");
+    let rows: Vec<Vec<f64>> = stdout
+        .lines()
+        .skip(1)
+        .filter(|l| !l.starts_with("wrote"))
+        .map(|l| {
+            l.split([' ', ','])
+                .filter(|w| !w.is_empty())
+                .map(|w| w.parse().unwrap())
+                .collect()
+        })
+        .collect();
+    assert_eq!(rows.len(), 3, "{stdout}");
+    for (r, cubes) in rows.iter().zip(2..) {
+        assert_eq!((r[0], r[1]), (f64::from(cubes), 4.0), "{stdout}");
+        // Regions a kept face: more than one (fusion adds regions), under the paper's 1.75.
+        assert!(r[3] > 1.0 && r[4] <= 1.75, "{stdout}");
+    }
+    let again = run_with(line, &[&png]);
+    let cut = |s: &str| -> Vec<String> {
+        s.lines()
+            .map(|l| l.split_whitespace().take(5).collect::<Vec<_>>().join(" "))
+            .collect()
+    };
+    assert_eq!(
+        cut(&text(&again).0),
+        cut(&stdout),
+        "the same scenes from the same seed"
+    );
+    assert_eq!(
+        image::open(&png).unwrap().to_rgb8().dimensions(),
+        (1200, 520)
+    );
+    let o = run("envelope-study --max 1");
+    assert_eq!(o.status.code(), Some(2));
+}
+
 #[test]
 fn curve_refines_and_round_trips_its_json() {
     let input = tmp("square.json");

@@ -4,6 +4,7 @@ mod bench;
 mod curve;
 mod curve_plot;
 mod envelope;
+mod envelope_study;
 mod font;
 pub(crate) mod level_lines;
 mod levels_strip;
@@ -114,6 +115,9 @@ pub enum Command {
     /// Envelope convex primitives with a smooth surface (seed 004): curved edges of end
     /// curvature 1/(t·r), Coons patches with variable twist, G1 across every border.
     Envelope(envelope::EnvelopeArgs),
+    /// Seed 004's figs. 11 and 12: equal cubes at random centres, 2 to --max of them; the
+    /// regions per face and the time of each stage, as a table and (--plot) a picture.
+    EnvelopeStudy(envelope_study::EnvelopeStudyArgs),
     /// List the subdivision schemes: name, family, parameter with its range and default,
     /// paper, equation and the docs page with the formula.
     Schemes,
@@ -364,6 +368,7 @@ pub fn run(cli: Cli) -> Result<(), CliError> {
         Some(Command::New(a)) => new::run(a),
         Some(Command::Skin(a)) => skin::run(a),
         Some(Command::Envelope(a)) => envelope::run(a),
+        Some(Command::EnvelopeStudy(a)) => envelope_study::run(a),
         Some(Command::Schemes) => {
             print!("{}", prism_geom::scheme::table());
             Ok(())

@@ -32,6 +32,7 @@ pub mod nested;
 pub mod network;
 pub mod patches;
 pub mod primitive;
+pub mod study;
 pub mod tessellate;
 pub mod tolerances;
 mod wrap;
