@@ -18,6 +18,20 @@ pub enum Show {
     Limit,
     /// The Envelope tab's t sweep (t = 1, 0.5, 0.1 side by side).
     TSweep,
+    /// The Envelope tab: the curve network alone (the surface hidden).
+    NetworkOnly,
+    /// The Skin tab: the trajectories (seed 003 fig. 1).
+    Trajectories,
+    /// The Skin tab: the sections swept along the trajectories.
+    Swept,
+    /// The Skin tab: contour lines, sections of the surface by planes z = const (fig. 4b).
+    Contours,
+    /// The Skin tab: the twist of each pair of sections (fig. 2).
+    Twists,
+    /// The Curves tab: the evolute (the centres of curvature).
+    Evolute,
+    /// The Curves tab: no curvature comb.
+    NoComb,
 }
 
 /// The app's tabs.

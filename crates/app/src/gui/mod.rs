@@ -170,7 +170,14 @@ impl PrismApp {
                 Show::Cage => display.cage = true,
                 Show::Corners => display.corners = true,
                 Show::Limit => display.limit = true,
-                Show::TSweep => {}
+                Show::TSweep
+                | Show::NetworkOnly
+                | Show::Trajectories
+                | Show::Swept
+                | Show::Contours
+                | Show::Twists
+                | Show::Evolute
+                | Show::NoComb => {}
             }
         }
         let next = prism_geom::parse_pipeline(&settings.next)
@@ -194,14 +201,28 @@ impl PrismApp {
         model.sync(&doc);
         let mut envelope = envelope::EnvelopeTab::default();
         envelope.sweep = launch.show.contains(&Show::TSweep);
+        let mut skin = skin::SkinTab::default();
+        let mut curves = curves::CurvesTab::default();
+        for s in &launch.show {
+            match s {
+                Show::NetworkOnly => envelope.overlays.surface = false,
+                Show::Trajectories => skin.overlays.trajectories = true,
+                Show::Swept => skin.overlays.swept = true,
+                Show::Contours => skin.overlays.contours = true,
+                Show::Twists => skin.overlays.twists = true,
+                Show::Evolute => curves.evolute = true,
+                Show::NoComb => curves.comb = false,
+                _ => {}
+            }
+        }
         let autosave = autosave::Autosave::new(launch.autosave.clone(), doc.generation());
         Ok(PrismApp {
             autosave,
             doc,
             tab: launch.tab.or(first_tab).unwrap_or_default(),
             model,
-            curves: curves::CurvesTab::default(),
-            skin: skin::SkinTab::default(),
+            curves,
+            skin,
             envelope,
             new_solid: Default::default(),
             note,

@@ -1374,3 +1374,32 @@ fn play_levels_steps_through_them_and_pause_stops() {
     h.step();
     assert_eq!(h.state().model.views[0].level, 0, "stays");
 }
+
+/// Every teaching overlay of the Skin, Envelope and Curves tabs can be asked for at start
+/// (`--show`), for a screenshot of a paper's figure.
+#[test]
+fn the_teaching_overlays_can_be_asked_for_at_start() {
+    let a = PrismApp::headless(
+        Launch {
+            show: vec![
+                Show::NetworkOnly,
+                Show::Trajectories,
+                Show::Swept,
+                Show::Contours,
+                Show::Twists,
+                Show::Evolute,
+                Show::NoComb,
+            ],
+            ..Launch::default()
+        },
+        None,
+    )
+    .unwrap();
+    assert!(!a.envelope.overlays.surface);
+    let o = &a.skin.overlays;
+    assert!(o.trajectories && o.swept && o.contours && o.twists);
+    assert!(a.curves.evolute && !a.curves.comb);
+    let plain = PrismApp::headless(Launch::default(), None).unwrap();
+    assert!(plain.envelope.overlays.surface && !plain.skin.overlays.trajectories);
+    assert!(!plain.curves.evolute && plain.curves.comb);
+}
