@@ -53,6 +53,8 @@ struct Globals {
 pub struct GpuScene {
     faces: Vec<(wgpu::Buffer, wgpu::Buffer, u32)>,
     lines: Vec<(wgpu::Buffer, u32)>,
+    /// [`Scene::xray`].
+    xray: bool,
 }
 
 impl GpuScene {
@@ -121,6 +123,8 @@ pub struct Renderer {
     pub samples: u32,
     mesh_pipeline: wgpu::RenderPipeline,
     line_pipeline: wgpu::RenderPipeline,
+    /// Lines drawn whatever lies in front of them (no depth test, no depth written).
+    xray_pipeline: wgpu::RenderPipeline,
     layout: wgpu::BindGroupLayout,
     slot: CameraSlot,
 }
@@ -149,7 +153,8 @@ impl Renderer {
         let pipeline = |src: &str,
                         attrs: &[wgpu::VertexAttribute],
                         stride: usize,
-                        topology: wgpu::PrimitiveTopology| {
+                        topology: wgpu::PrimitiveTopology,
+                        depth: bool| {
             let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
                 label: Some("prism shader"),
                 source: wgpu::ShaderSource::Wgsl(src.into()),
@@ -174,8 +179,12 @@ impl Renderer {
                 },
                 depth_stencil: Some(wgpu::DepthStencilState {
                     format: DEPTH_FORMAT,
-                    depth_write_enabled: Some(true),
-                    depth_compare: Some(wgpu::CompareFunction::LessEqual),
+                    depth_write_enabled: Some(depth),
+                    depth_compare: Some(if depth {
+                        wgpu::CompareFunction::LessEqual
+                    } else {
+                        wgpu::CompareFunction::Always
+                    }),
                     stencil: Default::default(),
                     bias: Default::default(),
                 }),
@@ -203,17 +212,27 @@ impl Renderer {
             &wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3, 2 => Float32x3],
             std::mem::size_of::<Vertex>(),
             wgpu::PrimitiveTopology::TriangleList,
+            true,
         );
         let line_pipeline = pipeline(
             LINES_WGSL,
             &wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3],
             std::mem::size_of::<LineVertex>(),
             wgpu::PrimitiveTopology::LineList,
+            true,
+        );
+        let xray_pipeline = pipeline(
+            LINES_WGSL,
+            &wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3],
+            std::mem::size_of::<LineVertex>(),
+            wgpu::PrimitiveTopology::LineList,
+            false,
         );
         Renderer {
             samples,
             mesh_pipeline,
             line_pipeline,
+            xray_pipeline,
             layout: bgl,
             slot,
         }
@@ -252,7 +271,11 @@ impl Renderer {
             .collect();
         let errors = [invalid.pop(), memory.pop()].map(pollster::block_on);
         match errors.into_iter().flatten().next() {
-            None => Ok(GpuScene { faces, lines }),
+            None => Ok(GpuScene {
+                faces,
+                lines,
+                xray: scene.xray,
+            }),
             Some(e) => Err(UploadError {
                 triangles: scene.indices.len() / 3,
                 mib: scene_bytes(scene).div_ceil(1 << 20),
@@ -280,6 +303,7 @@ impl Renderer {
             *gpu = self.upload(device, scene)?;
             return Ok(());
         }
+        gpu.xray = scene.xray;
         match gpu.faces.first_mut() {
             Some((vertices, indices, count)) => {
                 refill(
@@ -348,7 +372,11 @@ impl Renderer {
             pass.set_index_buffer(indices.slice(..), wgpu::IndexFormat::Uint32);
             pass.draw_indexed(0..*count, 0, 0..1);
         }
-        pass.set_pipeline(&self.line_pipeline);
+        pass.set_pipeline(if scene.xray {
+            &self.xray_pipeline
+        } else {
+            &self.line_pipeline
+        });
         for (buf, n) in scene.lines.iter().filter(|l| l.1 > 0) {
             pass.set_vertex_buffer(0, buf.slice(..));
             pass.draw(0..*n, 0..1);

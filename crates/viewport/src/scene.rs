@@ -132,6 +132,9 @@ pub struct Scene {
     pub bbox: (DVec3, DVec3),
     /// The values at the two ends of the colour scale, when colouring by curvature.
     pub color_range: Option<(f64, f64)>,
+    /// Its lines are drawn through every surface in front of them (x-ray: a trajectory or a
+    /// section inside the solid shows).
+    pub xray: bool,
 }
 
 impl Scene {

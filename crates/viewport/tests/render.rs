@@ -198,3 +198,42 @@ fn golden_renders() {
     let scene = tripod_scene("doo-sabin", &SceneOptions::default(), false);
     assert!(gpu.render(&scene, &Camera::default(), 0, 10).is_err());
 }
+
+/// X-ray: a red segment inside a cube is hidden by its faces, and drawn through them when the
+/// scene's lines are x-rayed; the faces themselves look the same.
+#[test]
+fn xray_lines_show_through_the_surface() {
+    let gpu = Offscreen::new().expect("a wgpu adapter (install mesa-vulkan-drivers)");
+    let cube = primitives::cube3();
+    let camera = Camera::looking(View::Iso, glam::Vec3::ZERO, 1.0);
+    let red = |img: &image::RgbaImage| {
+        img.pixels()
+            .filter(|p| p[0] > 180 && p[1] < 80 && p[2] < 80)
+            .count()
+    };
+    let render = |xray: bool| {
+        let mut scene = Scene::build(
+            &cube,
+            &EdgeAttrs::new(),
+            None,
+            &|_| false,
+            &SceneOptions::default(),
+        );
+        let c = scene.origin;
+        scene.add_segments(
+            &[
+                (c - glam::DVec3::splat(0.3), c + glam::DVec3::splat(0.3)),
+                (
+                    c - glam::DVec3::new(0.3, -0.3, 0.0),
+                    c + glam::DVec3::new(0.3, -0.3, 0.0),
+                ),
+            ],
+            [1.0, 0.0, 0.0],
+        );
+        scene.xray = xray;
+        gpu.render(&scene, &camera, 160, 120).unwrap()
+    };
+    let (hidden, through) = (render(false), render(true));
+    assert_eq!(red(&hidden), 0, "inside the cube, hidden");
+    assert!(red(&through) > 20, "x-rayed: {} red pixels", red(&through));
+}

@@ -104,6 +104,10 @@ pub struct RenderArgs {
     /// step) and each level alone in OUT-L0.png, OUT-L1.png, …
     #[arg(long, conflicts_with_all = ["frames", "cage"])]
     pub levels_strip: bool,
+    /// Every line (--lines, the wireframe, the cage) drawn through the surface: curves inside
+    /// the solid show.
+    #[arg(long)]
+    pub xray: bool,
 }
 
 /// The colour of the polylines.
@@ -350,6 +354,7 @@ pub fn run(a: RenderArgs) -> Result<(), CliError> {
         if let Some(l) = &over {
             scene.add_segments(&segments(l), LINES);
         }
+        scene.xray = a.xray;
         scene
     };
     let input = (&pipeline.levels()[0].mesh, &topo);

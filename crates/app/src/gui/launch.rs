@@ -32,6 +32,8 @@ pub enum Show {
     Evolute,
     /// The Curves tab: no curvature comb.
     NoComb,
+    /// The Skin and Envelope tabs: their curves drawn through the surface.
+    Xray,
 }
 
 /// The app's tabs.

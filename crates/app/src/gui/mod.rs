@@ -177,7 +177,8 @@ impl PrismApp {
                 | Show::Contours
                 | Show::Twists
                 | Show::Evolute
-                | Show::NoComb => {}
+                | Show::NoComb
+                | Show::Xray => {}
             }
         }
         let next = prism_geom::parse_pipeline(&settings.next)
@@ -212,6 +213,10 @@ impl PrismApp {
                 Show::Twists => skin.overlays.twists = true,
                 Show::Evolute => curves.evolute = true,
                 Show::NoComb => curves.comb = false,
+                Show::Xray => {
+                    skin.overlays.look.xray = true;
+                    envelope.overlays.look.xray = true;
+                }
                 _ => {}
             }
         }

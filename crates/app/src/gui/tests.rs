@@ -1389,6 +1389,7 @@ fn the_teaching_overlays_can_be_asked_for_at_start() {
                 Show::Twists,
                 Show::Evolute,
                 Show::NoComb,
+                Show::Xray,
             ],
             ..Launch::default()
         },
@@ -1399,6 +1400,7 @@ fn the_teaching_overlays_can_be_asked_for_at_start() {
     let o = &a.skin.overlays;
     assert!(o.trajectories && o.swept && o.contours && o.twists);
     assert!(a.curves.evolute && !a.curves.comb);
+    assert!(a.skin.overlays.look.xray && a.envelope.overlays.look.xray);
     let plain = PrismApp::headless(Launch::default(), None).unwrap();
     assert!(plain.envelope.overlays.surface && !plain.skin.overlays.trajectories);
     assert!(!plain.curves.evolute && plain.curves.comb);

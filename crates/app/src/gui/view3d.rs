@@ -16,6 +16,8 @@ pub struct Look {
     /// Mean-curvature colours.
     pub curvature: bool,
     pub smooth: bool,
+    /// The overlay's lines drawn through the surface (a trajectory or section inside it).
+    pub xray: bool,
 }
 
 impl Default for Look {
@@ -24,16 +26,21 @@ impl Default for Look {
             wireframe: false,
             curvature: false,
             smooth: true,
+            xray: false,
         }
     }
 }
 
 impl Look {
-    /// Its three checkboxes.
+    /// Its checkboxes.
     pub fn ui(&mut self, ui: &mut egui::Ui) {
         ui.checkbox(&mut self.wireframe, "Iso-parameter lines");
         ui.checkbox(&mut self.curvature, "Mean-curvature colours");
         ui.checkbox(&mut self.smooth, "Smooth shading");
+        ui.checkbox(&mut self.xray, "X-ray: lines through the surface")
+            .on_hover_text(
+                "Draw the curves, sections and trajectories even where the surface hides them",
+            );
     }
 
     /// The scene options that draw it.

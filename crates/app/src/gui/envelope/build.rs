@@ -239,6 +239,7 @@ pub fn scenes(
         Err(_) => framing(all.iter().copied()),
     };
     let (mut overlay, size) = overlay_for(&scene);
+    overlay.xray = o.look.xray;
     if o.primitives {
         overlay.add_segments(&primitive_edges(&built.spec), PRIMITIVE);
         overlay.add_points(&all, 0.006 * size, PRIMITIVE);

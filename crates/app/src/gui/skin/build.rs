@@ -205,6 +205,7 @@ pub fn scenes(built: &Built, selected: usize, o: &Overlays) -> (Arc<Scene>, Arc<
         ),
     };
     let (mut overlay, size) = overlay_for(&scene);
+    overlay.xray = o.look.xray;
     match &built.result {
         Ok((s, _)) => {
             if o.sections {
