@@ -129,15 +129,24 @@ impl<S: Clone + PartialEq + Send + 'static, B: Send + 'static> Latest<S, B> {
     }
 }
 
-/// The row a tab shows while `latest` builds: a bar of the part done (of the build's current
-/// stage) with its seconds, saying whether the last answer stays in view (`last_shown`), and
-/// Cancel; after a cancel, what the view shows and Build.
+/// A build shows its progress row once it has run this long: the many short builds of a drag
+/// never move the panel's widgets under the pointer.
+pub const SHOW_PROGRESS_AFTER: Duration = Duration::from_millis(300);
+
+/// The row a tab shows while `latest` builds (once it has run [`SHOW_PROGRESS_AFTER`]): a bar
+/// of the part done (of the build's current stage) with its seconds, saying whether the last
+/// answer stays in view (`last_shown`), and Cancel; after a cancel, what the view shows and
+/// Build.
 pub fn progress_row<S, B>(ui: &mut egui::Ui, latest: &mut Latest<S, B>, last_shown: bool)
 where
     S: Clone + PartialEq + Send + 'static,
     B: Send + 'static,
 {
-    if let Some((part, took)) = latest.progress() {
+    if let Some((_, took)) = latest.progress()
+        && took < SHOW_PROGRESS_AFTER
+    {
+        ui.ctx().request_repaint_after(SHOW_PROGRESS_AFTER - took);
+    } else if let Some((part, took)) = latest.progress() {
         let text = format!(
             "Building… {:.1} s{}",
             took.as_secs_f32(),

@@ -332,11 +332,18 @@ fn a_long_build_shows_its_progress_and_stops_at_cancel() {
         spec: Some(big.clone()),
         gesture: None,
     }));
-    for _ in 0..5 {
-        h.step();
-    }
+    h.step();
     assert!(h.state().envelope.building());
-    h.get_by_label_contains("Building…");
+    // The bar shows once the build has run a while (a drag's short builds never show it).
+    let bar = |h: &mut Harness<'_, PrismApp>| {
+        let start = std::time::Instant::now();
+        while h.query_by_label_contains("Building…").is_none() {
+            assert!(start.elapsed().as_secs() < 20, "no progress shown");
+            std::thread::sleep(std::time::Duration::from_millis(20));
+            h.step();
+        }
+    };
+    bar(&mut h);
     h.get_by_label("Cancel").click();
     for _ in 0..5 {
         h.step();
@@ -351,6 +358,7 @@ fn a_long_build_shows_its_progress_and_stops_at_cancel() {
     h.step();
     h.step();
     assert!(h.state().envelope.building());
+    bar(&mut h);
     h.get_by_label("Cancel").click();
     h.step();
     assert!(!h.state().envelope.building());
