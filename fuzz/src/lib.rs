@@ -31,23 +31,18 @@ pub fn obj(data: &[u8]) {
 /// The STL reader (ASCII or binary, its facets welded) with the model checks, then one
 /// Catmull–Clark step of what it accepts, as `prism subdivide FILE.stl` runs.
 pub fn stl(data: &[u8]) {
-    let Ok((doc, _)) = io::load_bytes(Path::new("fuzz.stl"), data) else {
-        return;
-    };
-    if doc.mesh.num_faces() <= MAX_FACES {
-        let steps = vec![prism_geom::scheme::SchemeKind::CatmullClark.default_scheme()];
-        let mut p = Pipeline::with_tags(doc.mesh, doc.edge_attrs, doc.tags, steps);
-        p.options.memory_budget = STEP_BUDGET;
-        if p.compute().is_ok() {
-            assert_finite(&p.levels()[1].mesh, "stl");
-        }
-    }
+    solid(data, "fuzz.stl");
 }
 
 /// The PLY reader (ASCII or binary) with the model checks, then one Catmull–Clark step of what
 /// it accepts, as `prism subdivide FILE.ply` runs.
 pub fn ply(data: &[u8]) {
-    let Ok((doc, _)) = io::load_bytes(Path::new("fuzz.ply"), data) else {
+    solid(data, "fuzz.ply");
+}
+
+/// The reader of `name`'s kind on `data`, then one Catmull–Clark step of what it accepts.
+fn solid(data: &[u8], name: &str) {
+    let Ok((doc, _)) = io::load_bytes(Path::new(name), data) else {
         return;
     };
     if doc.mesh.num_faces() <= MAX_FACES {
@@ -55,7 +50,7 @@ pub fn ply(data: &[u8]) {
         let mut p = Pipeline::with_tags(doc.mesh, doc.edge_attrs, doc.tags, steps);
         p.options.memory_budget = STEP_BUDGET;
         if p.compute().is_ok() {
-            assert_finite(&p.levels()[1].mesh, "ply");
+            assert_finite(&p.levels()[1].mesh, name);
         }
     }
 }

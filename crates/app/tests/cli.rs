@@ -515,13 +515,10 @@ fn render_draws_a_curves_file_alone_and_over_a_surface() {
 /// drawn alone with the same camera.
 #[test]
 fn render_levels_strip_tiles_every_level_through_one_camera() {
-    let out = tmp("strip.png");
-    let o = run_with(
+    let (out, stdout, _) = succeeds_to(
+        "strip.png",
         "render assets/tripod.obj -o {} --scheme doo-sabin --levels 4 --levels-strip --size 160x120",
-        &[&out],
     );
-    let (stdout, err) = text(&o);
-    assert!(o.status.success(), "{err}");
     assert!(stdout.contains("rendered 5 levels"), "{stdout}");
     let strip = image::open(&out).unwrap().to_rgb8();
     assert_eq!(

@@ -9,6 +9,7 @@ use common::off_surface;
 use common::{hausdorff, spec};
 use prism_geom::freeform::envelope::folds::crossings;
 use prism_geom::freeform::envelope::network::RegionKind;
+use prism_geom::freeform::envelope::study::{Lcg, random_cubes};
 use prism_geom::freeform::envelope::{
     Envelope, EnvelopeSpec, Placement, PrimitiveInput, Shape, Surfacing, envelope,
 };
@@ -346,35 +347,6 @@ fn random_cubes_build_closed_with_few_regions() {
         }
         assert!(worst <= 1.75, "{count} cubes: {worst}");
     }
-}
-
-/// A fixed pseudo-random sequence in [0, 1).
-struct Lcg(u64);
-
-impl Lcg {
-    fn next(&mut self) -> f64 {
-        self.0 = self
-            .0
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        (self.0 >> 11) as f64 / (1u64 << 53) as f64
-    }
-}
-
-/// `count` equal axis-aligned cubes (half-size 1) with centres uniform in [0, spread]³.
-fn random_cubes(rng: &mut Lcg, count: usize, spread: f64) -> Vec<PrimitiveInput> {
-    (0..count)
-        .map(|_| {
-            cube_at(
-                [
-                    spread * rng.next(),
-                    spread * rng.next(),
-                    spread * rng.next(),
-                ],
-                [0.0; 3],
-            )
-        })
-        .collect()
 }
 
 /// A scene of many primitives (the hull of the centres found by gift wrapping, envelope.md

@@ -214,20 +214,16 @@ impl Renderer {
             wgpu::PrimitiveTopology::TriangleList,
             true,
         );
-        let line_pipeline = pipeline(
-            LINES_WGSL,
-            &wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3],
-            std::mem::size_of::<LineVertex>(),
-            wgpu::PrimitiveTopology::LineList,
-            true,
-        );
-        let xray_pipeline = pipeline(
-            LINES_WGSL,
-            &wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3],
-            std::mem::size_of::<LineVertex>(),
-            wgpu::PrimitiveTopology::LineList,
-            false,
-        );
+        // Lines with the depth test, and without it (x-ray).
+        let [line_pipeline, xray_pipeline] = [true, false].map(|depth| {
+            pipeline(
+                LINES_WGSL,
+                &wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3],
+                std::mem::size_of::<LineVertex>(),
+                wgpu::PrimitiveTopology::LineList,
+                depth,
+            )
+        });
         Renderer {
             samples,
             mesh_pipeline,

@@ -1,24 +1,14 @@
 //! The pictures of `prism curve`, drawn with `plotters` into a buffer and written as PNG:
 //! a refined curve (its control polygon, the curve, its curvature comb) beside its curvature
 //! against arc length; and the §4 study as dimensional stacking (θ₁, θ₂ outer, l₁, l₂ inner).
-//! Text uses [`super::font`].
+//! Text and axes as [`super::plot_style`] draws them.
 
 use super::CliError;
-use super::font::{FONT, register_font};
+use super::plot_style::{FONT, axes, draw_error, legend, picture};
 use plotters::prelude::*;
 use prism_geom::curve::Polyline;
 use prism_geom::curve_study::StudyRow;
 use std::path::Path;
-
-fn draw_error(e: impl std::fmt::Display) -> CliError {
-    CliError::input(format!("drawing the plot: {e}"))
-}
-
-/// Writes an RGB buffer of `w × h` as a PNG at `path` (atomically).
-fn write_png(buf: Vec<u8>, w: u32, h: u32, path: &Path) -> Result<(), CliError> {
-    let img = image::RgbImage::from_raw(w, h, buf).ok_or_else(|| draw_error("buffer size"))?;
-    super::write_png(img.into(), path)
-}
 
 /// Pixels along the top of the curve's plot kept free for its legend (three rows).
 const LEGEND_BAND: f64 = 80.0;
@@ -55,12 +45,8 @@ pub fn curve_plot(
     title: &str,
     path: &Path,
 ) -> Result<(), CliError> {
-    register_font();
     let (w, h) = (1200u32, 520u32);
-    let mut buf = vec![0u8; (w * h * 3) as usize];
-    {
-        let root = BitMapBackend::with_buffer(&mut buf, (w, h)).into_drawing_area();
-        root.fill(&WHITE).map_err(draw_error)?;
+    picture((w, h), path, |root| {
         let (left, right) = root.split_horizontally(w / 2);
         let k = refined.curvature();
         let s = refined.arc_length();
@@ -154,14 +140,7 @@ pub fn curve_plot(
             .map_err(draw_error)?
             .label("refined curve")
             .legend(|(x, y)| PathElement::new([(x, y), (x + 18, y)], RGBColor(30, 90, 180)));
-        chart
-            .configure_series_labels()
-            .position(SeriesLabelPosition::UpperLeft)
-            .label_font((FONT, 13))
-            .background_style(WHITE.mix(0.8))
-            .border_style(BLACK)
-            .draw()
-            .map_err(draw_error)?;
+        legend(&mut chart)?;
 
         // Curvature against arc length (the ends of an open polyline have none).
         let range = if refined.closed {
@@ -190,14 +169,7 @@ pub fn curve_plot(
                 padded(klo.min(0.0), khi),
             )
             .map_err(draw_error)?;
-        chart
-            .configure_mesh()
-            .x_desc("arc length s")
-            .y_desc("κ")
-            .label_style((FONT, 13))
-            .axis_desc_style((FONT, 15))
-            .draw()
-            .map_err(draw_error)?;
+        axes(&mut chart, "arc length s", "κ")?;
         chart
             .draw_series(LineSeries::new(
                 series.clone(),
@@ -211,9 +183,8 @@ pub fn curve_plot(
                     .map(|&p| Circle::new(p, 2, RGBColor(30, 90, 180).filled())),
             )
             .map_err(draw_error)?;
-        root.present().map_err(draw_error)?;
-    }
-    write_png(buf, w, h, path)
+        Ok(())
+    })
 }
 
 /// The colours of the study's cells: method 2 better, method 1 better, a tie.
@@ -229,15 +200,11 @@ pub fn study_plot(
     axes: (&[f64], &[f64], &[f64], &[f64]),
     path: &Path,
 ) -> Result<(), CliError> {
-    register_font();
     let (t1, t2, l1, l2) = axes;
     let (w, h) = (900u32, 860u32);
-    let mut buf = vec![0u8; (w * h * 3) as usize];
-    {
-        let root = BitMapBackend::with_buffer(&mut buf, (w, h)).into_drawing_area();
-        root.fill(&WHITE).map_err(draw_error)?;
+    picture((w, h), path, |root| {
         let (nx, ny) = (t1.len() * l1.len(), t2.len() * l2.len());
-        let mut chart = ChartBuilder::on(&root)
+        let mut chart = ChartBuilder::on(root)
             .caption(
                 "seed 002 §4: log-spiral (method 2) against circle (method 1)",
                 (FONT, 20),
@@ -338,9 +305,8 @@ pub fn study_plot(
             root.draw(&Text::new(name, (x + 20, ly + 53), style.clone()))
                 .map_err(draw_error)?;
         }
-        root.present().map_err(draw_error)?;
-    }
-    write_png(buf, w, h, path)
+        Ok(())
+    })
 }
 
 #[cfg(test)]

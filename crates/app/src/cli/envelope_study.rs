@@ -6,7 +6,7 @@
 //! the paper's 1.6 regions a face).
 
 use super::CliError;
-use super::font::{FONT, register_font};
+use super::plot_style::{FONT, Plot, axes, draw_error, legend, picture};
 use clap::Args;
 use plotters::prelude::*;
 use prism_geom::freeform::envelope::study::{StudyScene, cube_study};
@@ -87,48 +87,50 @@ pub fn run(a: EnvelopeStudyArgs) -> Result<(), CliError> {
     Ok(())
 }
 
-fn draw_error(e: impl std::fmt::Display) -> CliError {
-    CliError::input(format!("drawing the plot: {e}"))
+/// A stage's colour, name and time.
+type Stage = (RGBColor, &'static str, fn(&StudyScene) -> f64);
+
+/// A plot of `caption` on `area` over `x` × `y`, its axes named.
+fn chart_on<'a, 'b>(
+    area: &'a DrawingArea<BitMapBackend<'b>, plotters::coord::Shift>,
+    caption: &str,
+    (x, y): (std::ops::Range<f64>, std::ops::Range<f64>),
+    (x_name, y_name): (&str, &str),
+) -> Result<Plot<'a, 'b>, CliError> {
+    let mut chart = ChartBuilder::on(area)
+        .caption(caption, (FONT, 20))
+        .margin(16)
+        .x_label_area_size(40)
+        .y_label_area_size(56)
+        .build_cartesian_2d(x, y)
+        .map_err(draw_error)?;
+    axes(&mut chart, x_name, y_name)?;
+    Ok(chart)
 }
 
 /// Fig. 11 (the stages' times against the regions) beside fig. 12 (the regions against the
 /// faces, with the paper's 1.6 a face).
 fn plot(scenes: &[StudyScene], path: &std::path::Path) -> Result<(), CliError> {
-    register_font();
     let (w, h) = (1200u32, 520u32);
-    let mut buf = vec![0u8; (w * h * 3) as usize];
-    {
-        let root = BitMapBackend::with_buffer(&mut buf, (w, h)).into_drawing_area();
-        root.fill(&WHITE).map_err(draw_error)?;
+    picture((w, h), path, |root| {
         let (left, right) = root.split_horizontally(w / 2);
         let top = |f: fn(&StudyScene) -> f64| scenes.iter().map(f).fold(0.0, f64::max) * 1.08;
         let regions = top(|s| s.regions as f64).max(1.0);
         let ms = top(|s| s.build_ms.max(s.mesh_ms)).max(1e-3);
+        let faces = top(|s| s.faces as f64).max(1.0);
         let network = RGBColor(40, 90, 200);
         let mesh = RGBColor(220, 110, 30);
-        let mut chart = ChartBuilder::on(&left)
-            .caption("seed 004 fig. 11: time per stage", (FONT, 20))
-            .margin(16)
-            .x_label_area_size(40)
-            .y_label_area_size(56)
-            .build_cartesian_2d(0f64..regions, 0f64..ms)
-            .map_err(draw_error)?;
-        chart
-            .configure_mesh()
-            .x_desc("regions (faces of the network)")
-            .y_desc("milliseconds")
-            .label_style((FONT, 13))
-            .axis_desc_style((FONT, 15))
-            .draw()
-            .map_err(draw_error)?;
-        for (color, name, f) in [
-            (
-                network,
-                "network, charts and lifts",
-                (|s: &StudyScene| s.build_ms) as fn(&StudyScene) -> f64,
-            ),
-            (mesh, "mesh", |s: &StudyScene| s.mesh_ms),
-        ] {
+        let mut chart = chart_on(
+            &left,
+            "seed 004 fig. 11: time per stage",
+            (0.0..regions, 0.0..ms),
+            ("regions (faces of the network)", "milliseconds"),
+        )?;
+        let stages: [Stage; 2] = [
+            (network, "network, charts and lifts", |s| s.build_ms),
+            (mesh, "mesh", |s| s.mesh_ms),
+        ];
+        for (color, name, f) in stages {
             chart
                 .draw_series(
                     scenes
@@ -139,30 +141,13 @@ fn plot(scenes: &[StudyScene], path: &std::path::Path) -> Result<(), CliError> {
                 .label(name)
                 .legend(move |(x, y)| Circle::new((x + 8, y), 4, color.filled()));
         }
-        chart
-            .configure_series_labels()
-            .position(SeriesLabelPosition::UpperLeft)
-            .label_font((FONT, 14))
-            .background_style(WHITE.mix(0.9))
-            .border_style(BLACK)
-            .draw()
-            .map_err(draw_error)?;
-        let faces = top(|s| s.faces as f64).max(1.0);
-        let mut chart = ChartBuilder::on(&right)
-            .caption("seed 004 fig. 12: regions against faces", (FONT, 20))
-            .margin(16)
-            .x_label_area_size(40)
-            .y_label_area_size(56)
-            .build_cartesian_2d(0f64..faces, 0f64..regions.max(1.6 * faces))
-            .map_err(draw_error)?;
-        chart
-            .configure_mesh()
-            .x_desc("faces of the cubes kept")
-            .y_desc("regions")
-            .label_style((FONT, 13))
-            .axis_desc_style((FONT, 15))
-            .draw()
-            .map_err(draw_error)?;
+        legend(&mut chart)?;
+        let mut chart = chart_on(
+            &right,
+            "seed 004 fig. 12: regions against faces",
+            (0.0..faces, 0.0..regions.max(1.6 * faces)),
+            ("faces of the cubes kept", "regions"),
+        )?;
         chart
             .draw_series(
                 scenes
@@ -177,16 +162,7 @@ fn plot(scenes: &[StudyScene], path: &std::path::Path) -> Result<(), CliError> {
             .map_err(draw_error)?
             .label("the paper: 1.6 regions a face")
             .legend(|(x, y)| PathElement::new([(x, y), (x + 16, y)], BLACK));
-        chart
-            .configure_series_labels()
-            .position(SeriesLabelPosition::UpperLeft)
-            .label_font((FONT, 14))
-            .background_style(WHITE.mix(0.9))
-            .border_style(BLACK)
-            .draw()
-            .map_err(draw_error)?;
-        root.present().map_err(draw_error)?;
-    }
-    let img = image::RgbImage::from_raw(w, h, buf).ok_or_else(|| draw_error("buffer size"))?;
-    super::write_png(img.into(), path)
+        legend(&mut chart)?;
+        Ok(())
+    })
 }

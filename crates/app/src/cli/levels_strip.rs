@@ -5,7 +5,7 @@
 //! 12–15; seed 001 figs. 3–6; seed 002 figs. 1–2 are such sequences).
 
 use super::CliError;
-use super::font::{FONT, register_font};
+use super::plot_style::{FONT, register_font};
 use plotters::prelude::*;
 use prism_geom::{Level, Scheme};
 use prism_viewport::{Camera, Offscreen, Scene};

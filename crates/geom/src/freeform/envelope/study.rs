@@ -27,10 +27,10 @@ pub struct StudyScene {
 }
 
 /// A reproducible sequence in [0, 1) (a linear congruential generator, Knuth's constants).
-struct Lcg(u64);
+pub struct Lcg(pub u64);
 
 impl Lcg {
-    fn next(&mut self) -> f64 {
+    pub fn uniform(&mut self) -> f64 {
         self.0 = self
             .0
             .wrapping_mul(6364136223846793005)
@@ -40,10 +40,10 @@ impl Lcg {
 }
 
 /// `count` equal axis-aligned cubes of half-size 1, centres uniform in [0, spread]³.
-fn random_cubes(rng: &mut Lcg, count: usize, spread: f64) -> Vec<PrimitiveInput> {
+pub fn random_cubes(rng: &mut Lcg, count: usize, spread: f64) -> Vec<PrimitiveInput> {
     (0..count)
         .map(|_| {
-            let centre = [0; 3].map(|_| spread * rng.next());
+            let centre = [0; 3].map(|_| spread * rng.uniform());
             Shape::Cube.placed(&Placement {
                 centre,
                 scale: 3f64.sqrt(),
