@@ -632,6 +632,31 @@ fn envelope_study_tables_and_plots_figs_11_and_12() {
     assert_eq!(o.status.code(), Some(2));
 }
 
+/// `prism curve --plot --evolute` draws the centres of curvature (green) beside the comb; without
+/// it there is no green; without --plot it is refused.
+#[test]
+fn curve_plot_draws_the_evolute_on_request() {
+    let green = |png: &Path| {
+        image::open(png)
+            .unwrap()
+            .to_rgb8()
+            .pixels()
+            .filter(|p| p[1] > 120 && p[0] < 90 && p[2] < 110)
+            .count()
+    };
+    let line = "curve --preset fig6:30,60,1,2 -o {} --scheme log-spiral --plot {}";
+    let (json, plain, with) = (tmp("evolute.json"), tmp("plain.png"), tmp("evolute.png"));
+    succeeds(run_with(line, &[&json, &plain]));
+    succeeds(run_with(&format!("{line} --evolute"), &[&json, &with]));
+    assert_eq!(green(&plain), 0);
+    assert!(green(&with) > 100, "{}", green(&with));
+    let o = run_with(
+        "curve --preset fig6:30,60,1,2 -o {} --scheme log-spiral --evolute",
+        &[&json],
+    );
+    assert_eq!(o.status.code(), Some(2), "{}", text(&o).1);
+}
+
 #[test]
 fn curve_refines_and_round_trips_its_json() {
     let input = tmp("square.json");

@@ -40,6 +40,9 @@ pub struct CurveArgs {
     /// length (with --sweep: the study's dimensional stacking).
     #[arg(long)]
     pub plot: Option<PathBuf>,
+    /// With --plot: draw the evolute too (the centres of curvature).
+    #[arg(long, requires = "plot", conflicts_with = "sweep")]
+    pub evolute: bool,
     /// Run seed 002's §4 study on fig. 6's polyline: every θ1, θ2 of --angles and l1, l2 of
     /// --lengths, refined by the three schemes.
     #[arg(long, conflicts_with_all = ["input", "preset", "scheme"])]
@@ -145,7 +148,7 @@ pub fn run(a: CurveArgs) -> Result<(), CliError> {
     );
     if let Some(plot) = &a.plot {
         let title = format!("{} × {} levels: {source}", scheme.name(), a.levels);
-        curve_plot(&poly, &out, &title, plot)?;
+        curve_plot(&poly, &out, &title, a.evolute, plot)?;
         println!("plotted {}", plot.display());
     }
     Ok(())

@@ -39,10 +39,13 @@ fn padded(lo: f64, hi: f64) -> std::ops::Range<f64> {
 }
 
 /// Curve, control polygon and comb (left); curvature against arc length (right).
+/// With `evolute`, the centres of curvature too (green; runs broken where the curve is straight
+/// or a centre lies more than three extents away, the box kept on the curve).
 pub fn curve_plot(
     control: &Polyline,
     refined: &Polyline,
     title: &str,
+    evolute: bool,
     path: &Path,
 ) -> Result<(), CliError> {
     let (w, h) = (1200u32, 520u32);
@@ -127,6 +130,28 @@ pub fn curve_plot(
             .map_err(draw_error)?
             .label("curvature comb")
             .legend(move |(x, y)| PathElement::new([(x, y), (x + 18, y)], comb));
+        if evolute {
+            let green = RGBColor(40, 160, 70);
+            let middle = 0.5 * (lo + hi);
+            let mut runs: Vec<Vec<(f64, f64)>> = vec![Vec::new()];
+            for c in refined.evolute() {
+                match c.filter(|c| c.distance(middle) <= 3.0 * extent) {
+                    Some(c) => runs.last_mut().expect("one run").push((c.x, c.y)),
+                    None if runs.last().is_some_and(|r| !r.is_empty()) => runs.push(Vec::new()),
+                    None => {}
+                }
+            }
+            for (k, run) in runs.into_iter().filter(|r| r.len() > 1).enumerate() {
+                let drawn = chart
+                    .draw_series(LineSeries::new(run, green))
+                    .map_err(draw_error)?;
+                if k == 0 {
+                    drawn
+                        .label("evolute (centres of curvature)")
+                        .legend(move |(x, y)| PathElement::new([(x, y), (x + 18, y)], green));
+                }
+            }
+        }
         chart
             .draw_series(LineSeries::new(closed(control), RGBColor(150, 150, 150)))
             .map_err(draw_error)?
