@@ -16,11 +16,17 @@ pub const COLUMNS: usize = 4;
 
 /// `OUT-L3.png` for level 3 of a strip written to `OUT.png`.
 pub fn level_path(out: &Path, k: usize) -> PathBuf {
-    let stem = out.file_stem().map(|s| s.to_string_lossy().into_owned());
+    suffixed(out, &format!("L{k}"), "level")
+}
+
+/// `OUT-SUFFIX.png` beside `OUT.png` (`stem`, `.png` where it has none): the frames of a strip
+/// or a turntable.
+pub fn suffixed(out: &Path, suffix: &str, stem: &str) -> PathBuf {
+    let own = out.file_stem().map(|s| s.to_string_lossy().into_owned());
     let ext = out.extension().map(|e| e.to_string_lossy().into_owned());
     out.with_file_name(format!(
-        "{}-L{k}.{}",
-        stem.unwrap_or_else(|| "level".into()),
+        "{}-{suffix}.{}",
+        own.unwrap_or_else(|| stem.into()),
         ext.unwrap_or_else(|| "png".into())
     ))
 }

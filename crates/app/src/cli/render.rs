@@ -244,14 +244,7 @@ fn camera(
 
 /// `OUT-007.png` for frame 7 of a turntable written to `OUT.png`.
 fn frame_path(out: &Path, i: u32) -> PathBuf {
-    let stem = out.file_stem().map(|s| s.to_string_lossy().into_owned());
-    let ext = out.extension().map(|e| e.to_string_lossy().into_owned());
-    let name = format!(
-        "{}-{i:03}.{}",
-        stem.unwrap_or_else(|| "frame".into()),
-        ext.unwrap_or_else(|| "png".into())
-    );
-    out.with_file_name(name)
+    super::levels_strip::suffixed(out, &format!("{i:03}"), "frame")
 }
 
 fn parse_size(s: &str) -> Option<(u32, u32)> {
@@ -400,19 +393,15 @@ fn render_lines(
             a.input.display()
         )));
     }
-    let mut scene = Scene::plain(&PolyMesh::new());
-    let all: Vec<DVec3> = lines
+    // A mesh of the lines' points and no faces: the scene's origin and box, nothing drawn.
+    let mut points = PolyMesh::new();
+    points.positions = lines
         .iter()
         .chain(over.unwrap_or_default())
         .flatten()
         .copied()
         .collect();
-    let (lo, hi) = all.iter().fold(
-        (DVec3::splat(f64::INFINITY), DVec3::splat(f64::NEG_INFINITY)),
-        |(lo, hi), p| (lo.min(*p), hi.max(*p)),
-    );
-    scene.origin = 0.5 * (lo + hi);
-    scene.bbox = (lo, hi);
+    let mut scene = Scene::plain(&points);
     scene.add_segments(&segments(lines), LINES);
     if let Some(l) = over {
         scene.add_segments(&segments(l), LINES);

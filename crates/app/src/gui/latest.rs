@@ -142,46 +142,49 @@ where
     S: Clone + PartialEq + Send + 'static,
     B: Send + 'static,
 {
-    if let Some((_, took)) = latest.progress()
-        && took < SHOW_PROGRESS_AFTER
-    {
-        ui.ctx().request_repaint_after(SHOW_PROGRESS_AFTER - took);
-    } else if let Some((part, took)) = latest.progress() {
-        let text = format!(
-            "Building… {:.1} s{}",
-            took.as_secs_f32(),
-            if last_shown {
-                " (the last one is shown)"
-            } else {
-                ""
-            }
-        );
-        ui.horizontal(|ui| {
-            ui.add(egui::ProgressBar::new(part).text(text).desired_width(230.0));
-            if ui
-                .button("Cancel")
-                .on_hover_text("Stop this build; the view keeps what it shows")
-                .clicked()
-            {
-                latest.cancel();
-            }
-        });
-        ui.ctx().request_repaint_after(Duration::from_millis(30));
-    } else if latest.was_cancelled() {
-        ui.horizontal(|ui| {
-            ui.label(egui::RichText::new(if last_shown {
-                "Cancelled: the view shows the last one built"
-            } else {
-                "Cancelled: nothing built"
-            }));
-            if ui
-                .button("Build")
-                .on_hover_text("Build what the panel says after all")
-                .clicked()
-            {
-                latest.retry();
-            }
-        });
+    match latest.progress() {
+        Some((_, took)) if took < SHOW_PROGRESS_AFTER => {
+            ui.ctx().request_repaint_after(SHOW_PROGRESS_AFTER - took);
+        }
+        Some((part, took)) => {
+            let text = format!(
+                "Building… {:.1} s{}",
+                took.as_secs_f32(),
+                if last_shown {
+                    " (the last one is shown)"
+                } else {
+                    ""
+                }
+            );
+            ui.horizontal(|ui| {
+                ui.add(egui::ProgressBar::new(part).text(text).desired_width(230.0));
+                if ui
+                    .button("Cancel")
+                    .on_hover_text("Stop this build; the view keeps what it shows")
+                    .clicked()
+                {
+                    latest.cancel();
+                }
+            });
+            ui.ctx().request_repaint_after(Duration::from_millis(30));
+        }
+        None if latest.was_cancelled() => {
+            ui.horizontal(|ui| {
+                ui.label(egui::RichText::new(if last_shown {
+                    "Cancelled: the view shows the last one built"
+                } else {
+                    "Cancelled: nothing built"
+                }));
+                if ui
+                    .button("Build")
+                    .on_hover_text("Build what the panel says after all")
+                    .clicked()
+                {
+                    latest.retry();
+                }
+            });
+        }
+        None => {}
     }
 }
 

@@ -160,6 +160,9 @@ impl PrismApp {
             state.pipelines.push(state.pipelines[0].clone());
         }
         let mut display = settings.display.clone();
+        let mut envelope = envelope::EnvelopeTab::default();
+        let mut skin = skin::SkinTab::default();
+        let mut curves = curves::CurvesTab::default();
         for s in &launch.show {
             match s {
                 Show::Smooth => display.smooth = true,
@@ -170,15 +173,18 @@ impl PrismApp {
                 Show::Cage => display.cage = true,
                 Show::Corners => display.corners = true,
                 Show::Limit => display.limit = true,
-                Show::TSweep
-                | Show::NetworkOnly
-                | Show::Trajectories
-                | Show::Swept
-                | Show::Contours
-                | Show::Twists
-                | Show::Evolute
-                | Show::NoComb
-                | Show::Xray => {}
+                Show::TSweep => envelope.sweep = true,
+                Show::NetworkOnly => envelope.overlays.surface = false,
+                Show::Trajectories => skin.overlays.trajectories = true,
+                Show::Swept => skin.overlays.swept = true,
+                Show::Contours => skin.overlays.contours = true,
+                Show::Twists => skin.overlays.twists = true,
+                Show::Evolute => curves.evolute = true,
+                Show::NoComb => curves.comb = false,
+                Show::Xray => {
+                    skin.overlays.look.xray = true;
+                    envelope.overlays.look.xray = true;
+                }
             }
         }
         let next = prism_geom::parse_pipeline(&settings.next)
@@ -200,26 +206,6 @@ impl PrismApp {
         let first_tab = tab_for(&state);
         let doc = Document::new(state, origin);
         model.sync(&doc);
-        let mut envelope = envelope::EnvelopeTab::default();
-        envelope.sweep = launch.show.contains(&Show::TSweep);
-        let mut skin = skin::SkinTab::default();
-        let mut curves = curves::CurvesTab::default();
-        for s in &launch.show {
-            match s {
-                Show::NetworkOnly => envelope.overlays.surface = false,
-                Show::Trajectories => skin.overlays.trajectories = true,
-                Show::Swept => skin.overlays.swept = true,
-                Show::Contours => skin.overlays.contours = true,
-                Show::Twists => skin.overlays.twists = true,
-                Show::Evolute => curves.evolute = true,
-                Show::NoComb => curves.comb = false,
-                Show::Xray => {
-                    skin.overlays.look.xray = true;
-                    envelope.overlays.look.xray = true;
-                }
-                _ => {}
-            }
-        }
         let autosave = autosave::Autosave::new(launch.autosave.clone(), doc.generation());
         Ok(PrismApp {
             autosave,

@@ -1,10 +1,11 @@
 //! The coordinates an envelope is built in (docs/algorithms/envelope.md, "Where the scene
-//! lies"): the scene's own, moved to the centre of its primitives' bounding box and divided by
-//! the power of two nearest its size. The construction then works on numbers of order one
-//! wherever the scene sits and however large it is — a chart's angle about an axis far from the
-//! origin keeps its digits, squared lengths of a huge scene do not overflow — and the meshes are
-//! mapped back, `x = centre + scale·x_local`. A power of two scales exactly, so a scene scaled
-//! by one builds the same local surface to the bit.
+//! lies"): the scene's own, moved to the centre of its primitives' bounding box (rounded to a
+//! multiple of 16 scales: zero for a scene near the origin) and divided by the power of two
+//! nearest its size. The construction then works on numbers of order one wherever the scene
+//! sits and however large it is — a chart's angle about an axis far from the origin keeps its
+//! digits, squared lengths of a huge scene do not overflow — and the meshes are mapped back,
+//! `x = centre + scale·x_local`. A power of two scales exactly, so a scene near the origin is
+//! divided exactly and one scaled by a power of two builds the same local surface to the bit.
 
 use super::primitive::PrimitiveInput;
 use glam::DVec3;
@@ -78,7 +79,9 @@ impl LocalFrame {
                 .iter()
                 .map(|v| self.to_local(DVec3::from_array(*v)).to_array())
                 .collect(),
-            ..p.clone()
+            faces: p.faces.clone(),
+            t: p.t,
+            vertex_t: p.vertex_t.clone(),
         }
     }
 }

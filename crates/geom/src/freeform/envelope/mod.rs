@@ -103,13 +103,18 @@ fn ccw(d: DVec3, from: DVec3, to: DVec3) -> f64 {
 /// primitives.
 pub fn envelope(spec: &EnvelopeSpec) -> Result<Envelope, EnvelopeError> {
     let frame = LocalFrame::of(&spec.primitives);
+    // Every field but the primitives is a number or a choice: copied, the vertices mapped.
     let local = EnvelopeSpec {
         primitives: spec
             .primitives
             .iter()
             .map(|p| frame.input_to_local(p))
             .collect(),
-        ..spec.clone()
+        t: spec.t,
+        resolution: spec.resolution,
+        basis: spec.basis,
+        patches: spec.patches,
+        enclosure: spec.enclosure,
     };
     let mut e = envelope_here(&local)?;
     e.frame = frame;
