@@ -25,6 +25,7 @@ use std::sync::Arc;
 
 mod estimate;
 mod level;
+mod reach;
 
 pub use level::{Keep, Level, PipelineError, RoundingRun};
 
@@ -264,7 +265,12 @@ impl Pipeline {
                         memory_budget: budget,
                         ..self.options
                     };
-                    let (out, topo) = biquadratic_step_carrying(
+                    let step = if continues_run {
+                        biquadratic_step_carrying
+                    } else {
+                        reach::first_step
+                    };
+                    let (out, topo) = step(
                         &prev.mesh,
                         &prev.edge_attrs,
                         &rule,
@@ -434,6 +440,43 @@ impl Pipeline {
             measure_fillets(&base.mesh, refined, &|e| run.radius(&base.edge_attrs, e))
                 .map(|s| (run, s)),
         )
+    }
+
+    /// The clamped edges of level `k`'s rounding run whose fillet at level k misses the radius
+    /// they were clamped to by more than the reach tolerance ([`crate::rules::ReachOptions`]):
+    /// after j steps of the run, a fillet of radius r over an edge of bend ψ is the polygon
+    /// whose fitted circle has radius `r/cos(ψ/2^(j+1))`. Each with its radius and the radius
+    /// measured (`None`: the section had too few points), for the CLI's warning and the app's
+    /// red edges. Empty where the run clamped nothing or the level is released.
+    pub fn missed_radii(&self, k: usize) -> Vec<(EdgeKey, f64, Option<f64>)> {
+        let Some(run) = self.rounding_run(k) else {
+            return Vec::new();
+        };
+        let k = k.min(self.levels.len() - 1);
+        let base = &self.levels[run.start].mesh;
+        let refined = &self.levels[k].mesh;
+        if run.clamped.is_empty() || refined.num_faces() == 0 {
+            return Vec::new();
+        }
+        let mut edges: Vec<(EdgeKey, f64)> = run.clamped.iter().map(|(e, r)| (*e, *r)).collect();
+        edges.sort_by_key(|e| e.0);
+        let Ok(measured) = crate::analysis::measure_edges(base, refined, &edges) else {
+            return Vec::new();
+        };
+        let steps = (k - run.start) as i32;
+        edges
+            .iter()
+            .zip(measured)
+            .filter_map(|(&(e, r), m)| match m {
+                Ok(m) => {
+                    let polygon = r / (m.bend / 2f64.powi(steps + 1)).cos();
+                    ((m.fitted_radius / polygon - 1.0).abs() > self.options.reach.tolerance)
+                        .then_some((e, r, Some(m.fitted_radius)))
+                }
+                Err(crate::analysis::FilletError::TooFewPoints { .. }) => Some((e, r, None)),
+                Err(_) => None,
+            })
+            .collect()
     }
 
     /// The newest level, the pipeline given up (the command line writes it without a copy).

@@ -46,6 +46,9 @@ pub struct StepReport {
     pub guarded_corners: usize,
     /// Edges whose radius was lowered to fit their faces (clamping; input numbering).
     pub clamped: Vec<rules::EdgeFit>,
+    /// What the clamp's reach search did, when the first step of a clamped combination run
+    /// missed a clamped radius (`Pipeline::compute_with`).
+    pub reached: Option<rules::Reached>,
     /// Edges whose cut width the combination rule lowered so its cut faces keep their edges.
     pub capped_edges: usize,
     /// Faces whose chamfer distance or width (l, d) the clamp lowered.
@@ -153,6 +156,7 @@ pub fn biquadratic_step_carrying(
         dissolved_edges: prep.dissolved_edges,
         guarded_corners: rule_report.guarded_corners,
         clamped: prep.clamped.clone(),
+        reached: None,
         capped_edges: prep.capped_edges.len(),
         clamped_faces: prep.clamped_faces,
         offset_faces: prep.offset_faces,

@@ -615,6 +615,18 @@ fn tripod_sound_and_crossing_nowhere(text: &str) -> Pipeline {
     sound_and_crossing_nowhere(primitives::tripod(), text)
 }
 
+/// Like [`sound_and_crossing_nowhere`] with the clamp's reach search off
+/// (docs/algorithms/cylindrical.md, "Reach"), for the tests that watch a mending stage at work
+/// where the search's caps leave it nothing to do.
+fn without_reach(mesh: PolyMesh, text: &str) -> Pipeline {
+    let mut p = Pipeline::new(mesh, EdgeAttrs::new(), steps(text));
+    p.options.overlap = Overlap::Clamp;
+    p.options.reach.search = false;
+    p.compute().unwrap();
+    assert_sound_and_crossing_nowhere_after(&p, 0);
+    p
+}
+
 fn sound_and_crossing_nowhere(mesh: PolyMesh, text: &str) -> Pipeline {
     sound_and_crossing_nowhere_after(mesh, text, 0)
 }
@@ -646,13 +658,15 @@ fn assert_sound_and_crossing_nowhere_after(p: &Pipeline, from: usize) {
 /// corner, a chevron 4 × 10⁻³ wide in the blend whose eq. (1) point lands 0.1 outside it, over
 /// the bottom; at the second combination step (r = 0.2) the VERTEX-face there came out a
 /// dart, flipped, at each of the three such corners. With the chevron on the width offset
-/// none is flipped and no faces cross, and the step says how many faces it re-placed.
+/// none is flipped and no faces cross, and the step says how many faces it re-placed. (The
+/// clamp's reach search caps the second run's clamped radii where the rule would miss them,
+/// and then nothing folds there: the guard is watched with the search off.)
 #[test]
 fn blend_faces_beside_a_fold_take_the_width_offset() {
-    let p = tripod_sound_and_crossing_nowhere(
-        "combination:r=0.1,vector-sum:alpha=0.2:reflex=inward,\
-         combination:r=0.2,combination:r=0.2",
-    );
+    let text = "combination:r=0.1,vector-sum:alpha=0.2:reflex=inward,\
+         combination:r=0.2,combination:r=0.2";
+    tripod_sound_and_crossing_nowhere(text);
+    let p = without_reach(primitives::tripod(), text);
     assert!(p.levels()[4].report.as_ref().unwrap().mend.reoffset_faces > 0);
 }
 
@@ -772,13 +786,14 @@ fn small_chamfers_that_would_cross_go_on_shrinking() {
 /// faces at level 5; its small chamfers came out of eight rounds with nothing flipped but 320
 /// pairs of faces crossing, so they were refused. With sixteen the level is sound and crosses
 /// nowhere, the rounding given up at a few thousand vertices at most.
+/// (The clamp's reach search caps the radii where they would fold, and then nothing needs the
+/// small chamfers: they are watched with the search off.)
 #[test]
 fn small_chamfers_shrink_on_for_as_many_rounds_as_the_crossings_need() {
-    let p = sound_and_crossing_nowhere(
-        computer_room(),
-        "combination:r=0.1,vector-sum:alpha=0.2:reflex=inward,\
-         combination:r=0.2,combination:r=0.2,combination:r=0.2",
-    );
+    let text = "combination:r=0.1,vector-sum:alpha=0.2:reflex=inward,\
+         combination:r=0.2,combination:r=0.2,combination:r=0.2";
+    sound_and_crossing_nowhere(computer_room(), text);
+    let p = without_reach(computer_room(), text);
     let n = p.levels()[5].report.as_ref().unwrap().mend.small_chamfers;
     assert!(n > 0 && n < 4000, "{n}");
 }
@@ -1048,6 +1063,127 @@ fn the_bundled_solids_round_with_nothing_to_mend() {
                 "{name} level {k}"
             );
             assert!(r.flipped.is_empty(), "{name} level {k}");
+        }
+    }
+}
+
+/// Own radius `r` on every fifth edge of `m` (in edge order), rounded by `levels` clamped
+/// combination steps of 0.1 (with the reach search as `search` says), and every clamped edge
+/// with its radius and what level `levels` measures.
+fn clamped_and_measured(
+    m: &PolyMesh,
+    r: f64,
+    levels: usize,
+    search: bool,
+) -> (Pipeline, Vec<(EdgeKey, f64, f64)>) {
+    let topo = prism_geom::Topology::build(m).unwrap();
+    let mut attrs = EdgeAttrs::new();
+    for e in (1..topo.num_edges()).step_by(5) {
+        let (a, b) = topo.edge_verts(m, e);
+        attrs.insert(EdgeKey::new(a, b), EdgeAttr::rounded(r));
+    }
+    let mut p = Pipeline::new(m.clone(), attrs, combination(levels, 0.1));
+    p.options.overlap = Overlap::Clamp;
+    p.options.reach.search = search;
+    p.compute().unwrap();
+    measured_clamped(p, levels)
+}
+
+/// Every clamped edge of `p`'s run with its radius and its fillet at level `k`.
+fn measured_clamped(p: Pipeline, k: usize) -> (Pipeline, Vec<(EdgeKey, f64, f64)>) {
+    let run = p.rounding_run(k).unwrap();
+    let mut edges: Vec<(EdgeKey, f64)> = run.clamped.iter().map(|(e, r)| (*e, *r)).collect();
+    edges.sort_by_key(|e| e.0);
+    let base = &p.levels()[run.start].mesh;
+    let m = prism_geom::analysis::measure_edges(base, &p.levels()[k].mesh, &edges).unwrap();
+    let out = edges
+        .iter()
+        .zip(m)
+        .map(|(&(e, r), m)| (e, r, m.map_or(0.0, |m| m.fitted_radius)))
+        .collect();
+    (p, out)
+}
+
+/// A clamped radius is one the combination rule reaches (docs/algorithms/cylindrical.md,
+/// "Reach"): the tripod's arm edge 0-9 with an own radius of 0.82 or 1.5 beside r = 0.2 was
+/// clamped to 0.80 or 0.88 (its neighbours to 0.20 or 0.12), and the fold guard, where the
+/// fillets of four to one and more met at the arm's top, made the fillet 0.53 or 0.58 at every
+/// level. Now the first step measures them, caps the clamped radii at the largest the rule
+/// reaches (0.79–0.80: four times the neighbours' 0.2) and every clamped edge's fillet at
+/// level 5 is within 5 % of the radius the report and the panel say. With the search off the
+/// clamp's radius stands and the miss is named, with both numbers.
+#[test]
+fn a_clamped_radius_is_one_the_rule_reaches() {
+    for (r, search) in [(0.82, true), (1.5, true), (1.5, false)] {
+        let mut attrs = EdgeAttrs::new();
+        attrs.insert(EdgeKey::new(0, 9), EdgeAttr::rounded(r));
+        let mut p = Pipeline::new(primitives::tripod(), attrs, combination(5, 0.2));
+        p.options.overlap = Overlap::Clamp;
+        p.options.reach.search = search;
+        p.compute().unwrap();
+        let reached = p.levels()[1].report.as_ref().unwrap().reached;
+        let missed = p.missed_radii(5);
+        let (_, clamped) = measured_clamped(p, 5);
+        let arm = clamped.iter().find(|c| c.0 == EdgeKey::new(0, 9)).unwrap();
+        if search {
+            assert!(reached.unwrap().cap.is_some(), "{reached:?}");
+            assert!(arm.1 > 0.78 && arm.1 <= 0.8, "{arm:?}");
+            for (e, r, m) in &clamped {
+                assert!((m / r - 1.0).abs() < 0.05, "r = {r}: edge {e:?} {r} → {m}");
+            }
+            assert!(missed.is_empty(), "{missed:?}");
+        } else {
+            assert!(reached.is_none());
+            assert!((arm.1 - 0.8824).abs() < 1e-3 && arm.2 < 0.6, "{arm:?}");
+            let (e, said, m) = missed
+                .iter()
+                .find(|m| m.0 == EdgeKey::new(0, 9))
+                .copied()
+                .unwrap();
+            assert_eq!((e, said), (arm.0, arm.1));
+            assert!((m.unwrap() - arm.2).abs() < 1e-12);
+        }
+    }
+}
+
+/// Solids the search was not tuned on, an own radius of 1.5 on every fifth edge beside
+/// r = 0.1: on the L-block and the tripod every clamped edge's fillet at level 4 is within
+/// 5 % of its clamped radius; on a hexagonal prism, where the blends of two large radii
+/// overlap along the short ring edge between them and no cap brings the ring's fillet back,
+/// the step warns and [`Pipeline::missed_radii`] names every edge that misses with both
+/// numbers: no clamped edge misses silently.
+#[test]
+fn clamped_radii_are_reached_or_named() {
+    let shapes = [
+        ("l-block", asset("l-block.obj"), true),
+        ("tripod", primitives::tripod(), true),
+        (
+            "hexagonal prism",
+            primitives::ngon_prism(6, 1.0, 2.0),
+            false,
+        ),
+    ];
+    for (name, m, reached) in shapes {
+        let (p, clamped) = clamped_and_measured(&m, 1.5, 4, true);
+        assert!(!clamped.is_empty(), "{name}");
+        let missed = p.missed_radii(4);
+        let report = p.levels()[1].report.as_ref().unwrap();
+        for (e, r, m) in &clamped {
+            let close = (m / r - 1.0).abs() < 0.05;
+            assert!(
+                close || missed.iter().any(|x| x.0 == *e && x.1 == *r),
+                "{name}: edge {e:?} {r} → {m} missed silently"
+            );
+            assert!(!reached || close, "{name}: edge {e:?} {r} → {m}");
+        }
+        assert_eq!(missed.is_empty(), reached, "{name}: {missed:?}");
+        if !reached {
+            assert!(
+                report
+                    .notes()
+                    .iter()
+                    .any(|n| n.warning && n.text.contains("misses"))
+            );
         }
     }
 }

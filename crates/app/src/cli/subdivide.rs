@@ -281,6 +281,17 @@ fn report_fillets(p: &Pipeline, measure: Option<&str>) -> Result<(), CliError> {
         }
         None => println!("fillet at level {n}: no rounded edge{of} could be measured"),
     }
+    for (e, r, m) in p.missed_radii(n) {
+        let m = m.map_or("too few section points to measure".to_string(), |m| {
+            format!("{m:.4} at level {n}")
+        });
+        eprintln!(
+            "warning: edge {}-{}{of} was clamped to r = {} but the combination rule reaches {m}",
+            e.0,
+            e.1,
+            short(r)
+        );
+    }
     let base = &p.levels()[run.start];
     for e in edges.unwrap_or_default() {
         let r = run.radius(&base.edge_attrs, e).ok_or_else(|| {

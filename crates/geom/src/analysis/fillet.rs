@@ -48,6 +48,9 @@ pub struct FilletMeasure {
     pub min_radial_error: f64,
     /// Whether the edge was concave (the fillet adds material).
     pub concave: bool,
+    /// The edge's bend angle ψ (radians): after k steps the section's points lie
+    /// `r/cos(ψ/2^(k+1))` from the ideal axis.
+    pub bend: f64,
 }
 
 /// Measures the fillet of original edge `a`-`b` (vertex indices of `original`) in `refined`,
@@ -68,6 +71,33 @@ pub fn measure_fillet(
         })
         .ok_or(FilletError::NoSuchEdge { a, b })?;
     measure_at_corner(original, &topo, c, &Refined::new(refined), r)
+}
+
+/// [`measure_fillet`] of each of `edges` (original edge, target r), with the original's
+/// topology and the refined level's grid built once.
+pub fn measure_edges(
+    original: &PolyMesh,
+    refined: &PolyMesh,
+    edges: &[(EdgeKey, f64)],
+) -> Result<Vec<Result<FilletMeasure, FilletError>>, FilletError> {
+    let topo = Topology::build(original)?;
+    let refined = Refined::new(refined);
+    let cv = &original.corner_verts;
+    Ok(edges
+        .iter()
+        .map(|&(key, r)| {
+            let (a, b) = (key.0, key.1);
+            let c = topo
+                .find_edge(original, a, b)
+                .map(|e| topo.edge_corner[e as usize] as usize)
+                .filter(|&c| {
+                    let (x, y) = (cv[c], cv[topo.next(c) as usize]);
+                    (x, y) == (a, b) || (x, y) == (b, a)
+                })
+                .ok_or(FilletError::NoSuchEdge { a, b })?;
+            measure_at_corner(original, &topo, c, &refined, r)
+        })
+        .collect())
 }
 
 /// The fillet over every rounded edge of a run of cylindrical-family steps, for the
@@ -271,6 +301,7 @@ fn measure_at_corner(
         max_radial_error: max_e,
         min_radial_error: min_e,
         concave,
+        bend: psi,
     })
 }
 

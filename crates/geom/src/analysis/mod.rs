@@ -15,5 +15,7 @@ pub use crossings::{
     crossed_by, crossing_faces, crossing_points, crossings, crossings_of, triangles_cross,
 };
 pub use curvature::mean_curvature;
-pub use fillet::{FilletError, FilletMeasure, FilletSummary, measure_fillet, measure_fillets};
+pub use fillet::{
+    FilletError, FilletMeasure, FilletSummary, measure_edges, measure_fillet, measure_fillets,
+};
 pub use winding::{Inside, winding_number};

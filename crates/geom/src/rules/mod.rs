@@ -38,7 +38,7 @@ pub use combination::CombinationState;
 pub use cylindrical::{cut_width, dissolve_needed};
 pub use mend::{Mend, MendOptions, MendReport, Untangled};
 pub use options::RoundingOptions;
-pub use overlap::{EdgeFit, Overlap};
+pub use overlap::{EdgeFit, Overlap, ReachOptions, Reached};
 pub use prepared::Prepared;
 
 use crate::mesh::PolyMesh;

@@ -4,7 +4,7 @@
 //! reads [`MendOptions`](super::mend::MendOptions).
 
 use super::mend::MendOptions;
-use super::overlap::Overlap;
+use super::overlap::{Overlap, ReachOptions};
 
 /// Tunables of a rounding (biquadratic) step.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -37,6 +37,8 @@ pub struct RoundingOptions {
     pub overlap_passes: usize,
     /// The mending stage's tolerances ([`super::mend`]).
     pub mend: MendOptions,
+    /// How a clamped run makes sure the combination rule reaches the clamped radii.
+    pub reach: ReachOptions,
 }
 
 impl Default for RoundingOptions {
@@ -51,6 +53,7 @@ impl Default for RoundingOptions {
             kept_share: 0.25,
             overlap_passes: 64,
             mend: MendOptions::default(),
+            reach: ReachOptions::default(),
         }
     }
 }

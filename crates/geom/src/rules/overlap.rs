@@ -42,6 +42,66 @@ pub enum Overlap {
     Unchecked { clamped: bool },
 }
 
+/// How far a clamp makes sure the combination rule reaches the radii it lowers to
+/// (docs/algorithms/cylindrical.md, "Reach"; `Pipeline::compute_with`).
+///
+/// Lowering an edge until its round fits its faces is not enough for the combination rule:
+/// where fillets of very different radii meet at a vertex (the tripod's arm edge 0-9 at 0.88
+/// beside 0.12), its fold guard moves the faces into the vertex blend and the fillet comes out
+/// a third smaller. The first step of a clamped run therefore measures every clamped edge's
+/// fillet a few steps on; where one misses, the clamped radii are capped at c and the step is taken again,
+/// c found by halving between the smallest and the largest clamped radius.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ReachOptions {
+    /// Whether a clamped run searches the cap at all (default on).
+    pub search: bool,
+    /// A clamped edge reaches its radius when its fitted radius `depth` steps into the run
+    /// is within this share of what the rule's polygon gives there, `r/cos(ψ/2^(depth+1))`
+    /// (default 0.05).
+    pub tolerance: f64,
+    /// The search asks this much closer (default 0.5: within 2.5 % `depth` steps on), since
+    /// the fold guard can still take a little off at the levels after.
+    pub search_share: f64,
+    /// Steps of the rule taken to measure a trial (default 3: the fold guard also acts at
+    /// the second and third levels).
+    pub depth: usize,
+    /// Halvings of the cap's interval (default 8: a 256th of it).
+    pub halvings: usize,
+}
+
+impl Default for ReachOptions {
+    fn default() -> Self {
+        ReachOptions {
+            search: true,
+            tolerance: 0.05,
+            search_share: 0.5,
+            depth: 4,
+            halvings: 8,
+        }
+    }
+}
+
+/// What a clamped run's reach search did ([`ReachOptions`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Reached {
+    /// The cap on the clamped radii whose fillets the rule reaches, or `None` where even the
+    /// smallest clamped radius missed (the clamp's radii then stand, with a warning).
+    pub cap: Option<f64>,
+    /// Edges the cap lowered below what fits their faces.
+    pub capped: usize,
+    /// First steps taken in the search (the first one included).
+    pub steps: usize,
+}
+
+/// `x` rounded down to four significant digits (a radius said in a message is one that fits).
+pub fn round_down(x: f64) -> f64 {
+    if !(x.is_finite() && x > 0.0) {
+        return x;
+    }
+    let scale = 10f64.powi(3 - x.log10().floor() as i32);
+    (x * scale).floor() / scale
+}
+
 /// An edge whose round does not fit: its radius and the largest that fits.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct EdgeFit {
@@ -104,12 +164,7 @@ pub fn list(fits: &[EdgeFit]) -> String {
 /// at their asked radii; lower neighbours leave it more room, so this one number fits all),
 /// rounded down to four significant digits, so that the number said is one that fits.
 pub fn largest_fit(fits: &[EdgeFit]) -> f64 {
-    let x = fits.iter().map(|e| e.fits).fold(f64::INFINITY, f64::min);
-    if !(x.is_finite() && x > 0.0) {
-        return x;
-    }
-    let scale = 10f64.powi(3 - x.log10().floor() as i32);
-    (x * scale).floor() / scale
+    round_down(fits.iter().map(|e| e.fits).fold(f64::INFINITY, f64::min))
 }
 
 /// The sentence a step's report gives for the radii `fits` lowered ([`crate::step::StepReport::notes`]).

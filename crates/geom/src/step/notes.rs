@@ -9,6 +9,9 @@ use super::StepReport;
 pub enum Topic {
     /// Radii lowered to fit their faces ([`StepReport::clamped`]).
     ClampedRadii,
+    /// Clamped radii lowered further so that the combination rule reaches them
+    /// ([`StepReport::reached`]).
+    Reach,
     /// A chamfer's parameter lowered on faces too small for it.
     ClampedFaces,
     /// Doo–Sabin's width offset on concave faces.
@@ -62,6 +65,25 @@ impl StepReport {
                 Topic::ClampedRadii,
                 crate::rules::overlap::note(&self.clamped),
             );
+        }
+        match self.reached {
+            Some(crate::rules::Reached {
+                cap: Some(cap),
+                capped,
+                steps,
+            }) => say(
+                false,
+                Topic::Reach,
+                format!(
+                    "{capped} of them lowered further, to {cap}, the largest radius the combination rule reaches beside the others (its first level measured, {steps} first steps tried)"
+                ),
+            ),
+            Some(crate::rules::Reached { cap: None, .. }) => say(
+                true,
+                Topic::Reach,
+                "the combination rule misses some clamped radii even at the smallest of them (its first level measured): the fillets there come out smaller or larger than said".to_string(),
+            ),
+            None => {}
         }
         if self.clamped_faces > 0 {
             say(
