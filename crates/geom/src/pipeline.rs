@@ -265,20 +265,28 @@ impl Pipeline {
                         memory_budget: budget,
                         ..self.options
                     };
-                    let step = if continues_run {
-                        biquadratic_step_carrying
+                    let (out, topo) = if continues_run {
+                        biquadratic_step_carrying(
+                            &prev.mesh,
+                            &prev.edge_attrs,
+                            &rule,
+                            prev.combination.as_ref(),
+                            &options,
+                            carried.take(),
+                            next_is_biquadratic,
+                        )
                     } else {
-                        reach::first_step
-                    };
-                    let (out, topo) = step(
-                        &prev.mesh,
-                        &prev.edge_attrs,
-                        &rule,
-                        prev.combination.as_ref(),
-                        &options,
-                        carried.take(),
-                        next_is_biquadratic,
-                    )
+                        // The steps of the run this one begins (the same rule after it).
+                        let run = self.steps[k..].iter().take_while(|s| **s == scheme).count();
+                        reach::first_step(
+                            prev,
+                            &rule,
+                            &options,
+                            carried.take(),
+                            next_is_biquadratic,
+                            run,
+                        )
+                    }
                     .map_err(err)?;
                     carried = topo;
                     Level {

@@ -365,3 +365,57 @@ fn mending_crossings_is_a_checkbox_away() {
     assert!(!a.model.views[0].pipeline.options.mend.crossings);
     assert_eq!(level6(&a), 12);
 }
+
+/// A clamped radius in the app (issue: the tripod's arm edge 0-9 at 1.5 was clamped to 0.88
+/// and came out 0.58, shown beside the 0.88 without a flag): at the app's default (clamping
+/// on) five combination steps clamp it to a radius the rule reaches, the Edges tool's read-out
+/// is within 5 % of it and nothing is drawn red; with the reach search off the miss is drawn
+/// red and the status bar's words name the edge with both numbers.
+#[test]
+fn a_clamped_radius_is_reached_or_drawn_red() {
+    const MISSED: [f32; 3] = [0.90, 0.10, 0.10];
+    let red = |a: &super::PrismApp| {
+        a.model.views[0]
+            .overlay
+            .lines
+            .iter()
+            .filter(|l| l.color == MISSED)
+            .count()
+    };
+    let mut a = opened(&asset("tripod.obj"));
+    let e = prism_geom::EdgeKey::new(0, 9);
+    a.model.sel_edges.insert(e);
+    a.model.mark(super::command::EdgeMark::Radius(Some(1.5)));
+    a.flush();
+    run_pipeline(&mut a, &["combination:r=0.2"; 5].join(","));
+    rebuild(&mut a);
+    let doc = a.doc.state().clone();
+    let run = a.model.views[0].pipeline.rounding_run(5).unwrap();
+    let said = run.clamped[&e];
+    assert!(said > 0.78 && said <= 0.8, "{said}");
+    let t = a.model.fillet_text(0, &doc);
+    let fitted: f64 = t.split(' ').next().unwrap().parse().unwrap();
+    assert!((fitted / said - 1.0).abs() < 0.05, "{t}");
+    assert!(a.model.missed_radii(0).is_empty());
+    assert_eq!(red(&a), 0);
+    // The same with the search off: the clamp's 0.88 stands and misses.
+    let v = &a.model.views[0];
+    let mut p = prism_geom::Pipeline::new(
+        doc.mesh.clone(),
+        doc.edge_attrs.clone(),
+        v.pipeline.steps().to_vec(),
+    );
+    p.options = v.pipeline.options;
+    p.options.reach.search = false;
+    p.compute().unwrap();
+    let v = &mut a.model.views[0];
+    v.pipeline = p;
+    v.generation += 1;
+    rebuild(&mut a);
+    assert!(red(&a) >= 2);
+    let words = super::model::status::missed_note(&a.model.missed_radii(0));
+    assert!(
+        words.contains("edge 0-9 clamped to 0.8824 reaches 0.58"),
+        "{words}"
+    );
+}

@@ -6,21 +6,24 @@
 //! edge's strips alone; where fillets of very different radii meet at a vertex (the tripod's
 //! arm edge 0-9 clamped to 0.88 beside 0.12: four to one and more) the guard moves the strips
 //! into the vertex blend and the fillet comes out a third smaller, at every level. So the
-//! first level is measured: after one step a fillet of radius r over an edge of bend ψ is
-//! the polygon whose fitted circle has radius `r/cos(ψ/4)`. Where a clamped edge misses that
-//! by more than [`ReachOptions::tolerance`], the clamped radii are capped at c — the cap
-//! written as the edges' `fits`, which later steps keep — with c the largest value, found by
-//! halving between the smallest and the largest clamped radius, at which every clamped and
-//! capped edge reaches; c is said rounded down to four digits, and the step taken at it is
-//! the one kept. Where even the smallest misses, the clamp's own step stands and the report
-//! says so.
+//! step is measured a few levels on ([`ReachOptions::depth`], at most as far as the run goes):
+//! after k steps a fillet of radius r over an edge of bend ψ is the polygon whose fitted
+//! circle has radius `r/cos(ψ/2^(k+1))`. Where a clamped edge misses that by more than
+//! [`ReachOptions::tolerance`]·[`ReachOptions::search_share`], the clamped radii are capped at
+//! c — the cap written as the edges' `fits`, which later steps keep — with c the largest
+//! value, found by halving between the smallest and the largest clamped radius, at which every
+//! clamped and capped edge reaches (an edge whose section has too few points to fit says
+//! nothing either way); c is said rounded down to four digits, and the step taken at it is the
+//! one kept. Where even the smallest misses, the clamp's own step stands and the report says
+//! so.
 
-use crate::analysis::measure_edges;
+use super::Level;
+use crate::analysis::{FilletError, measure_edges};
 use crate::edge_attrs::{EdgeAttrs, EdgeKey};
 use crate::mesh::PolyMesh;
 use crate::rules::RoundingOptions;
 use crate::rules::overlap::round_down;
-use crate::rules::{CombinationState, CornerRule, EdgeFit, Overlap, ReachOptions, Reached};
+use crate::rules::{CornerRule, EdgeFit, Overlap, ReachOptions, Reached};
 use crate::step::{StepError, StepOutput, biquadratic_step_carrying};
 use crate::topology::Topology;
 
@@ -37,8 +40,7 @@ fn targets(out: &StepOutput) -> Vec<(EdgeKey, f64)> {
 }
 
 /// Whether `level`, `depth` steps of a run from `prev`, reaches every one of `edges` (key,
-/// radius): the fitted radius within `tol` of the rule's polygon there. An edge whose section
-/// has too few points to fit misses.
+/// radius): the fitted radius within `tol` of the rule's polygon there.
 fn reaches(
     prev: &PolyMesh,
     level: &PolyMesh,
@@ -50,26 +52,30 @@ fn reaches(
         return false;
     };
     let halvings = 2f64.powi(depth as i32 + 1);
-    measured.iter().zip(edges).all(|(m, &(_, r))| {
-        m.as_ref().is_ok_and(|m| {
+    measured.iter().zip(edges).all(|(m, &(_, r))| match m {
+        Ok(m) => {
             let polygon = r / (m.bend / halvings).cos();
             (m.fitted_radius / polygon - 1.0).abs() <= tol
-        })
+        }
+        // A section with too few points says nothing either way (a small radius beside a
+        // coarse level); another error is a miss.
+        Err(FilletError::TooFewPoints { .. }) => true,
+        Err(_) => false,
     })
 }
 
-/// The first step of a run of `rule` from `mesh` and `attrs`: taken once, and where it clamps
+/// The first step of a run of `rule` from level `prev`: taken once, and where it clamps
 /// a radius the rule then misses (combination rule, [`Overlap::Clamp`],
 /// [`ReachOptions::search`]), again with the clamped radii capped ([`super::reach`]).
 pub(super) fn first_step(
-    mesh: &PolyMesh,
-    attrs: &EdgeAttrs,
+    prev: &Level,
     rule: &CornerRule,
-    state: Option<&CombinationState>,
     options: &RoundingOptions,
     known: Option<Topology>,
     child_topology: bool,
+    run: usize,
 ) -> Result<Stepped, StepError> {
+    let (mesh, attrs, state) = (&prev.mesh, &prev.edge_attrs, prev.combination.as_ref());
     let step = |attrs: &EdgeAttrs, known| {
         biquadratic_step_carrying(mesh, attrs, rule, state, options, known, child_topology)
     };
@@ -81,6 +87,8 @@ pub(super) fn first_step(
         halvings,
     } = options.reach;
     let tolerance = tolerance * search_share;
+    // No deeper than the run goes: a trial costs the levels it takes.
+    let depth = depth.min(run).max(1);
     // The level `depth` steps on from a first step's result, the run continued as the
     // pipeline continues it.
     let on = |first: &StepOutput| -> Option<PolyMesh> {

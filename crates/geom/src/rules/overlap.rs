@@ -89,7 +89,7 @@ pub struct Reached {
     pub cap: Option<f64>,
     /// Edges the cap lowered below what fits their faces.
     pub capped: usize,
-    /// First steps taken in the search (the first one included).
+    /// Trials taken, the plain step included (each a few levels of the run).
     pub steps: usize,
 }
 

@@ -75,13 +75,13 @@ impl StepReport {
                 false,
                 Topic::Reach,
                 format!(
-                    "{capped} of them lowered further, to {cap}, the largest radius the combination rule reaches beside the others (its first level measured, {steps} first steps tried)"
+                    "{capped} of them lowered further, to {cap}, the largest radius the combination rule reaches beside the others ({steps} trials, each measured a few levels on)"
                 ),
             ),
             Some(crate::rules::Reached { cap: None, .. }) => say(
                 true,
                 Topic::Reach,
-                "the combination rule misses some clamped radii even at the smallest of them (its first level measured): the fillets there come out smaller or larger than said".to_string(),
+                "the combination rule misses some clamped radii even at the smallest of them (measured a few levels on): the fillets there come out smaller or larger than said".to_string(),
             ),
             None => {}
         }

@@ -41,6 +41,22 @@ pub fn short_pipeline(steps: &[prism_geom::Scheme]) -> String {
 }
 
 impl ModelTab {
+    /// The clamped edges of view `i`'s rounding run whose fillet on the shown level misses the
+    /// radius the panel says (measured once a level; empty where nothing was clamped): drawn
+    /// red in the view and named in the status bar.
+    pub fn missed_radii(&mut self, i: usize) -> std::sync::Arc<super::view_pipe::Missed> {
+        let v = &self.views[i];
+        let key = (v.generation, v.shown());
+        if let Some((k, m)) = &v.missed
+            && *k == key
+        {
+            return m.clone();
+        }
+        let m = std::sync::Arc::new(v.pipeline.missed_radii(v.shown()));
+        self.views[i].missed = Some((key, m.clone()));
+        m
+    }
+
     /// The fillet measure of view `i`'s shown level, as table text.
     pub fn fillet_text(&mut self, i: usize, doc: &DocState) -> String {
         let edge = (self.sel_edges.len() == 1)

@@ -1,5 +1,6 @@
 //! What is drawn over each view's level: the previous level as a cage, the control mesh
-//! and its selected vertices (Vertices tool), marked, clamped (orange) and selected control
+//! and its selected vertices (Vertices tool), marked, clamped (orange; red where the fillet
+//! misses the clamped radius) and selected control
 //! edges where they are on this level, corner points with their displacement vectors, limit points with
 //! normals. An overlay is rebuilt when the hash of what it is made from changes (the level,
 //! the document, the selection, the display options, the tool); limit points come from a
@@ -21,6 +22,8 @@ const CREASE: [f32; 3] = [0.95, 0.30, 0.25];
 const RADIUS: [f32; 3] = [0.25, 0.85, 0.90];
 /// Edges whose radius was clamped to fit their faces.
 const CLAMPED: [f32; 3] = [1.0, 0.55, 0.10];
+/// Clamped edges whose fillet misses the radius they were clamped to.
+const MISSED: [f32; 3] = [0.90, 0.10, 0.10];
 const CAGE: [f32; 3] = [0.95, 0.75, 0.25];
 const CORNER: [f32; 3] = [0.45, 0.95, 0.45];
 const LIMIT: [f32; 3] = [0.95, 0.45, 0.95];
@@ -124,6 +127,11 @@ impl ModelTab {
                 _ => BTreeSet::new(),
             }
         };
+        let missed: BTreeSet<EdgeKey> = if clamped.is_empty() {
+            BTreeSet::new()
+        } else {
+            self.missed_radii(i).iter().map(|m| m.0).collect()
+        };
         if !creased.is_empty()
             || !radiused.is_empty()
             || !clamped.is_empty()
@@ -141,6 +149,7 @@ impl ModelTab {
                 o.add_segments(&segs(&creased), CREASE);
                 o.add_segments(&segs(&radiused), RADIUS);
                 o.add_segments(&segs(&clamped), CLAMPED);
+                o.add_segments(&segs(&missed), MISSED);
                 o.add_segments(&segs(&self.sel_edges), SELECTED);
             }
         }

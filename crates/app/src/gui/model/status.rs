@@ -83,6 +83,7 @@ impl ModelTab {
 
     pub(super) fn status(&mut self, ui: &mut egui::Ui, note: Option<&str>) {
         let (_, _, far) = self.views[self.active].frame_sphere();
+        let missed = self.missed_radii(self.active);
         let v = &self.views[self.active];
         let k = v.shown();
         let lv = &v.pipeline.levels()[k];
@@ -109,6 +110,9 @@ impl ModelTab {
                 .unwrap_or(&r.clamped[..]);
             if !clamped.is_empty() {
                 text += &format!(" — {} (orange)", prism_geom::rules::overlap::note(clamped));
+            }
+            if !missed.is_empty() {
+                text += &format!(" — warning: {} (red)", missed_note(&missed));
             }
             text += &step_notes(r);
             if far > 0 {
@@ -141,6 +145,29 @@ impl ModelTab {
             }
         });
     }
+}
+
+/// The clamped edges whose fillet misses their radius, in words: the first five with both
+/// numbers, then how many more.
+pub fn missed_note(missed: &[(prism_geom::EdgeKey, f64, Option<f64>)]) -> String {
+    let mut parts: Vec<String> = missed
+        .iter()
+        .take(5)
+        .map(|(e, r, m)| {
+            let m = m.map_or("too few points to measure".to_string(), |m| {
+                format!("{m:.4}")
+            });
+            format!("edge {}-{} clamped to {r:.4} reaches {m}", e.0, e.1)
+        })
+        .collect();
+    if missed.len() > 5 {
+        parts.push(format!("and {} more", missed.len() - 5));
+    }
+    format!(
+        "the combination rule misses {} clamped radius(es): {}",
+        missed.len(),
+        parts.join(", ")
+    )
 }
 
 /// The step's report in the status bar: every note and warning of [`StepReport::notes`], in

@@ -55,6 +55,9 @@ pub type Origins = Result<HashMap<EdgeKey, EdgeKey>, String>;
 /// Limit points and normals of a level, or why there are none.
 pub type Limits = Result<LimitPoints, String>;
 
+/// Clamped edges whose fillet misses: the edge, its clamped radius, the radius measured.
+pub type Missed = Vec<(EdgeKey, f64, Option<f64>)>;
+
 enum LimitSlot {
     Computing(Receiver<Limits>),
     Ready(Arc<Limits>),
@@ -116,6 +119,10 @@ pub struct ViewPipe {
     sphere: std::sync::OnceLock<(glam::Vec3, f32, usize)>,
     /// Cached fillet measure and what it was made from.
     pub fillet: Option<(FilletKey, String)>,
+    /// The clamped edges whose fillet misses their radius on the shown level
+    /// ([`prism_geom::Pipeline::missed_radii`]), for the generation and level it was measured
+    /// on.
+    pub missed: Option<((u64, usize), Arc<Missed>)>,
     /// When the edit not yet on screen was submitted.
     edit_started: Option<std::time::Instant>,
     /// How long the last edit took from its submission to its scene being ready to draw
@@ -151,6 +158,7 @@ impl ViewPipe {
             crossing: CrossingCheck::default(),
             sphere: std::sync::OnceLock::new(),
             fillet: None,
+            missed: None,
             edit_started: None,
             last_edit: None,
         }
