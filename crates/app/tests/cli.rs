@@ -177,6 +177,78 @@ fn overlapping_rounds_are_refused_or_clamped() {
     assert_finite(&out);
 }
 
+/// The bundled tripod as a document with own radius `r` on its arm edge 0-9.
+fn tripod_with_radius(r: f64) -> PathBuf {
+    let obj = std::fs::read_to_string(
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("../../assets/tripod.obj"),
+    )
+    .unwrap();
+    let mut vertices = Vec::new();
+    let mut faces = Vec::new();
+    for line in obj.lines() {
+        let mut w = line.split_whitespace();
+        match w.next() {
+            Some("v") => vertices.push(format!("[{}]", w.collect::<Vec<_>>().join(","))),
+            Some("f") => {
+                let f: Vec<String> = w
+                    .map(|x| (x.parse::<u32>().unwrap() - 1).to_string())
+                    .collect();
+                faces.push(format!("[[{}]]", f.join(",")));
+            }
+            _ => {}
+        }
+    }
+    let doc = format!(
+        r#"{{"version":1,"vertices":[{}],"faces":[{}],"edges":[{{"a":0,"b":9,"radius":{r}}}]}}"#,
+        vertices.join(","),
+        faces.join(",")
+    );
+    let path = tmp(&format!("tripod-{r}.prism.json"));
+    std::fs::write(&path, doc).unwrap();
+    path
+}
+
+/// A clamped radius is one the combination rule reaches (docs/algorithms/cylindrical.md,
+/// "Reach"): the tripod's arm edge 0-9 at 1.5 was clamped to 0.88 and came out 0.58 with no
+/// word; now the clamp lowers it further and says so, and the fillet line's radii agree with
+/// what the clamp said, with no edge warned about.
+#[test]
+fn a_clamped_radius_is_reached_and_said() {
+    let doc = tripod_with_radius(1.5);
+    let out = tmp("tripod-clamped.obj");
+    let (so, se) = succeeds(run_with(
+        "subdivide {} -o {} --scheme combination --radius 0.2 --levels 5 --clamp --measure-edge 0-9",
+        &[&doc, &out],
+    ));
+    assert!(
+        se.contains("1 of them lowered further, to 0.79")
+            && se.contains("the largest radius the combination rule reaches"),
+        "{se}"
+    );
+    assert!(!se.contains("warning: edge"), "{se}");
+    let line = so.lines().find(|l| l.starts_with("edge 0-9")).unwrap();
+    let target: f64 = line
+        .split("target r ")
+        .nth(1)
+        .unwrap()
+        .split(',')
+        .next()
+        .unwrap()
+        .parse()
+        .unwrap();
+    let fitted: f64 = line
+        .split("fitted ")
+        .nth(1)
+        .unwrap()
+        .split(' ')
+        .next()
+        .unwrap()
+        .parse()
+        .unwrap();
+    assert!(target > 0.78 && target <= 0.8, "{line}");
+    assert!((fitted / target - 1.0).abs() < 0.05, "{line}");
+}
+
 #[test]
 fn pipelines_and_documents() {
     let (out, so, _) = succeeds_to(
