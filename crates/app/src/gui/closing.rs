@@ -64,7 +64,7 @@ impl PrismApp {
         });
         match answer {
             Some("Save") => {
-                self.save_dialog(false);
+                self.save_dialog(false, true);
                 self.closing.asking = false;
                 // Closed only when the save went through (a dialog cancelled, or an error in
                 // the status bar, leaves the window open).
@@ -81,7 +81,7 @@ impl PrismApp {
         }
     }
 
-    fn close(&mut self, ctx: &egui::Context) {
+    pub(super) fn close(&mut self, ctx: &egui::Context) {
         self.closing.leave = true;
         ctx.send_viewport_cmd(egui::ViewportCommand::Close);
     }

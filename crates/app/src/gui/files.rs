@@ -1,12 +1,13 @@
-//! Files from the app: the bundled samples, the Open / Save / Export dialogs (rfd), saving
-//! and exporting to a path, and `--screenshot` (the window's own picture, written once the
-//! levels are computed).
+//! Files from the app: the bundled samples, the Open / Save / Export dialogs (the desktop's
+//! through rfd, or the in-app one of `egui_file` where the desktop has none), saving and
+//! exporting to a path, and `--screenshot` (the window's own picture, written once the levels
+//! are computed).
 
 use super::document::{DocState, Origin};
 use super::gestures::Tab3d;
 use super::{PrismApp, SAMPLES_FILES};
 use prism_geom::io;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
 /// Whether something can show a native file dialog: zenity on the PATH, or a desktop
 /// portal on the session bus (its service file installed).
@@ -20,6 +21,36 @@ fn dialog_helper_present() -> bool {
         .any(|f| Path::new(f).is_file());
     on_path("zenity") || portal
 }
+
+/// Whether the desktop's file dialogs can be shown: not on Linux without zenity or a portal,
+/// nor when `PRISM_FILE_DIALOG=in-app` asks for the app's own.
+fn native_dialogs() -> bool {
+    if std::env::var_os("PRISM_FILE_DIALOG").is_some_and(|v| v == "in-app") {
+        return false;
+    }
+    !cfg!(target_os = "linux") || dialog_helper_present()
+}
+
+/// What the in-app file dialog was opened for.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Purpose {
+    Open,
+    /// Save as; `then_close` when the close question's Save asked for it.
+    Save {
+        then_close: bool,
+    },
+    /// Export the shown level or surface: `obj`, `stl`, `glb` or `obj+vn`.
+    Export(&'static str),
+}
+
+/// The in-app file dialog (`egui_file`) and what it is for.
+pub struct InAppDialog {
+    pub dialog: egui_file::FileDialog,
+    pub purpose: Purpose,
+}
+
+/// The extensions the Open dialog lists.
+const OPENED: [&str; 4] = ["json", "obj", "stl", "ply"];
 
 /// A bundled sample as a document.
 pub fn sample(k: usize) -> Result<(DocState, Origin), String> {
@@ -146,7 +177,102 @@ impl PrismApp {
         self.after_dialog = Some((std::time::Instant::now(), 0));
     }
 
+    /// Opens the in-app file dialog for `purpose`, in the folder of the document's file (or
+    /// the working folder), with the file name `name` for a save.
+    pub fn in_app_dialog(&mut self, purpose: Purpose, name: Option<String>) {
+        let folder = self
+            .doc
+            .origin()
+            .path
+            .as_ref()
+            .and_then(|p| p.parent().map(Path::to_path_buf))
+            .filter(|p| p.is_dir())
+            .or_else(|| std::env::current_dir().ok())
+            .unwrap_or_default();
+        let mut dialog = match purpose {
+            Purpose::Open => egui_file::FileDialog::open_file()
+                .title("Open a Prism document, OBJ, STL or PLY")
+                .show_files_filter(Box::new(|p: &Path| {
+                    p.extension()
+                        .and_then(|e| e.to_str())
+                        .is_some_and(|e| OPENED.contains(&e.to_ascii_lowercase().as_str()))
+                })),
+            Purpose::Save { .. } => egui_file::FileDialog::save_file().title("Save as"),
+            Purpose::Export(_) => egui_file::FileDialog::save_file().title("Export"),
+        }
+        .initial_path(folder)
+        .show_new_folder(true)
+        .show_rename(false)
+        .default_size([640.0, 420.0]);
+        if let Some(n) = name {
+            dialog = dialog.default_filename(n);
+        }
+        dialog.open();
+        self.file_dialog = Some(InAppDialog { dialog, purpose });
+    }
+
+    /// Draws the in-app file dialog, if one is open, and acts on its answer.
+    pub(super) fn show_in_app_dialog(&mut self, ctx: &egui::Context) {
+        let Some(d) = &mut self.file_dialog else {
+            return;
+        };
+        d.dialog.show(ctx);
+        match d.dialog.state() {
+            egui_file::State::Open => {}
+            egui_file::State::Selected => {
+                let path = d.dialog.path().map(Path::to_path_buf);
+                let purpose = d.purpose.clone();
+                self.file_dialog = None;
+                if let Some(p) = path {
+                    self.dialog_chose(purpose, p, ctx);
+                }
+            }
+            egui_file::State::Closed | egui_file::State::Cancelled => self.file_dialog = None,
+        }
+    }
+
+    /// Does what the in-app dialog was opened for with the file chosen.
+    pub fn dialog_chose(&mut self, purpose: Purpose, path: PathBuf, ctx: &egui::Context) {
+        match purpose {
+            Purpose::Open => self.open_path(&path),
+            Purpose::Save { then_close } => {
+                // A name without a kind Prism writes is saved as a document.
+                let path = if io::FileKind::of(&path).is_ok() {
+                    path
+                } else {
+                    with_suffix(&path, "prism.json")
+                };
+                match self.save_to(&path) {
+                    Ok(()) if then_close && !self.unsaved() => self.close(ctx),
+                    Ok(()) => {}
+                    Err(e) => self.say(format!("could not save: {e}")),
+                }
+            }
+            Purpose::Export(kind) => {
+                let (ext, normals) = match kind.strip_suffix("+vn") {
+                    Some(e) => (e, true),
+                    None => (kind, false),
+                };
+                let path = if path
+                    .extension()
+                    .is_some_and(|e| e.eq_ignore_ascii_case(ext))
+                {
+                    path
+                } else {
+                    with_suffix(&path, ext)
+                };
+                if let Err(e) = self.export_to(&path, normals) {
+                    self.say(format!("could not export: {e}"));
+                }
+            }
+        }
+    }
+
     pub(super) fn open_dialog(&mut self) {
+        if !native_dialogs() {
+            self.in_app_dialog(Purpose::Open, None);
+            return;
+        }
         let picked = self.dialog(|| {
             rfd::FileDialog::new()
                 .add_filter(
@@ -175,9 +301,17 @@ impl PrismApp {
         }
     }
 
-    /// Saves to the document's own file, or asks where (`as_new`: always asks).
-    pub(super) fn save_dialog(&mut self, as_new: bool) {
+    /// Saves to the document's own file, or asks where (`as_new`: always asks); `then_close`
+    /// closes the window once an in-app dialog's save went through.
+    pub(super) fn save_dialog(&mut self, as_new: bool, then_close: bool) {
         let own = self.doc.origin().path.clone().filter(|_| !as_new);
+        if own.is_none() && !native_dialogs() {
+            self.in_app_dialog(
+                Purpose::Save { then_close },
+                Some("model.prism.json".to_string()),
+            );
+            return;
+        }
         let path = own.or_else(|| {
             self.dialog(|| {
                 rfd::FileDialog::new()
@@ -195,7 +329,7 @@ impl PrismApp {
     }
 
     /// Asks where to export; `kind` is `obj`, `stl`, `glb`, or `obj+vn` (OBJ with normals).
-    pub(super) fn export_dialog(&mut self, kind: &str) {
+    pub(super) fn export_dialog(&mut self, kind: &'static str) {
         let (ext, normals) = match kind.strip_suffix("+vn") {
             Some(e) => (e, true),
             None => (kind, false),
@@ -205,6 +339,10 @@ impl PrismApp {
             super::Tab::Envelope => format!("envelope.{ext}"),
             _ => format!("level.{ext}"),
         };
+        if !native_dialogs() {
+            self.in_app_dialog(Purpose::Export(kind), Some(name));
+            return;
+        }
         let picked = self.dialog(|| {
             rfd::FileDialog::new()
                 .add_filter(ext, &[ext])
@@ -255,4 +393,12 @@ impl PrismApp {
             ctx.send_viewport_cmd(egui::ViewportCommand::Close);
         }
     }
+}
+
+/// `path` with `.suffix` added to its name.
+fn with_suffix(path: &Path, suffix: &str) -> PathBuf {
+    let mut s = path.as_os_str().to_owned();
+    s.push(".");
+    s.push(suffix);
+    PathBuf::from(s)
 }

@@ -12,6 +12,10 @@ impl PrismApp {
         let save = KeyboardShortcut::new(Modifiers::COMMAND, Key::S);
         let open = KeyboardShortcut::new(Modifiers::COMMAND, Key::O);
         let mut out = Vec::new();
+        // The in-app file dialog has the keyboard: its file name is no shortcut.
+        if self.file_dialog.is_some() {
+            return out;
+        }
         // Longest shortcut first: Ctrl+Shift+Z must not be eaten as Ctrl+Z.
         if ctx.input_mut(|i| i.consume_shortcut(&redo) || i.consume_shortcut(&redo_y)) {
             out.push(Command::Redo);

@@ -64,6 +64,8 @@ mod tests_autosave;
 #[cfg(test)]
 mod tests_envelope;
 #[cfg(test)]
+mod tests_files;
+#[cfg(test)]
 mod tests_new_solid;
 #[cfg(test)]
 mod tests_opening;
@@ -121,6 +123,8 @@ pub struct PrismApp {
     undo_warned: Option<u64>,
     /// Files at least this large open on a thread ([`opening::IN_BACKGROUND_FROM`]).
     open_in_background_from: u64,
+    /// The in-app file dialog, where the desktop has none (files.rs).
+    pub file_dialog: Option<files::InAppDialog>,
 }
 
 /// How many files File ▸ Recent lists.
@@ -222,6 +226,7 @@ impl PrismApp {
                 .screenshot
                 .map(|p| (p, 0, Arc::new(Mutex::new(None)))),
             after_dialog: None,
+            file_dialog: None,
             camera_before_edit: None,
             last_file,
             recent,
@@ -350,7 +355,7 @@ impl PrismApp {
             }
             Command::OpenDialog => self.open_dialog(),
             Command::CancelOpening => self.cancel_opening(),
-            Command::SaveDialog { as_new } => self.save_dialog(as_new),
+            Command::SaveDialog { as_new } => self.save_dialog(as_new, false),
             Command::ExportDialog(ext) => self.export_dialog(ext),
             Command::Cancel { view } => {
                 if let Some(v) = self.model.views.get_mut(view) {
@@ -495,6 +500,7 @@ impl PrismApp {
         if self.opening.as_ref().is_some_and(|o| o.window(&ctx)) {
             commands.push(Command::CancelOpening);
         }
+        self.show_in_app_dialog(&ctx);
         for c in commands {
             self.run(c);
         }
