@@ -532,6 +532,37 @@ fn render_writes_a_picture() {
     assert_eq!(o.status.code(), Some(2));
 }
 
+/// `prism render --section`: a plane through the level drawn, the part kept and the cut's
+/// outline (the line segments the summary counts); a plane that is not AXIS=SHARE[,above] is
+/// refused with exit 2 and the reason.
+#[test]
+fn render_cuts_a_section() {
+    let out = tmp("tripod-section.png");
+    let line = "render assets/tripod.obj -o {} --scheme combination --radius 0.2 --levels 3 --size 200x150 --section";
+    let (whole, _) = succeeds(run_with(&line.replace(" --section", ""), &[&out]));
+    let (cut, _) = succeeds(run_with(&format!("{line} y=0.5,above"), &[&out]));
+    let count = |s: &str, what: &str| -> usize {
+        let before = s.split(what).next().unwrap();
+        before.split_whitespace().last().unwrap().parse().unwrap()
+    };
+    assert!(
+        count(&cut, " triangles") < count(&whole, " triangles"),
+        "{cut}"
+    );
+    assert!(count(&cut, " line segments") > 0, "{cut}");
+    for (bad, says) in [
+        ("w=0.5", "not an axis"),
+        ("x=2", "not a share"),
+        ("x=0.5,below", "not a side"),
+        ("x", "not AXIS=SHARE"),
+    ] {
+        let o = run_with(&format!("{line} {bad}"), &[&out]);
+        let (_, se) = text(&o);
+        assert_eq!(o.status.code(), Some(2), "{bad}: {se}");
+        assert!(se.contains(says), "{bad}: {se}");
+    }
+}
+
 /// `prism render` draws a curves file (an OBJ of `l` lines, here the envelope's network) alone,
 /// and over a surface with `--lines`; lines and steps together, or a bad line, are refused by
 /// name.

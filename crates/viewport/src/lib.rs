@@ -12,4 +12,4 @@ pub mod scene;
 pub use camera::{Camera, View};
 pub use offscreen::{Offscreen, RenderError};
 pub use renderer::{CameraSlot, GpuScene, Renderer, UploadError};
-pub use scene::{ColorBy, Scene, SceneOptions, Shading};
+pub use scene::{ColorBy, Scene, SceneOptions, SectionPlane, Shading};

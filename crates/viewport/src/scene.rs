@@ -107,6 +107,42 @@ pub struct SceneOptions {
     pub wireframe: bool,
     /// Edges whose faces meet at more than this (degrees) stay sharp in smooth shading.
     pub crease_angle_deg: f64,
+    /// A section plane through the level: only the part on one side is drawn, with the
+    /// outline where the plane cuts the surface.
+    pub section: Option<SectionPlane>,
+}
+
+/// A plane normal to a coordinate axis through a model: the part where the coordinate is at
+/// most (`flip`: at least) the share `at` of the way along the level's bounding box is kept.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SectionPlane {
+    /// 0 x, 1 y, 2 z.
+    pub axis: usize,
+    /// 0 the box's low side, 1 its high side.
+    pub at: f64,
+    pub flip: bool,
+}
+
+/// The colour of a section's outline.
+pub const SECTION_COLOR: [f32; 3] = [1.0, 0.85, 0.25];
+
+impl SectionPlane {
+    /// The half-space it keeps of a mesh whose box is `(lo, hi)`.
+    pub fn half_space(&self, (lo, hi): (DVec3, DVec3)) -> prism_geom::analysis::HalfSpace {
+        let axis = DVec3::AXES[self.axis.min(2)];
+        let at = lo.dot(axis) + self.at.clamp(0.0, 1.0) * (hi - lo).dot(axis);
+        if self.flip {
+            prism_geom::analysis::HalfSpace {
+                normal: -axis,
+                offset: -at,
+            }
+        } else {
+            prism_geom::analysis::HalfSpace {
+                normal: axis,
+                offset: at,
+            }
+        }
+    }
 }
 
 impl Default for SceneOptions {
@@ -116,6 +152,7 @@ impl Default for SceneOptions {
             color_by: ColorBy::Uniform,
             wireframe: false,
             crease_angle_deg: 40.0,
+            section: None,
         }
     }
 }
@@ -157,6 +194,29 @@ impl Scene {
     pub fn of_level(lv: &prism_geom::Level, opts: &SceneOptions) -> Scene {
         let kinds: Option<&[FaceKind]> = lv.provenance.as_ref().and_then(|p| p.face_kinds());
         let holes = &lv.tags.holes;
+        if let Some(plane) = opts.section {
+            // The kept part of every face, with its kind, hole and flip carried over.
+            let cut = prism_geom::analysis::section(&lv.mesh, plane.half_space(lv.mesh.bbox()));
+            let from = &cut.from_face;
+            let kinds: Option<Vec<FaceKind>> =
+                kinds.map(|k| from.iter().map(|&f| k[f as usize]).collect());
+            let mut scene = Scene::build(
+                &cut.mesh,
+                &EdgeAttrs::new(),
+                kinds.as_deref(),
+                &|f| holes.contains(&from[f]),
+                opts,
+            );
+            if let Some(r) = &lv.report {
+                let was: std::collections::HashSet<u32> = r.flipped.iter().copied().collect();
+                let flipped: Vec<u32> = (0..from.len() as u32)
+                    .filter(|&f| was.contains(&from[f as usize]))
+                    .collect();
+                scene.paint_faces(&cut.mesh, &flipped, FLIPPED_COLOR);
+            }
+            scene.add_segments(&cut.outline, SECTION_COLOR);
+            return scene;
+        }
         Scene::build(
             &lv.mesh,
             &lv.edge_attrs,

@@ -21,7 +21,9 @@ use glam::DVec3;
 use prism_geom::geometry::{face_normal_raw, unit_or_zero};
 use prism_geom::{Level, Pipeline, PolyMesh, Topology};
 use prism_viewport::scene::FLIPPED_COLOR;
-use prism_viewport::{Camera, ColorBy, Offscreen, Scene, SceneOptions, Shading, View};
+use prism_viewport::{
+    Camera, ColorBy, Offscreen, Scene, SceneOptions, SectionPlane, Shading, View,
+};
 use std::path::{Path, PathBuf};
 
 #[derive(Debug, Clone, Copy, ValueEnum)]
@@ -108,6 +110,42 @@ pub struct RenderArgs {
     /// the solid show.
     #[arg(long)]
     pub xray: bool,
+    /// A section plane through the level drawn: `x=0.5` keeps the part of the model where x is
+    /// at most halfway along its box (y, z likewise; 0 the low side, 1 the high side),
+    /// `x=0.5,above` the part beyond; the outline where the plane cuts the surface in yellow.
+    #[arg(long, value_parser = parse_section)]
+    pub section: Option<SectionPlane>,
+}
+
+/// `--section`: `AXIS=SHARE[,above]`.
+fn parse_section(text: &str) -> Result<SectionPlane, String> {
+    let (plane, side) = match text.split_once(',') {
+        Some((p, "above")) => (p, true),
+        Some((_, other)) => {
+            return Err(format!(
+                "'{other}' is not a side (write 'above' or nothing)"
+            ));
+        }
+        None => (text, false),
+    };
+    let (axis, at) = plane
+        .split_once('=')
+        .ok_or_else(|| format!("'{plane}' is not AXIS=SHARE (e.g. x=0.5)"))?;
+    let axis = match axis {
+        "x" => 0,
+        "y" => 1,
+        "z" => 2,
+        _ => return Err(format!("'{axis}' is not an axis (x, y or z)")),
+    };
+    let at: f64 = at.parse().map_err(|_| format!("'{at}' is not a number"))?;
+    if !(0.0..=1.0).contains(&at) {
+        return Err(format!("{at} is not a share of the box (0 to 1)"));
+    }
+    Ok(SectionPlane {
+        axis,
+        at,
+        flip: side,
+    })
 }
 
 /// The colour of the polylines.
@@ -312,8 +350,14 @@ pub fn run(a: RenderArgs) -> Result<(), CliError> {
             }
         },
         wireframe: a.wireframe,
+        section: a.section,
         ..SceneOptions::default()
     };
+    if a.section.is_some() && matches!(a.color_by, ColorArg::Crossings) {
+        return Err(CliError::usage(
+            "--section draws the faces it cuts anew: --color-by crossings needs the whole level",
+        ));
+    }
     let has_kinds = last
         .provenance
         .as_ref()
@@ -327,7 +371,10 @@ pub fn run(a: RenderArgs) -> Result<(), CliError> {
         let mut scene = Scene::of_level(lv, &opts);
         if matches!(a.color_by, ColorArg::Flipped) {
             let flipped = lv.report.as_ref().map_or(&[][..], |r| &r.flipped[..]);
-            scene.paint_faces(&lv.mesh, flipped, FLIPPED_COLOR);
+            // A section paints the flipped faces it keeps itself.
+            if a.section.is_none() {
+                scene.paint_faces(&lv.mesh, flipped, FLIPPED_COLOR);
+            }
             if say {
                 println!("{} flipped face(s) drawn in red", flipped.len());
             }

@@ -419,3 +419,56 @@ fn a_clamped_radius_is_reached_or_drawn_red() {
         "{words}"
     );
 }
+
+/// A section plane through the shown level (Display ▸ section): the tripod rounded four
+/// times, cut at the middle of its box along y, draws the kept part only (fewer triangles,
+/// every one on the kept side) with the cut's outline in yellow; keeping the other side draws
+/// the rest; off draws it whole again.
+#[test]
+fn a_section_plane_cuts_the_view() {
+    use prism_viewport::scene::SECTION_COLOR;
+    let mut a = opened(&asset("tripod.obj"));
+    run_pipeline(&mut a, &["combination:r=0.2"; 4].join(","));
+    a.model.views[0].level = 4;
+    rebuild(&mut a);
+    let whole = a.model.views[0].scene.triangles();
+    let yellow = |a: &super::PrismApp| {
+        a.model.views[0]
+            .scene
+            .lines
+            .iter()
+            .filter(|l| l.color == SECTION_COLOR)
+            .count()
+    };
+    assert_eq!(yellow(&a), 0);
+    let mut kept = Vec::new();
+    for above in [false, true] {
+        a.model.display.section = Some(super::model::display::Section {
+            axis: 1,
+            permille: 500,
+            above,
+        });
+        rebuild(&mut a);
+        let v = &a.model.views[0];
+        let n = v.scene.triangles();
+        assert!(n < whole && n > 0, "{n} of {whole}");
+        assert!(yellow(&a) > 20);
+        // The tripod's box is y ∈ [0, 3]: every point drawn on the kept side of y = 1.5.
+        let o = v.scene.origin;
+        for p in &v.scene.vertices {
+            let y = o.y + f64::from(p.position[1]);
+            assert!(
+                if above {
+                    y >= 1.5 - 1e-5
+                } else {
+                    y <= 1.5 + 1e-5
+                },
+                "{y}"
+            );
+        }
+        kept.push(n);
+    }
+    a.model.display.section = None;
+    rebuild(&mut a);
+    assert_eq!(a.model.views[0].scene.triangles(), whole);
+}

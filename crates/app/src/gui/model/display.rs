@@ -48,6 +48,21 @@ pub struct Display {
     pub cage: bool,
     pub corners: bool,
     pub limit: bool,
+    /// A section plane through the shown level ([`Section`]); none draws it whole.
+    #[serde(default)]
+    pub section: Option<Section>,
+}
+
+/// A section plane normal to an axis, where along the level's box it lies in thousandths
+/// (whole numbers, so that the display options stay hashable), and which side is kept.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize)]
+pub struct Section {
+    /// 0 x, 1 y, 2 z.
+    pub axis: u8,
+    /// 0 to 1000.
+    pub permille: u16,
+    /// Keep the part beyond the plane rather than before it.
+    pub above: bool,
 }
 
 impl Default for Display {
@@ -59,6 +74,7 @@ impl Default for Display {
             cage: false,
             corners: false,
             limit: false,
+            section: None,
         }
     }
 }
@@ -79,6 +95,11 @@ impl Display {
                 Coloring::Scheme => ColorBy::Solid(prism_viewport::scene::BASE_COLOR),
             },
             wireframe: self.wireframe,
+            section: self.section.map(|s| prism_viewport::SectionPlane {
+                axis: usize::from(s.axis),
+                at: f64::from(s.permille.min(1000)) / 1000.0,
+                flip: s.above,
+            }),
             ..SceneOptions::default()
         }
     }

@@ -12,7 +12,7 @@
 
 pub mod compare;
 pub mod crossing_check;
-mod display;
+pub(crate) mod display;
 mod overlay;
 pub(crate) mod panels;
 pub mod pick;

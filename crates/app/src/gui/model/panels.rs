@@ -396,6 +396,7 @@ impl ModelTab {
             ui.radio_value(&mut d.color, Coloring::Scheme, "scheme");
         });
         ui.checkbox(&mut d.cage, "previous level as cage");
+        section_row(ui, &mut d.section);
         ui.checkbox(&mut d.corners, "corner points and displacement vectors");
         ui.checkbox(
             &mut d.limit,
@@ -440,4 +441,33 @@ impl ModelTab {
             self.frame(doc);
         }
     }
+}
+
+/// The section plane's row: off or an axis, where along the level's box, which side is kept.
+fn section_row(ui: &mut egui::Ui, section: &mut Option<super::display::Section>) {
+    ui.horizontal_wrapped(|ui| {
+        ui.label("section:");
+        let mut axis = section.map(|s| s.axis);
+        ui.radio_value(&mut axis, None, "off");
+        for (k, name) in ["x", "y", "z"].iter().enumerate() {
+            ui.radio_value(&mut axis, Some(k as u8), *name)
+                .on_hover_text(format!(
+                    "cut the model by a plane normal to {name}, the cut's outline in yellow"
+                ));
+        }
+        *section = axis.map(|axis| super::display::Section {
+            axis,
+            ..section.unwrap_or(super::display::Section {
+                axis,
+                permille: 500,
+                above: false,
+            })
+        });
+        if let Some(s) = section {
+            let mut at = f64::from(s.permille) / 1000.0;
+            ui.add(egui::Slider::new(&mut at, 0.0..=1.0).text("along the box"));
+            s.permille = (at * 1000.0).round() as u16;
+            ui.checkbox(&mut s.above, "keep beyond");
+        }
+    });
 }

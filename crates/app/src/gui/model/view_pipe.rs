@@ -35,8 +35,11 @@ pub fn level_scene(lv: &Level, made_by: Option<Scheme>, opts: &SceneOptions) -> 
         opts.color_by = ColorBy::Solid(scheme_color(made_by.as_ref()));
     }
     let mut scene = Scene::of_level(lv, &opts);
-    // Faces a step turned against their parent are always shown, in red over any colouring.
-    if let Some(r) = &lv.report {
+    // Faces a step turned against their parent are always shown, in red over any colouring
+    // (a section paints those it keeps itself).
+    if let Some(r) = &lv.report
+        && opts.section.is_none()
+    {
         scene.paint_faces(&lv.mesh, &r.flipped, FLIPPED_COLOR);
     }
     scene
