@@ -303,8 +303,25 @@ pub fn point_triangle_distance(q: DVec3, a: DVec3, b: DVec3, c: DVec3) -> f64 {
     q.distance(a + ab * (vb * den) + ac * (vc * den))
 }
 
+/// The radius of the circle through three points, `|a−b|·|b−c|·|c−a| / (2·|(b−a)×(c−a)|)`, or
+/// `None` where they lie on a line (the measuring tool's three-point radius).
+pub fn circumradius(a: DVec3, b: DVec3, c: DVec3) -> Option<f64> {
+    let twice_area = (b - a).cross(c - a).length();
+    let sides = a.distance(b) * b.distance(c) * c.distance(a);
+    (twice_area > 1e-12 * sides.cbrt().powi(2)).then(|| sides / (2.0 * twice_area))
+}
+
 #[cfg(test)]
 mod tests {
+    /// Three points of a circle of radius 2 give 2; three on a line give none.
+    #[test]
+    fn the_circle_through_three_points() {
+        let on = |t: f64| DVec3::new(1.0 + 2.0 * t.cos(), -3.0, 2.0 * t.sin());
+        let r = circumradius(on(0.1), on(1.3), on(2.9)).unwrap();
+        assert!((r - 2.0).abs() < 1e-12, "{r}");
+        assert_eq!(circumradius(DVec3::ZERO, DVec3::X, 2.0 * DVec3::X), None);
+    }
+
     use super::*;
     use crate::primitives;
 

@@ -1405,3 +1405,62 @@ fn the_teaching_overlays_can_be_asked_for_at_start() {
     assert!(plain.envelope.overlays.surface && !plain.skin.overlays.trajectories);
     assert!(!plain.curves.evolute && plain.curves.comb);
 }
+
+/// The Measure tool: clicks on the surface of the level shown put points on it — where the
+/// ray meets the nearest face — and the panel's lines give the distances between them and
+/// the radius of the circle through three; the overlay draws them; a fourth click starts
+/// again.
+#[test]
+fn the_measure_tool_reads_distances_and_a_radius() {
+    let mut a = app();
+    a.model.tool = Tool::Measure;
+    let proj: Projector = a.model.projector(0, rect());
+    let mesh = a.model.views[0].pipeline.levels()[0].mesh.clone();
+    let scene = a.model.views[0].scene.clone();
+    // The centroids of the first three square faces seen (an L's centroid lies in its notch).
+    let mut picked = Vec::new();
+    for f in (0..mesh.num_faces()).filter(|&f| mesh.face_corners(f).len() == 4) {
+        let c = mesh
+            .face_corners(f)
+            .map(|c| mesh.positions[mesh.corner_verts[c] as usize]);
+        let n = mesh.face_corners(f).len() as f64;
+        let centroid = c.sum::<glam::DVec3>() / n;
+        if let Some((s, _)) = proj.project(centroid)
+            && proj.rect.contains(s)
+            && proj.visible(&scene, centroid)
+        {
+            let doc = a.doc.state().clone();
+            a.model.click_pick(0, &proj, s, false, &doc);
+            picked.push(centroid);
+            if picked.len() == 3 {
+                break;
+            }
+        }
+    }
+    assert_eq!(picked.len(), 3);
+    let m = a.model.measure.clone();
+    assert_eq!(m.len(), 3);
+    for (p, q) in m.iter().zip(&picked) {
+        assert!(p.distance(*q) < 1e-3, "{p} {q}");
+    }
+    let lines = super::model::panels::measure_lines(&m);
+    let d = picked[0].distance(picked[1]);
+    assert!(
+        lines[0].starts_with(&format!("distance 1–2: {:.2}", d)),
+        "{lines:?}"
+    );
+    let r = prism_geom::geometry::circumradius(picked[0], picked[1], picked[2]).unwrap();
+    assert!(lines[3].contains(&format!("{:.2}", r)), "{lines:?}");
+    rebuild(&mut a);
+    let cyan = a.model.views[0]
+        .overlay
+        .lines
+        .iter()
+        .filter(|l| l.color == [0.30, 0.95, 1.0])
+        .count();
+    assert!(cyan >= 6, "{cyan}");
+    let doc = a.doc.state().clone();
+    let s = proj.project(picked[0]).unwrap().0;
+    a.model.click_pick(0, &proj, s, false, &doc);
+    assert_eq!(a.model.measure.len(), 1);
+}

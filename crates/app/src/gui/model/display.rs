@@ -24,6 +24,9 @@ pub enum Tool {
     Vertices,
     /// Click, shift-click or box-select edges on any level.
     Edges,
+    /// Click points on the surface of the level shown: two give their distance, three the
+    /// radius of the circle through them.
+    Measure,
 }
 
 /// How faces are coloured.

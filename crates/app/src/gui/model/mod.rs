@@ -61,6 +61,8 @@ pub struct ModelTab {
     pub sel_verts: BTreeSet<u32>,
     /// Selected control edges.
     pub sel_edges: BTreeSet<EdgeKey>,
+    /// The points the Measure tool has clicked on the surface (at most three).
+    pub measure: Vec<glam::DVec3>,
     /// Axis a vertex drag is held to (0 x, 1 y, 2 z).
     pub axis: Option<usize>,
     /// The scheme Step >> appends.
@@ -146,6 +148,7 @@ impl ModelTab {
             tool,
             sel_verts: BTreeSet::new(),
             sel_edges: BTreeSet::new(),
+            measure: Vec::new(),
             axis: None,
             next,
             budget_mib: budget_mib.max(64),

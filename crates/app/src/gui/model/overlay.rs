@@ -27,6 +27,8 @@ const MISSED: [f32; 3] = [0.90, 0.10, 0.10];
 const CAGE: [f32; 3] = [0.95, 0.75, 0.25];
 const CORNER: [f32; 3] = [0.45, 0.95, 0.45];
 const LIMIT: [f32; 3] = [0.95, 0.45, 0.95];
+/// The Measure tool's points and the lines between them.
+const MEASURE: [f32; 3] = [0.30, 0.95, 1.0];
 
 impl ModelTab {
     /// Brings every view's scene and overlay up to date (`doc_generation`: the document's).
@@ -46,6 +48,9 @@ impl ModelTab {
                 (v.generation, v.shown(), v.scene_serial(), doc_generation).hash(&mut h);
                 (&self.display, self.tool, i == self.active).hash(&mut h);
                 (&self.sel_verts, &self.sel_edges, limit.is_some()).hash(&mut h);
+                for p in &self.measure {
+                    p.to_array().map(f64::to_bits).hash(&mut h);
+                }
                 h.finish()
             };
             if self.views[i].overlay_key == Some(key) {
@@ -97,6 +102,15 @@ impl ModelTab {
         let size = 0.008 * radius;
         if self.display.cage && k > 0 {
             o.add_cage(&self.views[i].pipeline.levels()[k - 1].mesh, CAGE);
+        }
+        if !self.measure.is_empty() {
+            o.add_points(&self.measure, 1.5 * size, MEASURE);
+            let mut segs: Vec<(DVec3, DVec3)> =
+                self.measure.windows(2).map(|w| (w[0], w[1])).collect();
+            if self.measure.len() == 3 {
+                segs.push((self.measure[2], self.measure[0]));
+            }
+            o.add_segments(&segs, MEASURE);
         }
         if self.tool == Tool::Vertices && i == self.active {
             o.add_cage(&doc.mesh, CONTROL);

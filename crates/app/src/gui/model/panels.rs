@@ -265,6 +265,7 @@ impl ModelTab {
             ui.selectable_value(&mut self.tool, Tool::Orbit, "Orbit");
             ui.selectable_value(&mut self.tool, Tool::Vertices, "Vertices");
             ui.selectable_value(&mut self.tool, Tool::Edges, "Edges");
+            ui.selectable_value(&mut self.tool, Tool::Measure, "Measure");
         });
         match self.tool {
             Tool::Orbit => {
@@ -272,6 +273,32 @@ impl ModelTab {
             }
             Tool::Vertices => self.vertex_section(ui, doc),
             Tool::Edges => self.edge_section(ui, doc),
+            Tool::Measure => self.measure_section(ui),
+        }
+    }
+
+    /// The Measure tool's read-out: the points clicked, the distances between them and, for
+    /// three, the radius of the circle through them.
+    fn measure_section(&mut self, ui: &mut egui::Ui) {
+        ui.label(
+            "Click points on the surface of the level shown: two give their distance, three \
+             the radius of the circle through them (a fillet's, across its section); a fourth \
+             starts again. Right-drag turns the view.",
+        );
+        for (k, p) in self.measure.iter().enumerate() {
+            ui.label(format!(
+                "point {}: ({:.5}, {:.5}, {:.5})",
+                k + 1,
+                p.x,
+                p.y,
+                p.z
+            ));
+        }
+        for line in measure_lines(&self.measure) {
+            ui.label(line);
+        }
+        if !self.measure.is_empty() && ui.button("Clear the points").clicked() {
+            self.measure.clear();
         }
     }
 
@@ -470,4 +497,22 @@ fn section_row(ui: &mut egui::Ui, section: &mut Option<super::display::Section>)
             ui.checkbox(&mut s.above, "keep beyond");
         }
     });
+}
+
+/// What the Measure tool's points measure, one line each: the distances between consecutive
+/// points and, for three, the radius of the circle through them.
+pub fn measure_lines(points: &[glam::DVec3]) -> Vec<String> {
+    let mut out: Vec<String> = points
+        .windows(2)
+        .enumerate()
+        .map(|(k, w)| format!("distance {}–{}: {:.5}", k + 1, k + 2, w[0].distance(w[1])))
+        .collect();
+    if let [a, b, c] = points {
+        out.push(format!("distance 1–3: {:.5}", a.distance(*c)));
+        out.push(match prism_geom::geometry::circumradius(*a, *b, *c) {
+            Some(r) => format!("radius of the circle through 1, 2, 3: {r:.5}"),
+            None => "the three points lie on a line: no circle".to_string(),
+        });
+    }
+    out
 }

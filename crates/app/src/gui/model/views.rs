@@ -278,6 +278,18 @@ impl ModelTab {
                     toggle(&mut self.sel_edges, control, add);
                 }
             }
+            Tool::Measure => {
+                let v = &self.views[i];
+                let (o, d) = proj.ray(pos);
+                if let Some(t) = pick::ray_hit(&v.scene, o, d) {
+                    let p = v.scene.origin + (o + d * t).as_dvec3();
+                    // A fourth point starts a new measure.
+                    if self.measure.len() >= 3 {
+                        self.measure.clear();
+                    }
+                    self.measure.push(p);
+                }
+            }
             Tool::Orbit => {}
         }
     }
@@ -315,7 +327,7 @@ impl ModelTab {
                     Err(msg) => self.pending.push(Command::Say(msg.clone())),
                 }
             }
-            Tool::Orbit => {}
+            Tool::Orbit | Tool::Measure => {}
         }
     }
 }
