@@ -17,6 +17,13 @@ pub(super) fn app() -> PrismApp {
     a
 }
 
+/// Line vertices of colour `color` in view 0's overlay (or, `overlay` false, its scene).
+pub(super) fn lines_of(a: &PrismApp, overlay: bool, color: [f32; 3]) -> usize {
+    let v = &a.model.views[0];
+    let scene = if overlay { &v.overlay } else { &v.scene };
+    scene.lines.iter().filter(|l| l.color == color).count()
+}
+
 /// Brings the scenes and overlays up to date, as a frame does.
 pub(super) fn rebuild(a: &mut PrismApp) {
     let g = a.doc.generation();
@@ -1452,12 +1459,7 @@ fn the_measure_tool_reads_distances_and_a_radius() {
     let r = prism_geom::geometry::circumradius(picked[0], picked[1], picked[2]).unwrap();
     assert!(lines[3].contains(&format!("{:.2}", r)), "{lines:?}");
     rebuild(&mut a);
-    let cyan = a.model.views[0]
-        .overlay
-        .lines
-        .iter()
-        .filter(|l| l.color == [0.30, 0.95, 1.0])
-        .count();
+    let cyan = lines_of(&a, true, [0.30, 0.95, 1.0]);
     assert!(cyan >= 6, "{cyan}");
     let doc = a.doc.state().clone();
     let s = proj.project(picked[0]).unwrap().0;

@@ -3,7 +3,7 @@
 //! its level kept to be looked at.
 
 use super::command::Edit;
-use super::tests::{opened, rebuild, run_pipeline};
+use super::tests::{lines_of, opened, rebuild, run_pipeline};
 use prism_geom::scheme::parse_pipeline;
 use prism_viewport::scene::FLIPPED_COLOR;
 
@@ -55,16 +55,23 @@ fn flipped_faces_are_red_and_framed_and_inside_out_stops_the_pipeline() {
     );
 }
 
+/// The tripod with its arm edge 0-9 selected and given the own radius `r`, rounded by `levels`
+/// combination steps of 0.2 at the app's default (clamping on).
+fn tripod_rounded_with_own_radius(r: f64, levels: usize) -> (super::PrismApp, prism_geom::EdgeKey) {
+    let mut a = opened(&asset("tripod.obj"));
+    let e = prism_geom::EdgeKey::new(0, 9);
+    a.model.sel_edges.insert(e);
+    a.model.mark(super::command::EdgeMark::Radius(Some(r)));
+    a.flush();
+    run_pipeline(&mut a, &vec!["combination:r=0.2"; levels].join(","));
+    (a, e)
+}
+
 /// The Edges tool reads out the fillet reached on the selected edge, for the level shown,
 /// against the radius the edge was given (its own here).
 #[test]
 fn the_selected_edge_reads_out_its_fillet() {
-    let mut a = opened(&asset("tripod.obj"));
-    let e = prism_geom::EdgeKey::new(0, 9);
-    a.model.sel_edges.insert(e);
-    a.model.mark(super::command::EdgeMark::Radius(Some(0.3)));
-    a.flush();
-    run_pipeline(&mut a, &["combination:r=0.2"; 4].join(","));
+    let (mut a, _) = tripod_rounded_with_own_radius(0.3, 4);
     let doc = a.doc.state().clone();
     let t4 = a.model.fillet_text(0, &doc);
     assert!(
@@ -121,12 +128,7 @@ fn clamped_edges_are_highlighted_at_every_level() {
                 .flipped
                 .is_empty()
         );
-        let orange = v
-            .overlay
-            .lines
-            .iter()
-            .filter(|l| l.color == [1.0, 0.55, 0.10])
-            .count();
+        let orange = lines_of(&a, true, [1.0, 0.55, 0.10]);
         // Every clamped edge has at least one piece on the level: two ends each.
         assert!(orange >= 2 * 16, "level {k}: {orange}");
     }
@@ -373,21 +375,8 @@ fn mending_crossings_is_a_checkbox_away() {
 /// red and the status bar's words name the edge with both numbers.
 #[test]
 fn a_clamped_radius_is_reached_or_drawn_red() {
-    const MISSED: [f32; 3] = [0.90, 0.10, 0.10];
-    let red = |a: &super::PrismApp| {
-        a.model.views[0]
-            .overlay
-            .lines
-            .iter()
-            .filter(|l| l.color == MISSED)
-            .count()
-    };
-    let mut a = opened(&asset("tripod.obj"));
-    let e = prism_geom::EdgeKey::new(0, 9);
-    a.model.sel_edges.insert(e);
-    a.model.mark(super::command::EdgeMark::Radius(Some(1.5)));
-    a.flush();
-    run_pipeline(&mut a, &["combination:r=0.2"; 5].join(","));
+    let red = |a: &super::PrismApp| lines_of(a, true, [0.90, 0.10, 0.10]);
+    let (mut a, e) = tripod_rounded_with_own_radius(1.5, 5);
     rebuild(&mut a);
     let doc = a.doc.state().clone();
     let run = a.model.views[0].pipeline.rounding_run(5).unwrap();
@@ -432,14 +421,7 @@ fn a_section_plane_cuts_the_view() {
     a.model.views[0].level = 4;
     rebuild(&mut a);
     let whole = a.model.views[0].scene.triangles();
-    let yellow = |a: &super::PrismApp| {
-        a.model.views[0]
-            .scene
-            .lines
-            .iter()
-            .filter(|l| l.color == SECTION_COLOR)
-            .count()
-    };
+    let yellow = |a: &super::PrismApp| lines_of(a, false, SECTION_COLOR);
     assert_eq!(yellow(&a), 0);
     let mut kept = Vec::new();
     for above in [false, true] {
