@@ -201,6 +201,9 @@ pub enum Command {
     OpenSkinSample(usize),
     /// Puts bundled envelope scene k into the Envelope tab (undoable) and shows the tab.
     OpenEnvelopeSample(usize),
+    /// Opens paper figure k of Help ▸ Paper figures (`paper_figures::FIGURES`): its input,
+    /// steps, tab and display.
+    OpenFigure(usize),
     /// Makes the copy of unsaved work an earlier run left the document (undoable).
     RestoreAutosave,
     /// Drops that copy.

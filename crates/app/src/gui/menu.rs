@@ -134,6 +134,24 @@ impl PrismApp {
                     }
                 }
             });
+            ui.menu_button("Help", |ui| {
+                ui.menu_button("Paper figures", |ui| {
+                    ui.label(
+                        "Opens the figure's input, steps and view (docs/figures.md lists all 50)",
+                    );
+                    let mut paper = "";
+                    for (k, f) in super::paper_figures::FIGURES.iter().enumerate() {
+                        let seed = &f.id[..3];
+                        if seed != paper {
+                            ui.separator();
+                            paper = seed;
+                        }
+                        if ui.button(format!("{}: {}", f.id, f.caption)).clicked() {
+                            out.push(Command::OpenFigure(k));
+                        }
+                    }
+                });
+            });
             ui.separator();
             ui.selectable_value(&mut self.tab, Tab::Model, "Model");
             ui.selectable_value(&mut self.tab, Tab::Curves, "Curves");

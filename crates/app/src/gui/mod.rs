@@ -30,6 +30,7 @@ pub mod model;
 mod new_document;
 mod new_solid;
 mod opening;
+mod paper_figures;
 pub(crate) mod skin;
 mod view3d;
 mod viewport;
@@ -81,7 +82,7 @@ use gestures::Tab3d;
 use launch::SETTINGS_KEY;
 pub use launch::{Launch, SAMPLES_FILES, Settings, Show, Tab};
 use model::ModelTab;
-pub use model::{Coloring, Tool};
+pub use model::Tool;
 #[cfg(test)]
 use prism_geom::EdgeKey;
 use std::path::PathBuf;
@@ -167,29 +168,8 @@ impl PrismApp {
         let mut envelope = envelope::EnvelopeTab::default();
         let mut skin = skin::SkinTab::default();
         let mut curves = curves::CurvesTab::default();
-        for s in &launch.show {
-            match s {
-                Show::Smooth => display.smooth = true,
-                Show::Wireframe => display.wireframe = true,
-                Show::Kinds => display.color = Coloring::Kind,
-                Show::Curvature => display.color = Coloring::Curvature,
-                Show::Schemes => display.color = Coloring::Scheme,
-                Show::Cage => display.cage = true,
-                Show::Corners => display.corners = true,
-                Show::Limit => display.limit = true,
-                Show::TSweep => envelope.sweep = true,
-                Show::NetworkOnly => envelope.overlays.surface = false,
-                Show::Trajectories => skin.overlays.trajectories = true,
-                Show::Swept => skin.overlays.swept = true,
-                Show::Contours => skin.overlays.contours = true,
-                Show::Twists => skin.overlays.twists = true,
-                Show::Evolute => curves.evolute = true,
-                Show::NoComb => curves.comb = false,
-                Show::Xray => {
-                    skin.overlays.look.xray = true;
-                    envelope.overlays.look.xray = true;
-                }
-            }
+        for &s in &launch.show {
+            launch::apply_show(s, &mut display, &mut envelope, &mut skin, &mut curves);
         }
         let next = prism_geom::parse_pipeline(&settings.next)
             .ok()
@@ -348,6 +328,7 @@ impl PrismApp {
             Command::OpenEnvelopeSample(k) => {
                 self.open_tab_sample((Tab::Envelope, "envelope"), k, |a| &mut a.envelope)
             }
+            Command::OpenFigure(k) => self.open_figure(k),
             Command::RestoreAutosave => self.restore_autosave(),
             Command::DiscardAutosave => {
                 self.autosave.discard();

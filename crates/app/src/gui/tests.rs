@@ -4,6 +4,7 @@
 //! the curve sketch as part of the document (undo across tabs, saved and reopened).
 
 use super::command::{CurveEdit, EdgeMark, Edit};
+use super::model::Coloring;
 use super::model::pick::{self, Projector};
 use super::*;
 use egui_kittest::Harness;
@@ -1465,4 +1466,67 @@ fn the_measure_tool_reads_distances_and_a_radius() {
     let s = proj.project(picked[0]).unwrap().0;
     a.model.click_pick(0, &proj, s, false, &doc);
     assert_eq!(a.model.measure.len(), 1);
+}
+
+/// Help ▸ Paper figures opens a figure's state: seed 000 fig. 2 (clicked in the menu) is the
+/// tripod through three Doo–Sabin steps with the last level shown, on the Model tab, with
+/// the clamp off (the paper's literal rule); fig. 13 colours by face kind; seed 003 fig. 4 is
+/// the spout on the Skin tab with its contours; seed 004 fig. 4 the two cubes' network alone
+/// on the Envelope tab. Each is undoable as an open.
+#[test]
+fn help_opens_the_papers_figures() {
+    use egui_kittest::kittest::Queryable;
+    let mut h = harness(app());
+    settle(&mut h);
+    h.get_by_label("Help").click();
+    settle(&mut h);
+    h.get_by_label("Paper figures").click();
+    settle(&mut h);
+    h.get_by_label("000 fig. 2: Doo–Sabin subdivision of the tripod")
+        .click();
+    settle(&mut h);
+    let a = h.state_mut();
+    a.wait_idle();
+    assert_eq!(a.tab, Tab::Model);
+    assert!(
+        a.doc.origin().name.contains("tripod"),
+        "{}",
+        a.doc.origin().name
+    );
+    assert_eq!(
+        a.doc.state().pipelines[0],
+        parse_pipeline("doo-sabin,doo-sabin,doo-sabin").unwrap()
+    );
+    assert_eq!(a.model.views[0].shown(), 3);
+    assert!(!a.model.clamp);
+    let mut a = app();
+    let index = |id: &str| {
+        super::paper_figures::FIGURES
+            .iter()
+            .position(|f| f.id == id)
+            .unwrap()
+    };
+    a.run(Command::OpenFigure(index("000 fig. 13")));
+    a.wait_idle();
+    assert_eq!(a.model.display.color, super::model::Coloring::Kind);
+    a.run(Command::OpenFigure(index("003 fig. 4")));
+    a.wait_idle();
+    assert_eq!(a.tab, Tab::Skin);
+    assert!(a.skin.overlays.contours);
+    a.run(Command::OpenFigure(index("004 fig. 4")));
+    a.wait_idle();
+    assert_eq!(a.tab, Tab::Envelope);
+    assert!(!a.envelope.overlays.surface);
+    // Every figure opens without a note of failure.
+    for k in 0..super::paper_figures::FIGURES.len() {
+        a.run(Command::OpenFigure(k));
+        a.wait_idle();
+        let note = a.note.clone().unwrap_or_default();
+        assert!(note.starts_with("opened seed"), "{k}: {note}");
+        assert!(
+            a.model.views[0].error.is_none(),
+            "{k}: {:?}",
+            a.model.views[0].error
+        );
+    }
 }
