@@ -47,6 +47,10 @@ pub struct CurveArgs {
     /// --lengths, refined by the three schemes.
     #[arg(long, conflicts_with_all = ["input", "preset", "scheme"])]
     pub sweep: bool,
+    /// With --sweep: also draw seed 002 fig. 7, the curves of every θ1 (rows) and θ2 (columns)
+    /// of --angles as small multiples (l1 = l2 = 1).
+    #[arg(long, requires = "sweep")]
+    pub family: Option<PathBuf>,
     /// The study's angles θ1 and θ2, degrees.
     #[arg(long, default_value = "15,30,45,60,75,90")]
     pub angles: String,
@@ -212,6 +216,10 @@ fn sweep(a: &CurveArgs) -> Result<(), CliError> {
     if let Some(plot) = &a.plot {
         study_plot(&rows, (&angles, &angles, &lengths, &lengths), plot)?;
         println!("plotted {}", plot.display());
+    }
+    if let Some(family) = &a.family {
+        super::curve_plot::family_plot(&angles, 1.0, a.levels, family)?;
+        println!("plotted {}", family.display());
     }
     Ok(())
 }

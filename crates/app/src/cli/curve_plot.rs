@@ -334,6 +334,80 @@ pub fn study_plot(
     })
 }
 
+/// Seed 002 fig. 7 as small multiples: fig. 6's polyline for every θ₁ (rows) and θ₂ (columns)
+/// of `angles` at l₁ = l₂ = `length`, each cell one scale on both axes, the polyline in grey and
+/// the curves of method 1 (circle, blue) and method 2 (log spiral, orange) after `levels`.
+pub fn family_plot(
+    angles: &[f64],
+    length: f64,
+    levels: usize,
+    path: &Path,
+) -> Result<(), CliError> {
+    use prism_geom::curve::CurveScheme;
+    let n = angles.len().max(1);
+    let cell = 150u32;
+    let (w, h) = (cell * n as u32 + 40, cell * n as u32 + 70);
+    picture((w, h), path, |root| {
+        let title = format!(
+            "seed 002 fig. 7: fig. 6's polyline (grey), circle (blue), log spiral (orange); {levels} levels, l1 = l2 = {length}"
+        );
+        root.draw(&Text::new(title, (12, 10), (FONT, 15).into_font()))
+            .map_err(draw_error)?;
+        let grid = root.margin(40, 0, 30, 10);
+        let cells = grid.split_evenly((n, n));
+        for (k, area) in cells.iter().enumerate() {
+            let (t1, t2) = (angles[k / n], angles[k % n]);
+            let poly =
+                prism_geom::curve::presets::fig6(t1.to_radians(), t2.to_radians(), length, length);
+            let curves = [CurveScheme::Circle, CurveScheme::LogSpiral]
+                .map(|s| poly.refine_levels(s, levels).ok());
+            let all = poly
+                .points
+                .iter()
+                .chain(curves.iter().flatten().flat_map(|c| c.points.iter()));
+            let (lo, hi) = all.fold(
+                (
+                    glam::DVec2::splat(f64::INFINITY),
+                    glam::DVec2::splat(f64::NEG_INFINITY),
+                ),
+                |(lo, hi), p| (lo.min(*p), hi.max(*p)),
+            );
+            // One scale on both axes, the curves' box centred with 8 % round it.
+            let (cw, ch) = area.dim_in_pixel();
+            let (cw, ch) = (f64::from(cw), f64::from(ch) - 16.0);
+            let c = 0.5 * (lo + hi);
+            let half = 0.5 * (hi - lo).max_element().max(1e-9) * 1.08;
+            let px = cw.min(ch) / (2.0 * half);
+            let (xs, ys) = (
+                (c.x - cw / (2.0 * px))..(c.x + cw / (2.0 * px)),
+                (c.y - ch / (2.0 * px))..(c.y + ch / (2.0 * px)),
+            );
+            let mut chart = ChartBuilder::on(area)
+                .caption(format!("θ1 {t1}°, θ2 {t2}°"), (FONT, 12))
+                .margin(4)
+                .build_cartesian_2d(xs, ys)
+                .map_err(draw_error)?;
+            let line = |pts: &[glam::DVec2], color: RGBColor| {
+                LineSeries::new(pts.iter().map(|p| (p.x, p.y)), color.stroke_width(1))
+            };
+            chart
+                .draw_series(line(&poly.points, RGBColor(170, 170, 170)))
+                .map_err(draw_error)?;
+            for (c, color) in curves
+                .iter()
+                .zip([RGBColor(40, 90, 200), RGBColor(235, 120, 20)])
+            {
+                if let Some(c) = c {
+                    chart
+                        .draw_series(line(&c.points, color))
+                        .map_err(draw_error)?;
+                }
+            }
+        }
+        Ok(())
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
