@@ -1,6 +1,7 @@
 //! The pictures of `prism curve`, drawn with `plotters` into a buffer and written as PNG:
 //! a refined curve (its control polygon, the curve, its curvature comb) beside its curvature
-//! against arc length; and the §4 study as dimensional stacking (θ₁, θ₂ outer, l₁, l₂ inner).
+//! against arc length; the §4 study as dimensional stacking (θ₁, θ₂ outer, l₁, l₂ inner); and
+//! fig. 7, the study's curves as small multiples.
 //! Text and axes as [`super::plot_style`] draws them.
 
 use super::CliError;
