@@ -5,6 +5,7 @@ mod curve;
 mod curve_plot;
 mod envelope;
 mod envelope_study;
+mod fillet_plot;
 pub(crate) mod level_lines;
 mod levels_strip;
 mod limit;

@@ -11,7 +11,7 @@ use prism_geom::io::{self, Document};
 use prism_geom::pipeline::Keep;
 use prism_geom::scheme::{Scheme, SchemeError, SchemeKind, parse_pipeline};
 use prism_geom::{CornerRule, Pipeline, ReflexMode, Topology};
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 /// The parameter of a scheme given by name (shared by `subdivide`, `render` and `bench`).
 #[derive(Debug, Args)]
@@ -106,6 +106,10 @@ pub struct SubdivideArgs {
     /// 0-based, as in the file).
     #[arg(long)]
     pub measure_edge: Option<String>,
+    /// With --measure-edge: draw the first edge's section at every level of the rounding run
+    /// against the target circle (seed 000 fig. 8) into this PNG.
+    #[arg(long, requires = "measure_edge")]
+    pub plot: Option<PathBuf>,
     /// Also look at every level for faces that pass through each other (both still facing
     /// outward, which the flipped count cannot see): `crossings=N` in each level's line and
     /// a warning naming the first pair. Takes about as long as the step on big levels.
@@ -236,7 +240,11 @@ fn short(x: f64) -> String {
 
 /// The fillet line of the summary (every rounded edge of the level the rounding run
 /// started from) and the `--measure-edge` lines.
-fn report_fillets(p: &Pipeline, measure: Option<&str>) -> Result<(), CliError> {
+fn report_fillets(
+    p: &Pipeline,
+    measure: Option<&str>,
+    plot: Option<&Path>,
+) -> Result<(), CliError> {
     let n = p.steps().len();
     let edges = measure
         .map(|m| super::parse_edges(m).map_err(|e| CliError::usage(format!("--measure-edge: {e}"))))
@@ -293,7 +301,25 @@ fn report_fillets(p: &Pipeline, measure: Option<&str>) -> Result<(), CliError> {
         );
     }
     let base = &p.levels()[run.start];
-    for e in edges.unwrap_or_default() {
+    let edges = edges.unwrap_or_default();
+    if let (Some(path), Some(&e)) = (plot, edges.first()) {
+        let r = run.radius(&base.edge_attrs, e).ok_or_else(|| {
+            CliError::usage(format!(
+                "--measure-edge {}-{}: the edge is not rounded",
+                e.0, e.1
+            ))
+        })?;
+        let sections = (run.start + 1..=n)
+            .filter_map(|k| {
+                measure_fillet(&base.mesh, e.0, e.1, &p.levels()[k].mesh, r)
+                    .ok()
+                    .map(|m| (k, m.section))
+            })
+            .collect::<Vec<_>>();
+        super::fillet_plot::fillet_plot(&sections, r, (e.0, e.1), path)?;
+        println!("plotted {}", path.display());
+    }
+    for e in edges {
         let r = run.radius(&base.edge_attrs, e).ok_or_else(|| {
             CliError::usage(format!(
                 "--measure-edge {}-{}: the edge is not rounded",
@@ -352,8 +378,13 @@ pub fn run(a: SubdivideArgs) -> Result<(), CliError> {
     );
     let mut warnings = super::level_lines::LevelWarnings::new(&doc.mesh);
     let mut pipeline = Pipeline::with_tags(doc.mesh, doc.edge_attrs, doc.tags, steps.clone());
-    // Only the levels the output and the fillet report need are kept.
-    pipeline.keep = Keep::Needed;
+    // Only the levels the output and the fillet report need are kept (every level for a
+    // section plot of them all).
+    pipeline.keep = if a.plot.is_some() {
+        Keep::All
+    } else {
+        Keep::Needed
+    };
     let n = steps.len();
     // The options first: mending crossings adds a search of each rounded level to its step.
     pipeline.options = a.steps.options(pipeline.options.memory_budget);
@@ -425,7 +456,7 @@ pub fn run(a: SubdivideArgs) -> Result<(), CliError> {
         );
     }
     result.map_err(|e| CliError::input(e.describe(&numbering)))?;
-    report_fillets(&pipeline, a.measure_edge.as_deref())?;
+    report_fillets(&pipeline, a.measure_edge.as_deref(), a.plot.as_deref())?;
     let normals = a.normals.as_deref().map(|n| {
         if n == "flat" {
             io::Normals::Flat

@@ -51,6 +51,10 @@ pub struct FilletMeasure {
     /// The edge's bend angle ψ (radians): after k steps the section's points lie
     /// `r/cos(ψ/2^(k+1))` from the ideal axis.
     pub bend: f64,
+    /// The section's fillet points in the plane through the edge's midpoint, relative to the
+    /// ideal axis (x along the faces' bisector, outwards for a convex edge), in their order
+    /// round it: the target is the circle of radius r about the origin.
+    pub section: Vec<DVec2>,
 }
 
 /// Measures the fillet of original edge `a`-`b` (vertex indices of `original`) in `refined`,
@@ -294,7 +298,12 @@ fn measure_at_corner(
         max_e = max_e.max(e);
         min_e = min_e.min(e);
     }
+    let c2 = to2(centre);
+    let sign = if concave { -1.0 } else { 1.0 };
+    let mut section: Vec<DVec2> = p2.iter().map(|&p| sign * (p - c2)).collect();
+    section.sort_by(|a, b| a.y.atan2(a.x).total_cmp(&b.y.atan2(b.x)));
     Ok(FilletMeasure {
+        section,
         points: pts.len(),
         fitted_radius: rfit,
         centre_offset: (cfit - to2(centre)).length(),
