@@ -1,5 +1,5 @@
 //! `prism envelope SCENE.json -o OUT.obj|.prism.json|.stl|.glb [--t T] [--resolution K]
-//! [--patches charts|paper] [--enclosure lifted|paper] [--basis virtual|one-sided] [--curves CURVES.obj]`: a smooth surface enveloping convex primitives (seed 004;
+//! [--patches charts|paper] [--enclosure lifted|paper] [--basis virtual|one-sided] [--curves CURVES.obj] [--control-polygons CONTROL.obj]`: a smooth surface enveloping convex primitives (seed 004;
 //! docs/algorithms/envelope.md). SCENE is `{"t": 1.0, "primitives": [{"vertices": [[x, y, z],
 //! ...], "faces": [[i, ...], ...], "t": optional, "vertex_t": [optional, per vertex]}]}`, or a
 //! `.prism.json` with an `"envelope"` block of that form. Primitives, vertices and faces are
@@ -52,6 +52,10 @@ pub struct EnvelopeArgs {
     /// parameter).
     #[arg(long)]
     pub curves: Option<PathBuf>,
+    /// Also write every curve's rational Bézier control polygon as an OBJ polyline (its
+    /// weights in a comment), to draw with `prism render --lines`.
+    #[arg(long)]
+    pub control_polygons: Option<PathBuf>,
     /// Replace a read-only output file (it keeps its permission bits).
     #[arg(long)]
     pub force: bool,
@@ -65,11 +69,15 @@ pub fn read_scene(path: &Path) -> Result<EnvelopeSpec, CliError> {
     io::scene_from_str(path, &text).map_err(|e| CliError::input(e.to_string()))
 }
 
-/// The network as OBJ polylines, `segments` a curve.
-fn curves_obj(e: &Envelope, segments: usize) -> String {
-    let mut out = String::from(
-        "# Prism envelope curve network: one polyline a curve, uniform in its parameter\n",
-    );
+/// The network as OBJ polylines, one a curve: `segments` chords uniform in its parameter, or
+/// (`control`) its rational Bézier control polygon, the weights in the curve's comment
+/// (seed 004 figs. 2–3).
+fn curves_obj(e: &Envelope, segments: usize, control: bool) -> String {
+    let mut out = String::from(if control {
+        "# Prism envelope curve network: each curve's rational Bezier control polygon\n"
+    } else {
+        "# Prism envelope curve network: one polyline a curve, uniform in its parameter\n"
+    });
     let mut base = 1;
     // A triangle's collapsed tip is a curve of one point: no polyline.
     for (i, c) in e
@@ -85,14 +93,23 @@ fn curves_obj(e: &Envelope, segments: usize) -> String {
             CurveKind::Fusion => "fusion edge",
             CurveKind::Insertion => "insertion curve",
         };
-        let _ = writeln!(out, "# curve {i}: {kind}");
-        for j in 0..=segments {
-            let p = e.frame.to_world(c.bezier.eval(j as f64 / segments as f64));
+        let points: Vec<glam::DVec3> = if control {
+            let w: Vec<String> = c.bezier.weights.iter().map(|w| format!("{w:.6}")).collect();
+            let _ = writeln!(out, "# curve {i}: {kind}, weights {}", w.join(" "));
+            c.bezier.points.clone()
+        } else {
+            let _ = writeln!(out, "# curve {i}: {kind}");
+            (0..=segments)
+                .map(|j| c.bezier.eval(j as f64 / segments as f64))
+                .collect()
+        };
+        for p in &points {
+            let p = e.frame.to_world(*p);
             let _ = writeln!(out, "v {} {} {}", p.x, p.y, p.z);
         }
-        let ids: Vec<String> = (base..=base + segments).map(|k| k.to_string()).collect();
+        let ids: Vec<String> = (base..base + points.len()).map(|k| k.to_string()).collect();
         let _ = writeln!(out, "l {}", ids.join(" "));
-        base += segments + 1;
+        base += points.len();
     }
     out
 }
@@ -194,8 +211,13 @@ pub fn run(a: EnvelopeArgs) -> Result<(), CliError> {
     if let Some(note) = e.removed_note() {
         println!("{note}");
     }
+    if let Some(path) = &a.control_polygons {
+        io::write_atomically(path, curves_obj(&e, 32, true).as_bytes()).map_err(CliError::input)?;
+        println!("wrote {} (control polygons)", path.display());
+    }
     if let Some(path) = &a.curves {
-        io::write_atomically(path, curves_obj(&e, 32).as_bytes()).map_err(CliError::input)?;
+        io::write_atomically(path, curves_obj(&e, 32, false).as_bytes())
+            .map_err(CliError::input)?;
         println!(
             "wrote {} ({} curves)",
             path.display(),

@@ -151,6 +151,9 @@ fn parse_section(text: &str) -> Result<SectionPlane, String> {
 /// The colour of the polylines.
 const LINES: [f32; 3] = [0.9, 0.3, 0.05];
 
+/// The colour of `--lines` over a lines-only input (a network's control polygons over it).
+const OVER_LINES: [f32; 3] = [0.35, 0.75, 1.0];
+
 /// The polylines of OBJ `path`.
 fn read_lines(path: &Path) -> Result<Vec<Vec<DVec3>>, CliError> {
     let text = std::fs::read_to_string(path)
@@ -451,7 +454,7 @@ fn render_lines(
     let mut scene = Scene::plain(&points);
     scene.add_segments(&segments(lines), LINES);
     if let Some(l) = over {
-        scene.add_segments(&segments(l), LINES);
+        scene.add_segments(&segments(l), OVER_LINES);
     }
     let camera = camera(a, &scene, None, &PolyMesh::new())?;
     draw(a, size, &scene, camera)
