@@ -423,7 +423,6 @@ impl ModelTab {
             ui.radio_value(&mut d.color, Coloring::Scheme, "scheme");
         });
         ui.checkbox(&mut d.cage, "previous level as cage");
-        section_row(ui, &mut d.section);
         ui.checkbox(&mut d.corners, "corner points and displacement vectors");
         ui.checkbox(
             &mut d.limit,
@@ -464,38 +463,53 @@ impl ModelTab {
                 }
             });
         }
-        if ui.button("Frame the model").clicked() {
+        // The section's choice shares the last row with the framing button (the panel fits
+        // 1280×800 with the Edges tool); its slider shows below once a plane is chosen.
+        let mut frame = false;
+        ui.horizontal(|ui| {
+            frame = ui.button("Frame the model").clicked();
+            section_choice(ui, &mut self.display.section);
+        });
+        if let Some(s) = &mut self.display.section {
+            ui.horizontal_wrapped(|ui| {
+                let mut at = f64::from(s.permille) / 1000.0;
+                ui.add(egui::Slider::new(&mut at, 0.0..=1.0).text("along the box"));
+                s.permille = (at * 1000.0).round() as u16;
+                ui.checkbox(&mut s.above, "keep beyond");
+            });
+        }
+        if frame {
             self.frame(doc);
         }
     }
 }
 
-/// The section plane's row: off or an axis, where along the level's box, which side is kept.
-fn section_row(ui: &mut egui::Ui, section: &mut Option<super::display::Section>) {
-    ui.horizontal_wrapped(|ui| {
-        ui.label("section:");
-        let mut axis = section.map(|s| s.axis);
-        ui.radio_value(&mut axis, None, "off");
-        for (k, name) in ["x", "y", "z"].iter().enumerate() {
-            ui.radio_value(&mut axis, Some(k as u8), *name)
-                .on_hover_text(format!(
-                    "cut the model by a plane normal to {name}, the cut's outline in yellow"
-                ));
-        }
-        *section = axis.map(|axis| super::display::Section {
-            axis,
-            ..section.unwrap_or(super::display::Section {
-                axis,
-                permille: 500,
-                above: false,
-            })
+/// The section plane's choice: off or an axis (a plane at the middle of the level's box,
+/// the part before it kept, until the slider below says otherwise).
+fn section_choice(ui: &mut egui::Ui, section: &mut Option<super::display::Section>) {
+    let name = |s: &Option<super::display::Section>| match s {
+        None => "off",
+        Some(s) => ["x", "y", "z"][usize::from(s.axis.min(2))],
+    };
+    let mut axis = section.map(|s| s.axis);
+    egui::ComboBox::from_label("section")
+        .selected_text(name(section))
+        .show_ui(ui, |ui| {
+            ui.selectable_value(&mut axis, None, "off");
+            for (k, n) in ["x", "y", "z"].iter().enumerate() {
+                ui.selectable_value(&mut axis, Some(k as u8), *n)
+                    .on_hover_text(format!(
+                        "cut the model by a plane normal to {n}, the cut's outline in yellow"
+                    ));
+            }
         });
-        if let Some(s) = section {
-            let mut at = f64::from(s.permille) / 1000.0;
-            ui.add(egui::Slider::new(&mut at, 0.0..=1.0).text("along the box"));
-            s.permille = (at * 1000.0).round() as u16;
-            ui.checkbox(&mut s.above, "keep beyond");
-        }
+    *section = axis.map(|axis| super::display::Section {
+        axis,
+        ..section.unwrap_or(super::display::Section {
+            axis,
+            permille: 500,
+            above: false,
+        })
     });
 }
 
