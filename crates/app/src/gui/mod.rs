@@ -31,6 +31,7 @@ mod new_document;
 mod new_solid;
 mod opening;
 mod paper_figures;
+mod show;
 pub(crate) mod skin;
 mod view3d;
 mod viewport;
@@ -169,7 +170,7 @@ impl PrismApp {
         let mut skin = skin::SkinTab::default();
         let mut curves = curves::CurvesTab::default();
         for &s in &launch.show {
-            launch::apply_show(s, &mut display, &mut envelope, &mut skin, &mut curves);
+            show::apply_show(s, &mut display, &mut envelope, &mut skin, &mut curves);
         }
         let next = prism_geom::parse_pipeline(&settings.next)
             .ok()
