@@ -313,6 +313,9 @@ pub fn circumradius(a: DVec3, b: DVec3, c: DVec3) -> Option<f64> {
 
 #[cfg(test)]
 mod tests {
+    use super::*;
+    use crate::primitives;
+
     /// Three points of a circle of radius 2 give 2; three on a line give none.
     #[test]
     fn the_circle_through_three_points() {
@@ -321,9 +324,6 @@ mod tests {
         assert!((r - 2.0).abs() < 1e-12, "{r}");
         assert_eq!(circumradius(DVec3::ZERO, DVec3::X, 2.0 * DVec3::X), None);
     }
-
-    use super::*;
-    use crate::primitives;
 
     #[test]
     fn segments_meet_when_they_cross_touch_or_overlap() {

@@ -471,16 +471,13 @@ impl Pipeline {
         let Ok(measured) = crate::analysis::measure_edges(base, refined, &edges) else {
             return Vec::new();
         };
-        let steps = (k - run.start) as i32;
+        let steps = k - run.start;
         edges
             .iter()
             .zip(measured)
             .filter_map(|(&(e, r), m)| match m {
-                Ok(m) => {
-                    let polygon = r / (m.bend / 2f64.powi(steps + 1)).cos();
-                    ((m.fitted_radius / polygon - 1.0).abs() > self.options.reach.tolerance)
-                        .then_some((e, r, Some(m.fitted_radius)))
-                }
+                Ok(m) => (m.polygon_error(r, steps).abs() > self.options.reach.tolerance)
+                    .then_some((e, r, Some(m.fitted_radius))),
                 Err(crate::analysis::FilletError::TooFewPoints { .. }) => Some((e, r, None)),
                 Err(_) => None,
             })

@@ -249,10 +249,7 @@ impl PrismApp {
                 }
             }
             Purpose::Export(kind) => {
-                let (ext, normals) = match kind.strip_suffix("+vn") {
-                    Some(e) => (e, true),
-                    None => (kind, false),
-                };
+                let (ext, normals) = export_kind(kind);
                 let path = if path
                     .extension()
                     .is_some_and(|e| e.eq_ignore_ascii_case(ext))
@@ -275,10 +272,7 @@ impl PrismApp {
         }
         let picked = self.dialog(|| {
             rfd::FileDialog::new()
-                .add_filter(
-                    "Prism documents, OBJ, STL and PLY",
-                    &["json", "obj", "stl", "ply"],
-                )
+                .add_filter("Prism documents, OBJ, STL and PLY", &OPENED)
                 .pick_file()
         });
         if let Some(p) = picked {
@@ -330,10 +324,7 @@ impl PrismApp {
 
     /// Asks where to export; `kind` is `obj`, `stl`, `glb`, or `obj+vn` (OBJ with normals).
     pub(super) fn export_dialog(&mut self, kind: &'static str) {
-        let (ext, normals) = match kind.strip_suffix("+vn") {
-            Some(e) => (e, true),
-            None => (kind, false),
-        };
+        let (ext, normals) = export_kind(kind);
         let name = match self.tab {
             super::Tab::Skin => format!("skin.{ext}"),
             super::Tab::Envelope => format!("envelope.{ext}"),
@@ -401,4 +392,13 @@ fn with_suffix(path: &Path, suffix: &str) -> PathBuf {
     s.push(".");
     s.push(suffix);
     PathBuf::from(s)
+}
+
+/// An export's kind, `obj`, `stl`, `glb` or `obj+vn`: its extension and whether OBJ carries
+/// normals.
+fn export_kind(kind: &str) -> (&str, bool) {
+    match kind.strip_suffix("+vn") {
+        Some(e) => (e, true),
+        None => (kind, false),
+    }
 }

@@ -57,6 +57,16 @@ pub struct FilletMeasure {
     pub section: Vec<DVec2>,
 }
 
+impl FilletMeasure {
+    /// The fitted radius's relative error against what `steps` steps of the rule give for a
+    /// fillet of radius `r`: the polygon circumscribing the arc, its corners `r/cos(ψ/2^(k+1))`
+    /// from the ideal axis (the clamp's reach and its warning judge by this).
+    pub fn polygon_error(&self, r: f64, steps: usize) -> f64 {
+        let polygon = r / (self.bend / 2f64.powi(steps as i32 + 1)).cos();
+        self.fitted_radius / polygon - 1.0
+    }
+}
+
 /// Measures the fillet of original edge `a`-`b` (vertex indices of `original`) in `refined`,
 /// for target radius `r`.
 pub fn measure_fillet(
@@ -86,20 +96,20 @@ pub fn measure_edges(
 ) -> Result<Vec<Result<FilletMeasure, FilletError>>, FilletError> {
     let topo = Topology::build(original)?;
     let refined = Refined::new(refined);
-    let cv = &original.corner_verts;
     Ok(edges
         .iter()
         .map(|&(key, r)| {
             let (a, b) = (key.0, key.1);
-            let c = topo
+            let e = topo
                 .find_edge(original, a, b)
-                .map(|e| topo.edge_corner[e as usize] as usize)
-                .filter(|&c| {
-                    let (x, y) = (cv[c], cv[topo.next(c) as usize]);
-                    (x, y) == (a, b) || (x, y) == (b, a)
-                })
                 .ok_or(FilletError::NoSuchEdge { a, b })?;
-            measure_at_corner(original, &topo, c, &refined, r)
+            measure_at_corner(
+                original,
+                &topo,
+                topo.edge_corner[e as usize] as usize,
+                &refined,
+                r,
+            )
         })
         .collect())
 }
@@ -278,12 +288,12 @@ fn measure_at_corner(
     let w = axis.cross(u);
     let to2 = |p: DVec3| DVec2::new((p - mid).dot(u), (p - mid).dot(w));
     let p2: Vec<DVec2> = pts.iter().map(|&p| to2(p)).collect();
+    let c2 = to2(centre);
     // Two points (level 1: the chord's ends) do not fix a circle: report their mean
     // distance to the ideal axis instead.
     let (cfit, rfit) = if p2.len() >= 3 {
         fit_circle(&p2)
     } else {
-        let c2 = to2(centre);
         (
             c2,
             p2.iter().map(|p| (*p - c2).length()).sum::<f64>() / p2.len() as f64,
@@ -298,7 +308,6 @@ fn measure_at_corner(
         max_e = max_e.max(e);
         min_e = min_e.min(e);
     }
-    let c2 = to2(centre);
     let sign = if concave { -1.0 } else { 1.0 };
     let mut section: Vec<DVec2> = p2.iter().map(|&p| sign * (p - c2)).collect();
     section.sort_by(|a, b| a.y.atan2(a.x).total_cmp(&b.y.atan2(b.x)));
@@ -306,7 +315,7 @@ fn measure_at_corner(
         section,
         points: pts.len(),
         fitted_radius: rfit,
-        centre_offset: (cfit - to2(centre)).length(),
+        centre_offset: (cfit - c2).length(),
         max_radial_error: max_e,
         min_radial_error: min_e,
         concave,

@@ -51,12 +51,8 @@ fn reaches(
     let Ok(measured) = measure_edges(prev, level, edges) else {
         return false;
     };
-    let halvings = 2f64.powi(depth as i32 + 1);
     measured.iter().zip(edges).all(|(m, &(_, r))| match m {
-        Ok(m) => {
-            let polygon = r / (m.bend / halvings).cos();
-            (m.fitted_radius / polygon - 1.0).abs() <= tol
-        }
+        Ok(m) => m.polygon_error(r, depth).abs() <= tol,
         // A section with too few points says nothing either way (a small radius beside a
         // coarse level); another error is a miss.
         Err(FilletError::TooFewPoints { .. }) => true,
@@ -110,7 +106,7 @@ pub(super) fn first_step(
         Some(mesh)
     };
     let check = |out: &StepOutput, edges: &[(EdgeKey, f64)]| {
-        on(out).is_some_and(|level| reaches(mesh, &level, depth.max(1), edges, tolerance))
+        on(out).is_some_and(|level| reaches(mesh, &level, depth, edges, tolerance))
     };
     let first = step(attrs, known)?;
     let clamped = first.0.report.clamped.clone();

@@ -62,8 +62,8 @@ pub struct ReachOptions {
     /// The search asks this much closer (default 0.5: within 2.5 % `depth` steps on), since
     /// the fold guard can still take a little off at the levels after.
     pub search_share: f64,
-    /// Steps of the rule taken to measure a trial (default 3: the fold guard also acts at
-    /// the second and third levels).
+    /// Steps of the rule taken to measure a trial, at most as many as the run has (default
+    /// 4: the fold guard also acts at the second to fourth levels).
     pub depth: usize,
     /// Halvings of the cap's interval (default 8: a 256th of it).
     pub halvings: usize,
