@@ -177,34 +177,17 @@ fn overlapping_rounds_are_refused_or_clamped() {
     assert_finite(&out);
 }
 
-/// The bundled tripod as a document with own radius `r` on its arm edge 0-9.
+/// The bundled tripod as a document with own radius `r` on its arm edge 0-9 (read and
+/// written by Prism's own document I/O).
 fn tripod_with_radius(r: f64) -> PathBuf {
-    let obj = std::fs::read_to_string(
-        Path::new(env!("CARGO_MANIFEST_DIR")).join("../../assets/tripod.obj"),
-    )
-    .unwrap();
-    let mut vertices = Vec::new();
-    let mut faces = Vec::new();
-    for line in obj.lines() {
-        let mut w = line.split_whitespace();
-        match w.next() {
-            Some("v") => vertices.push(format!("[{}]", w.collect::<Vec<_>>().join(","))),
-            Some("f") => {
-                let f: Vec<String> = w
-                    .map(|x| (x.parse::<u32>().unwrap() - 1).to_string())
-                    .collect();
-                faces.push(format!("[[{}]]", f.join(",")));
-            }
-            _ => {}
-        }
-    }
-    let doc = format!(
-        r#"{{"version":1,"vertices":[{}],"faces":[{}],"edges":[{{"a":0,"b":9,"radius":{r}}}]}}"#,
-        vertices.join(","),
-        faces.join(",")
+    let assets = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../assets");
+    let (mut doc, _) = prism_geom::io::load(&assets.join("tripod.obj")).unwrap();
+    doc.edge_attrs.insert(
+        prism_geom::EdgeKey::new(0, 9),
+        prism_geom::EdgeAttr::rounded(r),
     );
     let path = tmp(&format!("tripod-{r}.prism.json"));
-    std::fs::write(&path, doc).unwrap();
+    prism_geom::io::save(&path, &doc).unwrap();
     path
 }
 
